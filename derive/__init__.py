@@ -1,0 +1,1 @@
+"""Symbolic layer: model declarations, Lagrange's equations, cam laws, code generation."""

@@ -1,0 +1,184 @@
+"""Cam laws as symbolic piecewise functions that know their breakpoints.
+
+A cam law is the dimensionless rise H(T) of thesis App. 2: H(0) = 0, H(1) = 1,
+dwell H = 0 before the rise and H = 1 after it, T = t/t_m (A.2.1)-(A.2.3).
+
+Every law is declared the way App. 2 presents it, by its acceleration H''(T)
+on each segment of the rise, e.g. the cycloid (A.2.8) or the three segments
+OA, AB, BC of the modified sine (A.2.17).  Velocity and displacement follow by
+symbolic integration from rest (H(0) = H'(0) = 0) with continuity at the
+breakpoints; the amplitude of the acceleration follows from H(1) = 1.  So the
+peak accelerations the thesis prints, 2 pi for the cycloid and
+pi^2/(2 - 8 theta + 2 pi theta) for the modified sine (A.2.17), are derived,
+not typed in, and the tests compare them with the printed forms.
+
+Segments are numbered for the generated code: 0 is the dwell before the rise
+(T < 0), 1..K the pieces of the rise and K + 1 the dwell after it (T >= 1).
+Segments are closed on the left, so a breakpoint belongs to the segment that
+starts there, which is what forward integration restarting at a breakpoint
+needs.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import sympy as sp
+
+T = sp.Symbol("T", real=True)
+"""Dimensionless time T = t/t_m (or cam angle B = beta/beta_m, App. 2)."""
+
+theta = sp.Symbol("theta", positive=True)
+"""Peak position of the modified sine (A.2.17), fig. A.2.3."""
+
+_A = sp.Symbol("A", real=True)  # unknown acceleration amplitude while building
+
+
+@dataclass(frozen=True)
+class LawParameter:
+    """The one shape parameter a law may have, with its admissible open range."""
+
+    symbol: sp.Symbol
+    default: float
+    low: float
+    high: float
+    doc: str
+
+    def check(self, value: float, law: str) -> float:
+        value = float(value)
+        if not (self.low < value < self.high):
+            raise ValueError(
+                f"{self.symbol.name}={value!r} is outside the range "
+                f"{self.low} < {self.symbol.name} < {self.high} of the {law} law"
+            )
+        return value
+
+
+@dataclass(frozen=True)
+class CamLaw:
+    """A rise law: its acceleration pieces and what follows from them."""
+
+    key: str
+    """Name used on the command line, e.g. ``modified-sine``."""
+    code: int
+    """Integer that selects the law in generated code (stable, never reused)."""
+    title: str
+    reference: str
+    bounds: tuple
+    """Breakpoints 0 = b0 < b1 < ... < bK = 1 of the rise (may contain theta)."""
+    acceleration: tuple
+    """H''(T) on each piece, written with the amplitude symbol ``A``."""
+    parameter: LawParameter | None = None
+
+    # -- derived symbolically -------------------------------------------------
+    @cached_property
+    def _derived(self):
+        pieces, v0, h0 = [], sp.Integer(0), sp.Integer(0)
+        for k, acc in enumerate(self.acceleration):
+            lo, hi = self.bounds[k], self.bounds[k + 1]
+            # antiderivatives, not definite integrals: much faster in sympy
+            va = sp.integrate(sp.expand(acc), T)
+            v = v0 + va - va.subs(T, lo)
+            ha = sp.integrate(sp.expand(v), T)
+            h = h0 + ha - ha.subs(T, lo)
+            pieces.append(h)
+            v0, h0 = v.subs(T, hi), h.subs(T, hi)
+        amp = sp.solve(sp.Eq(h0, 1), _A)
+        if len(amp) != 1:
+            raise ValueError(f"{self.key}: H(1) = 1 does not fix the amplitude")
+        amp = sp.simplify(amp[0])
+        return tuple(sp.simplify(h.subs(_A, amp)) for h in pieces), amp
+
+    @property
+    def amplitude(self) -> sp.Expr:
+        """Acceleration amplitude fixed by H(1) = 1 (e.g. H''max, (A.2.17))."""
+        return self._derived[1]
+
+    @property
+    def rise(self) -> tuple:
+        """H(T) on each piece of the rise."""
+        return self._derived[0]
+
+    @property
+    def n_segments(self) -> int:
+        """Segments including the dwell before (0) and after (K + 1)."""
+        return len(self.rise) + 2
+
+    def segment_exprs(self, order: int) -> tuple:
+        """d^order H / dT^order on every segment, dwells included."""
+        before = sp.Integer(0)
+        after = sp.Integer(1) if order == 0 else sp.Integer(0)
+        inner = tuple(sp.diff(h, T, order) for h in self.rise)
+        return (before,) + inner + (after,)
+
+    def piecewise(self, order: int = 0, arg: sp.Expr = T) -> sp.Piecewise:
+        """The whole law on the real line as one sympy Piecewise."""
+        exprs = self.segment_exprs(order)
+        conds = [(exprs[0], arg < 0)]
+        for k, e in enumerate(exprs[1:-1]):
+            conds.append((e.subs(T, arg), arg < self.bounds[k + 1]))
+        conds.append((exprs[-1].subs(T, arg), True))
+        return sp.Piecewise(*conds)
+
+    def breakpoints(self, value: float | None = None) -> list[float]:
+        """Numerical breakpoints of the rise for a parameter value."""
+        subs = self._subs(value)
+        return [float(sp.sympify(b).subs(subs)) for b in self.bounds]
+
+    def _subs(self, value):
+        if self.parameter is None:
+            return {}
+        v = self.parameter.default if value is None else self.parameter.check(value, self.key)
+        return {self.parameter.symbol: v}
+
+    def numeric(self, order: int = 0, value: float | None = None):
+        """A NumPy function T -> d^order H/dT^order (for plots and checks)."""
+        import numpy as np
+
+        f = sp.lambdify(T, self.piecewise(order).subs(self._subs(value)), "numpy")
+        return lambda t: np.broadcast_to(f(np.asarray(t, dtype=float)), np.shape(t)) * 1.0
+
+
+def _law(key, code, title, reference, bounds, acceleration, parameter=None):
+    return CamLaw(key, code, title, reference, tuple(sp.sympify(b) for b in bounds),
+                  tuple(sp.sympify(a) for a in acceleration), parameter)
+
+
+_pi = sp.pi
+_half = sp.Rational(1, 2)
+
+LAWS: dict[str, CamLaw] = {}
+for _l in (
+    _law("cycloidal", 0, "Cycloidal", "(A.2.8)-(A.2.11)", (0, 1),
+         [_A * sp.sin(2 * _pi * T)]),
+    _law("modified-sine", 1, "Modified sine", "(A.2.17)-(A.2.20)",
+         (0, theta, 1 - theta, 1),
+         [_A * sp.sin(_pi * T / (2 * theta)),                    # OA
+          _A * sp.cos(_pi * (T - theta) / (1 - 2 * theta)),     # AB
+          -_A * sp.sin(_pi * (2 * theta - 1 + T) / (2 * theta))],  # BC
+         LawParameter(theta, 0.1, 0.0, 0.5,
+                      "fraction of the rise to the acceleration peak (thesis fig. A.2.3: 0.1)")),
+    _law("3-4-5", 2, "3-4-5 polynomial", "H = 10 T^3 - 15 T^4 + 6 T^5", (0, 1),
+         [_A * (T - 3 * T**2 + 2 * T**3)]),
+    _law("simple-harmonic", 3, "Simple harmonic", "H = (1 - cos pi T)/2", (0, 1),
+         [_A * sp.cos(_pi * T)]),
+    _law("parabolic", 4, "Parabolic (constant acceleration)", "H'' = +-4", (0, _half, 1),
+         [_A, -_A]),
+    _law("4-5-6-7", 5, "4-5-6-7 polynomial", "H = 35 T^4 - 84 T^5 + 70 T^6 - 20 T^7", (0, 1),
+         [_A * (T**2 - 4 * T**3 + 5 * T**4 - 2 * T**5)]),
+    _law("modified-trapezoid", 6, "Modified trapezoid", "jerk-limited, eighths of the rise",
+         (0, sp.Rational(1, 8), sp.Rational(3, 8), sp.Rational(5, 8), sp.Rational(7, 8), 1),
+         [_A * sp.sin(4 * _pi * T), _A, _A * sp.cos(4 * _pi * (T - sp.Rational(3, 8))), -_A,
+          -_A * sp.cos(4 * _pi * (T - sp.Rational(7, 8)))]),
+):
+    LAWS[_l.key] = _l
+
+LAW_BY_CODE = {law.code: law for law in LAWS.values()}
+
+
+def get(key: str) -> CamLaw:
+    """The law named ``key``; a clear error listing the known names otherwise."""
+    try:
+        return LAWS[key]
+    except KeyError:
+        raise ValueError(f"unknown cam law {key!r}; choose one of {', '.join(LAWS)}") from None

@@ -1,0 +1,100 @@
+"""Lagrange's equations for a declared :class:`~camdyn.derive.model.Model`.
+
+For each coordinate q_i
+
+    d/dt dT/dq'_i - dT/dq_i + dV/dq_i + dD/dq'_i = Q_i - sum_j lambda_j dPhi_j/dq_i
+
+(D the Rayleigh dissipation function, Q_i the generalized forces, Phi the
+holonomic constraints).  Collecting the q'' terms gives
+
+    M(q, t) q'' + Phi_q^T lambda = f(q, q', t),     Phi_q q'' = gamma,
+
+the multiplier form of the paper's (15) and (19); without constraints it is
+M q'' = f.
+
+Why an own implementation and not ``sympy.physics.mechanics.LagrangesMethod``:
+the thesis models are stated as energies plus a *Rayleigh dissipation
+function* and *generalized forces per coordinate* (not forces on points of
+reference frames), and their inputs are cam laws that enter as functions of
+time or of a coordinate.  LagrangesMethod wants forces as (Point, Vector)
+pairs and has no dissipation function; wrapping that costs more lines than
+the dozen below, and we need M, f, Phi_q and gamma as separate matrices for
+code generation anyway.  The result is checked against hand-derived closed
+forms in the tests.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+
+import sympy as sp
+
+from .model import Model
+
+
+@dataclass(frozen=True)
+class Equations:
+    """M q'' + Phi_q^T lambda = f and Phi_q q'' = gamma of one model."""
+
+    model: Model
+    M: sp.Matrix
+    f: sp.Matrix
+    Phi: sp.Matrix
+    Phi_q: sp.Matrix
+    gamma: sp.Matrix
+
+    @property
+    def q(self):
+        return self.model.q
+
+    @property
+    def qd(self):
+        return [x.diff(self.model.time) for x in self.q]
+
+    @property
+    def qdd(self):
+        return [x.diff(self.model.time, 2) for x in self.q]
+
+    @cached_property
+    def accelerations(self) -> sp.Matrix:
+        """q'' = M^-1 f for unconstrained models (symbolic; small M only)."""
+        if self.Phi.rows:
+            raise ValueError("constrained model: solve the multiplier form instead")
+        return sp.simplify(self.M.LUsolve(self.f))
+
+
+def derive(model: Model) -> Equations:
+    """Equations of motion of ``model`` by Lagrange's equations."""
+    t = model.time
+    q = model.q
+    qd = [x.diff(t) for x in q]
+    qdd = [x.diff(t, 2) for x in q]
+    n = len(q)
+    forces = model.forces or (0,) * n
+
+    lhs = []
+    for i in range(n):
+        kin = model.kinetic.diff(qd[i]).diff(t) - model.kinetic.diff(q[i])
+        e = kin + model.potential.diff(q[i]) + model.dissipation.diff(qd[i]) - forces[i]
+        lhs.append(sp.expand(e))
+
+    M = sp.Matrix(n, n, lambda i, j: lhs[i].coeff(qdd[j]))
+    zero = {a: 0 for a in qdd}
+    f = sp.Matrix([-lhs[i].subs(zero) for i in range(n)])
+    # the equations must be linear in q'': check that nothing was left over
+    for i in range(n):
+        rest = sp.expand(lhs[i] - sum(M[i, j] * qdd[j] for j in range(n)) + f[i])
+        if rest != 0:
+            raise ValueError(f"{model.name}: equation {i} is not linear in the accelerations")
+    M = M.applyfunc(sp.simplify)
+    f = f.applyfunc(sp.simplify)
+
+    Phi = sp.Matrix(list(model.constraints))
+    if Phi.rows:
+        Phi_q = Phi.jacobian(q)
+        # d2Phi/dt2 = Phi_q q'' - gamma: gamma is minus the part free of q''
+        gamma = (-sp.expand(Phi.diff(t, 2)).subs(zero)).applyfunc(sp.simplify)
+    else:
+        Phi_q = sp.zeros(0, n)
+        gamma = sp.zeros(0, 1)
+    return Equations(model, M, f, Phi, Phi_q, gamma)

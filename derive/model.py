@@ -1,0 +1,215 @@
+"""A model is a declaration: coordinates, energies, forces, constraints, inputs.
+
+Nothing here derives anything; :mod:`camdyn.derive.lagrange` turns a
+:class:`Model` into equations of motion and :mod:`camdyn.derive.codegen` into
+Cython.  Names follow the thesis (tau, Fa, Fv, H, X, ...), so a declaration
+reads next to the cited equations.
+"""
+from __future__ import annotations
+
+import keyword
+import math
+import re
+from dataclasses import dataclass, field
+
+import sympy as sp
+
+_NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
+_RESERVED = set(keyword.kwlist) | {
+    "y", "dy", "out", "ctx", "p", "t", "cam", "int", "double", "float", "char", "long",
+    "const", "cdef", "cpdef", "struct", "void", "inline", "nogil", "work", "M", "f",
+}
+
+
+def _check_name(name: str, what: str) -> str:
+    if not _NAME.match(name) or name in _RESERVED or re.match(r"^s\d+$", name):
+        raise ValueError(f"{what} name {name!r} is not usable in generated code")
+    return name
+
+
+def time(name: str = "T") -> sp.Symbol:
+    """The independent variable (dimensionless T = t/t_m in the thesis models)."""
+    return sp.Symbol(name, real=True)
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """A model parameter with unit, default and admissible range.
+
+    ``low``/``high`` bound the range; ``open_low``/``open_high`` say whether
+    the bound itself is excluded.  ``math.inf`` means unbounded.
+    """
+
+    name: str
+    default: float
+    unit: str
+    doc: str
+    low: float = -math.inf
+    high: float = math.inf
+    open_low: bool = False
+    open_high: bool = False
+
+    def __post_init__(self):
+        _check_name(self.name, "parameter")
+        if not self.admits(self.default):
+            raise ValueError(f"default of {self.name} is outside its own range")
+
+    @property
+    def symbol(self) -> sp.Symbol:
+        if self.low >= 0 and self.open_low:
+            return sp.Symbol(self.name, positive=True)
+        if self.low >= 0:
+            return sp.Symbol(self.name, nonnegative=True)
+        return sp.Symbol(self.name, real=True)
+
+    def admits(self, value: float) -> bool:
+        if not math.isfinite(value):
+            return False
+        lo_ok = value > self.low if self.open_low else value >= self.low
+        hi_ok = value < self.high if self.open_high else value <= self.high
+        return lo_ok and hi_ok
+
+    def range_text(self) -> str:
+        lo = "" if self.low == -math.inf else f"{self.low:g} {'<' if self.open_low else '<='} "
+        hi = "" if self.high == math.inf else f" {'<' if self.open_high else '<='} {self.high:g}"
+        if not lo and not hi:
+            return f"{self.name} finite"
+        return f"{lo}{self.name}{hi}"
+
+
+@dataclass(frozen=True)
+class Coordinate:
+    """A generalized coordinate q(t); its velocity is a state too.
+
+    ``scale`` is a typical magnitude of q (and of q' per unit time), used for
+    the absolute tolerance of adaptive integrators.
+    """
+
+    name: str
+    unit: str
+    doc: str
+    scale: float = 1.0
+    initial: float | sp.Expr = 0
+    initial_rate: float | sp.Expr = 0
+
+    def __post_init__(self):
+        _check_name(self.name, "coordinate")
+
+    def __call__(self, t: sp.Symbol) -> sp.Expr:
+        return sp.Function(self.name, real=True)(t)
+
+
+@dataclass(frozen=True)
+class Output:
+    """A named quantity computed from t, q, q' and q'' (e.g. X'')."""
+
+    name: str
+    expr: sp.Expr
+    unit: str
+    doc: str
+
+    def __post_init__(self):
+        _check_name(self.name, "output")
+
+
+class CamFunction(sp.Function):
+    """Base of the symbolic cam input H and its derivatives.
+
+    ``H(arg).diff(t)`` gives ``Hd(arg) * d(arg)/dt`` by the chain rule, so a
+    model may drive the follower with H(T) (constant fictitious angular
+    velocity) or with H(B) of a cam angle coordinate B (CAMSHAFT-2, (5.15)).
+    The generated code replaces each H(arg) by a call of the cam-law library.
+    """
+
+    family: str = ""
+    order: int = 0
+    max_order = 3
+
+    @classmethod
+    def eval(cls, arg):
+        return None
+
+    def fdiff(self, argindex=1):
+        if self.order >= self.max_order:
+            raise ValueError(f"cam input {self.family}: derivative of order > {self.max_order}")
+        return cam_input(self.family, self.order + 1)(self.args[0])
+
+    def _sympystr(self, printer):
+        return f"{self.family}{'d' * self.order}({printer.doprint(self.args[0])})"
+
+
+_CAM_CLASSES: dict = {}
+
+
+def cam_input(family: str = "H", order: int = 0) -> type:
+    """The function class d^order H/darg^order of the cam input ``family``."""
+    key = (family, order)
+    if key not in _CAM_CLASSES:
+        _check_name(family, "cam input")
+        name = family + "d" * order
+        _CAM_CLASSES[key] = type(name, (CamFunction,), {"family": family, "order": order})
+    return _CAM_CLASSES[key]
+
+
+@dataclass(frozen=True)
+class Residual:
+    """What residual-vibration post-processing reads (thesis sec. 3.3).
+
+    ``error`` is the positional-error output u = X - H, ``acceleration`` the
+    follower acceleration output X'', ``rise_end`` the end of the rise in
+    model time (T = 1 in the dimensionless models).
+    """
+
+    error: str
+    acceleration: str
+    rise_end: float = 1.0
+
+
+@dataclass(frozen=True)
+class Model:
+    """A cam-mechanism model as the thesis sets one up (energies and forces).
+
+    The layer derives M(q, t) q'' + Phi_q^T lambda = f(q, q', t) by Lagrange's
+    equations from kinetic energy ``kinetic``, potential energy ``potential``,
+    Rayleigh dissipation ``dissipation`` and generalized forces ``forces``
+    (one per coordinate, not derivable from a potential).  ``constraints``
+    are holonomic, Phi(q, t) = 0.
+    """
+
+    name: str
+    title: str
+    reference: str
+    doc: str
+    time: sp.Symbol
+    time_unit: str
+    coordinates: tuple
+    kinetic: sp.Expr
+    potential: sp.Expr
+    parameters: tuple
+    outputs: tuple
+    dissipation: sp.Expr = sp.Integer(0)
+    forces: tuple = ()
+    constraints: tuple = ()
+    residual: Residual | None = None
+    options: tuple = field(default_factory=tuple)
+
+    def __post_init__(self):
+        _check_name(self.name, "model")
+        names = [c.name for c in self.coordinates]
+        names += [c.name + "d" for c in self.coordinates]
+        names += [p.name for p in self.parameters] + [o.name for o in self.outputs]
+        dup = {n for n in names if names.count(n) > 1}
+        if dup:
+            raise ValueError(f"model {self.name}: names used twice: {sorted(dup)}")
+        if self.forces and len(self.forces) != len(self.coordinates):
+            raise ValueError(f"model {self.name}: one generalized force per coordinate")
+
+    @property
+    def q(self) -> list:
+        return [c(self.time) for c in self.coordinates]
+
+    def parameter(self, name: str) -> Parameter:
+        for p in self.parameters:
+            if p.name == name:
+                return p
+        raise KeyError(name)

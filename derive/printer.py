@@ -1,0 +1,94 @@
+"""Print SymPy expressions as Cython (C-level, nogil) code.
+
+Based on SymPy's C99 printer, with two changes that matter for speed and for
+Cython syntax: small integer powers become products (gcc only turns pow(x, 2)
+into x*x by itself), and every symbol is printed through a name map, so states
+read ``y[0]`` through locals named as in the thesis.
+"""
+from __future__ import annotations
+
+import sympy as sp
+from sympy.printing.c import C99CodePrinter
+
+# libc.math names the printed code may call
+MATH_FUNCTIONS = ("sin", "cos", "tan", "sqrt", "exp", "log", "fabs", "pow", "tanh",
+                  "sinh", "cosh", "atan", "atan2", "asin", "acos", "copysign", "fmin", "fmax")
+
+
+class CythonPrinter(C99CodePrinter):
+    """C99 expressions that are also valid Cython expressions."""
+
+    def __init__(self, names: dict | None = None):
+        super().__init__()
+        self.names = names or {}
+        self.used = set()
+
+    def _print_Symbol(self, expr):
+        return self.names.get(expr, expr.name)
+
+    def _print_Pi(self, expr):
+        self.used.add("M_PI")
+        return "M_PI"
+
+    def _print_Pow(self, expr):
+        base, exp = expr.as_base_exp()
+        if exp.is_Integer and 1 < abs(int(exp)) <= 4:
+            b = self.parenthesize(base, sp.printing.precedence.PRECEDENCE["Mul"] + 1)
+            prod = "(" + "*".join([b] * abs(int(exp))) + ")"
+            return prod if exp > 0 else f"(1.0/{prod})"
+        if exp == -1:
+            return f"(1.0/{self.parenthesize(base, sp.printing.precedence.PRECEDENCE['Mul'] + 1)})"
+        if exp == sp.S.Half:
+            self.used.add("sqrt")
+            return f"sqrt({self._print(base)})"
+        if exp == -sp.S.Half:
+            self.used.add("sqrt")
+            return f"(1.0/sqrt({self._print(base)}))"
+        self.used.add("pow")
+        return f"pow({self._print(base)}, {self._print(exp)})"
+
+    def _print_Function(self, expr):
+        name = type(expr).__name__
+        if name in MATH_FUNCTIONS:
+            self.used.add(name)
+        return super()._print_Function(expr)
+
+    def _print_Abs(self, expr):
+        self.used.add("fabs")
+        return f"fabs({self._print(expr.args[0])})"
+
+    def _print_sign(self, expr):
+        self.used.add("copysign")
+        a = self._print(expr.args[0])
+        return f"(0.0 if {a} == 0.0 else copysign(1.0, {a}))"
+
+    def _print_Piecewise(self, expr):
+        # Cython conditional expression, nested right to left
+        *pairs, last = expr.args
+        if last.cond != sp.true:
+            raise ValueError("Piecewise without a default branch cannot be printed")
+        code = self._print(last.expr)
+        for e, c in reversed(pairs):
+            code = f"(({self._print(e)}) if ({self._print(c)}) else ({code}))"
+        return code
+
+    def _print_Relational(self, expr):
+        return f"{self._print(expr.lhs)} {expr.rel_op} {self._print(expr.rhs)}"
+
+    def _print_Float(self, expr):
+        return repr(float(expr))
+
+    def _print_Rational(self, expr):
+        return f"{float(expr.p)!r}/{float(expr.q)!r}"
+
+    def _print_Integer(self, expr):
+        return f"{int(expr)}.0" if abs(int(expr)) < 2**53 else repr(float(expr))
+
+
+def cse_block(exprs, names: dict, prefix: str = "s"):
+    """Common subexpressions of ``exprs``: (lines of local definitions, printed exprs)."""
+    replacements, reduced = sp.cse(list(exprs), symbols=sp.numbered_symbols(prefix),
+                                   optimizations="basic", order="canonical")
+    printer = CythonPrinter(names)
+    lines = [(str(sym), printer.doprint(e)) for sym, e in replacements]
+    return lines, [printer.doprint(e) for e in reduced], printer.used

@@ -1,0 +1,319 @@
+# cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
+#
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
+# edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+#
+# Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
+# derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),
+# segments 1..K the pieces of the rise, K + 1 the dwell after it (T >= 1).
+# Segments are closed on the left.  `par` is the law's shape parameter
+# (theta of the modified sine); laws without one ignore it.
+#
+#   0  cycloidal            Cycloidal, (A.2.8)-(A.2.11); H''max = 2*pi
+#   1  modified-sine        Modified sine, (A.2.17)-(A.2.20); H''max = pi**2/(2*(-4*theta + pi*theta + 1))
+#   2  3-4-5                3-4-5 polynomial, H = 10 T^3 - 15 T^4 + 6 T^5; H''max = 60
+#   3  simple-harmonic      Simple harmonic, H = (1 - cos pi T)/2; H''max = pi**2/2
+#   4  parabolic            Parabolic (constant acceleration), H'' = +-4; H''max = 4
+#   5  4-5-6-7              4-5-6-7 polynomial, H = 35 T^4 - 84 T^5 + 70 T^6 - 20 T^7; H''max = 420
+#   6  modified-trapezoid   Modified trapezoid, jerk-limited, eighths of the rise; H''max = 8*pi/(2 + pi)
+
+from libc.math cimport sin, cos, M_PI
+
+
+cdef inline int camlaw_segment(int law, double par, double T) noexcept nogil:
+    """Segment of `law` that contains T (right-continuous); -1 for an unknown law."""
+    if law == 0:  # cycloidal
+        if T < 0.0:
+            return 0
+        if T < 1.0:
+            return 1
+        return 2
+    elif law == 1:  # modified-sine
+        if T < 0.0:
+            return 0
+        if T < par:
+            return 1
+        if T < 1.0 - par:
+            return 2
+        if T < 1.0:
+            return 3
+        return 4
+    elif law == 2:  # 3-4-5
+        if T < 0.0:
+            return 0
+        if T < 1.0:
+            return 1
+        return 2
+    elif law == 3:  # simple-harmonic
+        if T < 0.0:
+            return 0
+        if T < 1.0:
+            return 1
+        return 2
+    elif law == 4:  # parabolic
+        if T < 0.0:
+            return 0
+        if T < 1.0/2.0:
+            return 1
+        if T < 1.0:
+            return 2
+        return 3
+    elif law == 5:  # 4-5-6-7
+        if T < 0.0:
+            return 0
+        if T < 1.0:
+            return 1
+        return 2
+    elif law == 6:  # modified-trapezoid
+        if T < 0.0:
+            return 0
+        if T < 1.0/8.0:
+            return 1
+        if T < 3.0/8.0:
+            return 2
+        if T < 5.0/8.0:
+            return 3
+        if T < 7.0/8.0:
+            return 4
+        if T < 1.0:
+            return 5
+        return 6
+    return -1
+
+
+cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out) noexcept nogil:
+    """out[k] = d^k H/dT^k, k = 0..3, evaluated with the formula of segment `seg`.
+
+    The segment is given, not looked up, so that an integration step that ends
+    on a breakpoint keeps using the formula of the segment it started in.
+    """
+    cdef double c0, c1, c2, c3, c4, c5, c6, c7, c8, c9, c10, c11, c12
+    if law == 0:  # cycloidal
+        if seg == 0:
+            out[0] = 0.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        elif seg == 1:
+            c0 = 2.0*M_PI
+            c1 = T*c0
+            c2 = sin(c1)
+            c3 = cos(c1)
+            out[0] = T - 1.0/2.0*c2/M_PI
+            out[1] = 1.0 - c3
+            out[2] = c0*c2
+            out[3] = 4.0*(M_PI*M_PI)*c3
+        elif seg == 2:
+            out[0] = 1.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        else:
+            out[0] = out[1] = out[2] = out[3] = 0.0
+    elif law == 1:  # modified-sine
+        if seg == 0:
+            out[0] = 0.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        elif seg == 1:
+            c0 = M_PI*par
+            c1 = (1.0/(c0 - 4.0*par + 1.0))
+            c2 = M_PI*T
+            c3 = (1.0/par)
+            c4 = (1.0/2.0)*c2*c3
+            c5 = sin(c4)
+            c6 = cos(c4)
+            out[0] = c1*par*(c2 - 2.0*c5*par)
+            out[1] = -c0*c1*(c6 - 1.0)
+            out[2] = (1.0/2.0)*(M_PI*M_PI)*c1*c5
+            out[3] = (1.0/4.0)*(M_PI*M_PI*M_PI)*c1*c3*c6
+        elif seg == 2:
+            c0 = 2.0*par
+            c1 = c0 - 1.0
+            c2 = (1.0/c1)
+            c3 = M_PI*c2*(T - par)
+            c4 = cos(c3)
+            c5 = 4.0*(par*par)
+            c6 = 4.0*par
+            c7 = M_PI*par
+            c8 = 1.0 - c6
+            c9 = (1.0/2.0)/(c7 + c8)
+            c10 = sin(c3)
+            c11 = c10*c2
+            c12 = c9*(c5 + c8)
+            out[0] = c9*(2.0*T*c7 - c4*c5 + c4*c6 - c4 + c8)
+            out[1] = M_PI*c9*(c0 + c11*c5 - c11*c6 + c11)
+            out[2] = (M_PI*M_PI)*c12*c4/(c1*c1)
+            out[3] = -(M_PI*M_PI*M_PI)*c10*c12/(c1*c1*c1)
+        elif seg == 3:
+            c0 = M_PI*par
+            c1 = 1.0 - 4.0*par
+            c2 = (1.0/(c0 + c1))
+            c3 = (1.0/par)
+            c4 = (1.0/2.0)*M_PI*c3*(T - 1.0)
+            c5 = sin(c4)
+            c6 = cos(c4)
+            out[0] = c2*(T*c0 + c1 - 2.0*c5*(par*par))
+            out[1] = -c0*c2*(c6 - 1.0)
+            out[2] = (1.0/2.0)*(M_PI*M_PI)*c2*c5
+            out[3] = (1.0/4.0)*(M_PI*M_PI*M_PI)*c2*c3*c6
+        elif seg == 4:
+            out[0] = 1.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        else:
+            out[0] = out[1] = out[2] = out[3] = 0.0
+    elif law == 2:  # 3-4-5
+        if seg == 0:
+            out[0] = 0.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        elif seg == 1:
+            c0 = (T*T)
+            c1 = 10.0 - 15.0*T
+            c2 = 6.0*c0 + c1
+            c3 = T*(4.0*T - 5.0)
+            out[0] = (T*T*T)*c2
+            out[1] = 3.0*c0*(c2 + c3)
+            out[2] = 6.0*T*(8.0*c0 + c1 + 3.0*c3)
+            out[3] = 144.0*c0 + 6.0*c1 + 54.0*c3
+        elif seg == 2:
+            out[0] = 1.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        else:
+            out[0] = out[1] = out[2] = out[3] = 0.0
+    elif law == 3:  # simple-harmonic
+        if seg == 0:
+            out[0] = 0.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        elif seg == 1:
+            c0 = M_PI*T
+            c1 = cos(c0)
+            c2 = (1.0/2.0)*sin(c0)
+            out[0] = 1.0/2.0 - 1.0/2.0*c1
+            out[1] = M_PI*c2
+            out[2] = (1.0/2.0)*(M_PI*M_PI)*c1
+            out[3] = -(M_PI*M_PI*M_PI)*c2
+        elif seg == 2:
+            out[0] = 1.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        else:
+            out[0] = out[1] = out[2] = out[3] = 0.0
+    elif law == 4:  # parabolic
+        if seg == 0:
+            out[0] = 0.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        elif seg == 1:
+            out[0] = 2.0*(T*T)
+            out[1] = 4.0*T
+            out[2] = 4.0
+            out[3] = 0.0
+        elif seg == 2:
+            out[0] = -2.0*(T*T) + 4.0*T - 1.0
+            out[1] = 4.0*(1.0 - T)
+            out[2] = -4.0
+            out[3] = 0.0
+        elif seg == 3:
+            out[0] = 1.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        else:
+            out[0] = out[1] = out[2] = out[3] = 0.0
+    elif law == 5:  # 4-5-6-7
+        if seg == 0:
+            out[0] = 0.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        elif seg == 1:
+            c0 = (T*T*T)
+            c1 = (T*T)
+            c2 = 84.0*T - 70.0*c1 - 35.0
+            c3 = 20.0*c0 + c2
+            c4 = T*(-35.0*T + 15.0*c1 + 21.0)
+            c5 = c1*(6.0*T - 7.0)
+            out[0] = -(T*T*T*T)*c3
+            out[1] = -4.0*c0*(c3 + c4)
+            out[2] = -4.0*c1*(252.0*T + 60.0*c0 - 210.0*c1 + 8.0*c4 + 5.0*c5 - 105.0)
+            out[3] = -24.0*T*(25.0*c0 + c2 + 6.0*c4 + 10.0*c5)
+        elif seg == 2:
+            out[0] = 1.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        else:
+            out[0] = out[1] = out[2] = out[3] = 0.0
+    elif law == 6:  # modified-trapezoid
+        if seg == 0:
+            out[0] = 0.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        elif seg == 1:
+            c0 = (1.0/(2.0 + M_PI))
+            c1 = 4.0*M_PI*T
+            c2 = sin(c1)
+            c3 = cos(c1)
+            out[0] = (1.0/2.0)*c0*(c1 - c2)/M_PI
+            out[1] = -2.0*c0*(c3 - 1.0)
+            out[2] = 8.0*M_PI*c0*c2
+            out[3] = 32.0*(M_PI*M_PI)*c0*c3
+        elif seg == 2:
+            c0 = (1.0/(2.0 + M_PI))
+            c1 = (M_PI*M_PI)
+            c2 = M_PI*T
+            out[0] = (1.0/16.0)*c0*(64.0*(T*T)*c1 - 16.0*T*c1 + c1 + 32.0*c2 - 8.0)/M_PI
+            out[1] = c0*(8.0*c2 - M_PI + 2.0)
+            out[2] = 8.0*M_PI*c0
+            out[3] = 0.0
+        elif seg == 3:
+            c0 = (1.0/(2.0 + M_PI))
+            c1 = 4.0*T
+            c2 = M_PI*c1
+            c3 = (M_PI*M_PI)
+            c4 = sin(c2)
+            c5 = cos(c2)
+            out[0] = (1.0/2.0)*c0*(c1*c3 + c2 - c3 + c4)/M_PI
+            out[1] = 2.0*c0*(c5 + 1.0 + M_PI)
+            out[2] = -8.0*M_PI*c0*c4
+            out[3] = -32.0*c0*c3*c5
+        elif seg == 4:
+            c0 = (1.0/(2.0 + M_PI))
+            c1 = (M_PI*M_PI)
+            c2 = 2.0 + 7.0*M_PI
+            out[0] = -1.0/16.0*c0*(64.0*(T*T)*c1 - 16.0*M_PI*T*c2 + 33.0*c1 - 8.0)/M_PI
+            out[1] = -c0*(8.0*M_PI*T - c2)
+            out[2] = -8.0*M_PI*c0
+            out[3] = 0.0
+        elif seg == 5:
+            c0 = (1.0/(2.0 + M_PI))
+            c1 = (M_PI*M_PI)
+            c2 = M_PI*T
+            c3 = 4.0*c2
+            c4 = sin(c3)
+            c5 = cos(c3)
+            out[0] = c0*(c1 + 2.0*c2 - 1.0/2.0*c4)/M_PI
+            out[1] = -2.0*c0*(c5 - 1.0)
+            out[2] = 8.0*M_PI*c0*c4
+            out[3] = 32.0*c0*c1*c5
+        elif seg == 6:
+            out[0] = 1.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        else:
+            out[0] = out[1] = out[2] = out[3] = 0.0
+    else:
+        out[0] = out[1] = out[2] = out[3] = 0.0

@@ -1,0 +1,154 @@
+# cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
+#
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
+# edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+#
+# Python access to the generated cam-law library (camlaws.pxd): evaluation on
+# arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.
+
+import json
+
+import numpy as np
+
+from libc.math cimport M_PI
+
+_LAWS_JSON = """
+[
+ {
+  "amplitude": "2*pi",
+  "bounds": [
+   "0.0",
+   "1.0"
+  ],
+  "code": 0,
+  "key": "cycloidal",
+  "parameter": null,
+  "reference": "(A.2.8)-(A.2.11)",
+  "title": "Cycloidal"
+ },
+ {
+  "amplitude": "pi**2/(2*(-4*theta + pi*theta + 1))",
+  "bounds": [
+   "0.0",
+   "par",
+   "1.0 - par",
+   "1.0"
+  ],
+  "code": 1,
+  "key": "modified-sine",
+  "parameter": {
+   "default": 0.1,
+   "doc": "fraction of the rise to the acceleration peak (thesis fig. A.2.3: 0.1)",
+   "high": 0.5,
+   "low": 0.0,
+   "name": "theta"
+  },
+  "reference": "(A.2.17)-(A.2.20)",
+  "title": "Modified sine"
+ },
+ {
+  "amplitude": "60",
+  "bounds": [
+   "0.0",
+   "1.0"
+  ],
+  "code": 2,
+  "key": "3-4-5",
+  "parameter": null,
+  "reference": "H = 10 T^3 - 15 T^4 + 6 T^5",
+  "title": "3-4-5 polynomial"
+ },
+ {
+  "amplitude": "pi**2/2",
+  "bounds": [
+   "0.0",
+   "1.0"
+  ],
+  "code": 3,
+  "key": "simple-harmonic",
+  "parameter": null,
+  "reference": "H = (1 - cos pi T)/2",
+  "title": "Simple harmonic"
+ },
+ {
+  "amplitude": "4",
+  "bounds": [
+   "0.0",
+   "1.0/2.0",
+   "1.0"
+  ],
+  "code": 4,
+  "key": "parabolic",
+  "parameter": null,
+  "reference": "H'' = +-4",
+  "title": "Parabolic (constant acceleration)"
+ },
+ {
+  "amplitude": "420",
+  "bounds": [
+   "0.0",
+   "1.0"
+  ],
+  "code": 5,
+  "key": "4-5-6-7",
+  "parameter": null,
+  "reference": "H = 35 T^4 - 84 T^5 + 70 T^6 - 20 T^7",
+  "title": "4-5-6-7 polynomial"
+ },
+ {
+  "amplitude": "8*pi/(2 + pi)",
+  "bounds": [
+   "0.0",
+   "1.0/8.0",
+   "3.0/8.0",
+   "5.0/8.0",
+   "7.0/8.0",
+   "1.0"
+  ],
+  "code": 6,
+  "key": "modified-trapezoid",
+  "parameter": null,
+  "reference": "jerk-limited, eighths of the rise",
+  "title": "Modified trapezoid"
+ }
+]
+"""
+LAWS = json.loads(_LAWS_JSON)
+"""Per law: key, code, title, reference, bounds (as code), parameter, amplitude."""
+
+
+def evaluate(int law, double par, T):
+    """Array (len(T), 4) of H, H', H'', H''' of `law` at the times T."""
+    cdef double[::1] t = np.ascontiguousarray(T, dtype=float).ravel()
+    res = np.empty((t.shape[0], 4))
+    cdef double[:, ::1] r = res
+    cdef Py_ssize_t i
+    cdef int seg
+    for i in range(t.shape[0]):
+        seg = camlaw_segment(law, par, t[i])
+        camlaw_eval(law, par, seg, t[i], &r[i, 0])
+    return res
+
+
+def segment(int law, double par, double T):
+    """Segment index of `law` at T (see camlaws.pxd)."""
+    return camlaw_segment(law, par, T)
+
+
+def breakpoints(int law, double par):
+    """Breakpoints 0 = b0 < ... < bK = 1 of the rise of `law`."""
+    if law == 0:  # cycloidal
+        return [0.0, 1.0]
+    elif law == 1:  # modified-sine
+        return [0.0, par, 1.0 - par, 1.0]
+    elif law == 2:  # 3-4-5
+        return [0.0, 1.0]
+    elif law == 3:  # simple-harmonic
+        return [0.0, 1.0]
+    elif law == 4:  # parabolic
+        return [0.0, 1.0/2.0, 1.0]
+    elif law == 5:  # 4-5-6-7
+        return [0.0, 1.0]
+    elif law == 6:  # modified-trapezoid
+        return [0.0, 1.0/8.0, 3.0/8.0, 5.0/8.0, 7.0/8.0, 1.0]
+    raise ValueError(f"unknown cam law code {law}")

@@ -1,0 +1,225 @@
+# cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
+#
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
+# edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+#
+# CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
+# Source hash: sha256:d5b85774b460decfc7e4da9721ddbcf210c6ed2381fcfcd27e913b5dd4c4d6bb
+#
+# CAMSHAFT-1: one DOF with variable fictitious angular velocity, thesis ch. 4.
+#
+# Equation of motion (4.15)-(4.17), dimensionless (sec. 4.3.2):
+#
+#     X'' = (2 pi/tau)^2 (H - X) / (1 + H'^2 Fa),   H = H(T), H' = dH/dT.
+#
+# Derived from energies: the shaft's tangential flexibility puts the stiffness
+# c_tan in series with the constant part c_c through the slope tan(alpha)
+# (4.2)-(4.5), so the overall stiffness is c = c_c/(1 + H'^2 Fa) (4.18) with
+# the shaft stiffness factor Fa = (c_c/c_tan) tan^2(alpha_me) (4.14), under the
+# thesis's assumption dh'/dbeta = h'/w_s (4.8) and the constant pitch radius
+# (4.1).  Divided by m h_m'^2/t_m^2 the energies are
+#
+#     kinetic energy     1/2 X'^2
+#     potential energy   1/2 c(T) (H - X)^2,   c(T) = (2 pi/tau)^2/(1 + H'^2 Fa)
+#     dissipation        q (2 pi/tau) (X' - H')^2   (optional; the thesis has q = 0
+#                                                  during the rise, sec. 4.2.4)
+#
+# c depends on T only, so Lagrange's equations give (4.15) exactly.  At Fa = 0
+# the model is the one-DOF model of ch. 3; the stiffness dip is 1 + 4 Fa (4.19)
+# for the cycloid.
+
+import json
+
+from cpython.pycapsule cimport PyCapsule_New
+from libc.math cimport M_PI
+
+from camdyn.runtime.abi cimport CAMDYN_ABI, Ctx, ModelC
+from camdyn.generated.camlaws cimport camlaw_eval, camlaw_segment
+
+
+
+cdef void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
+    """dy/dt: q' and q'' from M q'' = f."""
+    cdef double tau = ctx.p[0]
+    cdef double Fa = ctx.p[1]
+    cdef double q = ctx.p[2]
+    cdef double X = y[0]
+    cdef double Xd = y[1]
+    cdef double cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, cam0)
+
+    cdef double s0 = Fa*(cam0[1]*cam0[1]) + 1.0
+    dy[0] = Xd
+    dy[1] = -4.0*M_PI*(q*s0*tau*(Xd - cam0[1]) + M_PI*(X - cam0[0]))/(s0*(tau*tau))
+
+
+cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nogil:
+    """The named outputs (Xdd, U, H, Hd, Hdd, c_rel)."""
+    cdef double dy[2]
+    rhs(t, y, dy, ctx)
+    cdef double tau = ctx.p[0]
+    cdef double Fa = ctx.p[1]
+    cdef double q = ctx.p[2]
+    cdef double X = y[0]
+    cdef double Xd = y[1]
+    cdef double Xdd = dy[1]
+    cdef double cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, cam0)
+
+    out[0] = dy[1]  # Xdd
+    out[1] = X - cam0[0]  # U
+    out[2] = cam0[0]  # H
+    out[3] = cam0[1]  # Hd
+    out[4] = cam0[2]  # Hdd
+    out[5] = (1.0/(Fa*(cam0[1]*cam0[1]) + 1.0))  # c_rel
+
+
+cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
+    """Segment of every cam input at (t, y)."""
+    cdef double tau = ctx.p[0]
+    cdef double Fa = ctx.p[1]
+    cdef double q = ctx.p[2]
+    cdef double X = y[0]
+    cdef double Xd = y[1]
+
+    ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], t)
+
+
+def cam_time_affine(p):
+    """Per cam input, (a, b) with argument a t + b, or None when it depends on the state."""
+    cdef double tau = p[0]
+    cdef double Fa = p[1]
+    cdef double q = p[2]
+    return [(1.0, 0.0)]
+
+
+cdef ModelC _model
+_model.abi_version = CAMDYN_ABI
+_model.n_q = 1
+_model.n_states = 2
+_model.n_params = 3
+_model.n_outputs = 6
+_model.n_families = 1
+_model.n_instances = 1
+_model.n_work = 0
+_model.rhs = rhs
+_model.outputs = outputs
+_model.update_modes = update_modes
+
+MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
+"""The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""
+
+_MANIFEST_JSON = """
+{
+ "cam_families": [
+  "H"
+ ],
+ "cam_instances": [
+  {
+   "argument": "T",
+   "family": "H",
+   "time_affine": true
+  }
+ ],
+ "n_q": 1,
+ "name": "camshaft1",
+ "options": [],
+ "outputs": [
+  {
+   "doc": "follower acceleration X''",
+   "name": "Xdd",
+   "unit": "h_m'/t_m^2"
+  },
+  {
+   "doc": "positional error X - H",
+   "name": "U",
+   "unit": "h_m'"
+  },
+  {
+   "doc": "nominal displacement (cam law)",
+   "name": "H",
+   "unit": "h_m'"
+  },
+  {
+   "doc": "nominal velocity H'",
+   "name": "Hd",
+   "unit": "h_m'/t_m"
+  },
+  {
+   "doc": "nominal acceleration H''",
+   "name": "Hdd",
+   "unit": "h_m'/t_m^2"
+  },
+  {
+   "doc": "overall stiffness over its maximum, c/c_c (4.18)",
+   "name": "c_rel",
+   "unit": "c_c"
+  }
+ ],
+ "parameters": [
+  {
+   "default": 0.15,
+   "doc": "T_e/t_m at zero slope (4.11), (4.12)",
+   "high": 10.0,
+   "low": 0.0,
+   "name": "tau",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < tau <= 10",
+   "unit": "1"
+  },
+  {
+   "default": 2.0,
+   "doc": "shaft stiffness factor (c_c/c_tan) tan^2 alpha_me (4.14)",
+   "high": 100.0,
+   "low": 0.0,
+   "name": "Fa",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= Fa <= 100",
+   "unit": "1"
+  },
+  {
+   "default": 0.0,
+   "doc": "relative damping, d = 2 q sqrt(m c_c) (6.47)",
+   "high": 1.0,
+   "low": 0.0,
+   "name": "q",
+   "open_high": true,
+   "open_low": false,
+   "range": "0 <= q < 1",
+   "unit": "1"
+  }
+ ],
+ "reference": "thesis (4.15)-(4.18)",
+ "residual": {
+  "acceleration": "Xdd",
+  "error": "U",
+  "rise_end": 1.0
+ },
+ "source_hash": "sha256:d5b85774b460decfc7e4da9721ddbcf210c6ed2381fcfcd27e913b5dd4c4d6bb",
+ "states": [
+  {
+   "doc": "follower position over the stroke, X = x/h_m'",
+   "initial": 0.0,
+   "name": "X",
+   "scale": 1.0,
+   "unit": "h_m'"
+  },
+  {
+   "doc": "rate of X",
+   "initial": 0.0,
+   "name": "Xd",
+   "scale": 1.0,
+   "unit": "h_m'/t_m"
+  }
+ ],
+ "time": {
+  "name": "T",
+  "unit": "t_m"
+ },
+ "title": "CAMSHAFT-1, one DOF with variable fictitious angular velocity"
+}
+"""
+MANIFEST = json.loads(_MANIFEST_JSON)
+"""States, parameters (defaults, units, ranges), outputs, cam inputs, source hash."""

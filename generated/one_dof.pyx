@@ -1,0 +1,199 @@
+# cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
+#
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
+# edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+#
+# One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
+# Source hash: sha256:c61d7566731aaf1ae35062c3545163505dc499ea028b3eb3a8af4536399dedcb
+#
+# One DOF with constant fictitious angular velocity, thesis ch. 3, fig. 3.2.
+#
+# Equation of motion (3.1), m x'' + c x = c h'(t), in the dimensionless form of
+# sec. 3.3 (T = t/t_m, X = x/h_m', H = h'/h_m', tau = T_e/t_m (3.3)):
+#
+#     X'' = (2 pi/tau)^2 (H - X).
+#
+# It is derived from energies, the Lagrangian divided by m h_m'^2/t_m^2:
+#
+#     kinetic energy     1/2 X'^2
+#     potential energy   1/2 (2 pi/tau)^2 (H - X)^2      spring c between cam and mass
+#     dissipation        q (2 pi/tau) (X' - H')^2         d = 2 q sqrt(m c) (6.47)
+#
+# Reading taken: the damper acts in parallel with the spring (on X' - H'), as
+# the linkage's own damping does; during the dwell H' = 0 and it is the plain
+# viscous damper of the decay law (3.7).  q = 0 (the default) is the undamped
+# model of (3.4)-(3.6).
+
+import json
+
+from cpython.pycapsule cimport PyCapsule_New
+from libc.math cimport M_PI
+
+from camdyn.runtime.abi cimport CAMDYN_ABI, Ctx, ModelC
+from camdyn.generated.camlaws cimport camlaw_eval, camlaw_segment
+
+
+
+cdef void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
+    """dy/dt: q' and q'' from M q'' = f."""
+    cdef double tau = ctx.p[0]
+    cdef double q = ctx.p[1]
+    cdef double X = y[0]
+    cdef double Xd = y[1]
+    cdef double cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, cam0)
+
+    dy[0] = Xd
+    dy[1] = -4.0*M_PI*(q*tau*(Xd - cam0[1]) + M_PI*(X - cam0[0]))/(tau*tau)
+
+
+cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nogil:
+    """The named outputs (Xdd, U, H, Hd, Hdd)."""
+    cdef double dy[2]
+    rhs(t, y, dy, ctx)
+    cdef double tau = ctx.p[0]
+    cdef double q = ctx.p[1]
+    cdef double X = y[0]
+    cdef double Xd = y[1]
+    cdef double Xdd = dy[1]
+    cdef double cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, cam0)
+
+    out[0] = dy[1]  # Xdd
+    out[1] = X - cam0[0]  # U
+    out[2] = cam0[0]  # H
+    out[3] = cam0[1]  # Hd
+    out[4] = cam0[2]  # Hdd
+
+
+cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
+    """Segment of every cam input at (t, y)."""
+    cdef double tau = ctx.p[0]
+    cdef double q = ctx.p[1]
+    cdef double X = y[0]
+    cdef double Xd = y[1]
+
+    ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], t)
+
+
+def cam_time_affine(p):
+    """Per cam input, (a, b) with argument a t + b, or None when it depends on the state."""
+    cdef double tau = p[0]
+    cdef double q = p[1]
+    return [(1.0, 0.0)]
+
+
+cdef ModelC _model
+_model.abi_version = CAMDYN_ABI
+_model.n_q = 1
+_model.n_states = 2
+_model.n_params = 2
+_model.n_outputs = 5
+_model.n_families = 1
+_model.n_instances = 1
+_model.n_work = 0
+_model.rhs = rhs
+_model.outputs = outputs
+_model.update_modes = update_modes
+
+MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
+"""The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""
+
+_MANIFEST_JSON = """
+{
+ "cam_families": [
+  "H"
+ ],
+ "cam_instances": [
+  {
+   "argument": "T",
+   "family": "H",
+   "time_affine": true
+  }
+ ],
+ "n_q": 1,
+ "name": "one_dof",
+ "options": [],
+ "outputs": [
+  {
+   "doc": "follower acceleration X''",
+   "name": "Xdd",
+   "unit": "h_m'/t_m^2"
+  },
+  {
+   "doc": "positional error u/h_m' = X - H (3.4)",
+   "name": "U",
+   "unit": "h_m'"
+  },
+  {
+   "doc": "nominal displacement (cam law)",
+   "name": "H",
+   "unit": "h_m'"
+  },
+  {
+   "doc": "nominal velocity H'",
+   "name": "Hd",
+   "unit": "h_m'/t_m"
+  },
+  {
+   "doc": "nominal acceleration H''",
+   "name": "Hdd",
+   "unit": "h_m'/t_m^2"
+  }
+ ],
+ "parameters": [
+  {
+   "default": 0.15,
+   "doc": "period of natural vibration over cam rise time, T_e/t_m (3.3)",
+   "high": 1.0,
+   "low": 0.0,
+   "name": "tau",
+   "open_high": true,
+   "open_low": true,
+   "range": "0 < tau < 1",
+   "unit": "1"
+  },
+  {
+   "default": 0.0,
+   "doc": "relative damping, d = 2 q sqrt(m c) (6.47)",
+   "high": 1.0,
+   "low": 0.0,
+   "name": "q",
+   "open_high": true,
+   "open_low": false,
+   "range": "0 <= q < 1",
+   "unit": "1"
+  }
+ ],
+ "reference": "thesis (3.1)-(3.7), fig. 3.2",
+ "residual": {
+  "acceleration": "Xdd",
+  "error": "U",
+  "rise_end": 1.0
+ },
+ "source_hash": "sha256:c61d7566731aaf1ae35062c3545163505dc499ea028b3eb3a8af4536399dedcb",
+ "states": [
+  {
+   "doc": "follower position over the stroke, X = x/h_m'",
+   "initial": 0.0,
+   "name": "X",
+   "scale": 1.0,
+   "unit": "h_m'"
+  },
+  {
+   "doc": "rate of X",
+   "initial": 0.0,
+   "name": "Xd",
+   "scale": 1.0,
+   "unit": "h_m'/t_m"
+  }
+ ],
+ "time": {
+  "name": "T",
+  "unit": "t_m"
+ },
+ "title": "One DOF, constant fictitious angular velocity"
+}
+"""
+MANIFEST = json.loads(_MANIFEST_JSON)
+"""States, parameters (defaults, units, ranges), outputs, cam inputs, source hash."""

@@ -1,0 +1,1 @@
+"""Compiled integrators, simulation API, post-processing and command line."""

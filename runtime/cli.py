@@ -1,0 +1,183 @@
+"""The ``camdyn`` command line.
+
+    camdyn derive [--check] [--out DIR]     regenerate generated/ (or check it)
+    camdyn residual --model M --tau T ...   residual vibration of one rise
+    camdyn run [SCENE.toml] [--out DIR]     the main job: report and charts
+
+Bad arguments end in one line on stderr naming the argument, and status 2.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from pathlib import Path
+
+from .errors import CamdynInputError, SimulationError
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse, but errors are one line (no usage block) with status 2."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def _fail(prog: str, message: str) -> int:
+    print(f"{prog}: error: {message}", file=sys.stderr)
+    return 2
+
+
+# -- camdyn derive ------------------------------------------------------------------
+
+def _cmd_derive(args) -> int:
+    from camdyn.derive import generate
+
+    try:
+        out = Path(args.out) if args.out else generate.project_root() / "generated"
+    except FileNotFoundError as exc:
+        return _fail("camdyn derive", str(exc))
+    if args.check:
+        problems = generate.check(out)
+        if problems:
+            print("generated/ is stale; run `camdyn derive` and rebuild:", file=sys.stderr)
+            print("\n".join(problems), file=sys.stderr)
+            return 1
+        print(f"{out}: up to date")
+        return 0
+    changed = generate.write(out)
+    for name in changed:
+        print(f"wrote {out / name}")
+    if changed:
+        print("rebuild the extensions: pip install -e . (or make build)")
+    else:
+        print(f"{out}: unchanged")
+    return 0
+
+
+# -- camdyn residual ----------------------------------------------------------------
+
+_MODELS = {"one-dof": "one_dof", "camshaft1": "camshaft1"}
+
+
+def residual_run(model: str, tau: float, fa: float | None, law: str, theta: float | None,
+                 method: str, rtol: float | None, step: float | None, q: float = 0.0,
+                 t_end: float = 3.0) -> dict:
+    """One rise and dwell; the residual figures with the run's settings, as a dict."""
+    from . import closed_forms
+    from .residual import residual
+    from .simulate import simulate
+
+    params = {"tau": tau, "q": q}
+    if model == "camshaft1":
+        params["Fa"] = 0.0 if fa is None else fa
+    elif fa not in (None, 0.0):
+        raise CamdynInputError("Fa applies to camshaft1 only: the one-dof model has constant fictitious angular velocity "
+                               "(Fa = 0); use --model camshaft1 for a flexible shaft")
+    if method in ("rk4", "koster") and step is None:
+        step = 0.01 * tau  # the thesis's fine step (sec. 4.4.2)
+    if method == "dp54" and rtol is None and step is None:
+        rtol = 1e-10
+    if not t_end > 1.0:
+        raise CamdynInputError(f"--t-end={t_end:g} must exceed the end of the rise, T = 1")
+    res = simulate(_MODELS[model], params, t_end, method, rtol=rtol, step=step, law=law,
+                   theta=theta)
+    fig = residual(res)
+    out = {"model": model, **res.params, "law": law, "method": method, "t_end": t_end}
+    if theta is not None or law == "modified-sine":
+        out["theta"] = res.laws["H"].par
+    out.update(rtol=rtol, step=step)
+    out.update(fig.as_dict())
+    out.update({k: res.stats[k] for k in ("n_steps", "n_rejected", "n_rhs", "cpu_seconds")})
+    if law == "cycloidal" and params.get("Fa", 0.0) == 0.0 and q == 0.0:
+        out["U0_closed_form"] = closed_forms.U0(tau)
+        out["U0dd_closed_form"] = closed_forms.U0dd(tau)
+    return out
+
+
+def _cmd_residual(args) -> int:
+    prog = "camdyn residual"
+    if args.rtol is not None and args.step is not None:
+        return _fail(prog, "argument --step: not allowed with argument --rtol")
+    try:
+        out = residual_run(args.model, args.tau, args.fa, args.law, args.theta, args.method,
+                           args.rtol, args.step, args.q, args.t_end)
+    except CamdynInputError as exc:
+        return _fail(prog, _name_argument(str(exc)))
+    except SimulationError as exc:
+        return _fail(prog, str(exc))
+    if args.json:
+        print(json.dumps(out))
+    else:
+        width = max(len(k) for k in out)
+        for k, v in out.items():
+            print(f"{k:<{width}}  {v:.6g}" if isinstance(v, float) else f"{k:<{width}}  {v}")
+    return 0
+
+
+def _name_argument(message: str) -> str:
+    """Prefix the command-line spelling of the parameter a message is about."""
+    flags = {"tau": "--tau", "Fa": "--fa", "q": "--q", "theta": "--theta", "rtol": "--rtol",
+             "step": "--step", "t_end": "--t-end"}
+    head = message.split("=", 1)[0].split(" ", 1)[0]
+    if head in flags and not message.startswith("--"):
+        return f"argument {flags[head]}: {message}"
+    return message
+
+
+# -- camdyn run ---------------------------------------------------------------------
+
+def _cmd_run(args) -> int:
+    from . import report
+
+    try:
+        scene = report.load_scene(args.scene)
+        path = report.main_job(scene, Path(args.out), progress=not args.quiet)
+    except CamdynInputError as exc:
+        return _fail("camdyn run", str(exc))
+    print(f"report: {path}")
+    return 0
+
+
+# -- parser -------------------------------------------------------------------------
+
+def build_parser() -> argparse.ArgumentParser:
+    from . import laws, methods
+
+    top = _Parser(prog="camdyn", description="Cam-mechanism dynamics: derive, generate, simulate, check.")
+    sub = top.add_subparsers(dest="command", required=True, parser_class=_Parser)
+
+    d = sub.add_parser("derive", help="regenerate generated/ from the model declarations")
+    d.add_argument("--check", action="store_true", help="exit 1 when generated/ is stale")
+    d.add_argument("--out", help="target folder (default: generated/ of this checkout)")
+    d.set_defaults(func=_cmd_derive)
+
+    r = sub.add_parser("residual", help="residual vibration after one rise (thesis ch. 3, 4)")
+    r.add_argument("--model", required=True, choices=sorted(_MODELS))
+    r.add_argument("--tau", required=True, type=float, help="T_e/t_m (3.3), (4.12)")
+    r.add_argument("--fa", type=float, default=None, help="shaft stiffness factor Fa (4.14), camshaft1")
+    r.add_argument("--q", type=float, default=0.0, help="relative damping q (6.47), default 0")
+    r.add_argument("--law", default="cycloidal", choices=laws.NAMES)
+    r.add_argument("--theta", type=float, default=None, help="shape parameter of the modified sine")
+    r.add_argument("--method", default="dp54", choices=sorted(methods.METHODS))
+    r.add_argument("--rtol", type=float, default=None, help="dp54 tolerance (default 1e-10)")
+    r.add_argument("--step", type=float, default=None, help="rk4/koster step in T (default tau/100)")
+    r.add_argument("--t-end", type=float, default=3.0, help="end of the dwell, in T (default 3)")
+    r.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    r.set_defaults(func=_cmd_residual)
+
+    m = sub.add_parser("run", help="the main job on a scene (default: the embedded one)")
+    m.add_argument("scene", nargs="?", default=None, help="scene TOML (default: embedded)")
+    m.add_argument("--out", default="out", help="folder for report and charts (default out/)")
+    m.add_argument("--quiet", action="store_true", help="no progress lines")
+    m.set_defaults(func=_cmd_run)
+    return top
+
+
+def main(argv=None) -> int:
+    args = build_parser().parse_args(argv)
+    return args.func(args)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

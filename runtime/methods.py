@@ -1,0 +1,112 @@
+"""Integration methods: one small class each, checked options, one compiled loop.
+
+The loops themselves are in :mod:`camdyn.runtime._integrate`; these classes
+only validate what the user asked for and say which loop to run with which
+step control.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from . import _integrate
+from .errors import CamdynInputError
+
+
+def _positive(name: str, value, upper: float | None = None) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise CamdynInputError(f"{name} must be a number, got {value!r}") from None
+    if not (math.isfinite(v) and v > 0 and (upper is None or v < upper)):
+        rng = f"0 < {name}" + (f" < {upper:g}" if upper is not None else "")
+        raise CamdynInputError(f"{name}={value} is out of range: {rng}")
+    return v
+
+
+@dataclass(frozen=True)
+class RK4:
+    """Classical fourth-order Runge-Kutta with a fixed step.
+
+    ``step`` is the largest step; each interval between breakpoints is cut
+    into equal steps no longer than it, so that steps land on breakpoints.
+    """
+
+    step: float
+    code = _integrate.RK4
+    name = "rk4"
+    adaptive = False
+
+    def __post_init__(self):
+        object.__setattr__(self, "step", _positive("step", self.step))
+
+
+@dataclass(frozen=True)
+class Koster:
+    """The thesis's CAMSHAFT-1 scheme (4.23)-(4.31), fixed step.
+
+    The acceleration is held constant over a step at its value at mid-step,
+    evaluated at the mid-step position X + dX, dX = X' theta + X'' theta^2/2
+    (4.23), (4.24) with theta = dT/2; the thesis eliminates dX by hand (4.25),
+    here the mid-step equation is solved by fixed-point iteration to rounding
+    error, which is the same for the linear equation (4.15).  Then
+    dX' = X'' dT, dX = (X' + dX'/2) dT (4.28)-(4.31).  The thesis finds it
+    stable for dT <= 0.1 tau.  Second-order models only.
+    """
+
+    step: float
+    code = _integrate.KOSTER
+    name = "koster"
+    adaptive = False
+
+    def __post_init__(self):
+        object.__setattr__(self, "step", _positive("step", self.step))
+
+
+@dataclass(frozen=True)
+class DP54:
+    """Dormand-Prince 5(4), local extrapolation, PI step-size control, dense output.
+
+    Error per step is measured in the RMS norm against atol + rtol |y|;
+    ``atol`` defaults to rtol times the state scales of the model's manifest
+    times 1e-3.
+    """
+
+    rtol: float = 1e-8
+    atol: float | None = None
+    first_step: float | None = None
+    max_step: float = math.inf
+    code = _integrate.DP54
+    name = "dp54"
+    adaptive = True
+
+    def __post_init__(self):
+        object.__setattr__(self, "rtol", _positive("rtol", self.rtol, 1.0))
+        if self.rtol < 1e-14:
+            raise CamdynInputError(f"rtol={self.rtol:g} is out of range: 1e-14 <= rtol < 1")
+        if self.atol is not None:
+            object.__setattr__(self, "atol", _positive("atol", self.atol))
+        if self.first_step is not None:
+            object.__setattr__(self, "first_step", _positive("first_step", self.first_step))
+        if self.max_step != math.inf:
+            object.__setattr__(self, "max_step", _positive("max_step", self.max_step))
+
+
+METHODS = {"rk4": RK4, "dp54": DP54, "koster": Koster}
+
+
+def make(name: str, *, rtol=None, atol=None, step=None):
+    """A method from its name and the options given on a command line or API call."""
+    if name not in METHODS:
+        raise CamdynInputError(f"unknown method {name!r}; choose one of {', '.join(METHODS)}")
+    cls = METHODS[name]
+    if cls is DP54:
+        if step is not None:
+            raise CamdynInputError("step applies to the fixed-step methods rk4 and koster; "
+                                   "dp54 takes rtol")
+        return DP54(rtol=1e-8 if rtol is None else rtol, atol=atol)
+    if rtol is not None or atol is not None:
+        raise CamdynInputError(f"rtol/atol apply to dp54; {name} takes step")
+    if step is None:
+        raise CamdynInputError(f"method {name} needs step")
+    return cls(step=step)
