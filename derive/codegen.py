@@ -92,7 +92,7 @@ def _symbols(eq: Equations, exprs) -> _Symbols:
             arg = arg.subs(old, new)
         i = inst_index[(a.family, sp.srepr(arg))]
         s = sp.Symbol(f"_cam{i}_{a.order}", real=True)
-        names[s] = f"cam{i}[{a.order}]"
+        names[s] = f"_cam{i}[{a.order}]"
         cam_subs.append((a, s))
     # cam functions are replaced first: their arguments contain coordinates
     return _Symbols(cam_subs + subs, names, instances, orders)
@@ -141,11 +141,12 @@ def model_context(eq: Equations) -> dict:
         rhs_exprs = [sp.simplify(e) if M[i, i] != 1 else e for i, e in enumerate(rhs_exprs)]
     else:
         rhs_exprs = list(M) + list(f)
-    rhs_lines, rhs_code, used_rhs = cse_block(rhs_exprs, sy.names)
+    rhs_lines, rhs_code, used_rhs = cse_block(rhs_exprs, sy.names, prefix="_s")
 
     # outputs: q'' is taken from dy, computed first by rhs()
     out_exprs = [_plain(o.expr, sy) for o in m.outputs]
-    out_lines, out_code, used_out = cse_block(out_exprs, sy.names | {s: f"dy[{n + i}]" for i, s in enumerate(qdd_syms)})
+    out_lines, out_code, used_out = cse_block(
+        out_exprs, sy.names | {s: f"dy[{n + i}]" for i, s in enumerate(qdd_syms)}, prefix="_s")
 
     printer = CythonPrinter(sy.names)
     instances = []

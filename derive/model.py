@@ -14,15 +14,23 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from .printer import MATH_FUNCTIONS
+
 _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
+# names the generated code itself uses (its own locals start with "_"), C and
+# Cython keywords, and the libc math functions it imports
 _RESERVED = set(keyword.kwlist) | {
-    "y", "dy", "out", "ctx", "p", "t", "cam", "int", "double", "float", "char", "long",
-    "const", "cdef", "cpdef", "struct", "void", "inline", "nogil", "work", "M", "f",
+    "y", "dy", "out", "ctx", "p", "t", "json", "MODEL", "MANIFEST",
+    "int", "double", "float", "char", "long", "short", "signed", "unsigned", "const",
+    "static", "extern", "register", "volatile", "auto", "restrict", "struct", "union",
+    "enum", "typedef", "sizeof", "goto", "switch", "case", "default", "void", "inline",
+    "cdef", "cpdef", "ctypedef", "cimport", "include", "nogil", "gil", "public", "api",
+    "readonly", "NULL", "DEF", "IF", "ELIF", "ELSE", "M_PI", *MATH_FUNCTIONS,
 }
 
 
 def _check_name(name: str, what: str) -> str:
-    if not _NAME.match(name) or name in _RESERVED or re.match(r"^s\d+$", name):
+    if not _NAME.match(name) or name in _RESERVED:
         raise ValueError(f"{what} name {name!r} is not usable in generated code")
     return name
 

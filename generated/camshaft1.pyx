@@ -45,12 +45,12 @@ cdef void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
     cdef double q = ctx.p[2]
     cdef double X = y[0]
     cdef double Xd = y[1]
-    cdef double cam0[4]  # H(T) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, cam0)
+    cdef double _cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
-    cdef double s0 = Fa*(cam0[1]*cam0[1]) + 1.0
+    cdef double _s0 = Fa*(_cam0[1]*_cam0[1]) + 1.0
     dy[0] = Xd
-    dy[1] = -4.0*M_PI*(q*s0*tau*(Xd - cam0[1]) + M_PI*(X - cam0[0]))/(s0*(tau*tau))
+    dy[1] = -4.0*M_PI*(_s0*q*tau*(Xd - _cam0[1]) + M_PI*(X - _cam0[0]))/(_s0*(tau*tau))
 
 
 cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nogil:
@@ -63,15 +63,15 @@ cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nog
     cdef double X = y[0]
     cdef double Xd = y[1]
     cdef double Xdd = dy[1]
-    cdef double cam0[4]  # H(T) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, cam0)
+    cdef double _cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
     out[0] = dy[1]  # Xdd
-    out[1] = X - cam0[0]  # U
-    out[2] = cam0[0]  # H
-    out[3] = cam0[1]  # Hd
-    out[4] = cam0[2]  # Hdd
-    out[5] = (1.0/(Fa*(cam0[1]*cam0[1]) + 1.0))  # c_rel
+    out[1] = X - _cam0[0]  # U
+    out[2] = _cam0[0]  # H
+    out[3] = _cam0[1]  # Hd
+    out[4] = _cam0[2]  # Hdd
+    out[5] = (1.0/(Fa*(_cam0[1]*_cam0[1]) + 1.0))  # c_rel
 
 
 cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:

@@ -1,0 +1,141 @@
+"""Cam laws (thesis App. 2): derived pieces against the printed formulas and values."""
+import numpy as np
+import pytest
+import sympy as sp
+
+from camdyn.derive import camlaws
+from camdyn.derive.camlaws import LAWS, T, theta
+from camdyn.runtime import laws as rt_laws
+from camdyn.runtime.errors import CamdynInputError
+
+from .conftest import matches_printed
+
+pi = sp.pi
+
+
+def test_cycloid_matches_A_2_8_to_A_2_10():
+    law = LAWS["cycloidal"]
+    (H,) = law.rise
+    assert sp.simplify(H - (T - sp.sin(2 * pi * T) / (2 * pi))) == 0          # (A.2.10)
+    assert sp.simplify(H.diff(T) - (1 - sp.cos(2 * pi * T))) == 0             # (A.2.9)
+    assert sp.simplify(H.diff(T, 2) - 2 * pi * sp.sin(2 * pi * T)) == 0       # (A.2.8)
+    assert sp.simplify(law.amplitude - 2 * pi) == 0
+
+
+def test_cycloid_jerk_A_2_16():
+    """H''' = 4 pi^2 cos 2 pi T: +39.4 at T = 0 and 1, -39.4 at T = 1/2 (printed digits)."""
+    jerk = LAWS["cycloidal"].rise[0].diff(T, 3)
+    assert matches_printed(float(jerk.subs(T, 0)), "39.4")   # 4 pi^2 = 39.478, truncated
+    assert matches_printed(float(jerk.subs(T, 1)), "39.4")
+    assert matches_printed(float(jerk.subs(T, sp.Rational(1, 2))), "-39.4")
+    assert not matches_printed(float(jerk.subs(T, 0)), "39.6")
+
+
+def test_cycloid_torque_maximum_at_one_third_A_2_12_to_A_2_14():
+    """M ~ H' H'' (A.2.12) has dM/dT = 0 at T = 0, 1/3, 2/3, 1 and its maximum at 1/3."""
+    H = LAWS["cycloidal"].rise[0]
+    M = H.diff(T) * H.diff(T, 2)
+    stationary = sp.solveset(sp.simplify(M.diff(T)), T, sp.Interval(0, 1))
+    assert {sp.Rational(0), sp.Rational(1, 3), sp.Rational(2, 3), sp.Rational(1)} <= set(stationary)
+    grid = np.linspace(0, 1, 30001)
+    Mn = sp.lambdify(T, M)(grid)
+    assert abs(grid[np.argmax(Mn)] - 1 / 3) < 1e-4
+    # (A.2.14): M_max = (3 sqrt 3 / 2) pi  m h_m^2/(w_s t_m^3) in these units
+    assert float(M.subs(T, sp.Rational(1, 3))) == pytest.approx(3 * np.sqrt(3) / 2 * np.pi, rel=1e-12)
+
+
+def test_modified_sine_peak_A_2_17_symbolic():
+    """The amplitude fixed by H(1) = 1 is the printed H''max = pi^2/(2 - 8 theta + 2 pi theta)."""
+    law = LAWS["modified-sine"]
+    assert sp.simplify(law.amplitude - pi**2 / (2 - 8 * theta + 2 * pi * theta)) == 0
+    assert matches_printed(float(law.amplitude.subs(theta, sp.Rational(1, 10))), "5.40")  # fig. 8.7
+
+
+def test_modified_sine_velocity_and_displacement_A_2_18_to_A_2_20():
+    """Each derived piece equals the printed velocity (A.2.18)/(A.2.19) and displacement (A.2.20)."""
+    law = LAWS["modified-sine"]
+    Hm = pi**2 / (2 - 8 * theta + 2 * pi * theta)
+    th = theta
+    vel = [2 * th / pi * Hm * (1 - sp.cos(pi * T / (2 * th))),
+           Hm * ((1 - 2 * th) / pi * sp.sin(pi * (T - th) / (1 - 2 * th)) + 2 * th / pi),
+           2 * th / pi * Hm * (1 + sp.cos(pi * (2 * th - 1 + T) / (2 * th)))]
+    disp = [2 * th / pi * Hm * (T - 2 * th / pi * sp.sin(pi * T / (2 * th))),
+            Hm * (-((1 - 2 * th) / pi) ** 2 * sp.cos(pi * (T - th) / (1 - 2 * th))
+                  + 2 * th / pi * T + (1 - 4 * th) / pi**2),
+            Hm * ((2 * th / pi) ** 2 * sp.sin(pi * (2 * th - 1 + T) / (2 * th))
+                  + 2 * th / pi * T + (2 - 8 * th) / pi**2)]
+    for k in range(3):
+        assert sp.simplify(law.rise[k].diff(T) - vel[k]) == 0, f"velocity piece {k}"
+        assert sp.simplify(law.rise[k] - disp[k]) == 0, f"displacement piece {k}"
+
+
+def test_modified_sine_jerk_A_2_21_A_2_22():
+    """theta = 0.1: jerk +85 at T = 0 and 1, -21.2 at T = 0.5 (printed digits)."""
+    law = LAWS["modified-sine"]
+    j = [h.diff(T, 3).subs(theta, sp.Rational(1, 10)) for h in law.rise]
+    assert matches_printed(float(j[0].subs(T, 0)), "85")
+    assert matches_printed(float(j[2].subs(T, 1)), "85")
+    assert matches_printed(float(j[1].subs(T, sp.Rational(1, 2))), "-21.2")
+
+
+def test_modified_sine_at_quarter_is_the_cycloid():
+    """theta = 1/4: the three pieces join into the cycloid (A.2.10)."""
+    law = LAWS["modified-sine"]
+    cyc = T - sp.sin(2 * pi * T) / (2 * pi)
+    for h in law.rise:
+        assert sp.simplify(h.subs(theta, sp.Rational(1, 4)) - cyc) == 0
+
+
+@pytest.mark.parametrize("key", sorted(LAWS))
+def test_rise_boundary_and_continuity(key):
+    """H(0) = 0, H(1) = 1, H'(0) = H'(1) = 0; H and H' continuous at interior breakpoints."""
+    law = LAWS[key]
+    sub = {theta: sp.Rational(1, 10)}
+    H = [h.subs(sub) for h in law.rise]
+    b = [sp.sympify(x).subs(sub) for x in law.bounds]
+    assert sp.simplify(H[0].subs(T, 0)) == 0
+    assert sp.simplify(H[0].diff(T).subs(T, 0)) == 0
+    assert sp.simplify(H[-1].subs(T, 1) - 1) == 0
+    assert sp.simplify(H[-1].diff(T).subs(T, 1)) == 0
+    for k in range(1, len(H)):
+        for order in (0, 1):
+            left = H[k - 1].diff(T, order).subs(T, b[k])
+            right = H[k].diff(T, order).subs(T, b[k])
+            assert sp.simplify(left - right) == 0
+
+
+def test_known_peak_accelerations():
+    """Amplitudes derived from H(1) = 1 against the classical values of each law."""
+    expect = {"3-4-5": 60 * sp.Rational(1, 1), "parabolic": 4, "simple-harmonic": pi**2 / 2,
+              "4-5-6-7": 420, "modified-trapezoid": 8 * pi / (2 + pi)}
+    for key, value in expect.items():
+        assert sp.simplify(LAWS[key].amplitude - value) == 0, key
+    # the classical 3-4-5 displacement
+    assert sp.expand(LAWS["3-4-5"].rise[0] - (10 * T**3 - 15 * T**4 + 6 * T**5)) == 0
+    assert sp.expand(LAWS["4-5-6-7"].rise[0] - (35 * T**4 - 84 * T**5 + 70 * T**6 - 20 * T**7)) == 0
+    # modified trapezoid peak 4.888 (8 pi/(2 + pi))
+    assert float(LAWS["modified-trapezoid"].amplitude) == pytest.approx(4.8881, abs=1e-4)
+
+
+@pytest.mark.parametrize("key", sorted(LAWS))
+def test_generated_library_matches_sympy(key, rng):
+    """The generated cam-law code equals the symbolic law at random T, to 1e-12."""
+    law = LAWS[key]
+    par = 0.1 + 0.3 * rng.random() if law.parameter else None
+    choice = rt_laws.choose(key, par)
+    Ts = np.concatenate([rng.uniform(-0.5, 1.5, 400), law.breakpoints(par)])
+    got = choice.evaluate(Ts)
+    for order in range(4):
+        ref = law.numeric(order, par)(Ts)
+        np.testing.assert_allclose(got[:, order], ref, rtol=1e-12, atol=1e-12 * (1 + np.abs(ref).max()))
+
+
+def test_breakpoints_and_runtime_errors():
+    assert rt_laws.choose("modified-sine", 0.1).breakpoints() == pytest.approx([0, 0.1, 0.9, 1])
+    assert rt_laws.choose("parabolic").breakpoints() == [0, 0.5, 1]
+    with pytest.raises(CamdynInputError, match="theta=0.7 is out of range"):
+        rt_laws.choose("modified-sine", 0.7)
+    with pytest.raises(CamdynInputError, match="unknown cam law 'sine'"):
+        rt_laws.choose("sine")
+    with pytest.raises(ValueError, match="unknown cam law"):
+        camlaws.get("sine")

@@ -1,0 +1,98 @@
+"""CAMSHAFT-1 (thesis ch. 4) against the one-DOF model, (4.19), (4.22) and the thesis's figures."""
+import numpy as np
+import pytest
+
+from camdyn.runtime import closed_forms as cf
+from camdyn.runtime.residual import extreme, residual
+from camdyn.runtime.simulate import simulate
+
+from .conftest import residual_of
+
+
+@pytest.mark.parametrize("method,opts", [("rk4", {"step": 0.002}), ("koster", {"step": 0.002}),
+                                         ("dp54", {"rtol": 1e-9})])
+def test_fa_zero_is_the_one_dof_model(method, opts):
+    """At Fa = 0, CAMSHAFT-1 is the one-DOF model of ch. 3: the same steps give the same states."""
+    a = simulate("camshaft1", {"tau": 0.15, "Fa": 0.0}, 3.0, method, **opts)
+    b = simulate("one_dof", {"tau": 0.15}, 3.0, method, **opts)
+    np.testing.assert_array_equal(a.t, b.t)
+    np.testing.assert_allclose(a.y, b.y, rtol=0, atol=1e-13)
+
+
+@pytest.mark.parametrize("Fa", [0.3, 2.0, 3.34])
+def test_stiffness_dip_4_19_from_generated_outputs(Fa):
+    """min of c/c_c over the cycloidal rise is 1/(1 + 4 Fa), at T = 1/2 (4.19)."""
+    res = simulate("camshaft1", {"tau": 0.15, "Fa": Fa}, 3.0, "dp54", rtol=1e-8)
+    c_min, t_min = extreme(res, "c_rel", 0.0, 1.0, absolute=False, minimum=True)
+    assert 1.0 / c_min == pytest.approx(float(cf.evaluate("stiffness_dip", Fa=Fa)), rel=1e-9)
+    assert t_min == pytest.approx(0.5, abs=1e-5)
+    c_max, _ = extreme(res, "c_rel", 1.0, 3.0, absolute=False, minimum=False)
+    assert c_max == 1.0
+
+
+def test_magnification_at_tau_015_sec_4_7():
+    """Sec. 4.7 (1): at tau = 0.15, Fa = 2 the residual amplitude is about 17.5 times that at
+    Fa = 0 (read from fig. 4.10/4.11a; we allow 10 %)."""
+    ratio = residual_of("camshaft1", 0.15, 2.0).U0 / residual_of("camshaft1", 0.15, 0.0).U0
+    assert ratio == pytest.approx(17.5, rel=0.10)
+
+
+def test_magnification_at_tau_02_sec_4_7():
+    """Sec. 4.7 (2): at tau = 0.2, Fa = 2, U0 is about 20 times the Fa = 0 envelope (3.5)
+    (tau = 0.2 is a zero point of the Fa = 0 curve itself); 10 % allowed."""
+    tau = 0.2
+    envelope = tau**3 / (1 - tau**2) / np.pi
+    assert residual_of("camshaft1", tau, 2.0).U0 / envelope == pytest.approx(20, rel=0.10)
+
+
+def _window_max(Fa, a, b, n=100):
+    return max(residual_of("camshaft1", float(t), Fa, rtol=1e-8).U0 for t in np.linspace(a, b, n))
+
+
+def _approx_max(Fa, a, b, xi=1.5):
+    return float(np.max(cf.evaluate("U0_approx", tau=np.linspace(a, b, 3000), Fa=Fa, xi=xi)))
+
+
+@pytest.mark.parametrize("a,b", [(0.15, 0.25), (0.2, 0.3)])
+def test_approximate_solution_4_22_small_fa(a, b):
+    """(4.22) holds the stiffness at c_c/(1 + 3/2 Fa) (4.21).  For a small stiffness
+    variation (Fa = 0.1, dip 1.4) at the higher practical tau (the thesis: "agrees to some
+    extent ... about tau = 0.2", sec. 4.7 (3)) its largest U0 in a tau window agrees with the
+    numerical one within 25 %.  Pointwise comparison is meaningless: the zero points of
+    (4.22) and of the numerical solution do not coincide.  Below tau = 0.15 it overestimates
+    (by 36 % in [0.1, 0.2] at Fa = 0.1), as the thesis says of low tau."""
+    ratio = _approx_max(0.1, a, b) / _window_max(0.1, a, b)
+    assert 0.75 < ratio < 1.25, ratio
+
+
+@pytest.mark.parametrize("Fa", [0.1, 0.25, 0.5])
+@pytest.mark.parametrize("a,b", [(0.1, 0.2), (0.15, 0.25), (0.2, 0.3)])
+def test_approximate_solution_4_22_stated_range(Fa, a, b):
+    """Up to the edge of the range the thesis states for (4.20)-(4.22), Fa < 1/2, the
+    approximation stays within the factor 2.5 the thesis itself reports (sec. 4.7 (3))."""
+    ratio = _approx_max(Fa, a, b) / _window_max(Fa, a, b)
+    assert 1 / 2.5 < ratio < 2.5, ratio
+
+
+def _koster_change(tau, Fa):
+    coarse = residual(simulate("camshaft1", {"tau": tau, "Fa": Fa}, 3.0, "koster", step=0.1 * tau)).U0
+    fine = residual(simulate("camshaft1", {"tau": tau, "Fa": Fa}, 3.0, "koster", step=0.01 * tau)).U0
+    return abs(coarse - fine) / fine
+
+
+def test_thesis_scheme_step_sensitivity_sec_4_4_2():
+    """Sec. 4.4.2: going from dT = 0.1 tau to 0.01 tau changes the residual amplitude by
+    1.5 %.  The thesis does not say where; we take the median over the practical range of
+    fig. 4.11 (tau = 0.07 ... 0.25, Fa = 0.5 ... 2) and ask for 1.5 % within a factor 2.
+    (Near zero points of U0 the relative change is of course larger.)"""
+    changes = [_koster_change(tau, Fa) for Fa in (0.5, 0.8, 1.5, 2.0)
+               for tau in (0.07, 0.1, 0.125, 0.15, 0.175, 0.2, 0.25)]
+    median = float(np.median(changes))
+    assert 0.0075 < median < 0.03, median
+
+
+def test_thesis_scheme_agrees_with_dp54_at_fine_step():
+    """At dT = 0.01 tau the thesis scheme gives U0 within 0.1 % of DP54 at rtol 1e-10."""
+    for tau, Fa in ((0.15, 2.0), (0.2, 1.5)):
+        fine = residual(simulate("camshaft1", {"tau": tau, "Fa": Fa}, 3.0, "koster", step=0.01 * tau)).U0
+        assert fine == pytest.approx(residual_of("camshaft1", tau, Fa).U0, rel=1e-3)
