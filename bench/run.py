@@ -1,0 +1,161 @@
+"""`make bench`: speed and accuracy of camdyn on CAMSHAFT-1, thesis (4.15).
+
+tau = 0.15, Fa = 2, cycloidal rise, T in [0, 3], split at the breakpoint T = 1.
+Measures in one run: the cost of one right-hand-side call; the median time per
+simulation of camdyn's RK4 and DP54 (public simulate() and the bare compiled
+loop) with the error of U0; a hand-written compiled RK4 loop (the yardstick,
+bench/yardstick.pyx) on the same steps; solve_ivp (DOP853, RK45) and odeint
+on a NumPy right-hand side; the speed ratios at matched error.
+
+Prints the tables, writes bench/out/error_vs_time.png and BENCHMARKS.md.
+
+    python bench/run.py            full run (about a minute here), rewrites BENCHMARKS.md
+    python bench/run.py --quick    3 repeats instead of 7, BENCHMARKS.md untouched
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import time
+from pathlib import Path
+
+# single-threaded timing: keep OpenBLAS's idle worker threads out of the picture
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+HERE = Path(__file__).parent.resolve()
+ROOT = HERE.parent
+OUT = HERE / "out"
+RK4_TABLE_STEPS = (2e-2, 1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4)
+DP54_TABLE_RTOLS = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10)
+TRIVIAL_STEP = 0.5              # 2 + 4 steps: what a call costs besides integrating
+MALLOC_STEPS = (1e-3, 1e-4)
+REF_RTOL, REF_CHECK_STEP = 1e-13, 1e-4
+SAME_STEPS_CHECK = 0.01
+FINAL_REPEAT_FACTOR = 2         # matched-error timings: 2 repeat + 1 repeats (15 in a full run)
+
+
+def _progress(msg: str) -> None:
+    print(f"  [{time.strftime('%H:%M:%S')}] {msg}", file=sys.stderr, flush=True)
+
+
+def reference() -> dict:
+    """U0 from camdyn DP54 at rtol 1e-13, checked against RK4 at h = 1e-4 (camdyn and yardstick)."""
+    from competitors import camdyn_simulate, yardstick_rk4
+    from problem import u0
+
+    dp = camdyn_simulate("dp54").info(REF_RTOL)
+    u_ref = u0(dp[0], dp[1])
+    checks = {f"camdyn RK4, h = {REF_CHECK_STEP:g}": camdyn_simulate("rk4").info(REF_CHECK_STEP),
+              f"yardstick RK4, h = {REF_CHECK_STEP:g}": yardstick_rk4().info(REF_CHECK_STEP)}
+    return {"u0": u_ref, "rtol": REF_RTOL,
+            "checks": {k: u0(v[0], v[1]) - u_ref for k, v in checks.items()},
+            "same_steps": same_steps(SAME_STEPS_CHECK)}
+
+
+def same_steps(h: float) -> dict:
+    """Do camdyn's RK4 and the yardstick take the same steps?  Compare their records."""
+    import numpy as np
+
+    import yardstick
+    from camdyn.runtime.simulate import simulate
+    from problem import FA, MODEL, PARAMS, T_END, TAU
+
+    r = simulate(MODEL, PARAMS, T_END, "rk4", step=h)
+    t, y, _, _ = yardstick.rk4(TAU, FA, h, T_END)
+    same_t = r.t.shape == t.shape and bool(np.array_equal(r.t, t))
+    return {"h": h, "points": len(t), "same_t": same_t,
+            "max_dy": float(np.abs(r.y - y).max()) if same_t else float("nan")}
+
+
+def sweeps(bench, groups) -> dict:
+    """Every competitor's error-vs-time sweep; a group is timed side by side."""
+    out = {}
+    for group in groups:
+        t0 = time.perf_counter()
+        got = bench.sweep(group)
+        out.update(got)
+        names = ", ".join(c.label for c in group)
+        _progress(f"{names}: {len(got[group[0].key])} settings, {time.perf_counter() - t0:.1f} s")
+    return out
+
+
+def matched_settings(bench, comps, sweeps_, target) -> dict:
+    """Each competitor's matched point; bare loop and yardstick on the steps of their simulate() run."""
+    from matching import matched
+
+    pts = {k: matched(v, target) for k, v in sweeps_.items()}
+    same = {"camdyn-rk4-bare": "camdyn-rk4", "yardstick": "camdyn-rk4", "camdyn-dp54-bare": "camdyn-dp54"}
+    for key, lead in same.items():
+        if pts[lead] is not None:
+            pts[key] = bench.points([comps[key]], pts[lead].setting)[0]
+    return {k: p for k, p in pts.items() if p is not None}
+
+
+def finals(bench, comps, sweeps_, repeat) -> dict:
+    """Per target, every competitor at its matched setting, timed side by side."""
+    from matching import TARGETS, final_times
+
+    out = {}
+    for target in TARGETS:
+        t0 = time.perf_counter()
+        out[target] = final_times(bench, comps, matched_settings(bench, comps, sweeps_, target), repeat)
+        _progress(f"matched error {target:.0e}: side-by-side timing, {time.perf_counter() - t0:.1f} s")
+    return out
+
+
+def collect(repeat: int) -> dict:
+    """Every measurement of the benchmark, in one process and one run."""
+    import diagnostics
+    from competitors import sweep_groups
+    from matching import Bench
+
+    groups = sweep_groups()
+    rk4_trio, dp54_pair = groups[0], groups[1]
+    ref = reference()
+    _progress(f"reference U0 = {ref['u0']:.15g}")
+    bench = Bench(ref["u0"], repeat)
+    res = {"repeat": repeat, "reference": ref, "comps": {c.key: c for g in groups for c in g}}
+    res["rhs"] = diagnostics.rhs_costs(repeat)
+    res["sweeps"] = sweeps(bench, groups)
+    res["rk4_table"] = [dict(zip((c.key for c in rk4_trio), bench.points(rk4_trio, h)))
+                        for h in RK4_TABLE_STEPS]
+    res["dp54_table"] = [dict(zip((c.key for c in dp54_pair), bench.points(dp54_pair, r)))
+                         for r in DP54_TABLE_RTOLS]
+    res["final_repeat"] = FINAL_REPEAT_FACTOR * repeat + 1
+    res["matched"] = finals(bench, res["comps"], res["sweeps"], res["final_repeat"])
+    _progress("overhead breakdown")
+    steps = sorted({v["camdyn-rk4"].setting for v in res["matched"].values() if "camdyn-rk4" in v},
+                   reverse=True)
+    res["overheads"] = {h: diagnostics.overheads(h, repeat) for h in (TRIVIAL_STEP, *steps)}
+    res["malloc"] = diagnostics.malloc_effect(list(MALLOC_STEPS), repeat)
+    return res
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="3 repeats, do not write BENCHMARKS.md")
+    ap.add_argument("--no-write", action="store_true", help="do not write BENCHMARKS.md")
+    args = ap.parse_args(argv)
+
+    sys.path.insert(0, str(HERE))
+    import build
+
+    build.build()
+    import report
+
+    t0 = time.perf_counter()
+    res = collect(3 if args.quick else 7)
+    res["machine"] = report.machine_info(ROOT)
+    res["elapsed"] = time.perf_counter() - t0
+    OUT.mkdir(exist_ok=True)
+    chart = report.chart(res, OUT / "error_vs_time.png")
+    print(report.text(res, chart))
+    if not (args.quick or args.no_write):
+        (ROOT / "BENCHMARKS.md").write_text(report.markdown(res))
+        print(f"wrote {ROOT / 'BENCHMARKS.md'}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
