@@ -5,7 +5,7 @@ PYTHON ?= python3
 VENV   ?= .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.camdyn-built
-SOURCES := pyproject.toml setup.py $(wildcard generated/*.pyx generated/*.pxd runtime/*.pyx runtime/*.pxd)
+SOURCES := pyproject.toml setup.py $(wildcard generated/*.pyx generated/*.pxd runtime/*.pyx runtime/*.pxd runtime/*.pxi)
 
 .PHONY: all build run test bench figures derive check-generated clean
 

@@ -1,8 +1,9 @@
-"""Build the Cython extensions: the integrators and every generated model.
+"""Build the Cython extensions: the integration driver and every generated model.
 
-Cython finds cimported .pxd files by package path (camdyn/runtime/abi.pxd),
+Cython finds cimported .pxd and included .pxi files by package path
+(camdyn/runtime/abi.pxd, camdyn/runtime/loops.pxi),
 but the design card keeps the sources in top-level folders (runtime/,
-generated/).  So the .pxd headers are copied into build/cython_include/camdyn/
+generated/).  So the headers are copied into build/cython_include/camdyn/
 first and that tree is put on Cython's include path.
 """
 import shutil
@@ -14,6 +15,8 @@ from setuptools import Extension, setup
 ROOT = Path(__file__).parent.resolve()
 INCLUDE = ROOT / "build" / "cython_include"
 FOLDERS = {"runtime": "runtime", "generated": "generated"}
+# -fno-math-errno: sqrt becomes an instruction; nothing here reads errno
+COMPILE_ARGS = ["-O3", "-fno-math-errno"]
 
 
 def _stage_headers():
@@ -24,8 +27,8 @@ def _stage_headers():
         dst = pkg / sub
         dst.mkdir(exist_ok=True)
         (dst / "__init__.pxd").write_text("")
-        for pxd in sorted((ROOT / folder).glob("*.pxd")):
-            shutil.copyfile(pxd, dst / pxd.name)
+        for header in sorted([*(ROOT / folder).glob("*.pxd"), *(ROOT / folder).glob("*.pxi")]):
+            shutil.copyfile(header, dst / header.name)
 
 
 def _extensions():
@@ -33,7 +36,7 @@ def _extensions():
     for sub, folder in FOLDERS.items():
         for pyx in sorted((ROOT / folder).glob("*.pyx")):
             exts.append(Extension(f"camdyn.{sub}.{pyx.stem}", [f"{folder}/{pyx.name}"],
-                                  extra_compile_args=["-O3"]))
+                                  extra_compile_args=COMPILE_ARGS))
     return exts
 
 

@@ -14,7 +14,7 @@ def _stale() -> bool:
     for src in SOURCES:
         stem = src[:-4]
         built = list(HERE.glob(f"{stem}.*.so"))
-        deps = [HERE / src, HERE / "setup_bench.py"]
+        deps = [HERE / src, HERE / "setup_bench.py", HEADERS / "abi.pxd"]
         if not built or min(b.stat().st_mtime for b in built) < max(d.stat().st_mtime for d in deps):
             return True
     return False

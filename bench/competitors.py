@@ -21,7 +21,7 @@ from scipy.integrate import odeint, solve_ivp
 from camdyn.runtime import _integrate
 from camdyn.runtime import laws as camlaws
 from camdyn.runtime.models import load
-from camdyn.runtime.simulate import simulate, stop_times
+from camdyn.runtime.simulate import Simulator, simulate
 
 import yardstick
 from problem import FA, MODEL, PARAMS, T_BREAK, T_END, TAU, rhs_dwell, rhs_rise, state_at_break
@@ -83,37 +83,45 @@ def camdyn_simulate(method: str) -> Competitor:
                       "h" if method == "rk4" else "rtol", grid, runner, info, "camdyn")
 
 
-def bare_arguments(method: str, x: float) -> tuple:
-    """The arguments simulate() passes to the compiled loop, built once beforehand."""
+def model_arguments() -> tuple:
+    """(capsule, p, law codes, law parameters) of the benchmark problem, for C-level probes."""
     m = load(MODEL)
-    p = m.parameter_vector(PARAMS)
     law = camlaws.choose("cycloidal")
-    codes = np.array([law.code], dtype=np.intc)
-    pars = np.array([law.par], dtype=float)
-    stops = stop_times(m, p, {m.families[0]: law}, 0.0, T_END)
+    return (m.capsule, m.parameter_vector(PARAMS), np.array([law.code], dtype=np.intc),
+            np.array([law.par], dtype=float))
+
+
+def bare_arguments(method: str, x: float) -> tuple:
+    """What simulate() hands the compiled loops, prepared once beforehand:
+    (the prepared Integrator, p, stops, cap)."""
+    kw = _camdyn_kwargs(method, x)
+    sim = Simulator(MODEL, T_END, method, **kw)
+    p = sim.model.parameter_vector(PARAMS)
+    stops = sim.stops(p)
     if method == "rk4":
-        return (m.capsule, _integrate.RK4, p, codes, pars, Y0.copy(), 0.0, stops, x, x, 0.0,
-                np.ones(2), MAX_STEPS)
-    atol = ATOL_FACTOR * x * m.state_scales()
-    return (m.capsule, _integrate.DP54, p, codes, pars, Y0.copy(), 0.0, stops, 0.0, T_END, x,
-            atol, MAX_STEPS)
+        cap = _integrate.fixed_step_points(0.0, stops, x)
+    else:
+        n_points = sim.run(PARAMS).t.shape[0]  # the record size simulate() would reserve
+        cap = n_points + n_points // 4
+    return sim._integrator, p, stops, cap
 
 
 def camdyn_bare(method: str) -> Competitor:
-    """The compiled loop _integrate.integrate(...) alone, arrays prebuilt."""
+    """The compiled loops alone (Integrator.run), everything prepared."""
 
     def runner(x):
-        args = bare_arguments(method, x)
-        return lambda: _integrate.integrate(*args)
+        integ, p, stops, cap = bare_arguments(method, x)
+        return lambda: integ.run(p, stops, cap)
 
     def info(x):
-        raw = runner(x)()
-        if raw["status"] != 0:
-            raise RuntimeError(raw["message"])
-        return (*state_at_break(raw["t"], raw["y"]), int(raw["n_rhs"]))
+        out = runner(x)()
+        if out[0] != 0:
+            raise RuntimeError(_integrate.STATUS_TEXT[out[0]])
+        rows = out[1][:out[3]]
+        return (*state_at_break(rows[:, 0], rows[:, 1:3]), int(out[6]))
 
     grid = rk4_grid() if method == "rk4" else rtol_grid()
-    return Competitor(f"camdyn-{method}-bare", f"camdyn {method.upper()} integrate() bare",
+    return Competitor(f"camdyn-{method}-bare", f"camdyn {method.upper()} compiled loop",
                       "h" if method == "rk4" else "rtol", grid, runner, info, "camdyn")
 
 

@@ -31,11 +31,11 @@ def rhs_costs(repeat: int) -> dict:
     from camdyn.runtime import _integrate
 
     import yardstick
-    from competitors import bare_arguments
+    from competitors import model_arguments
     from problem import FA, TAU, rhs_rise
     from timing import median_seconds
 
-    cap, _, p, codes, pars = bare_arguments("rk4", 0.01)[:5]
+    cap, p, codes, pars = model_arguments()
     y = np.array([0.1, 0.2])
 
     def c_cost(t):
@@ -55,14 +55,14 @@ def overheads(h: float, repeat: int) -> dict:
     """Seconds per RK4 run at step h: public call, bare loop, probe, yardstick (+/- record)."""
     import probe
     import yardstick
-    from competitors import bare_arguments, camdyn_bare, camdyn_simulate
+    from competitors import camdyn_bare, camdyn_simulate, model_arguments
     from problem import FA, T_END, TAU
     from timing import median_seconds_side_by_side
 
-    cap, _, p, codes, pars = bare_arguments("rk4", h)[:5]
+    cap, p, codes, pars = model_arguments()
     runs = {
         "simulate()": camdyn_simulate("rk4").runner(h),
-        "integrate() bare": camdyn_bare("rk4").runner(h),
+        "compiled loop": camdyn_bare("rk4").runner(h),
         "probe: yardstick loop + camdyn rhs": lambda: probe.rk4_model(cap, p, codes, pars, h, T_END),
         "yardstick": lambda: yardstick.rk4(TAU, FA, h, T_END),
         "yardstick, no record": lambda: yardstick.rk4(TAU, FA, h, T_END, False),

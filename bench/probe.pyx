@@ -75,13 +75,19 @@ def rk4_model(object capsule, double[::1] p, int[::1] law, double[::1] law_par, 
     cdef double[:, ::1] yr = y_arr
     cdef int mode[1]
     cdef double y[2]
+    cdef double kconst[128]
     cdef Ctx ctx
     cdef long k = 0
     ctx.p = &p[0]
     ctx.law = &law[0]
     ctx.law_par = &law_par[0]
     ctx.mode = mode
-    ctx.work = NULL
+    ctx.k = kconst
+    ctx.cache = kconst + m.n_const
+    ctx.variant = 0
+    if m.n_const + m.n_cache > 128:
+        raise ValueError("too many parameter constants for the probe")
+    m.prepare(&ctx)
     y[0] = 0.0
     y[1] = 0.0
     with nogil:

@@ -7,7 +7,7 @@ Run by bench/build.py (from bench/run.py) when a module is missing or stale:
 yardstick.pyx   hand-written RK4 loop for (4.15), the yardstick
 probe.pyx       the same loop on camdyn's generated right-hand side
 
-Compiled with -O3 like camdyn's extensions (setup.py).  probe.pyx cimports
+Compiled with the flags of camdyn's extensions (setup.py: -O3 -fno-math-errno).  probe.pyx cimports
 camdyn's ABI header from the tree camdyn's setup.py stages in
 build/cython_include.
 """
@@ -23,7 +23,7 @@ MODULES = ["yardstick", "probe"]
 setup(
     name="camdyn-bench",
     ext_modules=cythonize(
-        [Extension(name, [str(HERE / f"{name}.pyx")], extra_compile_args=["-O3"]) for name in MODULES],
+        [Extension(name, [str(HERE / f"{name}.pyx")], extra_compile_args=["-O3", "-fno-math-errno"]) for name in MODULES],
         include_path=[str(INCLUDE)],
         compiler_directives={"language_level": 3},
         quiet=True,

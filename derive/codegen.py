@@ -19,6 +19,7 @@ import sympy as sp
 from . import camlaws
 from .lagrange import Equations, derive
 from .model import CamFunction, Model
+from .optimize import ConstantTable, dwell_variants
 from .printer import MATH_FUNCTIONS, CythonPrinter, cse_block
 
 TEMPLATES = Path(__file__).parent / "templates"
@@ -119,6 +120,9 @@ def _time_affine(arg, t, states: set):
     return a, arg.subs(t, 0)
 
 
+MAX_VARIANT_INSTANCES = 3  # 2^3 dwell variants at most; beyond that, one general rhs
+
+
 def model_context(eq: Equations) -> dict:
     """Everything the model template needs, printed as Cython strings."""
     m = eq.model
@@ -135,18 +139,34 @@ def model_context(eq: Equations) -> dict:
     f = eq.f.applyfunc(lambda e: _plain(e, sy))
     diagonal = M.is_diagonal()
 
-    # right-hand side: q'' from M q'' = f
+    # right-hand side: q'' from M q'' = f (diagonal M: divided out symbolically)
     if diagonal:
         rhs_exprs = [f[i] / M[i, i] for i in range(n)]
         rhs_exprs = [sp.simplify(e) if M[i, i] != 1 else e for i, e in enumerate(rhs_exprs)]
     else:
         rhs_exprs = list(M) + list(f)
-    rhs_lines, rhs_code, used_rhs = cse_block(rhs_exprs, sy.names, prefix="_s")
+    cam_syms = [[sp.Symbol(f"_cam{i}_{k}", real=True) for k in range(order + 1)]
+                for i, order in enumerate(sy.orders)]
+    specialise = 0 < len(sy.instances) <= MAX_VARIANT_INSTANCES
+    variants = dwell_variants(rhs_exprs, cam_syms) if specialise else [rhs_exprs]
 
+    # parameter-only subexpressions: computed once per run by prepare()
+    consts = ConstantTable({p.symbol for p in m.parameters})
+    variants = [[consts.hoist(e) for e in v] for v in variants]
+    out_exprs = [consts.hoist(_plain(o.expr, sy)) for o in m.outputs]
+    names = dict(sy.names)
+    names.update({k: k.name for k, _ in consts.items})
+
+    rhs_variants, used_rhs = [], set()
+    for v, exprs in enumerate(variants):
+        lines, code, used = cse_block(exprs, names, prefix=f"_s{v}_")
+        rhs_variants.append({"index": v, "lines": lines, "code": code,
+                             "dwell": [i for i in range(len(sy.instances)) if v >> i & 1]})
+        used_rhs |= used
     # outputs: q'' is taken from dy, computed first by rhs()
-    out_exprs = [_plain(o.expr, sy) for o in m.outputs]
     out_lines, out_code, used_out = cse_block(
-        out_exprs, sy.names | {s: f"dy[{n + i}]" for i, s in enumerate(qdd_syms)}, prefix="_s")
+        out_exprs, names | {s: f"dy[{n + i}]" for i, s in enumerate(qdd_syms)}, prefix="_o")
+    const_lines, const_code, used_const = cse_block([e for _, e in consts.items], names, prefix="_c")
 
     printer = CythonPrinter(sy.names)
     instances = []
@@ -154,6 +174,7 @@ def model_context(eq: Equations) -> dict:
         affine = _time_affine(arg, t, {sp.Symbol(s, real=True) for s in state_syms})
         instances.append({
             "index": i,
+            "bit": 1 << i,
             "family": family,
             "family_index": sorted({fam for fam, _ in sy.instances}).index(family),
             "arg": printer.doprint(arg),
@@ -161,7 +182,7 @@ def model_context(eq: Equations) -> dict:
             "order": order,
             "affine": None if affine is None else [printer.doprint(affine[0]), printer.doprint(affine[1])],
         })
-    used = sorted((used_rhs | used_out | printer.used) & (set(MATH_FUNCTIONS) | {"M_PI"}))
+    used = sorted((used_rhs | used_out | used_const | printer.used) & (set(MATH_FUNCTIONS) | {"M_PI"}))
     families = sorted({fam for fam, _ in sy.instances})
 
     manifest = {
@@ -207,15 +228,17 @@ def model_context(eq: Equations) -> dict:
         "instances": instances,
         "n_families": len(families),
         "diagonal": diagonal,
-        "rhs_lines": rhs_lines,
-        "rhs_code": rhs_code,
+        "specialise": specialise,
+        "variants": rhs_variants,
+        "temporaries": [name for v in rhs_variants for name, _ in v["lines"]],
+        "consts": [k.name for k, _ in consts.items],
+        "const_lines": const_lines,
+        "const_code": const_code,
         "out_lines": out_lines,
         "out_code": out_code,
         "math": used,
-        "n_work": 0 if diagonal else n * n + n,
         "manifest_json": json.dumps(manifest, indent=1, sort_keys=True),
         "source_hash": manifest["source_hash"],
-        "uses_qdd_in_outputs": any(e.has(*qdd_syms) for e in out_exprs),
     }
 
 

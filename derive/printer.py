@@ -47,6 +47,24 @@ class CythonPrinter(C99CodePrinter):
         self.used.add("pow")
         return f"pow({self._print(base)}, {self._print(exp)})"
 
+    def _print_Mul(self, expr):
+        # fold the numeric factors (1/2, pi, sqrt(3), ...) into one literal: C may not
+        # turn x/M_PI into a multiplication itself (it would change the rounding)
+        numeric = [a for a in expr.args if a.is_number]
+        others = [a for a in expr.args if not a.is_number]
+        if not numeric or (len(numeric) == 1 and (numeric[0].is_Integer or numeric[0] == -1)):
+            return super()._print_Mul(expr)
+        c = float(sp.Mul(*numeric).evalf(20))
+        if not others:
+            return repr(c)
+        rest = super()._print_Mul(sp.Mul(*others)) if len(others) > 1 else \
+            self.parenthesize(others[0], sp.printing.precedence.PRECEDENCE["Mul"])
+        if c == 1.0:
+            return rest
+        if c == -1.0:
+            return f"-{rest}"
+        return f"{c!r}*{rest}"
+
     def _print_Function(self, expr):
         name = type(expr).__name__
         if name in MATH_FUNCTIONS:

@@ -81,6 +81,32 @@ cdef inline int camlaw_segment(int law, double par, double T) noexcept nogil:
     return -1
 
 
+cdef inline bint camlaw_dwell(int law, int seg) noexcept nogil:
+    """True in the dwell segments (before and after the rise), where H is constant."""
+    if seg == 0:
+        return True
+    if law == 0:
+        return seg == 2
+    elif law == 1:
+        return seg == 4
+    elif law == 2:
+        return seg == 2
+    elif law == 3:
+        return seg == 2
+    elif law == 4:
+        return seg == 3
+    elif law == 5:
+        return seg == 2
+    elif law == 6:
+        return seg == 6
+    return False
+
+
+cdef inline double camlaw_dwell_value(int seg) noexcept nogil:
+    """H in a dwell: 0 before the rise, 1 after it."""
+    return 0.0 if seg == 0 else 1.0
+
+
 cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out) noexcept nogil:
     """out[k] = d^k H/dT^k, k = 0..3, evaluated with the formula of segment `seg`.
 
@@ -95,14 +121,14 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
             out[2] = 0.0
             out[3] = 0.0
         elif seg == 1:
-            c0 = 2.0*M_PI
+            c0 = 6.283185307179586
             c1 = T*c0
             c2 = sin(c1)
             c3 = cos(c1)
-            out[0] = T - 1.0/2.0*c2/M_PI
+            out[0] = T - 0.15915494309189535*c2
             out[1] = 1.0 - c3
             out[2] = c0*c2
-            out[3] = 4.0*(M_PI*M_PI)*c3
+            out[3] = 39.47841760435743*c3
         elif seg == 2:
             out[0] = 1.0
             out[1] = 0.0
@@ -117,47 +143,47 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
             out[2] = 0.0
             out[3] = 0.0
         elif seg == 1:
-            c0 = M_PI*par
+            c0 = 3.141592653589793*par
             c1 = (1.0/(c0 - 4.0*par + 1.0))
-            c2 = M_PI*T
+            c2 = 3.141592653589793*T
             c3 = (1.0/par)
-            c4 = (1.0/2.0)*c2*c3
+            c4 = 0.5*c2*c3
             c5 = sin(c4)
             c6 = cos(c4)
             out[0] = c1*par*(c2 - 2.0*c5*par)
             out[1] = -c0*c1*(c6 - 1.0)
-            out[2] = (1.0/2.0)*(M_PI*M_PI)*c1*c5
-            out[3] = (1.0/4.0)*(M_PI*M_PI*M_PI)*c1*c3*c6
+            out[2] = 4.934802200544679*c1*c5
+            out[3] = 7.751569170074955*c1*c3*c6
         elif seg == 2:
             c0 = 2.0*par
             c1 = c0 - 1.0
             c2 = (1.0/c1)
-            c3 = M_PI*c2*(T - par)
+            c3 = 3.141592653589793*c2*(T - par)
             c4 = cos(c3)
             c5 = 4.0*(par*par)
             c6 = 4.0*par
-            c7 = M_PI*par
+            c7 = 3.141592653589793*par
             c8 = 1.0 - c6
-            c9 = (1.0/2.0)/(c7 + c8)
+            c9 = 0.5*(1.0/(c7 + c8))
             c10 = sin(c3)
             c11 = c10*c2
             c12 = c9*(c5 + c8)
             out[0] = c9*(2.0*T*c7 - c4*c5 + c4*c6 - c4 + c8)
-            out[1] = M_PI*c9*(c0 + c11*c5 - c11*c6 + c11)
-            out[2] = (M_PI*M_PI)*c12*c4/(c1*c1)
-            out[3] = -(M_PI*M_PI*M_PI)*c10*c12/(c1*c1*c1)
+            out[1] = 3.141592653589793*c9*(c0 + c11*c5 - c11*c6 + c11)
+            out[2] = 9.869604401089358*c12*c4/(c1*c1)
+            out[3] = -31.00627668029982*c10*c12/(c1*c1*c1)
         elif seg == 3:
-            c0 = M_PI*par
+            c0 = 3.141592653589793*par
             c1 = 1.0 - 4.0*par
             c2 = (1.0/(c0 + c1))
             c3 = (1.0/par)
-            c4 = (1.0/2.0)*M_PI*c3*(T - 1.0)
+            c4 = 1.5707963267948966*c3*(T - 1.0)
             c5 = sin(c4)
             c6 = cos(c4)
             out[0] = c2*(T*c0 + c1 - 2.0*c5*(par*par))
             out[1] = -c0*c2*(c6 - 1.0)
-            out[2] = (1.0/2.0)*(M_PI*M_PI)*c2*c5
-            out[3] = (1.0/4.0)*(M_PI*M_PI*M_PI)*c2*c3*c6
+            out[2] = 4.934802200544679*c2*c5
+            out[3] = 7.751569170074955*c2*c3*c6
         elif seg == 4:
             out[0] = 1.0
             out[1] = 0.0
@@ -194,13 +220,13 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
             out[2] = 0.0
             out[3] = 0.0
         elif seg == 1:
-            c0 = M_PI*T
+            c0 = 3.141592653589793*T
             c1 = cos(c0)
-            c2 = (1.0/2.0)*sin(c0)
-            out[0] = 1.0/2.0 - 1.0/2.0*c1
-            out[1] = M_PI*c2
-            out[2] = (1.0/2.0)*(M_PI*M_PI)*c1
-            out[3] = -(M_PI*M_PI*M_PI)*c2
+            c2 = 0.5*sin(c0)
+            out[0] = 1.0/2.0 - 0.5*c1
+            out[1] = 3.141592653589793*c2
+            out[2] = 4.934802200544679*c1
+            out[3] = -31.00627668029982*c2
         elif seg == 2:
             out[0] = 1.0
             out[1] = 0.0
@@ -263,50 +289,50 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
             out[3] = 0.0
         elif seg == 1:
             c0 = (1.0/(2.0 + M_PI))
-            c1 = 4.0*M_PI*T
+            c1 = 12.566370614359172*T
             c2 = sin(c1)
             c3 = cos(c1)
-            out[0] = (1.0/2.0)*c0*(c1 - c2)/M_PI
+            out[0] = 0.15915494309189535*c0*(c1 - c2)
             out[1] = -2.0*c0*(c3 - 1.0)
-            out[2] = 8.0*M_PI*c0*c2
-            out[3] = 32.0*(M_PI*M_PI)*c0*c3
+            out[2] = 25.132741228718345*c0*c2
+            out[3] = 315.82734083485946*c0*c3
         elif seg == 2:
             c0 = (1.0/(2.0 + M_PI))
             c1 = (M_PI*M_PI)
-            c2 = M_PI*T
-            out[0] = (1.0/16.0)*c0*(64.0*(T*T)*c1 - 16.0*T*c1 + c1 + 32.0*c2 - 8.0)/M_PI
-            out[1] = c0*(8.0*c2 - M_PI + 2.0)
-            out[2] = 8.0*M_PI*c0
+            c2 = 3.141592653589793*T
+            out[0] = 0.019894367886486918*c0*(64.0*(T*T)*c1 - 16.0*T*c1 + c1 + 32.0*c2 - 8.0)
+            out[1] = c0*(8.0*c2 - 3.141592653589793 + 2.0)
+            out[2] = 25.132741228718345*c0
             out[3] = 0.0
         elif seg == 3:
             c0 = (1.0/(2.0 + M_PI))
             c1 = 4.0*T
-            c2 = M_PI*c1
+            c2 = 3.141592653589793*c1
             c3 = (M_PI*M_PI)
             c4 = sin(c2)
             c5 = cos(c2)
-            out[0] = (1.0/2.0)*c0*(c1*c3 + c2 - c3 + c4)/M_PI
+            out[0] = 0.15915494309189535*c0*(c1*c3 + c2 - c3 + c4)
             out[1] = 2.0*c0*(c5 + 1.0 + M_PI)
-            out[2] = -8.0*M_PI*c0*c4
+            out[2] = -25.132741228718345*c0*c4
             out[3] = -32.0*c0*c3*c5
         elif seg == 4:
             c0 = (1.0/(2.0 + M_PI))
             c1 = (M_PI*M_PI)
-            c2 = 2.0 + 7.0*M_PI
-            out[0] = -1.0/16.0*c0*(64.0*(T*T)*c1 - 16.0*M_PI*T*c2 + 33.0*c1 - 8.0)/M_PI
-            out[1] = -c0*(8.0*M_PI*T - c2)
-            out[2] = -8.0*M_PI*c0
+            c2 = 2.0 + 21.991148575128552
+            out[0] = -0.019894367886486918*c0*(64.0*(T*T)*c1 - 50.26548245743669*T*c2 + 33.0*c1 - 8.0)
+            out[1] = -c0*(25.132741228718345*T - c2)
+            out[2] = -25.132741228718345*c0
             out[3] = 0.0
         elif seg == 5:
             c0 = (1.0/(2.0 + M_PI))
             c1 = (M_PI*M_PI)
-            c2 = M_PI*T
+            c2 = 3.141592653589793*T
             c3 = 4.0*c2
             c4 = sin(c3)
             c5 = cos(c3)
-            out[0] = c0*(c1 + 2.0*c2 - 1.0/2.0*c4)/M_PI
+            out[0] = 0.3183098861837907*c0*(c1 + 2.0*c2 - 0.5*c4)
             out[1] = -2.0*c0*(c5 - 1.0)
-            out[2] = 8.0*M_PI*c0*c4
+            out[2] = 25.132741228718345*c0*c4
             out[3] = 32.0*c0*c1*c5
         elif seg == 6:
             out[0] = 1.0

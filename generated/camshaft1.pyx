@@ -4,7 +4,7 @@
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
-# Source hash: sha256:d5b85774b460decfc7e4da9721ddbcf210c6ed2381fcfcd27e913b5dd4c4d6bb
+# Source hash: sha256:718b1cf517eec28f0a3d178e8f6685ddab903ea98e954022a98d76bb5ddd2dcd
 #
 # CAMSHAFT-1: one DOF with variable fictitious angular velocity, thesis ch. 4.
 #
@@ -21,9 +21,8 @@
 #
 #     kinetic energy     1/2 X'^2
 #     potential energy   1/2 c(T) (H - X)^2,   c(T) = (2 pi/tau)^2/(1 + H'^2 Fa)
-#     dissipation        q (2 pi/tau) (X' - H')^2   (optional; the thesis has q = 0
-#                                                  during the rise, sec. 4.2.4)
 #
+# and there is no damping (sec. 4.2.4: ignored during the rise, as in ch. 3).
 # c depends on T only, so Lagrange's equations give (4.15) exactly.  At Fa = 0
 # the model is the one-DOF model of ch. 3; the stiffness dip is 1 + 4 Fa (4.19)
 # for the cycloid.
@@ -31,26 +30,48 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport M_PI
 
-from camdyn.runtime.abi cimport CAMDYN_ABI, Ctx, ModelC
-from camdyn.generated.camlaws cimport camlaw_eval, camlaw_segment
-
+from camdyn.runtime.abi cimport *
+from camdyn.generated.camlaws cimport camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_segment
 
 
-cdef void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
-    """dy/dt: q' and q'' from M q'' = f."""
+
+cdef void prepare(Ctx* ctx) noexcept nogil:
+    """Parameter-only subexpressions, once per run, into ctx.k."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
-    cdef double q = ctx.p[2]
+    ctx.k[0] = 39.47841760435743*(1.0/(tau*tau))  # _k0
+
+
+cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
+    """dy/dt: q' and q'' from M q'' = f, specialised for cam inputs in a dwell."""
+    cdef double tau = ctx.p[0]
+    cdef double Fa = ctx.p[1]
+    cdef double _k0 = ctx.k[0]
     cdef double X = y[0]
     cdef double Xd = y[1]
     cdef double _cam0[4]  # H(T) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
+    cdef int _v = ctx.variant
+    cdef double* _c
+    cdef double _a
+    if _v & 1:
+        _cam0[0] = ctx.cache[1]  # H in the dwell, set by refresh()
+    else:
+        # the stages of a step share arguments (RK4: t + h/2 twice, t + h for the next
+        # k1): the last evaluation is kept in ctx.cache and reused
+        _a = t
+        _c = &ctx.cache[0]
+        if _a == _c[0]:
+            _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+        else:
+            camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], _a, _cam0)
+            _c[0], _c[1], _c[2], _c[3], _c[4] = _a, _cam0[0], _cam0[1], _cam0[2], _cam0[3]
 
-    cdef double _s0 = Fa*(_cam0[1]*_cam0[1]) + 1.0
     dy[0] = Xd
-    dy[1] = -4.0*M_PI*(_s0*q*tau*(Xd - _cam0[1]) + M_PI*(X - _cam0[0]))/(_s0*(tau*tau))
+    if _v == 0:
+        dy[1] = -_k0*(X - _cam0[0])/(Fa*(_cam0[1]*_cam0[1]) + 1.0)
+    elif _v == 1:  # in a dwell: 0
+        dy[1] = -_k0*(X - _cam0[0])
 
 
 cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nogil:
@@ -59,10 +80,9 @@ cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nog
     rhs(t, y, dy, ctx)
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
-    cdef double q = ctx.p[2]
+    cdef double _k0 = ctx.k[0]
     cdef double X = y[0]
     cdef double Xd = y[1]
-    cdef double Xdd = dy[1]
     cdef double _cam0[4]  # H(T) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
@@ -74,22 +94,46 @@ cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nog
     out[5] = (1.0/(Fa*(_cam0[1]*_cam0[1]) + 1.0))  # c_rel
 
 
+cdef void refresh(Ctx* ctx) noexcept nogil:
+    """ctx.variant from the modes (bit i set when cam input i sits in a dwell); the cam
+    cache is emptied, its entries belong to the old segments."""
+    ctx.variant = 0
+    ctx.cache[0] = 0.0 / 0.0
+    ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
+    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+        ctx.variant |= 1
+
+
 cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
     """Segment of every cam input at (t, y)."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
-    cdef double q = ctx.p[2]
+    cdef double _k0 = ctx.k[0]
     cdef double X = y[0]
     cdef double Xd = y[1]
 
     ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], t)
+    refresh(ctx)
+
+
+cdef void rhs_ptr(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
+    rhs(t, y, dy, ctx)
+
+
+# the integration loops of camdyn.runtime, compiled here with rhs() inlined and the
+# sizes known at compile time
+cdef enum:
+    _NS = 2
+    _NQ = 1
+    _NM = 1
+
+include "camdyn/runtime/loops.pxi"
 
 
 def cam_time_affine(p):
     """Per cam input, (a, b) with argument a t + b, or None when it depends on the state."""
     cdef double tau = p[0]
     cdef double Fa = p[1]
-    cdef double q = p[2]
     return [(1.0, 0.0)]
 
 
@@ -97,14 +141,18 @@ cdef ModelC _model
 _model.abi_version = CAMDYN_ABI
 _model.n_q = 1
 _model.n_states = 2
-_model.n_params = 3
+_model.n_params = 2
 _model.n_outputs = 6
 _model.n_families = 1
 _model.n_instances = 1
-_model.n_work = 0
-_model.rhs = rhs
+_model.n_const = 1
+_model.n_cache = 5
+_model.prepare = prepare
+_model.rhs = rhs_ptr
 _model.outputs = outputs
 _model.update_modes = update_modes
+_model.refresh = refresh
+_model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""
@@ -178,17 +226,6 @@ _MANIFEST_JSON = """
    "open_low": false,
    "range": "0 <= Fa <= 100",
    "unit": "1"
-  },
-  {
-   "default": 0.0,
-   "doc": "relative damping, d = 2 q sqrt(m c_c) (6.47)",
-   "high": 1.0,
-   "low": 0.0,
-   "name": "q",
-   "open_high": true,
-   "open_low": false,
-   "range": "0 <= q < 1",
-   "unit": "1"
   }
  ],
  "reference": "thesis (4.15)-(4.18)",
@@ -197,7 +234,7 @@ _MANIFEST_JSON = """
   "error": "U",
   "rise_end": 1.0
  },
- "source_hash": "sha256:d5b85774b460decfc7e4da9721ddbcf210c6ed2381fcfcd27e913b5dd4c4d6bb",
+ "source_hash": "sha256:718b1cf517eec28f0a3d178e8f6685ddab903ea98e954022a98d76bb5ddd2dcd",
  "states": [
   {
    "doc": "follower position over the stroke, X = x/h_m'",

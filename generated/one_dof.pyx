@@ -27,24 +27,53 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport M_PI
 
-from camdyn.runtime.abi cimport CAMDYN_ABI, Ctx, ModelC
-from camdyn.generated.camlaws cimport camlaw_eval, camlaw_segment
-
+from camdyn.runtime.abi cimport *
+from camdyn.generated.camlaws cimport camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_segment
 
 
-cdef void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
-    """dy/dt: q' and q'' from M q'' = f."""
+
+cdef void prepare(Ctx* ctx) noexcept nogil:
+    """Parameter-only subexpressions, once per run, into ctx.k."""
     cdef double tau = ctx.p[0]
     cdef double q = ctx.p[1]
+    cdef double _c0 = 12.566370614359172*q/tau
+    ctx.k[0] = 39.47841760435743*(1.0/(tau*tau))  # _k0
+    ctx.k[1] = _c0  # _k1
+    ctx.k[2] = -_c0  # _k2
+
+
+cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
+    """dy/dt: q' and q'' from M q'' = f, specialised for cam inputs in a dwell."""
+    cdef double tau = ctx.p[0]
+    cdef double q = ctx.p[1]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double X = y[0]
     cdef double Xd = y[1]
     cdef double _cam0[4]  # H(T) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
+    cdef int _v = ctx.variant
+    cdef double* _c
+    cdef double _a
+    if _v & 1:
+        _cam0[0] = ctx.cache[1]  # H in the dwell, set by refresh()
+    else:
+        # the stages of a step share arguments (RK4: t + h/2 twice, t + h for the next
+        # k1): the last evaluation is kept in ctx.cache and reused
+        _a = t
+        _c = &ctx.cache[0]
+        if _a == _c[0]:
+            _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+        else:
+            camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], _a, _cam0)
+            _c[0], _c[1], _c[2], _c[3], _c[4] = _a, _cam0[0], _cam0[1], _cam0[2], _cam0[3]
 
     dy[0] = Xd
-    dy[1] = -4.0*M_PI*(q*tau*(Xd - _cam0[1]) + M_PI*(X - _cam0[0]))/(tau*tau)
+    if _v == 0:
+        dy[1] = -_k0*(X - _cam0[0]) - _k1*(Xd - _cam0[1])
+    elif _v == 1:  # in a dwell: 0
+        dy[1] = Xd*_k2 - _k0*(X - _cam0[0])
 
 
 cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nogil:
@@ -53,9 +82,11 @@ cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nog
     rhs(t, y, dy, ctx)
     cdef double tau = ctx.p[0]
     cdef double q = ctx.p[1]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double X = y[0]
     cdef double Xd = y[1]
-    cdef double Xdd = dy[1]
     cdef double _cam0[4]  # H(T) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
@@ -66,14 +97,42 @@ cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nog
     out[4] = _cam0[2]  # Hdd
 
 
+cdef void refresh(Ctx* ctx) noexcept nogil:
+    """ctx.variant from the modes (bit i set when cam input i sits in a dwell); the cam
+    cache is emptied, its entries belong to the old segments."""
+    ctx.variant = 0
+    ctx.cache[0] = 0.0 / 0.0
+    ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
+    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+        ctx.variant |= 1
+
+
 cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
     """Segment of every cam input at (t, y)."""
     cdef double tau = ctx.p[0]
     cdef double q = ctx.p[1]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double X = y[0]
     cdef double Xd = y[1]
 
     ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], t)
+    refresh(ctx)
+
+
+cdef void rhs_ptr(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
+    rhs(t, y, dy, ctx)
+
+
+# the integration loops of camdyn.runtime, compiled here with rhs() inlined and the
+# sizes known at compile time
+cdef enum:
+    _NS = 2
+    _NQ = 1
+    _NM = 1
+
+include "camdyn/runtime/loops.pxi"
 
 
 def cam_time_affine(p):
@@ -91,10 +150,14 @@ _model.n_params = 2
 _model.n_outputs = 5
 _model.n_families = 1
 _model.n_instances = 1
-_model.n_work = 0
-_model.rhs = rhs
+_model.n_const = 3
+_model.n_cache = 5
+_model.prepare = prepare
+_model.rhs = rhs_ptr
 _model.outputs = outputs
 _model.update_modes = update_modes
+_model.refresh = refresh
+_model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -4,7 +4,7 @@ from __future__ import annotations
 import importlib
 import math
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cached_property, lru_cache
 
 import numpy as np
 
@@ -42,26 +42,42 @@ class CompiledModel:
     def families(self) -> list[str]:
         return self.manifest["cam_families"]
 
+    @cached_property
+    def _param_index(self) -> dict:
+        """name -> (position, low, high, open_low, open_high, spec) for fast checks."""
+        inf = math.inf
+        return {spec["name"]: (k, -inf if spec["low"] is None else spec["low"],
+                               inf if spec["high"] is None else spec["high"],
+                               spec["open_low"], spec["open_high"], spec)
+                for k, spec in enumerate(self.manifest["parameters"])}
+
+    @cached_property
+    def _defaults(self) -> np.ndarray:
+        return np.array([spec["default"] for spec in self.manifest["parameters"]], dtype=float)
+
     def parameter_vector(self, values: dict | None = None) -> np.ndarray:
         """Parameters in manifest order: defaults, overridden by ``values``, checked."""
-        values = dict(values or {})
-        unknown = sorted(set(values) - set(self.parameter_names))
-        if unknown:
-            raise CamdynInputError(
-                f"model {self.name} has no parameter {', '.join(unknown)}; "
-                f"its parameters are {', '.join(self.parameter_names)}")
-        vec = []
-        for spec in self.manifest["parameters"]:
-            name = spec["name"]
-            raw = values.get(name, spec["default"])
-            if isinstance(raw, bool) or not isinstance(raw, (int, float, np.floating, np.integer)):
-                raise CamdynInputError(f"{name} must be a number, got {raw!r}")
-            v = float(raw)
-            if not _admits(spec, v):
+        vec = self._defaults.copy()
+        if not values:
+            return vec
+        index = self._param_index
+        for name, raw in values.items():
+            entry = index.get(name)
+            if entry is None:
                 raise CamdynInputError(
-                    f"{name}={v:g} is out of range: {spec['range']} ({spec['doc']})")
-            vec.append(v)
-        return np.array(vec, dtype=float)
+                    f"model {self.name} has no parameter {name}; "
+                    f"its parameters are {', '.join(self.parameter_names)}")
+            k, lo, hi, open_lo, open_hi, spec = entry
+            if raw.__class__ is not float:
+                if isinstance(raw, bool) or not isinstance(raw, (int, float, np.floating, np.integer)):
+                    raise CamdynInputError(f"{name} must be a number, got {raw!r}")
+                raw = float(raw)
+            if not (-math.inf < raw < math.inf and (lo < raw if open_lo else lo <= raw)
+                    and (raw < hi if open_hi else raw <= hi)):
+                raise CamdynInputError(
+                    f"{name}={raw:g} is out of range: {spec['range']} ({spec['doc']})")
+            vec[k] = raw
+        return vec
 
     def initial_state(self) -> np.ndarray:
         return np.array([s["initial"] for s in self.manifest["states"]], dtype=float)
@@ -71,17 +87,6 @@ class CompiledModel:
 
     def cam_time_affine(self, p: np.ndarray):
         return self.module.cam_time_affine(p)
-
-
-def _admits(spec: dict, v: float) -> bool:
-    if not math.isfinite(v):
-        return False
-    lo, hi = spec["low"], spec["high"]
-    if lo is not None and (v <= lo if spec["open_low"] else v < lo):
-        return False
-    if hi is not None and (v >= hi if spec["open_high"] else v > hi):
-        return False
-    return True
 
 
 def available() -> list[str]:

@@ -13,25 +13,60 @@ class Result:
     """Trajectory of one run.
 
     ``t`` and ``y`` hold the recorded points (every accepted step; a breakpoint
-    appears twice, as left and right limit).  ``result["X"]`` gives a state or
-    an output at those points; ``result.sample(times)`` evaluates everything
-    at arbitrary times through the method's dense output.
+    appears twice, as left and right limit), ``f`` the slopes there.
+    ``result["X"]`` gives a state or an output at those points;
+    ``result.sample(times)`` evaluates everything at arbitrary times through
+    the method's dense output.
     """
 
-    def __init__(self, model, params: dict, p, law, laws, method, raw: dict, cpu_seconds: float):
-        self.model = model
-        self.params = params
+    def __init__(self, sim, p, out: tuple):
+        self.model = sim.model
+        self.method = sim.method
+        self.laws = sim.laws
+        self._codes, self._pars = sim._codes, sim._pars
         self.p = p
-        self.law_codes = law[0]
-        self.law_pars = law[1]
-        self.laws = laws
-        self.method = method
-        self.t = raw["t"]
-        self.y = raw["y"]
-        self.dense = raw["dense"]
-        self.mode = raw["mode"]
-        self.stats = {k: raw[k] for k in ("n_steps", "n_rejected", "n_rhs")}
-        self.stats["cpu_seconds"] = cpu_seconds
+        self._out = out
+
+    @cached_property
+    def stats(self) -> dict:
+        """Steps, rejected steps, right-hand-side calls, wall time of the compiled loops."""
+        _, _, _, _, n_steps, n_rej, n_rhs, _, seconds = self._out
+        return {"n_steps": n_steps, "n_rejected": n_rej, "n_rhs": n_rhs, "seconds": seconds}
+
+    @cached_property
+    def _rows(self) -> np.ndarray:
+        return self._out[1][:self._out[3]]
+
+    @cached_property
+    def mode(self) -> np.ndarray:
+        """Cam segments in force from each recorded point on."""
+        return self._out[2][:self._out[3]]
+
+    # views into the record rows [t, y, f, extra] (see camdyn/runtime/abi.pxd)
+    @cached_property
+    def t(self) -> np.ndarray:
+        return self._rows[:, 0]
+
+    @cached_property
+    def y(self) -> np.ndarray:
+        return self._rows[:, 1:1 + len(self.state_names)]
+
+    @cached_property
+    def f(self) -> np.ndarray:
+        """Slopes dy/dt at the recorded points (left limits at the end of an interval)."""
+        ns = len(self.state_names)
+        return self._rows[:, 1 + ns:1 + 2 * ns]
+
+    @cached_property
+    def _extra(self) -> np.ndarray:
+        ns = len(self.state_names)
+        if self._rows.shape[1] > 1 + 2 * ns:
+            return self._rows[:, 1 + 2 * ns:]
+        return np.empty((0, ns))
+
+    @cached_property
+    def params(self) -> dict:
+        return dict(zip(self.model.parameter_names, self.p.tolist()))
 
     @property
     def state_names(self) -> list[str]:
@@ -48,7 +83,7 @@ class Result:
     @cached_property
     def outputs(self) -> dict:
         """Outputs at the recorded points (computed on first use, in C)."""
-        out = _integrate.eval_outputs(self.model.capsule, self.p, self.law_codes, self.law_pars,
+        out = _integrate.eval_outputs(self.model.capsule, self.p, self._codes, self._pars,
                                       self.t, self.y, self.mode)
         return {name: out[:, k] for k, name in enumerate(self.output_names)}
 
@@ -68,9 +103,9 @@ class Result:
         if tq.size and (tq.min() < self.t[0] or tq.max() > self.t[-1]):
             raise CamdynInputError(
                 f"sample times must lie in [{self.t[0]:g}, {self.t[-1]:g}]")
-        Y, idx = _integrate.dense_eval(self.t, self.y, self.dense, tq)
+        Y, idx = _integrate.dense_eval(self.t, self.y, self.f, self._extra, tq)
         modes = np.ascontiguousarray(self.mode[idx]) if self.mode.shape[1] else None
-        out = _integrate.eval_outputs(self.model.capsule, self.p, self.law_codes, self.law_pars,
+        out = _integrate.eval_outputs(self.model.capsule, self.p, self._codes, self._pars,
                                       tq, Y, modes)
         res = {"t": tq}
         res.update({name: Y[:, k] for k, name in enumerate(self.state_names)})

@@ -1,8 +1,14 @@
-"""``simulate(model, params, t_end, method=...)``: one run of a generated model."""
+"""Runs of generated models: ``simulate(...)`` for one run, ``Simulator`` for many.
+
+A :class:`Simulator` fixes the model, method, cam law and time span and
+checks them once; ``Simulator.run(params)`` then only checks the parameters
+and calls the compiled loops.  ``simulate`` keeps a few recently used
+simulators, so repeated calls with the same settings cost little more.
+"""
 from __future__ import annotations
 
 import math
-import time as _time
+from functools import lru_cache
 
 import numpy as np
 
@@ -23,8 +29,8 @@ def _law_choices(model: CompiledModel, law, theta):
     else:
         choice = law if isinstance(law, _laws.LawChoice) else _laws.choose(law, theta)
         chosen = {f: choice for f in fams}
-    codes = np.array([chosen[f].code for f in fams] or [0], dtype=np.intc)[: max(len(fams), 1)]
-    pars = np.array([chosen[f].par for f in fams] or [0.0], dtype=float)[: max(len(fams), 1)]
+    codes = np.array([chosen[f].code for f in fams] or [0], dtype=np.intc)
+    pars = np.array([chosen[f].par for f in fams] or [0.0], dtype=float)
     return chosen, codes, pars
 
 
@@ -49,51 +55,103 @@ def stop_times(model: CompiledModel, p, chosen: dict, t0: float, t_end: float) -
     return np.array(sorted(stops))
 
 
-def simulate(model, params: dict | None = None, t_end: float = 3.0, method="dp54", *,
-             rtol: float | None = None, atol: float | None = None, step: float | None = None,
-             law="cycloidal", theta: float | None = None, y0=None, t0: float = 0.0,
-             max_steps: int = 5_000_000) -> Result:
-    """Integrate ``model`` from t0 to t_end.
+class Simulator:
+    """A prepared simulation: everything but the parameter values is fixed and checked.
 
     model   name of a generated model ("camshaft1") or a CompiledModel
-    params  parameter values by name; the others take their defaults
+    t_end   end of the run (model time)
     method  "dp54" (rtol, atol), "rk4" or "koster" (step), or a method object
     law     cam-law name, or {family: name} for models with several inputs;
             theta is the law's shape parameter (modified sine)
     """
-    m = model if isinstance(model, CompiledModel) else load(model)
-    p = m.parameter_vector(params)
-    if isinstance(method, str):
-        method = _methods.make(method, rtol=rtol, atol=atol, step=step)
-    elif rtol is not None or atol is not None or step is not None:
-        raise CamdynInputError("give rtol/atol/step inside the method object, not beside it")
+
+    def __init__(self, model, t_end: float = 3.0, method="dp54", *, rtol: float | None = None,
+                 atol: float | None = None, step: float | None = None, law="cycloidal",
+                 theta: float | None = None, y0=None, t0: float = 0.0, max_steps: int = 5_000_000):
+        m = model if isinstance(model, CompiledModel) else load(model)
+        if isinstance(method, str):
+            method = _methods.make(method, rtol=rtol, atol=atol, step=step)
+        elif rtol is not None or atol is not None or step is not None:
+            raise CamdynInputError("give rtol/atol/step inside the method object, not beside it")
+        try:
+            t0, t_end = float(t0), float(t_end)
+        except (TypeError, ValueError):
+            raise CamdynInputError("t0 and t_end must be numbers") from None
+        if not (math.isfinite(t0) and math.isfinite(t_end) and t_end > t0):
+            raise CamdynInputError(f"t_end={t_end:g} must be finite and greater than t0={t0:g}")
+        if isinstance(max_steps, bool) or not isinstance(max_steps, int) or max_steps < 1:
+            raise CamdynInputError(f"max_steps must be a positive integer, got {max_steps!r}")
+        self.model, self.method, self.t0, self.t_end, self.max_steps = m, method, t0, t_end, max_steps
+        self.laws, self._codes, self._pars = _law_choices(m, law, theta)
+        n = len(m.state_names)
+        y_init = m.initial_state() if y0 is None else np.array(y0, dtype=float).ravel()
+        if y_init.shape != (n,) or not np.all(np.isfinite(y_init)):
+            raise CamdynInputError(f"y0 must be {n} finite numbers ({', '.join(m.state_names)})")
+        if method.adaptive:
+            base = method.atol if method.atol is not None else 1e-3 * method.rtol
+            atol = np.ascontiguousarray(base * m.state_scales(), dtype=float)
+            h, h_max, rtol = method.first_step or 0.0, min(method.max_step, t_end - t0), method.rtol
+        else:
+            if (t_end - t0) / method.step > max_steps:
+                raise CamdynInputError(
+                    f"step={method.step:g} needs more than max_steps={max_steps} steps over "
+                    f"[{t0:g}, {t_end:g}]")
+            atol, h, h_max, rtol = np.ones(n), method.step, method.step, 0.0
+        self._integrator = _integrate.Integrator(m.capsule, method.code, self._codes, self._pars,
+                                                 y_init, t0, h, h_max, rtol, atol, max_steps)
+        self._stops: dict = {}
+        self._cap = 256
+
+    def stops(self, p: np.ndarray) -> np.ndarray:
+        """Stop times for parameters p (cached: they depend on p only through the cam inputs)."""
+        return self._stops_and_cap(p)[0]
+
+    def _stops_and_cap(self, p: np.ndarray):
+        key = p.tobytes()
+        hit = self._stops.get(key)
+        if hit is None:
+            if len(self._stops) > 256:
+                self._stops.clear()
+            stops = stop_times(self.model, p, self.laws, self.t0, self.t_end)
+            cap = 0 if self.method.adaptive else _integrate.fixed_step_points(self.t0, stops, self.method.step)
+            hit = self._stops[key] = (stops, cap)
+        return hit
+
+    def run(self, params: dict | None = None) -> Result:
+        """One run with these parameter values (defaults for the ones not given)."""
+        m = self.model
+        p = m.parameter_vector(params)
+        stops, cap = self._stops_and_cap(p)
+        out = self._integrator.run(p, stops, cap or self._cap)
+        if out[0] != 0:
+            raise SimulationError(f"{m.name} with {self.method.name}: "
+                                  f"{_integrate.STATUS_TEXT[out[0]]} at "
+                                  f"{m.manifest['time']['name']} = {out[7]:.6g}")
+        if not cap:
+            self._cap = max(256, out[3] + out[3] // 4)
+        return Result(self, p, out)
+
+
+@lru_cache(maxsize=32)
+def _prepared(model, t_end, method, rtol, atol, step, law, theta, y0, t0, max_steps) -> Simulator:
+    return Simulator(model, t_end, method, rtol=rtol, atol=atol, step=step,
+                     law=dict(law) if isinstance(law, tuple) else law,
+                     theta=theta, y0=y0, t0=t0, max_steps=max_steps)
+
+
+def simulate(model, params: dict | None = None, t_end: float = 3.0, method="dp54", *,
+             rtol: float | None = None, atol: float | None = None, step: float | None = None,
+             law="cycloidal", theta: float | None = None, y0=None, t0: float = 0.0,
+             max_steps: int = 5_000_000) -> Result:
+    """Integrate ``model`` from t0 to t_end with ``params`` (see :class:`Simulator`).
+
+    The prepared Simulator is kept for the next call with the same settings.
+    """
+    key_law = tuple(sorted(law.items())) if isinstance(law, dict) else law
+    key_y0 = None if y0 is None else tuple(np.asarray(y0, dtype=float).ravel().tolist())
     try:
-        t0, t_end = float(t0), float(t_end)
-    except (TypeError, ValueError):
-        raise CamdynInputError("t0 and t_end must be numbers") from None
-    if not (math.isfinite(t0) and math.isfinite(t_end) and t_end > t0):
-        raise CamdynInputError(f"t_end={t_end:g} must be finite and greater than t0={t0:g}")
-    chosen, codes, pars = _law_choices(m, law, theta)
-    n = len(m.state_names)
-    y_init = m.initial_state() if y0 is None else np.array(y0, dtype=float).ravel()
-    if y_init.shape != (n,) or not np.all(np.isfinite(y_init)):
-        raise CamdynInputError(f"y0 must be {n} finite numbers ({', '.join(m.state_names)})")
-    stops = stop_times(m, p, chosen, t0, t_end)
-    if method.adaptive:
-        atol_vec = (method.atol if method.atol is not None else 1e-3 * method.rtol) * m.state_scales()
-        h, h_max, rtol_v = method.first_step or 0.0, min(method.max_step, t_end - t0), method.rtol
-    else:
-        atol_vec, h, h_max, rtol_v = np.ones(n), method.step, method.step, 0.0
-        if (t_end - t0) / method.step > max_steps:
-            raise CamdynInputError(
-                f"step={method.step:g} needs more than max_steps={max_steps} steps over "
-                f"[{t0:g}, {t_end:g}]")
-    c0 = _time.process_time()
-    raw = _integrate.integrate(m.capsule, method.code, p, codes, pars, y_init, t0, stops, h, h_max,
-                               rtol_v, np.ascontiguousarray(atol_vec, dtype=float), int(max_steps))
-    cpu = _time.process_time() - c0
-    if raw["status"] != 0:
-        raise SimulationError(f"{m.name} with {method.name}: {raw['message']} at "
-                              f"{m.manifest['time']['name']} = {raw['t_fail']:.6g}")
-    values = dict(zip(m.parameter_names, p.tolist()))
-    return Result(m, values, p, (codes, pars), chosen, method, raw, cpu)
+        sim = _prepared(model, t_end, method, rtol, atol, step, key_law, theta, key_y0, t0, max_steps)
+    except TypeError:  # unhashable settings: prepare without the cache
+        sim = Simulator(model, t_end, method, rtol=rtol, atol=atol, step=step, law=law,
+                        theta=theta, y0=y0, t0=t0, max_steps=max_steps)
+    return sim.run(params)

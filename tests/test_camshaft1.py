@@ -12,11 +12,17 @@ from .conftest import residual_of
 @pytest.mark.parametrize("method,opts", [("rk4", {"step": 0.002}), ("koster", {"step": 0.002}),
                                          ("dp54", {"rtol": 1e-9})])
 def test_fa_zero_is_the_one_dof_model(method, opts):
-    """At Fa = 0, CAMSHAFT-1 is the one-DOF model of ch. 3: the same steps give the same states."""
+    """At Fa = 0, CAMSHAFT-1 is the one-DOF model of ch. 3: fixed steps give the same states
+    up to rounding (the generated expressions differ in form); DP54's step-size choices
+    may differ by rounding, so there the two agree to the tolerance."""
     a = simulate("camshaft1", {"tau": 0.15, "Fa": 0.0}, 3.0, method, **opts)
     b = simulate("one_dof", {"tau": 0.15}, 3.0, method, **opts)
-    np.testing.assert_array_equal(a.t, b.t)
-    np.testing.assert_allclose(a.y, b.y, rtol=0, atol=1e-13)
+    if method == "dp54":
+        T = np.linspace(0.0, 3.0, 601)
+        np.testing.assert_allclose(a.sample(T)["X"], b.sample(T)["X"], rtol=0, atol=1e-7)
+    else:
+        np.testing.assert_array_equal(a.t, b.t)
+        np.testing.assert_allclose(a.y, b.y, rtol=0, atol=1e-12)
 
 
 @pytest.mark.parametrize("Fa", [0.3, 2.0, 3.34])

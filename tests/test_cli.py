@@ -49,6 +49,8 @@ def test_residual_text_and_law():
     (["--model", "camshaft1", "--tau", "0.15", "--rtol", "1e-6", "--step", "0.01"], "--step"),
     (["--model", "camshaft1", "--tau", "0.15", "--method", "rk4", "--step", "-1"], "step"),
     (["--model", "one-dof", "--tau", "0.15", "--fa", "1"], "--fa"),
+    (["--model", "camshaft1", "--tau", "0.15", "--q", "0.05"], "--q"),
+    (["--model", "one-dof", "--tau", "0.15", "--q", "1.5"], "--q"),
     (["--model", "camshaft2", "--tau", "0.15"], "--model"),
     (["--model", "one-dof"], "--tau"),
     (["--model", "one-dof", "--tau", "0.2", "--law", "modified-sine", "--theta", "0.5"], "--theta"),

@@ -148,7 +148,7 @@ def test_generated_files_say_so_and_carry_the_hash():
 def test_manifest_describes_the_model():
     m = load("camshaft1").manifest
     assert [s["name"] for s in m["states"]] == ["X", "Xd"]
-    assert [p["name"] for p in m["parameters"]] == ["tau", "Fa", "q"]
+    assert [p["name"] for p in m["parameters"]] == ["tau", "Fa"]
     assert {o["name"] for o in m["outputs"]} >= {"Xdd", "U", "H", "Hd", "Hdd", "c_rel"}
     assert m["cam_instances"] == [{"argument": "T", "family": "H", "time_affine": True}]
     assert m["parameters"][1]["range"] == "0 <= Fa <= 100"
@@ -156,7 +156,14 @@ def test_manifest_describes_the_model():
 
 
 def test_common_subexpressions_are_shared():
-    """The stiffness denominator 1 + Fa H'^2 is computed once in CAMSHAFT-1's rhs."""
+    """The stiffness denominator 1 + Fa H'^2 is computed once in CAMSHAFT-1's rhs, the
+    parameter-only factor (2 pi/tau)^2 once per run in prepare(), and the dwell variant
+    has no division left."""
     text = (ROOT / "generated" / "camshaft1.pyx").read_text()
-    rhs = text.split("cdef void rhs")[1].split("cdef void outputs")[0]
-    assert rhs.count("Fa*") == 1
+    rhs = text.split("cdef inline void rhs")[1].split("cdef void outputs")[0]
+    general, dwell = rhs.split("if _v == 0:")[1].split("elif _v == 1:")
+    assert general.count("Fa*") == 1
+    assert "tau" not in general and "tau" not in dwell
+    assert "/" not in dwell
+    prepare = text.split("cdef void prepare")[1].split("cdef inline void rhs")[0]
+    assert "(tau*tau)" in prepare

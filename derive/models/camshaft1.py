@@ -13,9 +13,8 @@ thesis's assumption dh'/dbeta = h'/w_s (4.8) and the constant pitch radius
 
     kinetic energy     1/2 X'^2
     potential energy   1/2 c(T) (H - X)^2,   c(T) = (2 pi/tau)^2/(1 + H'^2 Fa)
-    dissipation        q (2 pi/tau) (X' - H')^2   (optional; the thesis has q = 0
-                                                 during the rise, sec. 4.2.4)
 
+and there is no damping (sec. 4.2.4: ignored during the rise, as in ch. 3).
 c depends on T only, so Lagrange's equations give (4.15) exactly.  At Fa = 0
 the model is the one-DOF model of ch. 3; the stiffness dip is 1 + 4 Fa (4.19)
 for the cycloid.
@@ -32,8 +31,6 @@ tau = Parameter("tau", 0.15, "1", "T_e/t_m at zero slope (4.11), (4.12)",
                 low=0.0, high=10.0, open_low=True)
 Fa = Parameter("Fa", 2.0, "1", "shaft stiffness factor (c_c/c_tan) tan^2 alpha_me (4.14)",
                low=0.0, high=100.0)
-q = Parameter("q", 0.0, "1", "relative damping, d = 2 q sqrt(m c_c) (6.47)",
-              low=0.0, high=1.0, open_high=True)
 
 
 def build() -> Model:
@@ -50,8 +47,7 @@ def build() -> Model:
         coordinates=(X,),
         kinetic=x.diff(T) ** 2 / 2,
         potential=c * (h - x) ** 2 / 2,
-        dissipation=q.symbol * w * (x.diff(T) - h.diff(T)) ** 2,
-        parameters=(tau, Fa, q),
+        parameters=(tau, Fa),
         outputs=(
             Output("Xdd", x.diff(T, 2), "h_m'/t_m^2", "follower acceleration X''"),
             Output("U", x - h, "h_m'", "positional error X - H"),

@@ -1,0 +1,425 @@
+# The integration loops of camdyn: classical RK4, Dormand-Prince 5(4) and the
+# thesis's CAMSHAFT-1 scheme (4.23)-(4.31), written once here.
+#
+# Every generated model module includes this file after defining its inline
+# `rhs`, `update_modes` and `prepare` (see camdyn/derive/templates/model.pyx.j2),
+# so the C compiler inlines the model into every stage; camdyn.runtime._integrate
+# calls the resulting `run_loops` through ModelC.run once per run.  The types
+# (Run, Record, Ctx) and codes are in abi.pxd.
+#
+# Breakpoints.  The run goes from stop to stop (cam-law breakpoints in time,
+# then the end time).  The cam segments (modes) are fixed at the start of each
+# interval, steps are shortened to land on its end, and the state is recorded
+# twice at a stop: as the left limit (old modes and slope) and as the right
+# limit (new modes, new slope).
+#
+# Dense output.  Every point stores its slope f; on the step from point i to
+# i + 1 (length h) the state is
+#
+#     y(t_i + s h) = y_i + s (r1 + (1 - s) (r2 + s (r3 + (1 - s) r4)))
+#     r1 = y_i+1 - y_i,  r2 = h f_i - r1,  r3 = r1 - h f_i+1 - r2,
+#
+# Hairer's continuous-extension form: r4 = 0 is the cubic Hermite interpolant
+# (RK4, thesis scheme); DP54 stores its fourth-order r4 per step in `extra`.
+
+from libc.math cimport fabs, fmax, fmin, isfinite, pow, sqrt
+from libc.stdlib cimport free, malloc
+from libc.string cimport memcpy, memset
+
+
+cdef int _rec_grow(Record* r) noexcept nogil:
+    """Double the record's capacity in buffers of its own (copying what is there)."""
+    cdef Py_ssize_t cap = 2 * r.cap if r.cap >= 32 else 64
+    cdef double* rows = <double*> malloc(cap * r.width * sizeof(double))
+    cdef int* mode = <int*> malloc(cap * (_NM if _NM > 0 else 1) * sizeof(int))
+    if rows == NULL or mode == NULL:
+        free(rows)
+        free(mode)
+        return -1
+    if r.n:
+        memcpy(rows, r.rows, r.n * r.width * sizeof(double))
+        if _NM:
+            memcpy(mode, r.mode, r.n * _NM * sizeof(int))
+    if r.owned:
+        free(r.rows)
+        free(r.mode)
+    r.rows = rows
+    r.mode = mode
+    r.cap = cap
+    r.owned = True
+    return 0
+
+
+cdef inline int _rec_point(Run* run, double t, const double* y, const double* f) noexcept nogil:
+    cdef Record* r = &run.rec
+    cdef Py_ssize_t n = r.n
+    cdef double* row
+    if n == r.cap:
+        if _rec_grow(r) != 0:
+            return -1
+    row = r.rows + n * r.width
+    row[0] = t
+    memcpy(row + 1, y, _NS * sizeof(double))
+    memcpy(row + 1 + _NS, f, _NS * sizeof(double))
+    if r.with_extra:
+        memset(row + 1 + 2 * _NS, 0, _NS * sizeof(double))
+    if _NM:
+        memcpy(&r.mode[n * _NM], run.ctx.mode, _NM * sizeof(int))
+    r.n = n + 1
+    return 0
+
+
+cdef inline bint _finite(int n, const double* y) noexcept nogil:
+    cdef int i
+    for i in range(n):
+        if not isfinite(y[i]):
+            return False
+    return True
+
+
+cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
+    """RK4 or the thesis scheme over [a, b] in equal steps no longer than run.h.
+
+    State and stages live in local arrays of compile-time size (_NS, _NQ from
+    the including model) and the context is a local copy, so that the compiler
+    can keep them in registers.
+    """
+    cdef Ctx local_ctx = run.ctx[0]
+    cdef Ctx* ctx = &local_ctx
+    cdef int i, it, status = STATUS_OK
+    cdef long k, nstep = fixed_steps(a, b, run.h), n_rhs = 0, n_steps = run.n_steps
+    cdef long max_steps = run.max_steps
+    cdef bint rk4 = run.method == METHOD_RK4
+    cdef double h = (b - a) / nstep, hh = 0.5 * h, h6 = h / 6.0, t = a, tn, amax, diff, prev
+    cdef double y[_NS]
+    cdef double k1[_NS]
+    cdef double k2[_NS]
+    cdef double k3[_NS]
+    cdef double k4[_NS]
+    cdef double yn[_NS]
+    cdef double acc[_NQ]
+    memcpy(y, run.y, sizeof(y))
+    rhs(t, y, k1, ctx)
+    n_rhs += 1
+    if _rec_point(run, t, y, k1) != 0:
+        return STATUS_NO_MEMORY
+    for k in range(nstep):
+        if n_steps >= max_steps:
+            status = STATUS_MAX_STEPS
+            break
+        # the new time is computed once, so that the last stage and the slope at the new
+        # point see the very same t (the model caches cam-law values by argument)
+        tn = a + (k + 1) * h if k + 1 < nstep else b
+        if rk4:
+            for i in range(_NS):
+                yn[i] = y[i] + hh * k1[i]
+            rhs(t + hh, yn, k2, ctx)
+            for i in range(_NS):
+                yn[i] = y[i] + hh * k2[i]
+            rhs(t + hh, yn, k3, ctx)
+            for i in range(_NS):
+                yn[i] = y[i] + h * k3[i]
+            rhs(tn, yn, k4, ctx)
+            for i in range(_NS):
+                yn[i] = y[i] + h6 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i])
+            n_rhs += 3
+        else:
+            # thesis (4.23)-(4.31): X'' held constant over the step at its value at
+            # mid-step theta = h/2, taken at X + dX, dX = X' theta + X'' theta^2/2 (4.24);
+            # solved by fixed-point iteration (the thesis eliminates dX by hand, (4.25))
+            for i in range(_NQ):
+                acc[i] = k1[_NQ + i]
+            prev = 1e300
+            for it in range(100):
+                for i in range(_NQ):
+                    yn[i] = y[i] + (y[_NQ + i] + 0.5 * acc[i] * hh) * hh
+                    yn[_NQ + i] = y[_NQ + i] + acc[i] * hh
+                rhs(t + hh, yn, k2, ctx)
+                n_rhs += 1
+                amax = 0.0
+                diff = 0.0
+                for i in range(_NQ):
+                    diff = fmax(diff, fabs(k2[_NQ + i] - acc[i]))
+                    amax = fmax(amax, fabs(k2[_NQ + i]))
+                    acc[i] = k2[_NQ + i]
+                # converged, or stalled at the rounding level of the acceleration
+                if diff <= 1e-13 * (1.0 + amax) or (diff >= prev and diff <= 1e-9 * (1.0 + amax)):
+                    break
+                prev = diff
+            else:
+                status = STATUS_NO_CONVERGENCE
+                break
+            for i in range(_NQ):
+                yn[i] = y[i] + (y[_NQ + i] + 0.5 * acc[i] * h) * h      # (4.30), (4.31)
+                yn[_NQ + i] = y[_NQ + i] + acc[i] * h                    # (4.28), (4.29)
+        if not _finite(_NS, yn):
+            status = STATUS_NOT_FINITE
+            break
+        t = tn
+        memcpy(y, yn, sizeof(y))
+        rhs(t, y, k1, ctx)   # slope at the new point: recorded, and the next step's k1
+        n_rhs += 1
+        n_steps += 1
+        if _rec_point(run, t, y, k1) != 0:
+            status = STATUS_NO_MEMORY
+            break
+    memcpy(run.y, y, sizeof(y))
+    run.n_rhs += n_rhs
+    run.n_steps = n_steps
+    if status != STATUS_OK:
+        run.t_fail = t
+    return status
+
+
+# Dormand-Prince 5(4) (Dormand & Prince 1980) and Hairer's dense-output weights,
+# as C compile-time constants
+cdef extern from *:
+    """
+    #define DP_C2 (1.0 / 5)
+    #define DP_C3 (3.0 / 10)
+    #define DP_C4 (4.0 / 5)
+    #define DP_C5 (8.0 / 9)
+    #define DP_A21 (1.0 / 5)
+    #define DP_A31 (3.0 / 40)
+    #define DP_A32 (9.0 / 40)
+    #define DP_A41 (44.0 / 45)
+    #define DP_A42 (-56.0 / 15)
+    #define DP_A43 (32.0 / 9)
+    #define DP_A51 (19372.0 / 6561)
+    #define DP_A52 (-25360.0 / 2187)
+    #define DP_A53 (64448.0 / 6561)
+    #define DP_A54 (-212.0 / 729)
+    #define DP_A61 (9017.0 / 3168)
+    #define DP_A62 (-355.0 / 33)
+    #define DP_A63 (46732.0 / 5247)
+    #define DP_A64 (49.0 / 176)
+    #define DP_A65 (-5103.0 / 18656)
+    #define DP_B1 (35.0 / 384)
+    #define DP_B3 (500.0 / 1113)
+    #define DP_B4 (125.0 / 192)
+    #define DP_B5 (-2187.0 / 6784)
+    #define DP_B6 (11.0 / 84)
+    #define DP_E1 (71.0 / 57600)
+    #define DP_E3 (-71.0 / 16695)
+    #define DP_E4 (71.0 / 1920)
+    #define DP_E5 (-17253.0 / 339200)
+    #define DP_E6 (22.0 / 525)
+    #define DP_E7 (-1.0 / 40)
+    #define DP_D1 (-12715105075.0 / 11282082432)
+    #define DP_D3 (87487479700.0 / 32700410799)
+    #define DP_D4 (-10690763975.0 / 1880347072)
+    #define DP_D5 (701980252875.0 / 199316789632)
+    #define DP_D6 (-1453857185.0 / 822651844)
+    #define DP_D7 (69997945.0 / 29380423)
+    """
+    const double DP_C2
+    const double DP_C3
+    const double DP_C4
+    const double DP_C5
+    const double DP_A21
+    const double DP_A31
+    const double DP_A32
+    const double DP_A41
+    const double DP_A42
+    const double DP_A43
+    const double DP_A51
+    const double DP_A52
+    const double DP_A53
+    const double DP_A54
+    const double DP_A61
+    const double DP_A62
+    const double DP_A63
+    const double DP_A64
+    const double DP_A65
+    const double DP_B1
+    const double DP_B3
+    const double DP_B4
+    const double DP_B5
+    const double DP_B6
+    const double DP_E1
+    const double DP_E3
+    const double DP_E4
+    const double DP_E5
+    const double DP_E6
+    const double DP_E7
+    const double DP_D1
+    const double DP_D3
+    const double DP_D4
+    const double DP_D5
+    const double DP_D6
+    const double DP_D7
+
+
+cdef inline double _absmax(double a, double b) noexcept nogil:
+    a = -a if a < 0.0 else a
+    b = -b if b < 0.0 else b
+    return a if a > b else b
+
+
+cdef inline double _rms(const double* v, const double* y0, const double* y1,
+                        double rtol, const double* atol) noexcept nogil:
+    cdef int i
+    cdef double s = 0.0, e
+    for i in range(_NS):
+        e = v[i] / (atol[i] + rtol * _absmax(y0[i], y1[i]))
+        s += e * e
+    return sqrt(s / _NS)
+
+
+cdef double _dp_first_step(Run* run, double t, const double* y, const double* f0,
+                           double span) noexcept nogil:
+    """Starting step from the sizes of y, y' and y'' (Hairer, Norsett & Wanner, II.4)."""
+    cdef int i
+    cdef double y1[_NS]
+    cdef double f1[_NS]
+    cdef double d0 = _rms(y, y, y, run.rtol, run.atol)
+    cdef double d1 = _rms(f0, y, y, run.rtol, run.atol)
+    cdef double h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
+    cdef double d2, h1
+    h0 = fmin(h0, span)
+    for i in range(_NS):
+        y1[i] = y[i] + h0 * f0[i]
+    rhs(t + h0, y1, f1, run.ctx)
+    run.n_rhs += 1
+    for i in range(_NS):
+        f1[i] -= f0[i]
+    d2 = _rms(f1, y, y, run.rtol, run.atol) / h0
+    if fmax(d1, d2) <= 1e-15:
+        h1 = fmax(1e-6, h0 * 1e-3)
+    else:
+        h1 = pow(0.01 / fmax(d1, d2), 0.2)
+    return fmin(fmin(100.0 * h0, h1), span)
+
+
+cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
+    """Dormand-Prince 5(4) over [a, b]: local extrapolation, PI step-size control."""
+    cdef Ctx local_ctx = run.ctx[0]
+    cdef Ctx* ctx = &local_ctx
+    cdef int i, status = STATUS_OK
+    cdef double y[_NS]
+    cdef double k1[_NS]
+    cdef double k2[_NS]
+    cdef double k3[_NS]
+    cdef double k4[_NS]
+    cdef double k5[_NS]
+    cdef double k6[_NS]
+    cdef double k7[_NS]
+    cdef double yn[_NS]
+    cdef double ys[_NS]
+    cdef double ev[_NS]
+    cdef double* r4
+    cdef double t = a, h, err, fac, rtol = run.rtol
+    cdef const double* atol = run.atol
+    cdef long n_steps = run.n_steps, n_rej = run.n_rejected, n_rhs = 0, max_steps = run.max_steps
+    cdef bint last, rejected = False
+    memcpy(y, run.y, sizeof(y))
+    # slopes jump at a breakpoint: every interval starts afresh
+    rhs(t, y, k1, ctx)
+    n_rhs += 1
+    if _rec_point(run, t, y, k1) != 0:
+        return STATUS_NO_MEMORY
+    if run.h <= 0.0:
+        run.h = _dp_first_step(run, t, y, k1, fmin(b - a, run.h_max))
+    h = fmin(run.h, run.h_max)
+    run.err_old = 1e-4
+    while t < b:
+        if n_steps + n_rej >= max_steps:
+            status = STATUS_MAX_STEPS
+            break
+        if h < 16.0 * 2.220446049250313e-16 * fmax(fabs(t), fabs(b)):
+            status = STATUS_STEP_UNDERFLOW
+            break
+        last = t + 1.01 * h >= b
+        if last:
+            h = b - t
+        for i in range(_NS):
+            ys[i] = y[i] + h * DP_A21 * k1[i]
+        rhs(t + DP_C2 * h, ys, k2, ctx)
+        for i in range(_NS):
+            ys[i] = y[i] + h * (DP_A31 * k1[i] + DP_A32 * k2[i])
+        rhs(t + DP_C3 * h, ys, k3, ctx)
+        for i in range(_NS):
+            ys[i] = y[i] + h * (DP_A41 * k1[i] + DP_A42 * k2[i] + DP_A43 * k3[i])
+        rhs(t + DP_C4 * h, ys, k4, ctx)
+        for i in range(_NS):
+            ys[i] = y[i] + h * (DP_A51 * k1[i] + DP_A52 * k2[i] + DP_A53 * k3[i] + DP_A54 * k4[i])
+        rhs(t + DP_C5 * h, ys, k5, ctx)
+        for i in range(_NS):
+            ys[i] = y[i] + h * (DP_A61 * k1[i] + DP_A62 * k2[i] + DP_A63 * k3[i] + DP_A64 * k4[i]
+                                + DP_A65 * k5[i])
+        rhs(t + h, ys, k6, ctx)
+        for i in range(_NS):
+            yn[i] = y[i] + h * (DP_B1 * k1[i] + DP_B3 * k3[i] + DP_B4 * k4[i] + DP_B5 * k5[i]
+                                + DP_B6 * k6[i])
+        rhs(t + h, yn, k7, ctx)
+        n_rhs += 6
+        for i in range(_NS):
+            ev[i] = h * (DP_E1 * k1[i] + DP_E3 * k3[i] + DP_E4 * k4[i] + DP_E5 * k5[i]
+                         + DP_E6 * k6[i] + DP_E7 * k7[i])
+        err = _rms(ev, y, yn, rtol, atol)
+        if not isfinite(err):
+            # a NaN in a trial stage: retry smaller unless the start itself is bad
+            if not _finite(_NS, y):
+                status = STATUS_NOT_FINITE
+                break
+            h *= 0.2
+            n_rej += 1
+            rejected = True
+            continue
+        if err <= 1.0:
+            # accepted: PI step-size control (Gustafsson), exponents as in Hairer's DOPRI5
+            if err == 0.0:
+                fac = 10.0
+            else:
+                fac = fmin(10.0, fmax(0.2, 0.9 * pow(err, -0.17) * pow(run.err_old, 0.04)))
+            if rejected:
+                fac = fmin(fac, 1.0)
+            run.err_old = fmax(err, 1e-4)
+            r4 = run.rec.rows + (run.rec.n - 1) * run.rec.width + 1 + 2 * _NS
+            for i in range(_NS):
+                r4[i] = h * (DP_D1 * k1[i] + DP_D3 * k3[i] + DP_D4 * k4[i] + DP_D5 * k5[i]
+                             + DP_D6 * k6[i] + DP_D7 * k7[i])
+            t = b if last else t + h
+            memcpy(y, yn, sizeof(y))
+            memcpy(k1, k7, sizeof(k1))
+            n_steps += 1
+            if _rec_point(run, t, y, k1) != 0:
+                status = STATUS_NO_MEMORY
+                break
+            if not last:
+                run.h = h
+            h = fmin(h * fac, run.h_max)
+            rejected = False
+        else:
+            h *= fmax(0.2, 0.9 * pow(err, -0.2))
+            n_rej += 1
+            rejected = True
+    memcpy(run.y, y, sizeof(y))
+    run.n_steps = n_steps
+    run.n_rejected = n_rej
+    run.n_rhs += n_rhs
+    if status != STATUS_OK:
+        run.t_fail = t
+    return status
+
+
+cdef int run_loops(Run* run) noexcept nogil:
+    """Integrate from run.t0 through every stop; the record and statistics go into run."""
+    cdef int k, status = STATUS_OK
+    cdef double a = run.t0, b
+    if run.method == METHOD_KOSTER and _NS != 2 * _NQ:
+        return STATUS_BAD_MODEL
+    prepare(run.ctx)
+    for k in range(run.n_stops):
+        b = run.stops[k]
+        if b <= a:
+            continue
+        update_modes(a, run.y, run.ctx)
+        if run.method == METHOD_DP54:
+            status = _loop_dp54(run, a, b)
+        else:
+            status = _loop_fixed(run, a, b)
+        if status != STATUS_OK:
+            return status
+        a = b
+    return STATUS_OK
