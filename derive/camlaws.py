@@ -67,12 +67,17 @@ class CamLaw:
     bounds: tuple
     """Breakpoints 0 = b0 < b1 < ... < bK = 1 of the rise (may contain theta)."""
     acceleration: tuple
-    """H''(T) on each piece, written with the amplitude symbol ``A``."""
+    """H''(T) on each piece, written with the amplitude symbol ``A``; empty when the law is
+    declared by its displacement (laws with impulsive acceleration)."""
     parameter: LawParameter | None = None
+    displacement: tuple = ()
+    """H(T) on each piece, for laws whose acceleration is impulsive (uniform motion)."""
 
     # -- derived symbolically -------------------------------------------------
     @cached_property
     def _derived(self):
+        if self.displacement:
+            return self.displacement, None
         pieces, v0, h0 = [], sp.Integer(0), sp.Integer(0)
         for k, acc in enumerate(self.acceleration):
             lo, hi = self.bounds[k], self.bounds[k + 1]
@@ -90,8 +95,9 @@ class CamLaw:
         return tuple(sp.simplify(h.subs(_A, amp)) for h in pieces), amp
 
     @property
-    def amplitude(self) -> sp.Expr:
-        """Acceleration amplitude fixed by H(1) = 1 (e.g. H''max, (A.2.17))."""
+    def amplitude(self) -> sp.Expr | None:
+        """Acceleration amplitude fixed by H(1) = 1 (e.g. H''max, (A.2.17)); None when the
+        acceleration is impulsive."""
         return self._derived[1]
 
     @property
@@ -139,9 +145,10 @@ class CamLaw:
         return lambda t: np.broadcast_to(f(np.asarray(t, dtype=float)), np.shape(t)) * 1.0
 
 
-def _law(key, code, title, reference, bounds, acceleration, parameter=None):
+def _law(key, code, title, reference, bounds, acceleration, parameter=None, displacement=()):
     return CamLaw(key, code, title, reference, tuple(sp.sympify(b) for b in bounds),
-                  tuple(sp.sympify(a) for a in acceleration), parameter)
+                  tuple(sp.sympify(a) for a in acceleration), parameter,
+                  tuple(sp.sympify(h) for h in displacement))
 
 
 _pi = sp.pi
@@ -170,6 +177,9 @@ for _l in (
          (0, sp.Rational(1, 8), sp.Rational(3, 8), sp.Rational(5, 8), sp.Rational(7, 8), 1),
          [_A * sp.sin(4 * _pi * T), _A, _A * sp.cos(4 * _pi * (T - sp.Rational(3, 8))), -_A,
           -_A * sp.cos(4 * _pi * (T - sp.Rational(7, 8)))]),
+    # uniform motion: H' jumps from 0 to 1 at T = 0, the ramp input of the impact model (3.8)
+    _law("uniform", 7, "Uniform motion (constant velocity)", "H = T; ramp input (3.8)", (0, 1),
+         [], displacement=[T]),
 ):
     LAWS[_l.key] = _l
 

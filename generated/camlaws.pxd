@@ -16,6 +16,7 @@
 #   4  parabolic            Parabolic (constant acceleration), H'' = +-4; H''max = 4
 #   5  4-5-6-7              4-5-6-7 polynomial, H = 35 T^4 - 84 T^5 + 70 T^6 - 20 T^7; H''max = 420
 #   6  modified-trapezoid   Modified trapezoid, jerk-limited, eighths of the rise; H''max = 8*pi/(2 + pi)
+#   7  uniform              Uniform motion (constant velocity), H = T; ramp input (3.8); H''max = impulsive
 
 from libc.math cimport sin, cos, M_PI
 
@@ -78,6 +79,12 @@ cdef inline int camlaw_segment(int law, double par, double T) noexcept nogil:
         if T < 1.0:
             return 5
         return 6
+    elif law == 7:  # uniform
+        if T < 0.0:
+            return 0
+        if T < 1.0:
+            return 1
+        return 2
     return -1
 
 
@@ -99,6 +106,8 @@ cdef inline bint camlaw_dwell(int law, int seg) noexcept nogil:
         return seg == 2
     elif law == 6:
         return seg == 6
+    elif law == 7:
+        return seg == 2
     return False
 
 
@@ -335,6 +344,24 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
             out[2] = 25.132741228718345*c0*c4
             out[3] = 32.0*c0*c1*c5
         elif seg == 6:
+            out[0] = 1.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        else:
+            out[0] = out[1] = out[2] = out[3] = 0.0
+    elif law == 7:  # uniform
+        if seg == 0:
+            out[0] = 0.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        elif seg == 1:
+            out[0] = T
+            out[1] = 1.0
+            out[2] = 0.0
+            out[3] = 0.0
+        elif seg == 2:
             out[0] = 1.0
             out[1] = 0.0
             out[2] = 0.0

@@ -110,6 +110,18 @@ _LAWS_JSON = """
   "parameter": null,
   "reference": "jerk-limited, eighths of the rise",
   "title": "Modified trapezoid"
+ },
+ {
+  "amplitude": "None",
+  "bounds": [
+   "0.0",
+   "1.0"
+  ],
+  "code": 7,
+  "key": "uniform",
+  "parameter": null,
+  "reference": "H = T; ramp input (3.8)",
+  "title": "Uniform motion (constant velocity)"
  }
 ]
 """
@@ -151,4 +163,6 @@ def breakpoints(int law, double par):
         return [0.0, 1.0]
     elif law == 6:  # modified-trapezoid
         return [0.0, 1.0/8.0, 3.0/8.0, 5.0/8.0, 7.0/8.0, 1.0]
+    elif law == 7:  # uniform
+        return [0.0, 1.0]
     raise ValueError(f"unknown cam law code {law}")

@@ -2,6 +2,7 @@
 
     camdyn derive [--check] [--out DIR]     regenerate generated/ (or check it)
     camdyn residual --model M --tau T ...   residual vibration of one rise
+    camdyn check [--json]                   every comparison with the thesis
     camdyn run [SCENE.toml] [--out DIR]     the main job: report and charts
 
 Bad arguments end in one line on stderr naming the argument, and status 2.
@@ -134,6 +135,66 @@ def _name_argument(message: str) -> str:
     return message
 
 
+# -- camdyn check -------------------------------------------------------------------
+
+def _cmd_check(args) -> int:
+    from . import checks
+
+    try:
+        topics = checks.TOPICS if not args.topic else tuple(args.topic)
+        unknown = sorted(set(topics) - set(checks.TOPICS))
+        if unknown:
+            return _fail("camdyn check", f"argument --topic: unknown topic {unknown[0]!r}; "
+                                         f"choose from {', '.join(checks.TOPICS)}")
+        todo = [c for c in checks.registry(topics) if not args.k or args.k in c.key]
+    except Exception as exc:
+        return _fail("camdyn check", f"cannot load the checks: {exc}")
+    outcomes = []
+    for i, c in enumerate(todo, 1):
+        if not args.json and not args.quiet:
+            print(f"  [{i}/{len(todo)}] {c.key}", file=sys.stderr, flush=True)
+        outcomes.append(checks.run(c))
+    if args.json:
+        print(json.dumps({"passed": all(o.passed for o in outcomes),
+                          "checks": [o.as_dict() for o in outcomes]}, indent=1))
+    else:
+        _print_check_table(outcomes)
+    return 0 if all(o.passed for o in outcomes) else 1
+
+
+def _fmt(value) -> str:
+    if isinstance(value, bool):
+        return "identical" if value else "differs"
+    if value is None:
+        return "-"
+    try:
+        return f"{float(value):.4g}"
+    except (TypeError, ValueError):
+        return str(value)
+
+
+def _print_check_table(outcomes) -> None:
+    rows = [("item", "reference", "printed", "derived", "rel. diff", "status")]
+    for o in outcomes:
+        c = o.check
+        rel = "-" if o.rel_diff is None else f"{o.rel_diff:.2g}"
+        derived = o.error if o.error else _fmt(o.derived)
+        rows.append((c.item, c.reference, c.printed or "(symbolic)", derived, rel, o.status))
+    widths = [min(max(len(r[i]) for r in rows), 60) for i in range(len(rows[0]))]
+    for k, r in enumerate(rows):
+        print("  ".join(cell[:60].ljust(widths[i]) for i, cell in enumerate(r)).rstrip())
+        if k == 0:
+            print("  ".join("-" * w for w in widths))
+    n_fail = sum(not o.passed for o in outcomes)
+    n_err = sum(o.check.errata for o in outcomes)
+    print(f"\n{len(outcomes)} checks: {len(outcomes) - n_fail} passed ({n_err} of them printed "
+          f"values shown to be misprints), {n_fail} failed, "
+          f"{sum(o.seconds for o in outcomes):.1f} s")
+    for o in outcomes:
+        if o.check.errata and o.check.note:
+            print(f"  errata {o.check.key}: {o.check.note}")
+
+
 # -- camdyn run ---------------------------------------------------------------------
 
 def _cmd_run(args) -> int:
@@ -174,6 +235,13 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--t-end", type=float, default=3.0, help="end of the dwell, in T (default 3)")
     r.add_argument("--json", action="store_true", help="one JSON object on stdout")
     r.set_defaults(func=_cmd_residual)
+
+    c = sub.add_parser("check", help="every comparison with the thesis, as a table")
+    c.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    c.add_argument("-k", default=None, help="only checks whose key contains this text")
+    c.add_argument("--topic", action="append", help="only this topic (repeatable)")
+    c.add_argument("--quiet", action="store_true", help="no progress lines")
+    c.set_defaults(func=_cmd_check)
 
     m = sub.add_parser("run", help="the main job on a scene (default: the embedded one)")
     m.add_argument("scene", nargs="?", default=None, help="scene TOML (default: embedded)")

@@ -36,21 +36,6 @@ def test_stiffness_dip_4_19_from_generated_outputs(Fa):
     assert c_max == 1.0
 
 
-def test_magnification_at_tau_015_sec_4_7():
-    """Sec. 4.7 (1): at tau = 0.15, Fa = 2 the residual amplitude is about 17.5 times that at
-    Fa = 0 (read from fig. 4.10/4.11a; we allow 10 %)."""
-    ratio = residual_of("camshaft1", 0.15, 2.0).U0 / residual_of("camshaft1", 0.15, 0.0).U0
-    assert ratio == pytest.approx(17.5, rel=0.10)
-
-
-def test_magnification_at_tau_02_sec_4_7():
-    """Sec. 4.7 (2): at tau = 0.2, Fa = 2, U0 is about 20 times the Fa = 0 envelope (3.5)
-    (tau = 0.2 is a zero point of the Fa = 0 curve itself); 10 % allowed."""
-    tau = 0.2
-    envelope = tau**3 / (1 - tau**2) / np.pi
-    assert residual_of("camshaft1", tau, 2.0).U0 / envelope == pytest.approx(20, rel=0.10)
-
-
 def _window_max(Fa, a, b, n=100):
     return max(residual_of("camshaft1", float(t), Fa, rtol=1e-8).U0 for t in np.linspace(a, b, n))
 
@@ -78,23 +63,6 @@ def test_approximate_solution_4_22_stated_range(Fa, a, b):
     approximation stays within the factor 2.5 the thesis itself reports (sec. 4.7 (3))."""
     ratio = _approx_max(Fa, a, b) / _window_max(Fa, a, b)
     assert 1 / 2.5 < ratio < 2.5, ratio
-
-
-def _koster_change(tau, Fa):
-    coarse = residual(simulate("camshaft1", {"tau": tau, "Fa": Fa}, 3.0, "koster", step=0.1 * tau)).U0
-    fine = residual(simulate("camshaft1", {"tau": tau, "Fa": Fa}, 3.0, "koster", step=0.01 * tau)).U0
-    return abs(coarse - fine) / fine
-
-
-def test_thesis_scheme_step_sensitivity_sec_4_4_2():
-    """Sec. 4.4.2: going from dT = 0.1 tau to 0.01 tau changes the residual amplitude by
-    1.5 %.  The thesis does not say where; we take the median over the practical range of
-    fig. 4.11 (tau = 0.07 ... 0.25, Fa = 0.5 ... 2) and ask for 1.5 % within a factor 2.
-    (Near zero points of U0 the relative change is of course larger.)"""
-    changes = [_koster_change(tau, Fa) for Fa in (0.5, 0.8, 1.5, 2.0)
-               for tau in (0.07, 0.1, 0.125, 0.15, 0.175, 0.2, 0.25)]
-    median = float(np.median(changes))
-    assert 0.0075 < median < 0.03, median
 
 
 def test_thesis_scheme_agrees_with_dp54_at_fine_step():

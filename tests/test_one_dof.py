@@ -6,42 +6,14 @@ from camdyn.runtime import closed_forms as cf
 from camdyn.runtime.residual import residual
 from camdyn.runtime.simulate import simulate
 
-from .conftest import matches_printed, residual_of
+from camdyn.runtime.checks import matches_printed
+from camdyn.runtime.checks.spine import TABLE_3_I
 
-# Table 3-I: the printed tau are the maxima of |sin(pi/tau)|, tau = 2/(2k + 1), rounded
-# (0.105 = 2/19, 0.222 = 2/9, 0.286 = 2/7, 0.4 = 2/5, 0.66 = 2/3 truncated)
-TABLE_3_I = [  # (k, printed tau, printed U0, printed U0dd)
-    (9, "0.105", "3.75e-4", "1.34"),
-    (4, "0.222", "3.5e-3", "2.65"),
-    (3, "0.286", "7.64e-3", "3.91"),
-    (2, "0.4", "2.43e-2", "5.98"),
-    (1, "0.66", "16.8e-2", "15.2"),
-]
-# Entries of Table 3-I that (3.5)/(3.6) cannot give: see test_table_3_I_errata
-ERRATA = {("0.222", "U0"), ("0.222", "U0dd"), ("0.286", "U0"), ("0.66", "U0"), ("0.66", "U0dd")}
-
-
-def _entries():
-    for k, tau_txt, u0, u0dd in TABLE_3_I:
-        for name, printed in (("U0", u0), ("U0dd", u0dd)):
-            mark = pytest.mark.xfail(strict=True, reason="misprint in Table 3-I, see test_table_3_I_errata") \
-                if (tau_txt, name) in ERRATA else ()
-            yield pytest.param(k, tau_txt, name, printed, marks=mark, id=f"{tau_txt}-{name}")
-
-
-@pytest.mark.parametrize("k,tau_txt,name,printed", list(_entries()))
-def test_table_3_I(k, tau_txt, name, printed):
-    """Every entry of Table 3-I, from the simulation and from (3.5)/(3.6), to its printed digits."""
-    tau = 2 / (2 * k + 1)
-    assert matches_printed(tau, tau_txt)
-    closed = cf.U0(tau) if name == "U0" else cf.U0dd(tau)
-    simulated = getattr(residual_of("one_dof", tau), name)
-    assert simulated == pytest.approx(closed, rel=1e-7)
-    assert matches_printed(simulated, printed), f"{name}({tau:.4f}) = {simulated:.4g}, printed {printed}"
-
+from .conftest import residual_of
 
 def test_table_3_I_errata():
-    """Why five printed entries cannot be reproduced.
+    """Why five printed entries of Table 3-I cannot be reproduced (the entries themselves
+    are compared by `camdyn check`, camdyn/runtime/checks/spine.py).
 
     (3.5) and (3.6) describe one harmonic residual motion, so U0dd = (2 pi/tau)^2 U0
     holds whatever the cam law.  The printed pairs of rows 0.222 and 0.286 break that
@@ -88,18 +60,6 @@ def test_residual_amplitudes_3_5_3_6(tau):
     envelope = tau**3 / (1 - tau**2) / np.pi  # (3.5) at |sin| = 1
     assert abs(fig.U0 - cf.U0(tau)) <= 1e-7 * envelope
     assert abs(fig.U0dd - cf.U0dd(tau)) <= 1e-7 * envelope * (2 * np.pi / tau) ** 2
-
-
-@pytest.mark.parametrize("tau", [1 / 2, 1 / 3, 1 / 4, 1 / 5])
-def test_zero_points(tau):
-    """Residual vibration vanishes at tau = 1/2, 1/3, 1/4, ... (sec. 3.5)."""
-    assert cf.U0(tau) < 1e-15
-    envelope = tau**3 / (1 - tau**2) / np.pi
-    fig = residual_of("one_dof", tau)
-    assert fig.U0 < 1e-7 * envelope
-    # and a maximum halfway between: tau = 2/(2k + 1)
-    k = round(1 / tau)
-    assert residual_of("one_dof", 2 / (2 * k + 1)).U0 > 0.99 * cf.U0(2 / (2 * k + 1))
 
 
 @pytest.mark.parametrize("k,tau_txt", [(4, "0.222"), (3, "0.286"), (2, "0.4"), (1, "0.66")])

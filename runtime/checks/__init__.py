@@ -1,0 +1,151 @@
+"""Every comparison of camdyn with what the thesis prints, in one registry.
+
+A :class:`Check` names the item, the thesis reference, the printed value (as
+printed), how to compute camdyn's value and how to compare the two.
+``camdyn check`` runs them all and prints a table; the test suite runs the
+same registry (tests/test_checks.py), so the command and the tests cannot
+drift apart.
+
+Comparison rules
+    "digits"     derived value agrees with the printed one to its printed
+                 digits (rounded or truncated, see :func:`matches_printed`)
+    "rel:X"      relative difference at most X (values read from graphs,
+                 "about" statements, ...)
+    "abs:X"      absolute difference at most X
+    "factor:X"   derived within a factor X of the printed value either way
+    "identity"   a symbolic identity: compute() returns True when
+                 sympy.simplify(derived - printed) == 0
+Printed values the thesis gets wrong (misprints, scan errors that cannot be
+read another way) are kept with ``errata=True`` and an explanation: such a
+check passes when the printed value is *not* reproduced, so a change that
+suddenly "reproduces" a misprint is flagged.
+
+Topic modules (ch3.py, app2.py, ...) each define ``checks() -> list[Check]``.
+"""
+from __future__ import annotations
+
+import importlib
+import math
+import time
+from dataclasses import dataclass, field
+from decimal import Decimal
+from typing import Callable
+
+TOPICS = ("spine", "app2", "elements", "chains", "rayleigh", "impact", "foundation", "examples")
+"""Topic modules of this package, in the order the table lists them."""
+
+
+@dataclass(frozen=True)
+class Check:
+    key: str
+    item: str
+    reference: str
+    printed: str | None
+    compute: Callable[[], object]
+    rule: str = "digits"
+    note: str = ""
+    errata: bool = False
+
+
+@dataclass(frozen=True)
+class Outcome:
+    check: Check
+    derived: object
+    rel_diff: float | None
+    agrees: bool
+    seconds: float
+    error: str = ""
+
+    @property
+    def passed(self) -> bool:
+        if self.error:
+            return False
+        return (not self.agrees) if self.check.errata else self.agrees
+
+    @property
+    def status(self) -> str:
+        if self.error:
+            return "ERROR"
+        if self.check.errata:
+            return "errata" if self.passed else "FAIL (errata reproduced?)"
+        return "pass" if self.passed else "FAIL"
+
+    def as_dict(self) -> dict:
+        c = self.check
+        return {"key": c.key, "item": c.item, "reference": c.reference, "printed": c.printed,
+                "derived": _plain(self.derived), "rel_diff": self.rel_diff, "rule": c.rule,
+                "status": self.status, "passed": self.passed, "note": c.note,
+                "errata": c.errata, "error": self.error, "seconds": self.seconds}
+
+
+def _plain(value):
+    if isinstance(value, bool) or value is None:
+        return value
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        return str(value)
+
+
+def matches_printed(value: float, printed: str) -> bool:
+    """Does ``value`` agree with a number printed in the thesis, to its printed digits?
+
+    Accepts rounding and truncation at the last printed digit (the thesis
+    truncates some values, e.g. 4 pi^2 = 39.478 printed as 39.4).  ``printed``
+    may carry an exponent: "3.75e-4".
+    """
+    p = Decimal(printed)
+    ulp = Decimal(1).scaleb(p.as_tuple().exponent)
+    v = Decimal(repr(float(value)))
+    rounded = abs(v - p) <= ulp / 2
+    away = (v - p) if p > 0 else (p - v)  # how far |v| exceeds |p|
+    truncated = p != 0 and Decimal(0) <= away < ulp
+    return bool(rounded or truncated)
+
+
+def compare(check: Check, derived) -> tuple[bool, float | None]:
+    """(agrees, relative difference) of a derived value with the printed one."""
+    if check.rule == "identity":
+        return bool(derived), None
+    value = float(derived)
+    if check.printed is None:
+        raise ValueError(f"{check.key}: rule {check.rule} needs a printed value")
+    printed = float(check.printed)
+    rel = abs(value - printed) / abs(printed) if printed != 0 else abs(value)
+    if check.rule == "digits":
+        return matches_printed(value, check.printed), rel
+    kind, _, tol = check.rule.partition(":")
+    if kind == "rel":
+        return rel <= float(tol), rel
+    if kind == "abs":
+        return abs(value - printed) <= float(tol), rel
+    if kind == "factor":
+        ratio = value / printed
+        return 1 / float(tol) <= ratio <= float(tol), rel
+    raise ValueError(f"{check.key}: unknown rule {check.rule!r}")
+
+
+def run(check: Check) -> Outcome:
+    t0 = time.perf_counter()
+    try:
+        derived = check.compute()
+        agrees, rel = compare(check, derived)
+        if isinstance(rel, float) and math.isnan(rel):
+            agrees = False
+        return Outcome(check, derived, rel, agrees, time.perf_counter() - t0)
+    except Exception as exc:  # a check that cannot run is a failure, reported, not a crash
+        return Outcome(check, None, None, False, time.perf_counter() - t0,
+                       error=f"{type(exc).__name__}: {exc}")
+
+
+def registry(topics=TOPICS) -> list[Check]:
+    """All checks of the given topic modules, keys unique."""
+    out, seen = [], set()
+    for topic in topics:
+        module = importlib.import_module(f"{__name__}.{topic}")
+        for check in module.checks():
+            if check.key in seen:
+                raise ValueError(f"check key {check.key!r} used twice")
+            seen.add(check.key)
+            out.append(check)
+    return out

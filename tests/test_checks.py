@@ -1,0 +1,55 @@
+"""The registry behind `camdyn check`: every comparison with the thesis must pass.
+
+Each check carries its thesis reference and tolerance (camdyn/runtime/checks);
+printed values shown to be misprints pass only while they are *not* reproduced.
+"""
+import json
+import subprocess
+import sys
+
+import pytest
+
+from camdyn.runtime import checks
+
+REGISTRY = checks.registry()
+
+
+@pytest.mark.parametrize("check", REGISTRY, ids=[c.key for c in REGISTRY])
+def test_check(check):
+    outcome = checks.run(check)
+    assert not outcome.error, outcome.error
+    assert outcome.passed, (f"{check.item} ({check.reference}): printed {check.printed}, "
+                            f"derived {outcome.derived}, rule {check.rule}")
+
+
+def test_matches_printed_rounding_and_truncation():
+    assert checks.matches_printed(39.478, "39.4")      # truncated, as the thesis does
+    assert checks.matches_printed(39.46, "39.5")       # rounded
+    assert not checks.matches_printed(39.6, "39.4")
+    assert checks.matches_printed(-21.23, "-21.2")
+    assert checks.matches_printed(3.7542e-4, "3.75e-4")
+    assert not checks.matches_printed(3.7155e-4, "3.75e-4")
+
+
+def test_rules():
+    c = checks.Check("x", "x", "x", "2", lambda: 2.1, rule="rel:0.1")
+    assert checks.run(c).passed
+    c = checks.Check("x", "x", "x", "2", lambda: 4.5, rule="factor:2")
+    assert not checks.run(c).passed
+    c = checks.Check("x", "x", "x", "2", lambda: 3.0, errata=True)
+    assert checks.run(c).passed          # a misprint that stays unreproduced
+    c = checks.Check("x", "x", "x", "2", lambda: 1 / 0)
+    out = checks.run(c)
+    assert not out.passed and "ZeroDivisionError" in out.error
+
+
+def test_camdyn_check_command_json_and_exit_code():
+    p = subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", "check", "--json", "-k", "table3I"],
+                       capture_output=True, text=True, timeout=600)
+    assert p.returncode == 0, p.stderr
+    out = json.loads(p.stdout)
+    assert out["passed"] and len(out["checks"]) == 10
+    assert {c["status"] for c in out["checks"]} == {"pass", "errata"}
+    p = subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", "check", "--topic", "nope"],
+                       capture_output=True, text=True, timeout=60)
+    assert p.returncode == 2 and "unknown topic" in p.stderr
