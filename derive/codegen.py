@@ -153,6 +153,8 @@ def model_context(eq: Equations) -> dict:
     # parameter-only subexpressions: computed once per run by prepare()
     consts = ConstantTable({p.symbol for p in m.parameters})
     variants = [[consts.hoist(e) for e in v] for v in variants]
+    if all(v == variants[0] for v in variants[1:]):   # the dwell changes nothing here
+        specialise, variants = False, variants[:1]
     out_exprs = [consts.hoist(_plain(o.expr, sy)) for o in m.outputs]
     names = dict(sy.names)
     names.update({k: k.name for k, _ in consts.items})

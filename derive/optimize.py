@@ -45,7 +45,15 @@ class ConstantTable:
                     t.is_Mul and any(self._const(f) for f in t.args) for t in other[0].args):
                 # c (a X + b Y) -> (c a) X + (c b) Y with a, b constant: one multiplication less
                 c = sp.Mul(*const)
-                return sp.Add(*[self.hoist(c * term) for term in other[0].args])
+                return self.hoist(sp.Add(*[c * term for term in other[0].args], evaluate=False))
+        if expr.is_Add:
+            # a X + b X -> (a + b) X: terms that differ by a constant factor share one product
+            groups: dict = {}
+            for term in expr.args:
+                c, rest = term.as_independent(*(term.free_symbols - self.params), as_Add=False)
+                groups[rest] = groups.get(rest, 0) + c
+            terms = [self.hoist(c * rest) if c != 1 else self.hoist(rest) for rest, c in groups.items()]
+            return sp.Add(*terms)
         if expr.is_Add or expr.is_Mul:
             const = [a for a in expr.args if self._const(a)]
             rest = [self.hoist(a) for a in expr.args if not self._const(a)]

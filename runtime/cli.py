@@ -3,6 +3,7 @@
     camdyn derive [--check] [--out DIR]     regenerate generated/ (or check it)
     camdyn residual --model M --tau T ...   residual vibration of one rise
     camdyn check [--json]                   every comparison with the thesis
+    camdyn laws [--json]                    cam-law characteristics (App. 2)
     camdyn run [SCENE.toml] [--out DIR]     the main job: report and charts
 
 Bad arguments end in one line on stderr naming the argument, and status 2.
@@ -195,6 +196,41 @@ def _print_check_table(outcomes) -> None:
             print(f"  errata {o.check.key}: {o.check.note}")
 
 
+# -- camdyn laws --------------------------------------------------------------------
+
+def _cmd_laws(args) -> int:
+    from camdyn.derive import lawtable
+
+    try:
+        rows = [lawtable.properties(k, args.theta if k == "modified-sine" else None)
+                for k in lawtable.LAWS]
+    except ValueError as exc:
+        return _fail("camdyn laws", _name_argument(str(exc)))
+    if args.json:
+        print(json.dumps([r.as_dict() for r in rows], indent=1))
+        return 0
+    head = ("law", "H'max", "H''max", "H''min", "jerk T=0", "jerk T=1/2", "jerk T=1",
+            "max H'H''", "at T", "C", "p")
+    table = [head] + [(r.key, _num(r.H1_max), _num(r.H2_max), _num(r.H2_min), _num(r.jerk_0),
+                       _num(r.jerk_half), _num(r.jerk_1), _num(r.torque_max), _num(r.T_torque_max),
+                       _num(r.residual_coeff), str(r.residual_order)) for r in rows]
+    widths = [max(len(row[i]) for row in table) for i in range(len(head))]
+    for k, row in enumerate(table):
+        print("  ".join(c.rjust(w) if i else c.ljust(w) for i, (c, w) in enumerate(zip(row, widths))))
+        if k == 0:
+            print("  ".join("-" * w for w in widths))
+    print("\nNominal characteristics, thesis App. 2 (jerk = H''', 'impulse' where H'' jumps); "
+          "torque M = m h_m^2/(w_s t_m^3) H' H'' (A.2.7); one-DOF residual envelope "
+          "U0 <= C tau^p for tau << 1 (ch. 3).")
+    return 0
+
+
+def _num(v) -> str:
+    if v is None:
+        return "impulse"
+    return {float("inf"): "inf", float("-inf"): "-inf"}.get(v, f"{v:.4g}")
+
+
 # -- camdyn run ---------------------------------------------------------------------
 
 def _cmd_run(args) -> int:
@@ -242,6 +278,11 @@ def build_parser() -> argparse.ArgumentParser:
     c.add_argument("--topic", action="append", help="only this topic (repeatable)")
     c.add_argument("--quiet", action="store_true", help="no progress lines")
     c.set_defaults(func=_cmd_check)
+
+    lw = sub.add_parser("laws", help="cam-law characteristics (thesis App. 2), derived symbolically")
+    lw.add_argument("--theta", type=float, default=None, help="modified sine's theta (default 0.1)")
+    lw.add_argument("--json", action="store_true", help="one JSON array on stdout")
+    lw.set_defaults(func=_cmd_laws)
 
     m = sub.add_parser("run", help="the main job on a scene (default: the embedded one)")
     m.add_argument("scene", nargs="?", default=None, help="scene TOML (default: embedded)")

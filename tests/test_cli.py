@@ -69,3 +69,13 @@ def test_derive_check_exit_codes(tmp_path):
     p = camdyn("derive", "--check", "--out", str(tmp_path))
     assert p.returncode == 1
     assert "missing: camshaft1.pyx" in p.stderr
+
+
+def test_laws_table_json():
+    p = camdyn("laws", "--json")
+    assert p.returncode == 0, p.stderr
+    rows = {r["key"]: r for r in json.loads(p.stdout)}
+    assert rows["cycloidal"]["H2_max"] == pytest.approx(2 * 3.141592653589793)
+    assert rows["modified-sine"]["H2_max"] == pytest.approx(5.398, abs=1e-3)   # theta = 0.1
+    assert set(rows) == {"cycloidal", "modified-sine", "3-4-5", "simple-harmonic", "parabolic",
+                         "4-5-6-7", "modified-trapezoid", "uniform"}

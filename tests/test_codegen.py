@@ -43,12 +43,12 @@ def _lambdified(model_name: str, law_key: str, par):
 
     def to_syms(e):
         e = plain(e)
-        for i, x in enumerate(q):
-            e = e.subs(x.diff(t, 2), acc[i]).subs(x.diff(t), vs[i]).subs(x, qs[i])
-        return e
+        e = e.subs({x.diff(t, 2): acc[i] for i, x in enumerate(q)})
+        e = e.subs({x.diff(t): vs[i] for i, x in enumerate(q)})
+        return e.subs({x: qs[i] for i, x in enumerate(q)})
 
     params = [p.symbol for p in model.parameters]
-    args = [t, *qs, *vs, *params]
+    args = [t, *qs, *vs, *params]  # q1..qn, v1..vn as in the state vector
     f_acc = sp.lambdify(args, [to_syms(a) for a in acc], "numpy")
     f_out = sp.lambdify(args, [to_syms(o.expr) for o in model.outputs], "numpy")
     return f_acc, f_out, model
@@ -66,10 +66,12 @@ def test_generated_equals_lambdify(model_name, law_key, rng):
     codes = np.array([choice.code], dtype=np.intc)
     pars = np.array([choice.par])
     n = 200
+    nq = len(model.coordinates)
     t = rng.uniform(-0.3, 2.0, n)
     H = choice.evaluate(t)[:, 0]
-    X = H + rng.choice([-1, 1], n) * rng.uniform(1e-2, 1.0, n)   # keep H - X away from 0
-    V = rng.uniform(-3, 3, n)
+    # positions kept away from H, so that H - X is not a cancellation
+    X = H[:, None] + rng.choice([-1, 1], (n, nq)) * rng.uniform(1e-2, 1.0, (n, nq))
+    V = rng.uniform(-3, 3, (n, nq))
     got_acc, ref_acc, got_out, ref_out = [], [], [], []
     for k in range(n):
         pvals = {}
@@ -77,19 +79,19 @@ def test_generated_equals_lambdify(model_name, law_key, rng):
             hi = min(spec.high, 0.95 if spec.name == "tau" else 3.0)
             pvals[spec.name] = float(rng.uniform(max(spec.low, 0.0) + 0.02, hi - 0.02))
         p = cm.parameter_vector(pvals)
-        y = np.array([[X[k], V[k]]])
+        y = np.concatenate([X[k], V[k]])[None, :]
         tk = t[k:k + 1].copy()
         dy = _integrate.eval_rhs(cm.capsule, p, codes, pars, tk, y)[0]
-        assert dy[0] == V[k]
-        got_acc.append(dy[1])
+        assert np.array_equal(dy[:nq], V[k])
+        got_acc.append(dy[nq:])
         got_out.append(_integrate.eval_outputs(cm.capsule, p, codes, pars, tk, y)[0])
-        args = [t[k], X[k], V[k], *p]
-        ref_acc.append(np.array(f_acc(*args), dtype=float)[0])
+        args = [t[k], *X[k], *V[k], *p]
+        ref_acc.append(np.array(f_acc(*args), dtype=float))
         ref_out.append(np.array(f_out(*args), dtype=float))
     # relative to each quantity's scale over the sample: where a result is a small
     # difference of large terms (H' of a polynomial law near T = 1), both evaluations
     # carry the rounding of the terms, not of the result
-    for got, ref in ((np.array(got_acc)[:, None], np.array(ref_acc)[:, None]),
+    for got, ref in ((np.array(got_acc), np.array(ref_acc)),
                      (np.array(got_out), np.array(ref_out))):
         scale = np.abs(ref).max(axis=0)
         assert np.all(np.abs(got - ref) <= 1e-12 * scale), np.max(np.abs(got - ref) / scale)

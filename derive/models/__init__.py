@@ -3,9 +3,10 @@
 Each entry maps the generated module name to a function returning the
 :class:`~camdyn.derive.model.Model` declaration.
 """
-from . import camshaft1, one_dof
+from . import camshaft1, chain3, one_dof
 
 REGISTRY = {
     "one_dof": one_dof.build,
     "camshaft1": camshaft1.build,
+    "chain3": chain3.build,
 }

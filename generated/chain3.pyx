@@ -1,0 +1,385 @@
+# cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
+#
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
+# edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+#
+# Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
+# Source hash: sha256:168076ee21b2ae94c0c8f10114b131770043371ba50576f38ed72dbac5213a5e
+#
+# Three-DOF chain at constant fictitious angular velocity, thesis sec. 3.7, figs 3.6 and 3.7.
+#
+# The cam input H(T) drives mass 1 through spring c1; masses 1, 2, 3 follow in
+# series through c2 and c3; mass 3 is the free end.  In the thesis's
+# dimensionless form (sec. 3.3) with masses m_i and stiffnesses c_i relative to
+# a reference pair (m, c) whose period is tau t_m:
+#
+#     kinetic energy     1/2 sum m_i X_i'^2
+#     potential energy   1/2 (2 pi/tau)^2 [c1 (X1 - H)^2 + c2 (X2 - X1)^2 + c3 (X3 - X2)^2]
+#
+# which is the chain (2.47) with n = 3.  Readings taken: fig. 3.6 is the output
+# x2 with one more mass (c3, m3) beyond it, which is what the numerators
+# (-w_ei^2 + c/m) of (3.20), (3.21) require; fig. 3.7, the input "at the head
+# of the series", is the output at the far end (X3), where the numerators are 1.
+# With unit masses and stiffnesses the eigenvalues are 0.198, 1.555, 3.247
+# (sec. 3.7.3).
+
+import json
+
+from cpython.pycapsule cimport PyCapsule_New
+
+from camdyn.runtime.abi cimport *
+from camdyn.generated.camlaws cimport camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_segment
+
+
+
+cdef void prepare(Ctx* ctx) noexcept nogil:
+    """Parameter-only subexpressions, once per run, into ctx.k."""
+    cdef double tau = ctx.p[0]
+    cdef double m1 = ctx.p[1]
+    cdef double m2 = ctx.p[2]
+    cdef double m3 = ctx.p[3]
+    cdef double c1 = ctx.p[4]
+    cdef double c2 = ctx.p[5]
+    cdef double c3 = ctx.p[6]
+    cdef double _c0 = 39.47841760435743*(1.0/(tau*tau))
+    cdef double _c1 = _c0/m1
+    cdef double _c2 = _c0/m2
+    ctx.k[0] = _c1*c2  # _k0
+    ctx.k[1] = _c1*c1  # _k1
+    ctx.k[2] = -_c1*(c1 + c2)  # _k2
+    ctx.k[3] = _c2*c2  # _k3
+    ctx.k[4] = _c2*c3  # _k4
+    ctx.k[5] = -_c2*(c2 + c3)  # _k5
+    ctx.k[6] = _c0*c3/m3  # _k6
+
+
+cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
+    """dy/dt: q' and q'' from M q'' = f."""
+    cdef double tau = ctx.p[0]
+    cdef double m1 = ctx.p[1]
+    cdef double m2 = ctx.p[2]
+    cdef double m3 = ctx.p[3]
+    cdef double c1 = ctx.p[4]
+    cdef double c2 = ctx.p[5]
+    cdef double c3 = ctx.p[6]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double X1 = y[0]
+    cdef double X2 = y[1]
+    cdef double X3 = y[2]
+    cdef double X1d = y[3]
+    cdef double X2d = y[4]
+    cdef double X3d = y[5]
+    cdef double _cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
+
+    dy[0] = X1d
+    dy[1] = X2d
+    dy[2] = X3d
+    dy[3] = X1*_k2 + X2*_k0 + _cam0[0]*_k1
+    dy[4] = X1*_k3 + X2*_k5 + X3*_k4
+    dy[5] = _k6*(X2 - X3)
+
+
+cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nogil:
+    """The named outputs (U2, U3, X2dd, X3dd, H)."""
+    cdef double dy[6]
+    rhs(t, y, dy, ctx)
+    cdef double tau = ctx.p[0]
+    cdef double m1 = ctx.p[1]
+    cdef double m2 = ctx.p[2]
+    cdef double m3 = ctx.p[3]
+    cdef double c1 = ctx.p[4]
+    cdef double c2 = ctx.p[5]
+    cdef double c3 = ctx.p[6]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double X1 = y[0]
+    cdef double X2 = y[1]
+    cdef double X3 = y[2]
+    cdef double X1d = y[3]
+    cdef double X2d = y[4]
+    cdef double X3d = y[5]
+    cdef double _cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
+
+    cdef double _o0 = -_cam0[0]
+    out[0] = X2 + _o0  # U2
+    out[1] = X3 + _o0  # U3
+    out[2] = dy[4]  # X2dd
+    out[3] = dy[5]  # X3dd
+    out[4] = _cam0[0]  # H
+
+
+cdef void refresh(Ctx* ctx) noexcept nogil:
+    """ctx.variant from the modes (bit i set when cam input i sits in a dwell); the cam
+    cache is emptied, its entries belong to the old segments."""
+    ctx.variant = 0
+    ctx.cache[0] = 0.0 / 0.0
+    ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
+
+
+cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
+    """Segment of every cam input at (t, y)."""
+    cdef double tau = ctx.p[0]
+    cdef double m1 = ctx.p[1]
+    cdef double m2 = ctx.p[2]
+    cdef double m3 = ctx.p[3]
+    cdef double c1 = ctx.p[4]
+    cdef double c2 = ctx.p[5]
+    cdef double c3 = ctx.p[6]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double X1 = y[0]
+    cdef double X2 = y[1]
+    cdef double X3 = y[2]
+    cdef double X1d = y[3]
+    cdef double X2d = y[4]
+    cdef double X3d = y[5]
+
+    ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], t)
+    refresh(ctx)
+
+
+cdef void rhs_ptr(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
+    rhs(t, y, dy, ctx)
+
+
+# the integration loops of camdyn.runtime, compiled here with rhs() inlined and the
+# sizes known at compile time
+cdef enum:
+    _NS = 6
+    _NQ = 3
+    _NM = 1
+
+include "camdyn/runtime/loops.pxi"
+
+
+def cam_time_affine(p):
+    """Per cam input, (a, b) with argument a t + b, or None when it depends on the state."""
+    cdef double tau = p[0]
+    cdef double m1 = p[1]
+    cdef double m2 = p[2]
+    cdef double m3 = p[3]
+    cdef double c1 = p[4]
+    cdef double c2 = p[5]
+    cdef double c3 = p[6]
+    return [(1.0, 0.0)]
+
+
+cdef ModelC _model
+_model.abi_version = CAMDYN_ABI
+_model.n_q = 3
+_model.n_states = 6
+_model.n_params = 7
+_model.n_outputs = 5
+_model.n_families = 1
+_model.n_instances = 1
+_model.n_const = 7
+_model.n_cache = 5
+_model.prepare = prepare
+_model.rhs = rhs_ptr
+_model.outputs = outputs
+_model.update_modes = update_modes
+_model.refresh = refresh
+_model.run = run_loops
+
+MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
+"""The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""
+
+_MANIFEST_JSON = """
+{
+ "cam_families": [
+  "H"
+ ],
+ "cam_instances": [
+  {
+   "argument": "T",
+   "family": "H",
+   "time_affine": true
+  }
+ ],
+ "n_q": 3,
+ "name": "chain3",
+ "options": [],
+ "outputs": [
+  {
+   "doc": "positional error of mass 2, the output of fig. 3.6",
+   "name": "U2",
+   "unit": "h_m'"
+  },
+  {
+   "doc": "positional error of mass 3, the output of fig. 3.7",
+   "name": "U3",
+   "unit": "h_m'"
+  },
+  {
+   "doc": "acceleration of mass 2",
+   "name": "X2dd",
+   "unit": "h_m'/t_m^2"
+  },
+  {
+   "doc": "acceleration of mass 3",
+   "name": "X3dd",
+   "unit": "h_m'/t_m^2"
+  },
+  {
+   "doc": "nominal displacement (cam law)",
+   "name": "H",
+   "unit": "h_m'"
+  }
+ ],
+ "parameters": [
+  {
+   "default": 0.15,
+   "doc": "period of the reference mass-spring pair over t_m",
+   "high": 10.0,
+   "low": 0.0,
+   "name": "tau",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < tau <= 10",
+   "unit": "1"
+  },
+  {
+   "default": 1.0,
+   "doc": "mass 1 over the reference mass",
+   "high": null,
+   "low": 0.0,
+   "name": "m1",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < m1",
+   "unit": "m"
+  },
+  {
+   "default": 1.0,
+   "doc": "mass 2 over the reference mass",
+   "high": null,
+   "low": 0.0,
+   "name": "m2",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < m2",
+   "unit": "m"
+  },
+  {
+   "default": 1.0,
+   "doc": "mass 3 over the reference mass",
+   "high": null,
+   "low": 0.0,
+   "name": "m3",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < m3",
+   "unit": "m"
+  },
+  {
+   "default": 1.0,
+   "doc": "stiffness 1 over the reference stiffness",
+   "high": null,
+   "low": 0.0,
+   "name": "c1",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < c1",
+   "unit": "c"
+  },
+  {
+   "default": 1.0,
+   "doc": "stiffness 2 over the reference stiffness",
+   "high": null,
+   "low": 0.0,
+   "name": "c2",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < c2",
+   "unit": "c"
+  },
+  {
+   "default": 1.0,
+   "doc": "stiffness 3 over the reference stiffness",
+   "high": null,
+   "low": 0.0,
+   "name": "c3",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < c3",
+   "unit": "c"
+  }
+ ],
+ "reference": "thesis sec. 3.7, figs 3.6, 3.7, (2.47)",
+ "residual": {
+  "acceleration": "X2dd",
+  "error": "U2",
+  "rise_end": 1.0
+ },
+ "source_hash": "sha256:168076ee21b2ae94c0c8f10114b131770043371ba50576f38ed72dbac5213a5e",
+ "states": [
+  {
+   "doc": "position of mass 1 over the stroke",
+   "initial": 0.0,
+   "name": "X1",
+   "scale": 1.0,
+   "unit": "h_m'"
+  },
+  {
+   "doc": "position of mass 2 over the stroke",
+   "initial": 0.0,
+   "name": "X2",
+   "scale": 1.0,
+   "unit": "h_m'"
+  },
+  {
+   "doc": "position of mass 3 over the stroke",
+   "initial": 0.0,
+   "name": "X3",
+   "scale": 1.0,
+   "unit": "h_m'"
+  },
+  {
+   "doc": "rate of X1",
+   "initial": 0.0,
+   "name": "X1d",
+   "scale": 1.0,
+   "unit": "h_m'/t_m"
+  },
+  {
+   "doc": "rate of X2",
+   "initial": 0.0,
+   "name": "X2d",
+   "scale": 1.0,
+   "unit": "h_m'/t_m"
+  },
+  {
+   "doc": "rate of X3",
+   "initial": 0.0,
+   "name": "X3d",
+   "scale": 1.0,
+   "unit": "h_m'/t_m"
+  }
+ ],
+ "time": {
+  "name": "T",
+  "unit": "t_m"
+ },
+ "title": "Three-DOF chain, constant fictitious angular velocity"
+}
+"""
+MANIFEST = json.loads(_MANIFEST_JSON)
+"""States, parameters (defaults, units, ranges), outputs, cam inputs, source hash."""

@@ -1,0 +1,54 @@
+"""Cam-law characteristics (App. 2): the table against independent computations."""
+import numpy as np
+import pytest
+
+from camdyn.derive import camlaws
+from camdyn.derive.lawtable import properties
+from camdyn.runtime.residual import residual
+from camdyn.runtime.simulate import simulate
+
+
+@pytest.mark.parametrize("key", sorted(camlaws.LAWS))
+def test_peaks_against_a_fine_numerical_scan(key):
+    """H'max, H''max/min and max H'H'' of the table against the law sampled on 200001 points."""
+    law, pr = camlaws.LAWS[key], properties(key)
+    T = np.linspace(0.0, 1.0, 200001)[1:-1]
+    H1, H2 = law.numeric(1)(T), law.numeric(2)(T)
+    assert pr.H1_max == pytest.approx(H1.max(), abs=1e-8)
+    if law.amplitude is not None:
+        assert pr.H2_max == pytest.approx(H2.max(), abs=1e-6)
+        assert pr.H2_min == pytest.approx(H2.min(), abs=1e-6)
+        assert pr.torque_max == pytest.approx((H1 * H2).max(), rel=2e-5)  # scan spacing 5e-6
+        assert pr.T_torque_max == pytest.approx(T[np.argmax(H1 * H2)], abs=1e-4)
+
+
+@pytest.mark.parametrize("key,window,tol", [
+    ("cycloidal", (0.05, 0.15), 0.03), ("3-4-5", (0.05, 0.15), 0.03),
+    ("simple-harmonic", (0.05, 0.15), 0.03), ("parabolic", (0.05, 0.15), 0.03),
+    ("4-5-6-7", (0.05, 0.15), 0.03), ("uniform", (0.05, 0.15), 0.03),
+    # interior jumps of H'''' make the next order large at these laws: smaller tau
+    ("modified-sine", (0.025, 0.04), 0.12), ("modified-trapezoid", (0.025, 0.04), 0.12),
+])
+def test_residual_envelope_against_simulation(key, window, tol):
+    """The one-DOF residual amplitude of the compiled model stays below C tau^p and reaches
+    it where the jumps' phases add (the envelope is a tau -> 0 limit: the next order is
+    allowed for in ``tol``)."""
+    pr = properties(key)
+    taus = np.linspace(*window, 120)
+    U0 = np.array([residual(simulate("one_dof", {"tau": t}, 1.5, "dp54", rtol=1e-11, law=key)).U0
+                   for t in taus])
+    ratio = U0 / (pr.residual_coeff * taus**pr.residual_order)
+    assert ratio.max() == pytest.approx(1.0, abs=tol)
+
+
+def test_jerk_is_an_impulse_where_the_acceleration_jumps():
+    assert properties("parabolic").jerk_half is None
+    assert properties("simple-harmonic").jerk_0 is None and properties("simple-harmonic").jerk_half is not None
+    assert properties("uniform").torque_max is None
+
+
+def test_theta_is_checked():
+    with pytest.raises(ValueError, match="theta=0.7 is outside"):
+        properties("modified-sine", 0.7)
+    with pytest.raises(ValueError, match="no shape parameter"):
+        properties("cycloidal", 0.2)
