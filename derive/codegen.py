@@ -44,73 +44,79 @@ def _num(value) -> float:
 
 
 @dataclass
-class _Symbols:
-    """Plain symbols for q, q', q'' and the cam inputs, and how to print them."""
+class _Plain:
+    """How model expressions become plain symbols, and how those are printed."""
 
-    subs: list  # (function-of-time expression, plain symbol), highest derivative first
-    names: dict  # symbol -> code
-    instances: list  # (family, arg expression with plain symbols)
-    orders: list  # highest derivative order used per instance
+    model: Model
+    names: dict       # plain symbol -> code
+    instances: list   # (family, plain argument) per cam input instance
+    orders: list      # highest derivative order used per instance
+    cam: dict         # cam function atom -> plain symbol
+    states: set       # plain symbols of q, q', z (state dependence of cam arguments)
+
+    def __call__(self, expr):
+        m, t = self.model, self.model.time
+        expr = sp.sympify(expr)
+        if m.first_order:
+            expr = expr.subs({z(t).diff(t): z.rate for z in m.first_order})
+        expr = expr.xreplace(self.cam) if self.cam else expr
+        return expr.subs(_time_functions(m))
 
 
-def _symbols(eq: Equations, exprs) -> _Symbols:
-    m = eq.model
+def _time_functions(m: Model) -> dict:
+    """Derivatives first: q'' -> Xdd, q' -> Xd, q -> X, z -> z."""
     t = m.time
-    subs, names = [], {}
-    n = len(m.coordinates)
-    for i, c in enumerate(m.coordinates):
-        x = c(t)
-        for order, suffix, code in ((2, "dd", f"qdd[{i}]"), (1, "d", f"y[{n + i}]"), (0, "", f"y[{i}]")):
-            s = sp.Symbol(c.name + suffix, real=True)
-            subs.append((x.diff(t, order) if order else x, s))
-    subs.sort(key=lambda pair: -(pair[0].derivative_count if isinstance(pair[0], sp.Derivative) else 0))
-    for p in m.parameters:
-        names[p.symbol] = p.name
-    names[t] = "t"
+    out = {}
+    for c in m.coordinates:
+        out[c(t).diff(t, 2)] = sp.Symbol(c.name + "dd", real=True)
+    for c in m.coordinates:
+        out[c(t).diff(t)] = sp.Symbol(c.name + "d", real=True)
+    for c in m.coordinates:
+        out[c(t)] = sp.Symbol(c.name, real=True)
+    for z in m.first_order:
+        out[z(t)] = sp.Symbol(z.name, real=True)
+    return out
 
-    # cam inputs: one instance per distinct (family, argument)
+
+def _plainer(m: Model, exprs) -> _Plain:
+    t = m.time
+    tf = _time_functions(m)
+    rates = {z(t).diff(t): z.rate for z in m.first_order}
     found = set()
     for e in exprs:
-        found |= {a for a in sp.sympify(e).atoms(CamFunction)}
+        e = sp.sympify(e)
+        if rates:
+            e = e.subs(rates)
+        found |= e.atoms(CamFunction)
     keyed = {}
     for a in found:
-        arg = a.args[0]
-        for old, new in subs:
-            arg = arg.subs(old, new)
+        arg = a.args[0].subs(tf)
         key = (a.family, sp.srepr(arg))
         keyed.setdefault(key, [arg, 0])
         keyed[key][1] = max(keyed[key][1], a.order)
-    instances, orders = [], []
-    for idx, key in enumerate(sorted(keyed)):
-        arg, order = keyed[key]
-        instances.append((key[0], arg))
-        orders.append(order)
-    inst_index = {key: i for i, key in enumerate(sorted(keyed))}
-    cam_subs = []
+    order = sorted(keyed)
+    index = {key: i for i, key in enumerate(order)}
+    names = {p.symbol: p.name for p in m.parameters}
+    names[t] = "t"
+    cam = {}
     for a in sorted(found, key=sp.srepr):
-        arg = a.args[0]
-        for old, new in subs:
-            arg = arg.subs(old, new)
-        i = inst_index[(a.family, sp.srepr(arg))]
-        s = sp.Symbol(f"_cam{i}_{a.order}", real=True)
-        names[s] = f"_cam{i}[{a.order}]"
-        cam_subs.append((a, s))
-    # cam functions are replaced first: their arguments contain coordinates
-    return _Symbols(cam_subs + subs, names, instances, orders)
-
-
-def _plain(expr, sy: _Symbols):
-    expr = sp.sympify(expr)
-    for old, new in sy.subs:
-        expr = expr.subs(old, new)
-    return expr
+        i = index[(a.family, sp.srepr(a.args[0].subs(tf)))]
+        sym = sp.Symbol(f"_cam{i}_{a.order}", real=True)
+        names[sym] = f"_cam{i}[{a.order}]"
+        cam[a] = sym
+    ncam = len(order)
+    for j, mode in enumerate(m.modes):
+        names[mode.symbol] = f"ctx.mode[{ncam + j}]"
+    states = {v for k, v in tf.items() if not (isinstance(k, sp.Derivative) and k.derivative_count == 2)}
+    return _Plain(m, names, [(key[0], keyed[key][0]) for key in order],
+                  [keyed[key][1] for key in order], cam, states)
 
 
 def _time_affine(arg, t, states: set):
     """(a, b) with arg = a t + b when the cam argument is affine in time, else None.
 
     Breakpoints of such an input are known times; others (H(B), CAMSHAFT-2)
-    need events.
+    are located as events.
     """
     if arg.free_symbols & states:
         return None
@@ -118,6 +124,14 @@ def _time_affine(arg, t, states: set):
     if a.has(t):
         return None
     return a, arg.subs(t, 0)
+
+
+def _armed(event, modes: dict):
+    conds = []
+    for name, values in sorted(event.armed.items()):
+        mode = modes[name]
+        conds.append(sp.Or(*[sp.Eq(mode.symbol, mode.index(v)) for v in values]))
+    return sp.And(*conds) if conds else sp.true
 
 
 MAX_VARIANT_INSTANCES = 3  # 2^3 dwell variants at most; beyond that, one general rhs
@@ -128,26 +142,37 @@ def model_context(eq: Equations) -> dict:
     m = eq.model
     t = m.time
     if eq.Phi.rows:
-        raise NotImplementedError(f"{m.name}: constrained models are not generated yet")
-    n = len(m.coordinates)
+        raise NotImplementedError(f"{m.name}: constrained models are generated by the DAE layer")
+    n, nz = len(m.coordinates), len(m.first_order)
+    modes = {mode.name: mode for mode in m.modes}
     qdd_syms = [sp.Symbol(c.name + "dd", real=True) for c in m.coordinates]
-    all_exprs = list(eq.M) + list(eq.f) + [o.expr for o in m.outputs]
-    sy = _symbols(eq, all_exprs)
-    state_syms = {c.name for c in m.coordinates} | {c.name + "d" for c in m.coordinates}
+    q_funcs = m.q
+    K_raw = (-eq.f.jacobian(q_funcs)) if n else sp.zeros(0, 0)
+    event_exprs = []
+    for e in m.events:
+        event_exprs.append(e.g)
+        for b in e.branches:
+            event_exprs += [sp.sympify(b.condition)] + list(b.resets.values())
+    all_exprs = (list(eq.M) + list(eq.f) + list(K_raw) + [z.rate for z in m.first_order]
+                 + [o.expr for o in m.outputs] + event_exprs)
+    plain = _plainer(m, all_exprs)
 
-    M = eq.M.applyfunc(lambda e: _plain(e, sy))
-    f = eq.f.applyfunc(lambda e: _plain(e, sy))
+    M = eq.M.applyfunc(plain)
+    f = eq.f.applyfunc(plain)
+    rates = [plain(z.rate) for z in m.first_order]
     diagonal = M.is_diagonal()
 
-    # right-hand side: q'' from M q'' = f (diagonal M: divided out symbolically)
+    # right-hand side: q'' from M q'' = f (diagonal M: divided out symbolically), then z'
     if diagonal:
-        rhs_exprs = [f[i] / M[i, i] for i in range(n)]
-        rhs_exprs = [sp.simplify(e) if M[i, i] != 1 else e for i, e in enumerate(rhs_exprs)]
+        acc = [f[i] / M[i, i] for i in range(n)]
+        acc = [sp.simplify(e) if M[i, i] != 1 and not e.has(sp.Piecewise) else e
+               for i, e in enumerate(acc)]
+        rhs_exprs = acc + rates
     else:
-        rhs_exprs = list(M) + list(f)
+        rhs_exprs = list(M) + list(f) + rates
     cam_syms = [[sp.Symbol(f"_cam{i}_{k}", real=True) for k in range(order + 1)]
-                for i, order in enumerate(sy.orders)]
-    specialise = 0 < len(sy.instances) <= MAX_VARIANT_INSTANCES
+                for i, order in enumerate(plain.orders)]
+    specialise = 0 < len(plain.instances) <= MAX_VARIANT_INSTANCES
     variants = dwell_variants(rhs_exprs, cam_syms) if specialise else [rhs_exprs]
 
     # parameter-only subexpressions: computed once per run by prepare()
@@ -155,37 +180,56 @@ def model_context(eq: Equations) -> dict:
     variants = [[consts.hoist(e) for e in v] for v in variants]
     if all(v == variants[0] for v in variants[1:]):   # the dwell changes nothing here
         specialise, variants = False, variants[:1]
-    out_exprs = [consts.hoist(_plain(o.expr, sy)) for o in m.outputs]
-    names = dict(sy.names)
+    out_exprs = [consts.hoist(plain(o.expr)) for o in m.outputs]
+    names = dict(plain.names)
     names.update({k: k.name for k, _ in consts.items})
 
-    rhs_variants, used_rhs = [], set()
+    rhs_variants, used = [], set()
     for v, exprs in enumerate(variants):
-        lines, code, used = cse_block(exprs, names, prefix=f"_s{v}_")
+        lines, code, u = cse_block(exprs, names, prefix=f"_s{v}_")
         rhs_variants.append({"index": v, "lines": lines, "code": code,
-                             "dwell": [i for i in range(len(sy.instances)) if v >> i & 1]})
-        used_rhs |= used
-    # outputs: q'' is taken from dy, computed first by rhs()
-    out_lines, out_code, used_out = cse_block(
-        out_exprs, names | {s: f"dy[{n + i}]" for i, s in enumerate(qdd_syms)}, prefix="_o")
-    const_lines, const_code, used_const = cse_block([e for _, e in consts.items], names, prefix="_c")
+                             "dwell": [i for i in range(len(plain.instances)) if v >> i & 1]})
+        used |= u
+    qdd_names = {s: f"dy[{n + i}]" for i, s in enumerate(qdd_syms)}
+    out_lines, out_code, u = cse_block(out_exprs, names | qdd_names, prefix="_o")
+    used |= u
+    const_lines, const_code, u = cse_block([e for _, e in consts.items], names, prefix="_c")
+    used |= u
+    ms_lines, ms_code, u = cse_block(list(M) + list(K_raw.applyfunc(plain)), names, prefix="_m")
+    used |= u
 
-    printer = CythonPrinter(sy.names)
+    # events: the model's own, then the breakpoints of cam inputs driven by a state
+    printer = CythonPrinter(names)
+    events = []
+    for e in m.events:
+        branches = []
+        for b in e.branches:
+            branches.append({
+                "condition": printer.doprint(plain(sp.sympify(b.condition))),
+                "modes": [(len(plain.instances) + list(modes).index(k), modes[k].index(v), k, v)
+                          for k, v in sorted(b.modes.items())],
+                "resets": [(_state_index(m, k), printer.doprint(plain(v)), k)
+                           for k, v in sorted(b.resets.items())],
+            })
+        events.append({"kind": "model", "name": e.name, "direction": e.direction,
+                       "g": printer.doprint(plain(e.g)),
+                       "armed": printer.doprint(_armed(e, modes)), "branches": branches})
     instances = []
-    for i, ((family, arg), order) in enumerate(zip(sy.instances, sy.orders)):
-        affine = _time_affine(arg, t, {sp.Symbol(s, real=True) for s in state_syms})
-        instances.append({
-            "index": i,
-            "bit": 1 << i,
-            "family": family,
-            "family_index": sorted({fam for fam, _ in sy.instances}).index(family),
-            "arg": printer.doprint(arg),
-            "arg_text": str(arg),
-            "order": order,
-            "affine": None if affine is None else [printer.doprint(affine[0]), printer.doprint(affine[1])],
-        })
-    used = sorted((used_rhs | used_out | used_const | printer.used) & (set(MATH_FUNCTIONS) | {"M_PI"}))
-    families = sorted({fam for fam, _ in sy.instances})
+    for i, ((family, arg), order) in enumerate(zip(plain.instances, plain.orders)):
+        affine = _time_affine(arg, t, plain.states)
+        fam_index = sorted({fam for fam, _ in plain.instances}).index(family)
+        inst = {"index": i, "bit": 1 << i, "family": family, "family_index": fam_index,
+                "arg": printer.doprint(arg), "arg_text": str(arg), "order": order,
+                "affine": None if affine is None else [printer.doprint(affine[0]),
+                                                       printer.doprint(affine[1])]}
+        instances.append(inst)
+        if affine is None:
+            for direction, side in ((1, "hi"), (-1, "lo")):
+                events.append({"kind": "cam", "name": f"cam{i}_{side}", "direction": direction,
+                               "instance": inst, "side": side})
+    used |= printer.used
+    used = sorted(used & (set(MATH_FUNCTIONS) | {"M_PI"}))
+    families = sorted({fam for fam, _ in plain.instances})
 
     manifest = {
         "name": m.name,
@@ -196,7 +240,9 @@ def model_context(eq: Equations) -> dict:
         "states": [{"name": c.name, "unit": c.unit, "scale": c.scale, "doc": c.doc,
                     "initial": _num(c.initial)} for c in m.coordinates]
         + [{"name": c.name + "d", "unit": f"{c.unit}/{m.time_unit}", "scale": c.scale,
-            "doc": f"rate of {c.name}", "initial": _num(c.initial_rate)} for c in m.coordinates],
+            "doc": f"rate of {c.name}", "initial": _num(c.initial_rate)} for c in m.coordinates]
+        + [{"name": z.name, "unit": z.unit, "scale": z.scale, "doc": z.doc,
+            "initial": _num(z.initial)} for z in m.first_order],
         "parameters": [{"name": p.name, "default": p.default, "unit": p.unit, "doc": p.doc,
                         "low": p.low if p.low != -float("inf") else None,
                         "high": p.high if p.high != float("inf") else None,
@@ -206,12 +252,17 @@ def model_context(eq: Equations) -> dict:
         "cam_families": families,
         "cam_instances": [{"family": d["family"], "argument": d["arg_text"],
                            "time_affine": d["affine"] is not None} for d in instances],
+        "modes": [{"name": mode.name, "values": list(mode.values), "doc": mode.doc,
+                   "initial": mode.initial or mode.values[0]} for mode in m.modes],
+        "events": [e["name"] for e in events],
         "residual": None if m.residual is None else {
             "error": m.residual.error, "acceleration": m.residual.acceleration,
-            "rise_end": m.residual.rise_end},
-        "options": list(m.options),
+            "rise_end": m.residual.rise_end, "rise_state": m.residual.rise_state},
+        "options": [list(o) if isinstance(o, tuple) else o for o in m.options],
     }
     canonical = json.dumps({"M": sp.srepr(eq.M), "f": sp.srepr(eq.f), "Phi": sp.srepr(eq.Phi),
+                            "rates": [sp.srepr(z.rate) for z in m.first_order],
+                            "events": [sp.srepr(e.g) for e in m.events],
                             "outputs": [sp.srepr(o.expr) for o in m.outputs],
                             "manifest": manifest}, sort_keys=True)
     manifest["source_hash"] = "sha256:" + hashlib.sha256(canonical.encode()).hexdigest()
@@ -223,12 +274,15 @@ def model_context(eq: Equations) -> dict:
         "reference": m.reference,
         "doc_lines": [line.rstrip() for line in m.doc.strip().splitlines()],
         "n": n,
-        "n_states": 2 * n,
+        "nz": nz,
+        "n_states": 2 * n + nz,
         "params": [p.name for p in m.parameters],
         "coords": [c.name for c in m.coordinates],
+        "zs": [z.name for z in m.first_order],
         "outputs": [o.name for o in m.outputs],
         "instances": instances,
         "n_families": len(families),
+        "n_modes": len(m.modes),
         "diagonal": diagonal,
         "specialise": specialise,
         "variants": rhs_variants,
@@ -238,10 +292,21 @@ def model_context(eq: Equations) -> dict:
         "const_code": const_code,
         "out_lines": out_lines,
         "out_code": out_code,
+        "ms_lines": ms_lines,
+        "ms_code": ms_code,
+        "events": events,
         "math": used,
         "manifest_json": json.dumps(manifest, indent=1, sort_keys=True),
         "source_hash": manifest["source_hash"],
     }
+
+
+def _state_index(m: Model, name: str) -> int:
+    names = ([c.name for c in m.coordinates] + [c.name + "d" for c in m.coordinates]
+             + [z.name for z in m.first_order])
+    if name not in names:
+        raise ValueError(f"{m.name}: an event resets unknown state {name!r}")
+    return names.index(name)
 
 
 def render_model(model: Model) -> str:

@@ -86,6 +86,10 @@ def derive(model: Model) -> Equations:
         rest = sp.expand(lhs[i] - sum(M[i, j] * qdd[j] for j in range(n)) + f[i])
         if rest != 0:
             raise ValueError(f"{model.name}: equation {i} is not linear in the accelerations")
+    # first-order states enter f through their rates (damping on a motor angle, ...)
+    rates = {z(t).diff(t): z.rate for z in model.first_order}
+    if rates:
+        f = f.subs(rates)
     M = M.applyfunc(sp.simplify)
     f = f.applyfunc(sp.simplify)
 

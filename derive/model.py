@@ -160,6 +160,97 @@ def cam_input(family: str = "H", order: int = 0) -> type:
 
 
 @dataclass(frozen=True)
+class FirstOrder:
+    """A state z(t) given by an explicit first-order equation z' = rate.
+
+    For what Lagrange's equations do not produce: the electrical lag of the
+    motor (A.5.6), a massless gear or roller in a squeeze film (6.9), (6.41).
+    ``rate`` may contain t, the coordinates, their rates, other first-order
+    states and modes.  States come after q and q' in the state vector.
+    """
+
+    name: str
+    unit: str
+    doc: str
+    rate: sp.Expr
+    scale: float = 1.0
+    initial: float | sp.Expr = 0
+
+    def __post_init__(self):
+        _check_name(self.name, "first-order state")
+
+    def __call__(self, t: sp.Symbol) -> sp.Expr:
+        return sp.Function(self.name, real=True)(t)
+
+
+@dataclass(frozen=True)
+class Mode:
+    """A discrete state of a nonsmooth force element: which wall a roller touches,
+    whether friction sticks or slips in which direction.
+
+    Expressions depend on it through :meth:`select`; it changes only at
+    :class:`Event` s, which the integrators locate.
+    """
+
+    name: str
+    values: tuple
+    doc: str
+    initial: str = ""
+
+    def __post_init__(self):
+        _check_name(self.name, "mode")
+        if len(set(self.values)) != len(self.values) or len(self.values) < 2:
+            raise ValueError(f"mode {self.name}: at least two distinct values")
+        if self.initial and self.initial not in self.values:
+            raise ValueError(f"mode {self.name}: initial value {self.initial!r} not among its values")
+
+    @property
+    def symbol(self) -> sp.Symbol:
+        return sp.Symbol(f"mode_{self.name}", integer=True)
+
+    def index(self, value: str) -> int:
+        try:
+            return self.values.index(value)
+        except ValueError:
+            raise ValueError(f"mode {self.name} has no value {value!r}; it has {self.values}") from None
+
+    def select(self, **by_value) -> sp.Expr:
+        """The expression of the current value: ``mode.select(lower=..., free=0, upper=...)``."""
+        missing = set(self.values) - set(by_value)
+        if missing:
+            raise ValueError(f"mode {self.name}: no expression for {sorted(missing)}")
+        pieces = [(sp.sympify(by_value[v]), sp.Eq(self.symbol, k)) for k, v in enumerate(self.values[:-1])]
+        return sp.Piecewise(*pieces, (sp.sympify(by_value[self.values[-1]]), True))
+
+
+@dataclass(frozen=True)
+class Branch:
+    """What an event does when ``condition`` holds: new mode values, state resets."""
+
+    modes: dict
+    condition: object = True
+    resets: dict = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class Event:
+    """A zero crossing of ``g`` in ``direction`` (+1 upward, -1 downward), armed while
+    the modes have the values in ``armed`` ({mode name: (values, ...)}); at the
+    crossing the first branch whose condition holds is applied."""
+
+    name: str
+    g: sp.Expr
+    direction: int
+    armed: dict
+    branches: tuple
+
+    def __post_init__(self):
+        _check_name(self.name, "event")
+        if self.direction not in (-1, 1):
+            raise ValueError(f"event {self.name}: direction must be +1 or -1")
+
+
+@dataclass(frozen=True)
 class Residual:
     """What residual-vibration post-processing reads (thesis sec. 3.3).
 
@@ -171,6 +262,9 @@ class Residual:
     error: str
     acceleration: str
     rise_end: float = 1.0
+    rise_state: str = ""
+    """When set, the rise ends where this state reaches ``rise_end`` (the cam angle B of
+    CAMSHAFT-2), not at that time."""
 
 
 @dataclass(frozen=True)
@@ -200,21 +294,38 @@ class Model:
     constraints: tuple = ()
     residual: Residual | None = None
     options: tuple = field(default_factory=tuple)
+    first_order: tuple = ()
+    modes: tuple = ()
+    events: tuple = ()
 
     def __post_init__(self):
         _check_name(self.name, "model")
         names = [c.name for c in self.coordinates]
         names += [c.name + "d" for c in self.coordinates]
+        names += [z.name for z in self.first_order] + [m.name for m in self.modes]
         names += [p.name for p in self.parameters] + [o.name for o in self.outputs]
+        names += [e.name for e in self.events]
         dup = {n for n in names if names.count(n) > 1}
         if dup:
             raise ValueError(f"model {self.name}: names used twice: {sorted(dup)}")
         if self.forces and len(self.forces) != len(self.coordinates):
             raise ValueError(f"model {self.name}: one generalized force per coordinate")
 
+        modes = {m.name: m for m in self.modes}
+        for e in self.events:
+            for name, values in list(e.armed.items()) + [(k, (v,)) for b in e.branches for k, v in b.modes.items()]:
+                if name not in modes:
+                    raise ValueError(f"event {e.name}: unknown mode {name!r}")
+                for v in values:
+                    modes[name].index(v)
+
     @property
     def q(self) -> list:
         return [c(self.time) for c in self.coordinates]
+
+    @property
+    def z(self) -> list:
+        return [s(self.time) for s in self.first_order]
 
     def parameter(self, name: str) -> Parameter:
         for p in self.parameters:

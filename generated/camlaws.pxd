@@ -18,7 +18,7 @@
 #   6  modified-trapezoid   Modified trapezoid, jerk-limited, eighths of the rise; H''max = 8*pi/(2 + pi)
 #   7  uniform              Uniform motion (constant velocity), H = T; ramp input (3.8); H''max = impulsive
 
-from libc.math cimport sin, cos, M_PI
+from libc.math cimport INFINITY, M_PI, cos, sin
 
 
 cdef inline int camlaw_segment(int law, double par, double T) noexcept nogil:
@@ -109,6 +109,72 @@ cdef inline bint camlaw_dwell(int law, int seg) noexcept nogil:
     elif law == 7:
         return seg == 2
     return False
+
+
+cdef inline double camlaw_lo(int law, double par, int seg) noexcept nogil:
+    """Lower end of segment `seg` (-inf for the dwell before the rise)."""
+    if seg <= 0:
+        return -INFINITY
+    if law == 0:
+        if seg == 1:
+            return 0.0
+        elif seg == 2:
+            return 1.0
+    elif law == 1:
+        if seg == 1:
+            return 0.0
+        elif seg == 2:
+            return par
+        elif seg == 3:
+            return 1.0 - par
+        elif seg == 4:
+            return 1.0
+    elif law == 2:
+        if seg == 1:
+            return 0.0
+        elif seg == 2:
+            return 1.0
+    elif law == 3:
+        if seg == 1:
+            return 0.0
+        elif seg == 2:
+            return 1.0
+    elif law == 4:
+        if seg == 1:
+            return 0.0
+        elif seg == 2:
+            return 1.0/2.0
+        elif seg == 3:
+            return 1.0
+    elif law == 5:
+        if seg == 1:
+            return 0.0
+        elif seg == 2:
+            return 1.0
+    elif law == 6:
+        if seg == 1:
+            return 0.0
+        elif seg == 2:
+            return 1.0/8.0
+        elif seg == 3:
+            return 3.0/8.0
+        elif seg == 4:
+            return 5.0/8.0
+        elif seg == 5:
+            return 7.0/8.0
+        elif seg == 6:
+            return 1.0
+    elif law == 7:
+        if seg == 1:
+            return 0.0
+        elif seg == 2:
+            return 1.0
+    return INFINITY
+
+
+cdef inline double camlaw_hi(int law, double par, int seg) noexcept nogil:
+    """Upper end of segment `seg` (+inf for the dwell after the rise)."""
+    return camlaw_lo(law, par, seg + 1)
 
 
 cdef inline double camlaw_dwell_value(int seg) noexcept nogil:

@@ -4,7 +4,7 @@
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
-# Source hash: sha256:718b1cf517eec28f0a3d178e8f6685ddab903ea98e954022a98d76bb5ddd2dcd
+# Source hash: sha256:11095417643cf9097a3900ed13598f188b7a3cfe598b6ca63a6411c1f013edca
 #
 # CAMSHAFT-1: one DOF with variable fictitious angular velocity, thesis ch. 4.
 #
@@ -32,7 +32,20 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 
 from camdyn.runtime.abi cimport *
-from camdyn.generated.camlaws cimport camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_segment
+from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
+                                       camlaw_lo, camlaw_segment)
+
+# sizes, known when the integration loops (loops.pxi) are compiled into this module
+cdef enum:
+    _NQ = 1                  # second-order coordinates
+    _NS = 2                  # states: q, q', first-order states
+    _NCAM = 1                # cam input instances (one segment mode each)
+    _NM = 1                  # modes: cam segments, then the force elements' modes
+    _NE = 0                  # events
+    _NQ1 = 1                 # array sizes that must not be zero
+    _NE1 = 1
+
+cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
 
 
@@ -44,7 +57,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
 
 
 cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
-    """dy/dt: q' and q'' from M q'' = f, specialised for cam inputs in a dwell."""
+    """dy/dt: q', q'' from M q'' = f, and the rates of the first-order states; specialised for cam inputs in a dwell."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
@@ -83,6 +96,7 @@ cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nog
     cdef double _k0 = ctx.k[0]
     cdef double X = y[0]
     cdef double Xd = y[1]
+    cdef double Xdd = dy[1]
     cdef double _cam0[4]  # H(T) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
@@ -92,6 +106,20 @@ cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nog
     out[3] = _cam0[1]  # Hd
     out[4] = _cam0[2]  # Hdd
     out[5] = (1.0/(Fa*(_cam0[1]*_cam0[1]) + 1.0))  # c_rel
+
+
+cdef void mass_stiffness(double t, const double* y, double* Mm, double* Km, Ctx* ctx) noexcept nogil:
+    """Mass matrix M and stiffness K = -df/dq (row-major, n x n) at (t, y), for frozen analyses."""
+    cdef double tau = ctx.p[0]
+    cdef double Fa = ctx.p[1]
+    cdef double _k0 = ctx.k[0]
+    cdef double X = y[0]
+    cdef double Xd = y[1]
+    cdef double _cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
+
+    Mm[0] = 1.0
+    Km[0] = 39.47841760435743*1.0/((tau*tau)*(Fa*(_cam0[1]*_cam0[1]) + 1.0))
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -105,7 +133,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
 
 
 cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
-    """Segment of every cam input at (t, y)."""
+    """Segment of every cam input at (t, y); the force elements keep their modes."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
@@ -116,17 +144,21 @@ cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
     refresh(ctx)
 
 
+cdef void events(double t, const double* y, double* g, Ctx* ctx) noexcept nogil:
+    """Event functions; an event not armed in the current modes reads 1 (never crosses)."""
+    pass
+
+
+cdef void on_event(int k, double t, double* y, Ctx* ctx) noexcept nogil:
+    """What event k does: new modes (and state resets) at its crossing."""
+    pass
+
+
 cdef void rhs_ptr(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
     rhs(t, y, dy, ctx)
 
 
-# the integration loops of camdyn.runtime, compiled here with rhs() inlined and the
-# sizes known at compile time
-cdef enum:
-    _NS = 2
-    _NQ = 1
-    _NM = 1
-
+# the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/loops.pxi"
 
 
@@ -139,12 +171,14 @@ def cam_time_affine(p):
 
 cdef ModelC _model
 _model.abi_version = CAMDYN_ABI
-_model.n_q = 1
-_model.n_states = 2
+_model.n_q = _NQ
+_model.n_states = _NS
 _model.n_params = 2
 _model.n_outputs = 6
 _model.n_families = 1
-_model.n_instances = 1
+_model.n_instances = _NCAM
+_model.n_modes = _NM
+_model.n_events = _NE
 _model.n_const = 1
 _model.n_cache = 5
 _model.prepare = prepare
@@ -152,6 +186,9 @@ _model.rhs = rhs_ptr
 _model.outputs = outputs
 _model.update_modes = update_modes
 _model.refresh = refresh
+_model.events = events
+_model.on_event = on_event
+_model.mass_stiffness = mass_stiffness
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -169,6 +206,8 @@ _MANIFEST_JSON = """
    "time_affine": true
   }
  ],
+ "events": [],
+ "modes": [],
  "n_q": 1,
  "name": "camshaft1",
  "options": [],
@@ -232,9 +271,10 @@ _MANIFEST_JSON = """
  "residual": {
   "acceleration": "Xdd",
   "error": "U",
-  "rise_end": 1.0
+  "rise_end": 1.0,
+  "rise_state": ""
  },
- "source_hash": "sha256:718b1cf517eec28f0a3d178e8f6685ddab903ea98e954022a98d76bb5ddd2dcd",
+ "source_hash": "sha256:11095417643cf9097a3900ed13598f188b7a3cfe598b6ca63a6411c1f013edca",
  "states": [
   {
    "doc": "follower position over the stroke, X = x/h_m'",
@@ -259,4 +299,4 @@ _MANIFEST_JSON = """
 }
 """
 MANIFEST = json.loads(_MANIFEST_JSON)
-"""States, parameters (defaults, units, ranges), outputs, cam inputs, source hash."""
+"""States, parameters (defaults, units, ranges), outputs, cam inputs, modes, events, source hash."""

@@ -4,7 +4,7 @@
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
-# Source hash: sha256:168076ee21b2ae94c0c8f10114b131770043371ba50576f38ed72dbac5213a5e
+# Source hash: sha256:e1c62cc1d141de24664a5c402adec44384d1978e0cde22eb2e227011884d378e
 #
 # Three-DOF chain at constant fictitious angular velocity, thesis sec. 3.7, figs 3.6 and 3.7.
 #
@@ -28,7 +28,20 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 
 from camdyn.runtime.abi cimport *
-from camdyn.generated.camlaws cimport camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_segment
+from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
+                                       camlaw_lo, camlaw_segment)
+
+# sizes, known when the integration loops (loops.pxi) are compiled into this module
+cdef enum:
+    _NQ = 3                  # second-order coordinates
+    _NS = 6                  # states: q, q', first-order states
+    _NCAM = 1                # cam input instances (one segment mode each)
+    _NM = 1                  # modes: cam segments, then the force elements' modes
+    _NE = 0                  # events
+    _NQ1 = 3                 # array sizes that must not be zero
+    _NE1 = 1
+
+cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
 
 
@@ -54,7 +67,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
 
 
 cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
-    """dy/dt: q' and q'' from M q'' = f."""
+    """dy/dt: q', q'' from M q'' = f, and the rates of the first-order states."""
     cdef double tau = ctx.p[0]
     cdef double m1 = ctx.p[1]
     cdef double m2 = ctx.p[2]
@@ -110,6 +123,9 @@ cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nog
     cdef double X1d = y[3]
     cdef double X2d = y[4]
     cdef double X3d = y[5]
+    cdef double X1dd = dy[3]
+    cdef double X2dd = dy[4]
+    cdef double X3dd = dy[5]
     cdef double _cam0[4]  # H(T) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
@@ -121,6 +137,55 @@ cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nog
     out[4] = _cam0[0]  # H
 
 
+cdef void mass_stiffness(double t, const double* y, double* Mm, double* Km, Ctx* ctx) noexcept nogil:
+    """Mass matrix M and stiffness K = -df/dq (row-major, n x n) at (t, y), for frozen analyses."""
+    cdef double tau = ctx.p[0]
+    cdef double m1 = ctx.p[1]
+    cdef double m2 = ctx.p[2]
+    cdef double m3 = ctx.p[3]
+    cdef double c1 = ctx.p[4]
+    cdef double c2 = ctx.p[5]
+    cdef double c3 = ctx.p[6]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double X1 = y[0]
+    cdef double X2 = y[1]
+    cdef double X3 = y[2]
+    cdef double X1d = y[3]
+    cdef double X2d = y[4]
+    cdef double X3d = y[5]
+    cdef double _cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
+
+    cdef double _m0 = 39.47841760435743*(1.0/(tau*tau))
+    cdef double _m1 = -_m0*c2
+    cdef double _m2 = _m0*c3
+    cdef double _m3 = -_m2
+    Mm[0] = m1
+    Mm[1] = 0.0
+    Mm[2] = 0.0
+    Mm[3] = 0.0
+    Mm[4] = m2
+    Mm[5] = 0.0
+    Mm[6] = 0.0
+    Mm[7] = 0.0
+    Mm[8] = m3
+    Km[0] = _m0*(c1 + c2)
+    Km[1] = _m1
+    Km[2] = 0.0
+    Km[3] = _m1
+    Km[4] = _m0*(c2 + c3)
+    Km[5] = _m3
+    Km[6] = 0.0
+    Km[7] = _m3
+    Km[8] = _m2
+
+
 cdef void refresh(Ctx* ctx) noexcept nogil:
     """ctx.variant from the modes (bit i set when cam input i sits in a dwell); the cam
     cache is emptied, its entries belong to the old segments."""
@@ -130,7 +195,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
 
 
 cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
-    """Segment of every cam input at (t, y)."""
+    """Segment of every cam input at (t, y); the force elements keep their modes."""
     cdef double tau = ctx.p[0]
     cdef double m1 = ctx.p[1]
     cdef double m2 = ctx.p[2]
@@ -156,17 +221,21 @@ cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
     refresh(ctx)
 
 
+cdef void events(double t, const double* y, double* g, Ctx* ctx) noexcept nogil:
+    """Event functions; an event not armed in the current modes reads 1 (never crosses)."""
+    pass
+
+
+cdef void on_event(int k, double t, double* y, Ctx* ctx) noexcept nogil:
+    """What event k does: new modes (and state resets) at its crossing."""
+    pass
+
+
 cdef void rhs_ptr(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
     rhs(t, y, dy, ctx)
 
 
-# the integration loops of camdyn.runtime, compiled here with rhs() inlined and the
-# sizes known at compile time
-cdef enum:
-    _NS = 6
-    _NQ = 3
-    _NM = 1
-
+# the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/loops.pxi"
 
 
@@ -184,12 +253,14 @@ def cam_time_affine(p):
 
 cdef ModelC _model
 _model.abi_version = CAMDYN_ABI
-_model.n_q = 3
-_model.n_states = 6
+_model.n_q = _NQ
+_model.n_states = _NS
 _model.n_params = 7
 _model.n_outputs = 5
 _model.n_families = 1
-_model.n_instances = 1
+_model.n_instances = _NCAM
+_model.n_modes = _NM
+_model.n_events = _NE
 _model.n_const = 7
 _model.n_cache = 5
 _model.prepare = prepare
@@ -197,6 +268,9 @@ _model.rhs = rhs_ptr
 _model.outputs = outputs
 _model.update_modes = update_modes
 _model.refresh = refresh
+_model.events = events
+_model.on_event = on_event
+_model.mass_stiffness = mass_stiffness
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -214,6 +288,8 @@ _MANIFEST_JSON = """
    "time_affine": true
   }
  ],
+ "events": [],
+ "modes": [],
  "n_q": 3,
  "name": "chain3",
  "options": [],
@@ -327,9 +403,10 @@ _MANIFEST_JSON = """
  "residual": {
   "acceleration": "X2dd",
   "error": "U2",
-  "rise_end": 1.0
+  "rise_end": 1.0,
+  "rise_state": ""
  },
- "source_hash": "sha256:168076ee21b2ae94c0c8f10114b131770043371ba50576f38ed72dbac5213a5e",
+ "source_hash": "sha256:e1c62cc1d141de24664a5c402adec44384d1978e0cde22eb2e227011884d378e",
  "states": [
   {
    "doc": "position of mass 1 over the stroke",
@@ -382,4 +459,4 @@ _MANIFEST_JSON = """
 }
 """
 MANIFEST = json.loads(_MANIFEST_JSON)
-"""States, parameters (defaults, units, ranges), outputs, cam inputs, source hash."""
+"""States, parameters (defaults, units, ranges), outputs, cam inputs, modes, events, source hash."""

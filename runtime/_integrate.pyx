@@ -34,6 +34,7 @@ STATUS_TEXT = {
     STATUS_NO_CONVERGENCE: ("the mid-step acceleration of the thesis scheme did not converge; "
                             "use a smaller step"),
     STATUS_BAD_MODEL: "the model is not purely second order, which the thesis scheme requires",
+    STATUS_EVENT_STORM: "more events than max_events (chattering contact or friction?)",
 }
 
 
@@ -64,7 +65,7 @@ cdef class Integrator:
     ``run(p, stops, cap)`` integrates from t0 through every stop time with the
     parameter vector p; ``cap`` is the number of points to reserve (exact for
     fixed steps, a guess for DP54).  It returns (status, rows, mode, n, n_steps,
-    n_rejected, n_rhs, t_fail, seconds): ``rows`` has one row [t, y, f, extra]
+    n_rejected, n_rhs, t_fail, seconds, n_events): ``rows`` has one row [t, y, f, extra]
     per recorded point (see abi.pxd), ``mode`` the modes in force from each
     point, ``seconds`` the wall time of the compiled loops.
     """
@@ -73,30 +74,35 @@ cdef class Integrator:
     cdef object capsule
     cdef int method
     cdef double t0, h, h_max, rtol
-    cdef long max_steps
+    cdef long max_steps, max_events
     cdef double[::1] y0, atol, law_par
-    cdef int[::1] law
+    cdef int[::1] law, modes0
     cdef readonly int width, n_states
 
     def __init__(self, object capsule, int method, int[::1] law, double[::1] law_par,
                  double[::1] y0, double t0, double h, double h_max, double rtol,
-                 double[::1] atol, long max_steps):
+                 double[::1] atol, long max_steps, int[::1] modes0=None, long max_events=1000000):
         self.m = model_pointer(capsule)
         self.capsule = capsule
-        cdef int ns = self.m.n_states
+        cdef int ns = self.m.n_states, ne = self.m.n_modes - self.m.n_instances
         if y0.shape[0] != ns or atol.shape[0] != ns:
             raise ValueError("state or tolerance vector of the wrong length")
         if law.shape[0] != max(self.m.n_families, 1) or law_par.shape[0] != law.shape[0]:
             raise ValueError("one cam law per cam input family expected")
+        if modes0 is None:
+            modes0 = np.zeros(ne, dtype=np.intc)
+        if modes0.shape[0] != ne:
+            raise ValueError(f"{ne} initial modes of the force elements expected")
         self.method, self.t0, self.h, self.h_max, self.rtol = method, t0, h, h_max, rtol
-        self.max_steps = max_steps
+        self.max_steps, self.max_events = max_steps, max_events
         self.y0, self.atol, self.law, self.law_par = y0.copy(), atol.copy(), law.copy(), law_par.copy()
+        self.modes0 = np.array(modes0, dtype=np.intc)
         self.n_states = ns
         self.width = 1 + (3 if method == METHOD_DP54 else 2) * ns
 
     def run(self, double[::1] p, double[::1] stops, Py_ssize_t cap):
         cdef ModelC* m = self.m
-        cdef int ns = m.n_states, nm = m.n_instances
+        cdef int ns = m.n_states, nm = m.n_modes, ncam = m.n_instances, j
         if p.shape[0] != m.n_params:
             raise ValueError("parameter vector of the wrong length")
         if cap < 16:
@@ -105,7 +111,7 @@ cdef class Integrator:
         modes = np.empty((cap, nm), dtype=np.intc)
         cdef double[:, ::1] rv = rows
         cdef int[:, ::1] mv = modes
-        # small scratch: the state, the parameter constants, the cam cache, the modes
+        # small scratch: the state, the parameter constants, the cam cache; the modes
         cdef double* scratch = <double*> PyMem_Malloc((ns + m.n_const + m.n_cache + 1) * sizeof(double))
         cdef int* mode = <int*> PyMem_Malloc((nm + 1) * sizeof(int))
         if scratch == NULL or mode == NULL:
@@ -113,6 +119,8 @@ cdef class Integrator:
             PyMem_Free(mode)
             raise MemoryError()
         memcpy(scratch, &self.y0[0], ns * sizeof(double))
+        for j in range(nm - ncam):
+            mode[ncam + j] = self.modes0[j]
         cdef Ctx ctx
         ctx.p = &p[0]
         ctx.k = scratch + ns
@@ -140,6 +148,8 @@ cdef class Integrator:
         run.rtol = self.rtol
         run.atol = &self.atol[0]
         run.max_steps = self.max_steps
+        run.max_events = self.max_events
+        run.n_events = 0
         run.n_steps = 0
         run.n_rejected = 0
         run.n_rhs = 0
@@ -167,7 +177,8 @@ cdef class Integrator:
             finally:
                 free(run.rec.rows)
                 free(run.rec.mode)
-        return (status, rows, modes, n, run.n_steps, run.n_rejected, run.n_rhs, run.t_fail, seconds)
+        return (status, rows, modes, n, run.n_steps, run.n_rejected, run.n_rhs, run.t_fail, seconds,
+                run.n_events)
 
 
 # -- evaluation helpers (vectorized, compiled) ------------------------------------
@@ -234,6 +245,18 @@ cdef void _ctx_init(Ctx* ctx, ModelC* m, double[::1] p, double[::1] k, int[::1] 
     m.prepare(ctx)
 
 
+cdef int[::1] _mode_buffer(ModelC* m, element_modes):
+    """Mode array: cam segments (filled per point), then the force elements' modes."""
+    md = np.zeros(max(m.n_modes, 1), dtype=np.intc)
+    ne = m.n_modes - m.n_instances
+    if element_modes is not None and ne:
+        em = np.asarray(element_modes, dtype=np.intc).ravel()
+        if em.shape[0] != ne:
+            raise ValueError(f"{ne} modes of the force elements expected")
+        md[m.n_instances:m.n_modes] = em
+    return md
+
+
 def _rows_contiguous(y):
     """y itself when each row is contiguous (views into a record), else a C copy."""
     y = np.asarray(y, dtype=float)
@@ -241,17 +264,18 @@ def _rows_contiguous(y):
 
 
 def eval_outputs(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
-                 const double[:] t, y_in, mode=None):
-    """Outputs at the points (t, y); modes per point, or looked up when None."""
+                 const double[:] t, y_in, mode=None, element_modes=None):
+    """Outputs at the points (t, y).  ``mode``: all modes per point (as recorded); else
+    the cam segments are looked up and the force elements take ``element_modes``."""
     cdef const double[:, :] y = _rows_contiguous(y_in)
     cdef ModelC* m = model_pointer(capsule)
     cdef Py_ssize_t n = t.shape[0], j
-    cdef int nm = m.n_instances
+    cdef int nm = m.n_modes
     if y.shape[1] != m.n_states:
         raise ValueError("state array of the wrong width")
     out = np.empty((n, m.n_outputs))
     cdef double[:, ::1] o = out
-    cdef int[::1] md = np.zeros(max(nm, 1), dtype=np.intc)
+    cdef int[::1] md = _mode_buffer(m, element_modes)
     cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
     cdef int[:, ::1] given
     cdef bint have = mode is not None and nm > 0
@@ -270,7 +294,7 @@ def eval_outputs(object capsule, double[::1] p, int[::1] law, double[::1] law_pa
 
 
 def eval_rhs(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
-             const double[:] t, y_in):
+             const double[:] t, y_in, element_modes=None):
     """dy/dt at the points (t, y), cam segments looked up per point."""
     cdef const double[:, :] y = _rows_contiguous(y_in)
     cdef ModelC* m = model_pointer(capsule)
@@ -279,7 +303,7 @@ def eval_rhs(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
         raise ValueError("state array of the wrong width")
     out = np.empty((n, m.n_states))
     cdef double[:, ::1] o = out
-    cdef int[::1] md = np.zeros(max(m.n_instances, 1), dtype=np.intc)
+    cdef int[::1] md = _mode_buffer(m, element_modes)
     cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
     cdef Ctx ctx
     _ctx_init(&ctx, m, p, k, law, law_par, md)
@@ -289,13 +313,48 @@ def eval_rhs(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
     return out
 
 
+def eval_events(object capsule, double[::1] p, int[::1] law, double[::1] law_par, double t,
+                double[::1] y, element_modes=None):
+    """The event functions at one point (cam segments looked up)."""
+    cdef ModelC* m = model_pointer(capsule)
+    g = np.empty(max(m.n_events, 1))
+    cdef double[::1] gv = g
+    cdef int[::1] md = _mode_buffer(m, element_modes)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef Ctx ctx
+    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    m.update_modes(t, &y[0], &ctx)
+    m.events(t, &y[0], &gv[0], &ctx)
+    return g[:m.n_events]
+
+
+def eval_mass_stiffness(object capsule, double[::1] p, int[::1] law, double[::1] law_par, double t,
+                        double[::1] y, element_modes=None):
+    """Mass matrix M and stiffness K = -df/dq at one point: the frozen system M q'' + K q."""
+    cdef ModelC* m = model_pointer(capsule)
+    cdef int n = m.n_q
+    M = np.zeros((n, n))
+    K = np.zeros((n, n))
+    cdef double[:, ::1] Mv = M, Kv = K
+    cdef int[::1] md = _mode_buffer(m, element_modes)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef Ctx ctx
+    if y.shape[0] != m.n_states:
+        raise ValueError("state vector of the wrong length")
+    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    m.update_modes(t, &y[0], &ctx)
+    if n:
+        m.mass_stiffness(t, &y[0], &Mv[0, 0], &Kv[0, 0], &ctx)
+    return M, K
+
+
 def rhs_cost_ns(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
                 double t, double[::1] y, long n):
     """Mean wall time of one right-hand-side call in ns, over n calls in C through
     the model's function pointer (the loops inline it and pay less)."""
     cdef ModelC* m = model_pointer(capsule)
     cdef double[::1] dy = np.zeros(m.n_states)
-    cdef int[::1] md = np.zeros(max(m.n_instances, 1), dtype=np.intc)
+    cdef int[::1] md = _mode_buffer(m, None)
     cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
     cdef Ctx ctx
     cdef timespec a, b

@@ -12,7 +12,7 @@
 # a module at run time.
 
 cdef enum:
-    CAMDYN_ABI = 2
+    CAMDYN_ABI = 3
 
 # method codes
 cdef enum:
@@ -29,13 +29,14 @@ cdef enum:
     STATUS_NO_MEMORY = 4
     STATUS_NO_CONVERGENCE = 5
     STATUS_BAD_MODEL = 6
+    STATUS_EVENT_STORM = 7
 
 cdef struct Ctx:
     const double* p        # parameters, in manifest order
     double* k              # parameter-only constants, filled by prepare()
     const int* law         # cam law code per cam input family
     const double* law_par  # cam law parameter (theta of the modified sine) per family
-    int* mode              # discrete mode per cam input instance (segment of the law)
+    int* mode              # cam segment per cam input instance, then the force elements' modes
     int variant            # bit i set: cam instance i sits in a dwell (set by update_modes)
     double* cache          # per cam instance [argument, H, H', H'', H''']: the last evaluation;
                            # in a dwell H holds the dwell value (n_cache doubles)
@@ -69,6 +70,8 @@ cdef struct Run:
     long n_steps
     long n_rejected
     long n_rhs
+    long n_events          # events located and applied
+    long max_events
     double t_fail
     double err_old
 
@@ -77,6 +80,9 @@ ctypedef void (*rhs_fn)(double t, const double* y, double* dy, Ctx* ctx) noexcep
 ctypedef void (*out_fn)(double t, const double* y, double* out, Ctx* ctx) noexcept nogil
 ctypedef void (*mode_fn)(double t, const double* y, Ctx* ctx) noexcept nogil
 ctypedef int (*run_fn)(Run* run) noexcept nogil
+ctypedef void (*event_fn)(double t, const double* y, double* g, Ctx* ctx) noexcept nogil
+ctypedef void (*action_fn)(int k, double t, double* y, Ctx* ctx) noexcept nogil
+ctypedef void (*ms_fn)(double t, const double* y, double* M, double* K, Ctx* ctx) noexcept nogil
 
 cdef struct ModelC:
     int abi_version        # CAMDYN_ABI; checked before any call
@@ -85,7 +91,9 @@ cdef struct ModelC:
     int n_params
     int n_outputs
     int n_families         # cam input families (H, ...)
-    int n_instances        # distinct cam input arguments (one mode each)
+    int n_instances        # distinct cam input arguments (one segment mode each)
+    int n_modes            # all modes: the cam segments first, then the force elements'
+    int n_events
     int n_const            # parameter-only constants
     int n_cache            # doubles of ctx.cache
     prep_fn prepare        # fills ctx.k from ctx.p
@@ -93,6 +101,9 @@ cdef struct ModelC:
     out_fn outputs         # named outputs at (t, y)
     mode_fn update_modes   # segment of every cam input at (t, y), right-continuous
     prep_fn refresh        # ctx.variant from ctx.mode (after setting modes by hand)
+    event_fn events        # event functions g_k(t, y)
+    action_fn on_event     # modes (and state resets) at event k
+    ms_fn mass_stiffness   # M and K = -df/dq, for frozen (linearized) analyses
     run_fn run             # the integration loops (loops.pxi) with this model's rhs inlined
 
 

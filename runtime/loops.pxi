@@ -77,33 +77,120 @@ cdef inline bint _finite(int n, const double* y) noexcept nogil:
     return True
 
 
+cdef inline bint _crossed(int direction, double g) noexcept nogil:
+    return g >= 0.0 if direction > 0 else g <= 0.0
+
+
+cdef inline void _dense(double s, double h, const double* y0, const double* y1, const double* f0,
+                        const double* f1, const double* r4, double* out) noexcept nogil:
+    """The step's continuous extension at s in [0, 1] (see the header); r4 may be NULL."""
+    cdef int i
+    cdef double r1, r2, r3, s1 = 1.0 - s
+    for i in range(_NS):
+        r1 = y1[i] - y0[i]
+        r2 = h * f0[i] - r1
+        r3 = r1 - h * f1[i] - r2
+        out[i] = y0[i] + s * (r1 + s1 * (r2 + s * (r3 + (s1 * r4[i] if r4 != NULL else 0.0))))
+
+
+cdef double _locate(Ctx* ctx, int k, double t, double h, const double* y0, const double* y1,
+                    const double* f0, const double* f1, const double* r4, double ga,
+                    double gb) noexcept nogil:
+    """Step fraction where event k crosses (Illinois method on the continuous extension);
+    the returned end is on the crossed side."""
+    cdef double a = 0.0, b = 1.0, s, gs
+    cdef int it, side = 0, d = _EDIR[k]
+    cdef double ys[_NS]
+    cdef double gtmp[_NE1]
+    for it in range(100):
+        s = (a * gb - b * ga) / (gb - ga)
+        if not (a < s < b):
+            s = 0.5 * (a + b)
+        _dense(s, h, y0, y1, f0, f1, r4, ys)
+        events(t + s * h, ys, gtmp, ctx)
+        gs = gtmp[k]
+        if _crossed(d, gs):
+            b, gb = s, gs
+            if side == -1:
+                ga *= 0.5
+            side = -1
+        else:
+            a, ga = s, gs
+            if side == 1:
+                gb *= 0.5
+            side = 1
+        if b - a <= 1e-14 or gs == 0.0:
+            break
+    return b
+
+
+cdef int _event_in_step(Run* run, double t, double h, const double* y0, const double* y1,
+                        const double* f0, const double* f1, const double* r4, double* g0,
+                        double* g1, double* s_hit) noexcept nogil:
+    """The event that crosses first within the step, or -1; its step fraction in s_hit."""
+    cdef int k, hit = -1
+    cdef double s
+    s_hit[0] = 2.0
+    events(t + h, y1, g1, run.ctx)
+    for k in range(_NE):
+        if not _crossed(_EDIR[k], g0[k]) and _crossed(_EDIR[k], g1[k]):
+            s = _locate(run.ctx, k, t, h, y0, y1, f0, f1, r4, g0[k], g1[k])
+            if s < s_hit[0]:
+                s_hit[0] = s
+                hit = k
+    return hit
+
+
+cdef int _apply_event(Run* run, int k, double t, double* y, double* f, double* g0) noexcept nogil:
+    """Record the left limit at an event, apply it, record the right limit; f becomes the
+    new slope and g0 the event functions in the new modes."""
+    run.n_events += 1
+    if run.n_events > run.max_events:
+        return STATUS_EVENT_STORM
+    if _rec_point(run, t, y, f) != 0:
+        return STATUS_NO_MEMORY
+    on_event(k, t, y, run.ctx)
+    rhs(t, y, f, run.ctx)
+    run.n_rhs += 1
+    if _rec_point(run, t, y, f) != 0:
+        return STATUS_NO_MEMORY
+    events(t, y, g0, run.ctx)
+    return STATUS_OK
+
+
 cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
     """RK4 or the thesis scheme over [a, b] in equal steps no longer than run.h.
 
     State and stages live in local arrays of compile-time size (_NS, _NQ from
     the including model) and the context is a local copy, so that the compiler
-    can keep them in registers.
+    can keep them in registers.  After an event the rest of the interval is cut
+    into equal steps again.
     """
     cdef Ctx local_ctx = run.ctx[0]
     cdef Ctx* ctx = &local_ctx
-    cdef int i, it, status = STATUS_OK
-    cdef long k, nstep = fixed_steps(a, b, run.h), n_rhs = 0, n_steps = run.n_steps
+    cdef int i, it, ev, status = STATUS_OK
+    cdef long k = 0, nstep = fixed_steps(a, b, run.h), n_rhs = 0, n_steps = run.n_steps
     cdef long max_steps = run.max_steps
     cdef bint rk4 = run.method == METHOD_RK4
-    cdef double h = (b - a) / nstep, hh = 0.5 * h, h6 = h / 6.0, t = a, tn, amax, diff, prev
+    cdef double h = (b - a) / nstep, hh = 0.5 * h, h6 = h / 6.0, t = a, tn, amax, diff, prev, s_hit
     cdef double y[_NS]
     cdef double k1[_NS]
     cdef double k2[_NS]
     cdef double k3[_NS]
     cdef double k4[_NS]
     cdef double yn[_NS]
-    cdef double acc[_NQ]
+    cdef double fn[_NS]
+    cdef double acc[_NQ1]
+    cdef double g0[_NE1]
+    cdef double g1[_NE1]
     memcpy(y, run.y, sizeof(y))
     rhs(t, y, k1, ctx)
     n_rhs += 1
     if _rec_point(run, t, y, k1) != 0:
         return STATUS_NO_MEMORY
-    for k in range(nstep):
+    if _NE > 0:
+        events(t, y, g0, ctx)
+    while k < nstep:
         if n_steps >= max_steps:
             status = STATUS_MAX_STEPS
             break
@@ -155,11 +242,35 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
         if not _finite(_NS, yn):
             status = STATUS_NOT_FINITE
             break
-        t = tn
-        memcpy(y, yn, sizeof(y))
-        rhs(t, y, k1, ctx)   # slope at the new point: recorded, and the next step's k1
+        rhs(tn, yn, fn, ctx)   # slope at the new point: recorded, and the next step's k1
         n_rhs += 1
         n_steps += 1
+        if _NE > 0:
+            ev = _event_in_step(run, t, tn - t, y, yn, k1, fn, NULL, g0, g1, &s_hit)
+            if ev >= 0:
+                # cut the step at the crossing: state from the step's cubic Hermite extension
+                _dense(s_hit, tn - t, y, yn, k1, fn, NULL, k2)
+                tn = t + s_hit * (tn - t)
+                memcpy(y, k2, sizeof(y))
+                rhs(tn, y, k1, ctx)
+                n_rhs += 1
+                t = tn
+                status = _apply_event(run, ev, t, y, k1, g0)
+                if status != STATUS_OK:
+                    break
+                a = t   # equal steps again over the rest of the interval
+                k = 0
+                nstep = fixed_steps(a, b, run.h) if b > a else 0
+                if nstep:
+                    h = (b - a) / nstep
+                    hh = 0.5 * h
+                    h6 = h / 6.0
+                continue
+            memcpy(g0, g1, sizeof(g0))
+        t = tn
+        memcpy(y, yn, sizeof(y))
+        memcpy(k1, fn, sizeof(k1))
+        k += 1
         if _rec_point(run, t, y, k1) != 0:
             status = STATUS_NO_MEMORY
             break
@@ -308,6 +419,10 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
     cdef double ys[_NS]
     cdef double ev[_NS]
     cdef double* r4
+    cdef double g0[_NE1]
+    cdef double g1[_NE1]
+    cdef int hit
+    cdef double s_hit
     cdef double t = a, h, err, fac, rtol = run.rtol
     cdef const double* atol = run.atol
     cdef long n_steps = run.n_steps, n_rej = run.n_rejected, n_rhs = 0, max_steps = run.max_steps
@@ -318,6 +433,8 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
     n_rhs += 1
     if _rec_point(run, t, y, k1) != 0:
         return STATUS_NO_MEMORY
+    if _NE > 0:
+        events(t, y, g0, ctx)
     if run.h <= 0.0:
         run.h = _dp_first_step(run, t, y, k1, fmin(b - a, run.h_max))
     h = fmin(run.h, run.h_max)
@@ -379,10 +496,28 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
             for i in range(_NS):
                 r4[i] = h * (DP_D1 * k1[i] + DP_D3 * k3[i] + DP_D4 * k4[i] + DP_D5 * k5[i]
                              + DP_D6 * k6[i] + DP_D7 * k7[i])
+            n_steps += 1
+            if _NE > 0:
+                hit = _event_in_step(run, t, h, y, yn, k1, k7, r4, g0, g1, &s_hit)
+                if hit >= 0:
+                    # cut the step at the crossing: state from the fourth-order extension; the
+                    # record keeps the cubic Hermite part of it over the shortened step
+                    _dense(s_hit, h, y, yn, k1, k7, r4, ys)
+                    for i in range(_NS):
+                        r4[i] = 0.0
+                    t = t + s_hit * h
+                    memcpy(y, ys, sizeof(y))
+                    rhs(t, y, k1, ctx)
+                    n_rhs += 1
+                    status = _apply_event(run, hit, t, y, k1, g0)
+                    if status != STATUS_OK:
+                        break
+                    rejected = False
+                    continue
+                memcpy(g0, g1, sizeof(g0))
             t = b if last else t + h
             memcpy(y, yn, sizeof(y))
             memcpy(k1, k7, sizeof(k1))
-            n_steps += 1
             if _rec_point(run, t, y, k1) != 0:
                 status = STATUS_NO_MEMORY
                 break
@@ -409,6 +544,7 @@ cdef int run_loops(Run* run) noexcept nogil:
     cdef double a = run.t0, b
     if run.method == METHOD_KOSTER and _NS != 2 * _NQ:
         return STATUS_BAD_MODEL
+    run.n_events = 0
     prepare(run.ctx)
     for k in range(run.n_stops):
         b = run.stops[k]

@@ -62,12 +62,31 @@ def extreme(result: Result, name: str, a: float, b: float, *, absolute: bool, mi
     return float(best), float(best_t)
 
 
+def crossing_time(result: Result, name: str, level: float) -> float:
+    """First time the state or output ``name`` reaches ``level`` (dense output, Brent)."""
+    from scipy.optimize import brentq
+
+    v = result[name] - level
+    hit = np.flatnonzero(v >= 0)
+    if not hit.size:
+        raise CamdynInputError(f"{name} never reaches {level:g} in this run; run longer")
+    k = int(hit[0])
+    if k == 0:
+        return float(result.t[0])
+    a, b = result.t[k - 1], result.t[k]
+    if a == b:
+        return float(a)
+    return float(brentq(lambda t: result.sample([t])[name][0] - level, a, b, xtol=1e-14))
+
+
 def residual(result: Result) -> ResidualVibration:
     """U0, U0dd, Xdd_min_rise, T_at_Xdd_min of a run that covers the rise and a dwell."""
     spec = result.model.manifest.get("residual")
     if not spec:
         raise CamdynInputError(f"model {result.model.name} declares no residual-vibration outputs")
     t0, t1, t_end = result.t[0], spec["rise_end"], result.t[-1]
+    if spec.get("rise_state"):
+        t1 = crossing_time(result, spec["rise_state"], spec["rise_end"])
     if not (t0 <= 0.0 and t_end > t1):
         raise CamdynInputError(
             f"the run must cover the rise [0, {t1:g}] and part of the dwell after it "

@@ -30,8 +30,9 @@ class Result:
     @cached_property
     def stats(self) -> dict:
         """Steps, rejected steps, right-hand-side calls, wall time of the compiled loops."""
-        _, _, _, _, n_steps, n_rej, n_rhs, _, seconds = self._out
-        return {"n_steps": n_steps, "n_rejected": n_rej, "n_rhs": n_rhs, "seconds": seconds}
+        _, _, _, _, n_steps, n_rej, n_rhs, _, seconds, n_events = self._out
+        return {"n_steps": n_steps, "n_rejected": n_rej, "n_rhs": n_rhs, "n_events": n_events,
+                "seconds": seconds}
 
     @cached_property
     def _rows(self) -> np.ndarray:
@@ -39,8 +40,18 @@ class Result:
 
     @cached_property
     def mode(self) -> np.ndarray:
-        """Cam segments in force from each recorded point on."""
+        """Modes in force from each recorded point on: cam segments, then force elements."""
         return self._out[2][:self._out[3]]
+
+    def element_mode(self, name: str) -> np.ndarray:
+        """Value names of the force-element mode ``name`` at the recorded points."""
+        specs = self.model.manifest.get("modes", [])
+        names = [m["name"] for m in specs]
+        if name not in names:
+            raise KeyError(f"{name!r} is not a mode of {self.model.name}; modes: {', '.join(names)}")
+        k = names.index(name)
+        col = self.mode[:, len(self.model.manifest["cam_instances"]) + k]
+        return np.asarray(specs[k]["values"], dtype=object)[col]
 
     # views into the record rows [t, y, f, extra] (see camdyn/runtime/abi.pxd)
     @cached_property

@@ -55,6 +55,23 @@ def stop_times(model: CompiledModel, p, chosen: dict, t0: float, t_end: float) -
     return np.array(sorted(stops))
 
 
+def initial_modes(model: CompiledModel, modes: dict | None) -> list[int]:
+    """Initial value index of every force-element mode: the manifest's, overridden by ``modes``."""
+    specs = model.manifest.get("modes", [])
+    given = dict(modes or {})
+    unknown = sorted(set(given) - {m["name"] for m in specs})
+    if unknown:
+        raise CamdynInputError(f"model {model.name} has no mode {unknown[0]!r}; its modes are "
+                               f"{', '.join(m['name'] for m in specs) or 'none'}")
+    out = []
+    for spec in specs:
+        value = given.get(spec["name"], spec["initial"])
+        if value not in spec["values"]:
+            raise CamdynInputError(f"mode {spec['name']}={value!r} is not one of {spec['values']}")
+        out.append(spec["values"].index(value))
+    return out
+
+
 class Simulator:
     """A prepared simulation: everything but the parameter values is fixed and checked.
 
@@ -67,7 +84,8 @@ class Simulator:
 
     def __init__(self, model, t_end: float = 3.0, method="dp54", *, rtol: float | None = None,
                  atol: float | None = None, step: float | None = None, law="cycloidal",
-                 theta: float | None = None, y0=None, t0: float = 0.0, max_steps: int = 5_000_000):
+                 theta: float | None = None, y0=None, t0: float = 0.0, max_steps: int = 5_000_000,
+                 modes: dict | None = None, max_events: int = 1_000_000):
         m = model if isinstance(model, CompiledModel) else load(model)
         if isinstance(method, str):
             method = _methods.make(method, rtol=rtol, atol=atol, step=step)
@@ -97,8 +115,10 @@ class Simulator:
                     f"step={method.step:g} needs more than max_steps={max_steps} steps over "
                     f"[{t0:g}, {t_end:g}]")
             atol, h, h_max, rtol = np.ones(n), method.step, method.step, 0.0
-        self._integrator = _integrate.Integrator(m.capsule, method.code, self._codes, self._pars,
-                                                 y_init, t0, h, h_max, rtol, atol, max_steps)
+        self.modes0 = initial_modes(m, modes)
+        self._integrator = _integrate.Integrator(
+            m.capsule, method.code, self._codes, self._pars, y_init, t0, h, h_max, rtol, atol,
+            max_steps, np.array(self.modes0, dtype=np.intc), int(max_events))
         self._stops: dict = {}
         self._cap = 256
 
@@ -133,25 +153,28 @@ class Simulator:
 
 
 @lru_cache(maxsize=32)
-def _prepared(model, t_end, method, rtol, atol, step, law, theta, y0, t0, max_steps) -> Simulator:
+def _prepared(model, t_end, method, rtol, atol, step, law, theta, y0, t0, max_steps, modes) -> Simulator:
     return Simulator(model, t_end, method, rtol=rtol, atol=atol, step=step,
                      law=dict(law) if isinstance(law, tuple) else law,
-                     theta=theta, y0=y0, t0=t0, max_steps=max_steps)
+                     theta=theta, y0=y0, t0=t0, max_steps=max_steps,
+                     modes=dict(modes) if modes else None)
 
 
 def simulate(model, params: dict | None = None, t_end: float = 3.0, method="dp54", *,
              rtol: float | None = None, atol: float | None = None, step: float | None = None,
              law="cycloidal", theta: float | None = None, y0=None, t0: float = 0.0,
-             max_steps: int = 5_000_000) -> Result:
+             max_steps: int = 5_000_000, modes: dict | None = None) -> Result:
     """Integrate ``model`` from t0 to t_end with ``params`` (see :class:`Simulator`).
 
     The prepared Simulator is kept for the next call with the same settings.
     """
     key_law = tuple(sorted(law.items())) if isinstance(law, dict) else law
     key_y0 = None if y0 is None else tuple(np.asarray(y0, dtype=float).ravel().tolist())
+    key_modes = tuple(sorted(modes.items())) if modes else None
     try:
-        sim = _prepared(model, t_end, method, rtol, atol, step, key_law, theta, key_y0, t0, max_steps)
+        sim = _prepared(model, t_end, method, rtol, atol, step, key_law, theta, key_y0, t0,
+                        max_steps, key_modes)
     except TypeError:  # unhashable settings: prepare without the cache
         sim = Simulator(model, t_end, method, rtol=rtol, atol=atol, step=step, law=law,
-                        theta=theta, y0=y0, t0=t0, max_steps=max_steps)
+                        theta=theta, y0=y0, t0=t0, max_steps=max_steps, modes=modes)
     return sim.run(params)

@@ -22,8 +22,8 @@ ROOT = Path(__file__).resolve().parents[1]
 
 
 def _lambdified(model_name: str, law_key: str, par):
-    """q'' and outputs of a model by plain lambdify of the derived equations, the cam input
-    replaced by the law's sympy Piecewise."""
+    """dy/dt and outputs of a model by plain lambdify of the derived equations, the cam
+    input replaced by the law's sympy Piecewise."""
     model = REGISTRY[model_name]()
     eq = derive(model)
     t = model.time
@@ -36,22 +36,25 @@ def _lambdified(model_name: str, law_key: str, par):
             e = e.subs(a, law.piecewise(a.order, a.args[0]).subs(lsub))
         return e
 
-    q = model.q
+    q, z = model.q, model.z
     qs = [sp.Symbol(f"q{i}") for i in range(len(q))]
     vs = [sp.Symbol(f"v{i}") for i in range(len(q))]
-    acc = eq.M.LUsolve(eq.f).applyfunc(plain)
+    zs = [sp.Symbol(f"z{i}") for i in range(len(z))]
+    acc = eq.M.LUsolve(eq.f).applyfunc(plain) if q else sp.Matrix([])
 
     def to_syms(e):
         e = plain(e)
         e = e.subs({x.diff(t, 2): acc[i] for i, x in enumerate(q)})
         e = e.subs({x.diff(t): vs[i] for i, x in enumerate(q)})
-        return e.subs({x: qs[i] for i, x in enumerate(q)})
+        e = e.subs({zi.diff(t): plain(st.rate) for zi, st in zip(z, model.first_order)})
+        return e.subs({x: qs[i] for i, x in enumerate(q)} | {zi: zs[i] for i, zi in enumerate(z)})
 
     params = [p.symbol for p in model.parameters]
-    args = [t, *qs, *vs, *params]  # q1..qn, v1..vn as in the state vector
-    f_acc = sp.lambdify(args, [to_syms(a) for a in acc], "numpy")
+    args = [t, *qs, *vs, *zs, *params]  # in the order of the state vector
+    dy = [*vs, *[to_syms(a) for a in acc], *[to_syms(st.rate) for st in model.first_order]]
+    f_dy = sp.lambdify(args, dy, "numpy")
     f_out = sp.lambdify(args, [to_syms(o.expr) for o in model.outputs], "numpy")
-    return f_acc, f_out, model
+    return f_dy, f_out, model
 
 
 @pytest.mark.parametrize("model_name", sorted(REGISTRY))
@@ -60,39 +63,37 @@ def test_generated_equals_lambdify(model_name, law_key, rng):
     """rhs and outputs of the compiled module equal lambdify of the same equations at
     random states, times and parameters, to 1e-12 relative."""
     par = float(rng.uniform(0.05, 0.45)) if camlaws.LAWS[law_key].parameter else None
-    f_acc, f_out, model = _lambdified(model_name, law_key, par)
+    f_dy, f_out, model = _lambdified(model_name, law_key, par)
     cm = load(model_name)
     choice = rt_laws.choose(law_key, par)
     codes = np.array([choice.code], dtype=np.intc)
     pars = np.array([choice.par])
     n = 200
-    nq = len(model.coordinates)
+    ns = len(cm.state_names)
     t = rng.uniform(-0.3, 2.0, n)
     H = choice.evaluate(t)[:, 0]
     # positions kept away from H, so that H - X is not a cancellation
-    X = H[:, None] + rng.choice([-1, 1], (n, nq)) * rng.uniform(1e-2, 1.0, (n, nq))
-    V = rng.uniform(-3, 3, (n, nq))
-    got_acc, ref_acc, got_out, ref_out = [], [], [], []
+    Y = rng.uniform(-3, 3, (n, ns))
+    nq = len(model.coordinates)
+    Y[:, :nq] = H[:, None] + rng.choice([-1, 1], (n, nq)) * rng.uniform(1e-2, 1.0, (n, nq))
+    got_dy, ref_dy, got_out, ref_out = [], [], [], []
     for k in range(n):
         pvals = {}
         for spec in model.parameters:
             hi = min(spec.high, 0.95 if spec.name == "tau" else 3.0)
             pvals[spec.name] = float(rng.uniform(max(spec.low, 0.0) + 0.02, hi - 0.02))
         p = cm.parameter_vector(pvals)
-        y = np.concatenate([X[k], V[k]])[None, :]
+        y = Y[k:k + 1]
         tk = t[k:k + 1].copy()
-        dy = _integrate.eval_rhs(cm.capsule, p, codes, pars, tk, y)[0]
-        assert np.array_equal(dy[:nq], V[k])
-        got_acc.append(dy[nq:])
+        got_dy.append(_integrate.eval_rhs(cm.capsule, p, codes, pars, tk, y)[0])
         got_out.append(_integrate.eval_outputs(cm.capsule, p, codes, pars, tk, y)[0])
-        args = [t[k], *X[k], *V[k], *p]
-        ref_acc.append(np.array(f_acc(*args), dtype=float))
+        args = [t[k], *Y[k], *p]
+        ref_dy.append(np.array(f_dy(*args), dtype=float))
         ref_out.append(np.array(f_out(*args), dtype=float))
     # relative to each quantity's scale over the sample: where a result is a small
     # difference of large terms (H' of a polynomial law near T = 1), both evaluations
     # carry the rounding of the terms, not of the result
-    for got, ref in ((np.array(got_acc), np.array(ref_acc)),
-                     (np.array(got_out), np.array(ref_out))):
+    for got, ref in ((np.array(got_dy), np.array(ref_dy)), (np.array(got_out), np.array(ref_out))):
         scale = np.abs(ref).max(axis=0)
         assert np.all(np.abs(got - ref) <= 1e-12 * scale), np.max(np.abs(got - ref) / scale)
 

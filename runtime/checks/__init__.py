@@ -31,7 +31,8 @@ from dataclasses import dataclass, field
 from decimal import Decimal
 from typing import Callable
 
-TOPICS = ("spine", "app2", "elements", "chains", "rayleigh", "impact", "foundation", "examples")
+TOPICS = ("spine", "app2", "elements", "chains", "rayleigh", "impact", "foundation", "examples",
+          "camshaft2", "motor", "dynacam")
 """Topic modules of this package, in the order the table lists them."""
 
 
