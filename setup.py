@@ -6,11 +6,13 @@ but the design card keeps the sources in top-level folders (runtime/,
 generated/).  So the headers are copied into build/cython_include/camdyn/
 first and that tree is put on Cython's include path.
 """
+import os
 import shutil
 from pathlib import Path
 
 from Cython.Build import cythonize
 from setuptools import Extension, setup
+from setuptools.command.build_ext import build_ext
 
 ROOT = Path(__file__).parent.resolve()
 INCLUDE = ROOT / "build" / "cython_include"
@@ -40,8 +42,18 @@ def _extensions():
     return exts
 
 
+class ParallelBuildExt(build_ext):
+    """Compile the extensions on every core: the DYNACAM variants are large."""
+
+    def finalize_options(self):
+        super().finalize_options()
+        if not self.parallel:
+            self.parallel = os.cpu_count() or 1
+
+
 _stage_headers()
 setup(
+    cmdclass={"build_ext": ParallelBuildExt},
     ext_modules=cythonize(
         _extensions(),
         include_path=[str(INCLUDE)],

@@ -36,8 +36,10 @@ def _env() -> jinja2.Environment:
     )
 
 
-def _num(value) -> float:
-    return float(sp.sympify(value))
+def _num(value):
+    """A number for the manifest; an expression of the parameters as its text."""
+    value = sp.sympify(value)
+    return float(value) if value.is_number else str(value)
 
 
 # -- model modules --------------------------------------------------------------
@@ -57,10 +59,12 @@ class _Plain:
     def __call__(self, expr):
         m, t = self.model, self.model.time
         expr = sp.sympify(expr)
+        # xreplace, not subs: exact subtrees (derivatives before the functions inside them,
+        # as xreplace replaces the largest match first) without subs' costly rewriting
         if m.first_order:
-            expr = expr.subs({z(t).diff(t): z.rate for z in m.first_order})
+            expr = expr.xreplace({z(t).diff(t): z.rate for z in m.first_order})
         expr = expr.xreplace(self.cam) if self.cam else expr
-        return expr.subs(_time_functions(m))
+        return expr.xreplace(_time_functions(m))
 
 
 def _time_functions(m: Model) -> dict:
@@ -88,11 +92,15 @@ def _plainer(m: Model, exprs) -> _Plain:
         if rates:
             e = e.subs(rates)
         found |= e.atoms(CamFunction)
+    # one instance per family and argument; arguments are compared expanded, because
+    # Lagrange's equations may have expanded (beta - beta_0)/beta_m in some terms only
+    def key_of(a):
+        return (a.family, sp.srepr(sp.expand(a.args[0].xreplace(tf))))
+
     keyed = {}
-    for a in found:
-        arg = a.args[0].subs(tf)
-        key = (a.family, sp.srepr(arg))
-        keyed.setdefault(key, [arg, 0])
+    for a in sorted(found, key=sp.srepr):
+        key = key_of(a)
+        keyed.setdefault(key, [a.args[0].xreplace(tf), 0])
         keyed[key][1] = max(keyed[key][1], a.order)
     order = sorted(keyed)
     index = {key: i for i, key in enumerate(order)}
@@ -100,7 +108,7 @@ def _plainer(m: Model, exprs) -> _Plain:
     names[t] = "t"
     cam = {}
     for a in sorted(found, key=sp.srepr):
-        i = index[(a.family, sp.srepr(a.args[0].subs(tf)))]
+        i = index[key_of(a)]
         sym = sp.Symbol(f"_cam{i}_{a.order}", real=True)
         names[sym] = f"_cam{i}[{a.order}]"
         cam[a] = sym
@@ -147,7 +155,10 @@ def model_context(eq: Equations) -> dict:
     modes = {mode.name: mode for mode in m.modes}
     qdd_syms = [sp.Symbol(c.name + "dd", real=True) for c in m.coordinates]
     q_funcs = m.q
-    K_raw = (-eq.f.jacobian(q_funcs)) if n else sp.zeros(0, 0)
+    # the frozen stiffness K = -df/dq serves smooth models; with modes (contact, friction)
+    # there is no single linearization, and K is left undefined (NaN)
+    smooth = not m.modes
+    K_raw = (-eq.f.jacobian(q_funcs)) if n and smooth else sp.zeros(0, 0)
     event_exprs = []
     for e in m.events:
         event_exprs.append(e.g)
@@ -190,12 +201,14 @@ def model_context(eq: Equations) -> dict:
         rhs_variants.append({"index": v, "lines": lines, "code": code,
                              "dwell": [i for i in range(len(plain.instances)) if v >> i & 1]})
         used |= u
-    qdd_names = {s: f"dy[{n + i}]" for i, s in enumerate(qdd_syms)}
+    qdd_names = {s: f"_dy[{n + i}]" for i, s in enumerate(qdd_syms)}
     out_lines, out_code, u = cse_block(out_exprs, names | qdd_names, prefix="_o")
     used |= u
     const_lines, const_code, u = cse_block([e for _, e in consts.items], names, prefix="_c")
     used |= u
     ms_lines, ms_code, u = cse_block(list(M) + list(K_raw.applyfunc(plain)), names, prefix="_m")
+    if not smooth:
+        ms_code += ["0.0 / 0.0"] * (n * n)
     used |= u
 
     # events: the model's own, then the breakpoints of cam inputs driven by a state
@@ -267,8 +280,12 @@ def model_context(eq: Equations) -> dict:
                             "manifest": manifest}, sort_keys=True)
     manifest["source_hash"] = "sha256:" + hashlib.sha256(canonical.encode()).hexdigest()
 
+    initial = ([c.initial for c in m.coordinates] + [c.initial_rate for c in m.coordinates]
+               + [z.initial for z in m.first_order])
+    initial_code = [CythonPrinter(names).doprint(sp.sympify(v)) for v in initial]
     return {
         "model": m,
+        "initial_code": initial_code,
         "name": m.name,
         "title": m.title,
         "reference": m.reference,
@@ -353,14 +370,34 @@ def render_camlaws() -> dict[str, str]:
 # -- all files ----------------------------------------------------------------------
 
 
-def render_all() -> dict[str, str]:
-    """File name -> text of everything that belongs in ``generated/``."""
+def _render_registered(name: str) -> str:
+    from .models import REGISTRY
+
+    model = REGISTRY[name]()
+    if model.name != name:
+        raise ValueError(f"registry key {name!r} differs from model name {model.name!r}")
+    return render_model(model)
+
+
+def render_all(only=None, workers: int | None = None) -> dict[str, str]:
+    """File name -> text of everything that belongs in ``generated/`` (the cam-law
+    library and every registered model, or the models named in ``only``).
+
+    Models are derived in parallel processes (the large DYNACAM variants take tens of
+    seconds each); every file depends on its model only, so the result is the same.
+    """
+    import os
+    from concurrent.futures import ProcessPoolExecutor
+
     from .models import REGISTRY
 
     files = render_camlaws()
-    for name, build in REGISTRY.items():
-        model = build()
-        if model.name != name:
-            raise ValueError(f"registry key {name!r} differs from model name {model.name!r}")
-        files[f"{name}.pyx"] = render_model(model)
+    names = sorted(REGISTRY) if only is None else sorted(only)
+    workers = workers or min(len(names), os.cpu_count() or 1)
+    if workers > 1:
+        with ProcessPoolExecutor(max_workers=workers) as pool:
+            texts = list(pool.map(_render_registered, names))
+    else:
+        texts = [_render_registered(n) for n in names]
+    files.update({f"{n}.pyx": text for n, text in zip(names, texts)})
     return files

@@ -63,6 +63,14 @@ class Equations:
         return sp.simplify(self.M.LUsolve(self.f))
 
 
+def _tidy(e):
+    """simplify() where it is cheap; large or mode-dependent (Piecewise) expressions are left
+    as derived: simplify would take long and CSE shares their parts anyway."""
+    if e.has(sp.Piecewise) or sp.count_ops(e) > 150:
+        return e
+    return sp.simplify(e)
+
+
 def derive(model: Model) -> Equations:
     """Equations of motion of ``model`` by Lagrange's equations."""
     t = model.time
@@ -80,7 +88,9 @@ def derive(model: Model) -> Equations:
 
     M = sp.Matrix(n, n, lambda i, j: lhs[i].coeff(qdd[j]))
     zero = {a: 0 for a in qdd}
-    f = sp.Matrix([-lhs[i].subs(zero) for i in range(n)])
+    # xreplace, not subs: the accelerations are exact subtrees, and subs is slow on large
+    # mode-dependent (Piecewise) expressions
+    f = sp.Matrix([-lhs[i].xreplace(zero) for i in range(n)])
     # the equations must be linear in q'': check that nothing was left over
     for i in range(n):
         rest = sp.expand(lhs[i] - sum(M[i, j] * qdd[j] for j in range(n)) + f[i])
@@ -89,15 +99,15 @@ def derive(model: Model) -> Equations:
     # first-order states enter f through their rates (damping on a motor angle, ...)
     rates = {z(t).diff(t): z.rate for z in model.first_order}
     if rates:
-        f = f.subs(rates)
-    M = M.applyfunc(sp.simplify)
-    f = f.applyfunc(sp.simplify)
+        f = f.xreplace(rates)
+    M = M.applyfunc(_tidy)
+    f = f.applyfunc(_tidy)
 
     Phi = sp.Matrix(list(model.constraints))
     if Phi.rows:
         Phi_q = Phi.jacobian(q)
         # d2Phi/dt2 = Phi_q q'' - gamma: gamma is minus the part free of q''
-        gamma = (-sp.expand(Phi.diff(t, 2)).subs(zero)).applyfunc(sp.simplify)
+        gamma = (-sp.expand(Phi.diff(t, 2)).xreplace(zero)).applyfunc(_tidy)
     else:
         Phi_q = sp.zeros(0, n)
         gamma = sp.zeros(0, 1)

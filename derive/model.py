@@ -20,7 +20,7 @@ _NAME = re.compile(r"^[A-Za-z][A-Za-z0-9_]*$")
 # names the generated code itself uses (its own locals start with "_"), C and
 # Cython keywords, and the libc math functions it imports
 _RESERVED = set(keyword.kwlist) | {
-    "y", "dy", "out", "ctx", "p", "t", "json", "MODEL", "MANIFEST",
+    "ctx", "p", "t", "json", "MODEL", "MANIFEST",
     "int", "double", "float", "char", "long", "short", "signed", "unsigned", "const",
     "static", "extern", "register", "volatile", "auto", "restrict", "struct", "union",
     "enum", "typedef", "sizeof", "goto", "switch", "case", "default", "void", "inline",

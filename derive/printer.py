@@ -23,6 +23,15 @@ class CythonPrinter(C99CodePrinter):
         self.names = names or {}
         self.used = set()
 
+    def _print(self, expr, **kwargs):
+        # record every libc.math function printed, whichever printing method handles it
+        name = type(expr).__name__
+        if name in MATH_FUNCTIONS:
+            self.used.add(name)
+        elif name == "Abs":
+            self.used.add("fabs")
+        return super()._print(expr, **kwargs)
+
     def _print_Symbol(self, expr):
         return self.names.get(expr, expr.name)
 
@@ -121,8 +130,12 @@ class CythonPrinter(C99CodePrinter):
 
 def cse_block(exprs, names: dict, prefix: str = "s"):
     """Common subexpressions of ``exprs``: (lines of local definitions, printed exprs)."""
-    replacements, reduced = sp.cse(list(exprs), symbols=sp.numbered_symbols(prefix),
-                                   optimizations="basic", order="canonical")
+    exprs = list(exprs)
+    # the "basic" pre-optimizations (factoring) pay on small systems and take minutes on
+    # the large mode-dependent ones
+    small = sum(sp.count_ops(e) for e in exprs) < 1500
+    replacements, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix),
+                                   optimizations="basic" if small else None, order="canonical")
     printer = CythonPrinter(names)
     lines = [(str(sym), printer.doprint(e)) for sym, e in replacements]
     return lines, [printer.doprint(e) for e in reduced], printer.used

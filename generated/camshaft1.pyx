@@ -56,13 +56,13 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[0] = 39.47841760435743*(1.0/(tau*tau))  # _k0
 
 
-cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
+cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
     """dy/dt: q', q'' from M q'' = f, and the rates of the first-order states; specialised for cam inputs in a dwell."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
-    cdef double X = y[0]
-    cdef double Xd = y[1]
+    cdef double X = _y[0]
+    cdef double Xd = _y[1]
     cdef double _cam0[4]  # H(T) and its derivatives
     cdef int _v = ctx.variant
     cdef double* _c
@@ -80,46 +80,46 @@ cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept n
             camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], _a, _cam0)
             _c[0], _c[1], _c[2], _c[3], _c[4] = _a, _cam0[0], _cam0[1], _cam0[2], _cam0[3]
 
-    dy[0] = Xd
+    _dy[0] = Xd
     if _v == 0:
-        dy[1] = -_k0*(X - _cam0[0])/(Fa*(_cam0[1]*_cam0[1]) + 1.0)
+        _dy[1] = -_k0*(X - _cam0[0])/(Fa*(_cam0[1]*_cam0[1]) + 1.0)
     elif _v == 1:  # in a dwell: 0
-        dy[1] = -_k0*(X - _cam0[0])
+        _dy[1] = -_k0*(X - _cam0[0])
 
 
-cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nogil:
+cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept nogil:
     """The named outputs (Xdd, U, H, Hd, Hdd, c_rel)."""
-    cdef double dy[2]
-    rhs(t, y, dy, ctx)
+    cdef double _dy[2]
+    rhs(t, _y, _dy, ctx)
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
-    cdef double X = y[0]
-    cdef double Xd = y[1]
-    cdef double Xdd = dy[1]
+    cdef double X = _y[0]
+    cdef double Xd = _y[1]
+    cdef double Xdd = _dy[1]
     cdef double _cam0[4]  # H(T) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
-    out[0] = dy[1]  # Xdd
-    out[1] = X - _cam0[0]  # U
-    out[2] = _cam0[0]  # H
-    out[3] = _cam0[1]  # Hd
-    out[4] = _cam0[2]  # Hdd
-    out[5] = (1.0/(Fa*(_cam0[1]*_cam0[1]) + 1.0))  # c_rel
+    _out[0] = _dy[1]  # Xdd
+    _out[1] = X - _cam0[0]  # U
+    _out[2] = _cam0[0]  # H
+    _out[3] = _cam0[1]  # Hd
+    _out[4] = _cam0[2]  # Hdd
+    _out[5] = (1.0/(Fa*(_cam0[1]*_cam0[1]) + 1.0))  # c_rel
 
 
-cdef void mass_stiffness(double t, const double* y, double* Mm, double* Km, Ctx* ctx) noexcept nogil:
+cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, Ctx* ctx) noexcept nogil:
     """Mass matrix M and stiffness K = -df/dq (row-major, n x n) at (t, y), for frozen analyses."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
-    cdef double X = y[0]
-    cdef double Xd = y[1]
+    cdef double X = _y[0]
+    cdef double Xd = _y[1]
     cdef double _cam0[4]  # H(T) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
-    Mm[0] = 1.0
-    Km[0] = 39.47841760435743*1.0/((tau*tau)*(Fa*(_cam0[1]*_cam0[1]) + 1.0))
+    _Mm[0] = 1.0
+    _Km[0] = 39.47841760435743*1.0/((tau*tau)*(Fa*(_cam0[1]*_cam0[1]) + 1.0))
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -132,34 +132,41 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
         ctx.variant |= 1
 
 
-cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
+cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     """Segment of every cam input at (t, y); the force elements keep their modes."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
-    cdef double X = y[0]
-    cdef double Xd = y[1]
+    cdef double X = _y[0]
+    cdef double Xd = _y[1]
 
     ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], t)
     refresh(ctx)
 
 
-cdef void events(double t, const double* y, double* g, Ctx* ctx) noexcept nogil:
+cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogil:
     """Event functions; an event not armed in the current modes reads 1 (never crosses)."""
     pass
 
 
-cdef void on_event(int k, double t, double* y, Ctx* ctx) noexcept nogil:
+cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     """What event k does: new modes (and state resets) at its crossing."""
     pass
 
 
-cdef void rhs_ptr(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
-    rhs(t, y, dy, ctx)
+cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
+    rhs(t, _y, _dy, ctx)
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/loops.pxi"
+
+
+def initial_state(p):
+    """The default initial state for the parameter vector p (manifest order)."""
+    cdef double tau = p[0]
+    cdef double Fa = p[1]
+    return [0.0, 0.0]
 
 
 def cam_time_affine(p):

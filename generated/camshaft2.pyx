@@ -62,17 +62,17 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[1] = Fv*_c0/Fa  # _k1
 
 
-cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
+cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
     """dy/dt: q', q'' from M q'' = f, and the rates of the first-order states; specialised for cam inputs in a dwell."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double Fv = ctx.p[2]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
-    cdef double X = y[0]
-    cdef double B = y[1]
-    cdef double Xd = y[2]
-    cdef double Bd = y[3]
+    cdef double X = _y[0]
+    cdef double B = _y[1]
+    cdef double Xd = _y[2]
+    cdef double Bd = _y[3]
     cdef double _cam0[4]  # H(B) and its derivatives
     cdef int _v = ctx.variant
     cdef double* _c
@@ -91,68 +91,68 @@ cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept n
             _c[0], _c[1], _c[2], _c[3], _c[4] = _a, _cam0[0], _cam0[1], _cam0[2], _cam0[3]
 
     cdef double _s0_0
-    dy[0] = Xd
-    dy[1] = Bd
+    _dy[0] = Xd
+    _dy[1] = Bd
     if _v == 0:
         _s0_0 = X - _cam0[0]
-        dy[2] = -_k0*_s0_0
-        dy[3] = _k1*(-B + Fa*_cam0[1]*_s0_0 + t)
+        _dy[2] = -_k0*_s0_0
+        _dy[3] = _k1*(-B + Fa*_cam0[1]*_s0_0 + t)
     elif _v == 1:  # in a dwell: 0
-        dy[2] = -_k0*(X - _cam0[0])
-        dy[3] = -_k1*(B - t)
+        _dy[2] = -_k0*(X - _cam0[0])
+        _dy[3] = -_k1*(B - t)
 
 
-cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nogil:
+cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept nogil:
     """The named outputs (Xdd, U, Bdd, Bdot_dev, windup, H, Hd)."""
-    cdef double dy[4]
-    rhs(t, y, dy, ctx)
+    cdef double _dy[4]
+    rhs(t, _y, _dy, ctx)
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double Fv = ctx.p[2]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
-    cdef double X = y[0]
-    cdef double B = y[1]
-    cdef double Xd = y[2]
-    cdef double Bd = y[3]
-    cdef double Xdd = dy[2]
-    cdef double Bdd = dy[3]
+    cdef double X = _y[0]
+    cdef double B = _y[1]
+    cdef double Xd = _y[2]
+    cdef double Bd = _y[3]
+    cdef double Xdd = _dy[2]
+    cdef double Bdd = _dy[3]
     cdef double _cam0[4]  # H(B) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], B, _cam0)
 
-    out[0] = dy[2]  # Xdd
-    out[1] = X - _cam0[0]  # U
-    out[2] = dy[3]  # Bdd
-    out[3] = Bd - 1.0  # Bdot_dev
-    out[4] = -B + t  # windup
-    out[5] = _cam0[0]  # H
-    out[6] = _cam0[1]  # Hd
+    _out[0] = _dy[2]  # Xdd
+    _out[1] = X - _cam0[0]  # U
+    _out[2] = _dy[3]  # Bdd
+    _out[3] = Bd - 1.0  # Bdot_dev
+    _out[4] = -B + t  # windup
+    _out[5] = _cam0[0]  # H
+    _out[6] = _cam0[1]  # Hd
 
 
-cdef void mass_stiffness(double t, const double* y, double* Mm, double* Km, Ctx* ctx) noexcept nogil:
+cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, Ctx* ctx) noexcept nogil:
     """Mass matrix M and stiffness K = -df/dq (row-major, n x n) at (t, y), for frozen analyses."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double Fv = ctx.p[2]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
-    cdef double X = y[0]
-    cdef double B = y[1]
-    cdef double Xd = y[2]
-    cdef double Bd = y[3]
+    cdef double X = _y[0]
+    cdef double B = _y[1]
+    cdef double Xd = _y[2]
+    cdef double Bd = _y[3]
     cdef double _cam0[4]  # H(B) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], B, _cam0)
 
     cdef double _m0 = 39.47841760435743*(1.0/(tau*tau))
     cdef double _m1 = -_cam0[1]*_m0
-    Mm[0] = 1.0
-    Mm[1] = 0.0
-    Mm[2] = 0.0
-    Mm[3] = (1.0/Fv)
-    Km[0] = _m0
-    Km[1] = _m1
-    Km[2] = _m1
-    Km[3] = _m0*(Fa*(_cam0[1]*_cam0[1]) - Fa*_cam0[2]*(X - _cam0[0]) + 1.0)/Fa
+    _Mm[0] = 1.0
+    _Mm[1] = 0.0
+    _Mm[2] = 0.0
+    _Mm[3] = (1.0/Fv)
+    _Km[0] = _m0
+    _Km[1] = _m1
+    _Km[2] = _m1
+    _Km[3] = _m0*(Fa*(_cam0[1]*_cam0[1]) - Fa*_cam0[2]*(X - _cam0[0]) + 1.0)/Fa
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -165,67 +165,75 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
         ctx.variant |= 1
 
 
-cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
+cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     """Segment of every cam input at (t, y); the force elements keep their modes."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double Fv = ctx.p[2]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
-    cdef double X = y[0]
-    cdef double B = y[1]
-    cdef double Xd = y[2]
-    cdef double Bd = y[3]
+    cdef double X = _y[0]
+    cdef double B = _y[1]
+    cdef double Xd = _y[2]
+    cdef double Bd = _y[3]
 
     ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], B)
     refresh(ctx)
 
 
-cdef void events(double t, const double* y, double* g, Ctx* ctx) noexcept nogil:
+cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogil:
     """Event functions; an event not armed in the current modes reads 1 (never crosses)."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double Fv = ctx.p[2]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
-    cdef double X = y[0]
-    cdef double B = y[1]
-    cdef double Xd = y[2]
-    cdef double Bd = y[3]
+    cdef double X = _y[0]
+    cdef double B = _y[1]
+    cdef double Xd = _y[2]
+    cdef double Bd = _y[3]
     cdef double _cam0[4]  # H(B) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], B, _cam0)
 
-    g[0] = (B) - camlaw_hi(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_hi: next segment
-    g[1] = (B) - camlaw_lo(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_lo: previous segment
+    _g[0] = (B) - camlaw_hi(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_hi: next segment
+    _g[1] = (B) - camlaw_lo(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_lo: previous segment
 
 
-cdef void on_event(int k, double t, double* y, Ctx* ctx) noexcept nogil:
+cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     """What event k does: new modes (and state resets) at its crossing."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double Fv = ctx.p[2]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
-    cdef double X = y[0]
-    cdef double B = y[1]
-    cdef double Xd = y[2]
-    cdef double Bd = y[3]
+    cdef double X = _y[0]
+    cdef double B = _y[1]
+    cdef double Xd = _y[2]
+    cdef double Bd = _y[3]
     cdef double _cam0[4]  # H(B) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], B, _cam0)
 
-    if k == 0:  # cam0_hi
+    if _e == 0:  # cam0_hi
         ctx.mode[0] += 1
-    elif k == 1:  # cam0_lo
+    elif _e == 1:  # cam0_lo
         ctx.mode[0] += -1
     refresh(ctx)
 
 
-cdef void rhs_ptr(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
-    rhs(t, y, dy, ctx)
+cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
+    rhs(t, _y, _dy, ctx)
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/loops.pxi"
+
+
+def initial_state(p):
+    """The default initial state for the parameter vector p (manifest order)."""
+    cdef double tau = p[0]
+    cdef double Fa = p[1]
+    cdef double Fv = p[2]
+    return [0.0, 0.0, 0.0, 1.0]
 
 
 def cam_time_affine(p):

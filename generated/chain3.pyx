@@ -66,7 +66,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[6] = _c0*c3/m3  # _k6
 
 
-cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
+cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
     """dy/dt: q', q'' from M q'' = f, and the rates of the first-order states."""
     cdef double tau = ctx.p[0]
     cdef double m1 = ctx.p[1]
@@ -82,27 +82,27 @@ cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept n
     cdef double _k4 = ctx.k[4]
     cdef double _k5 = ctx.k[5]
     cdef double _k6 = ctx.k[6]
-    cdef double X1 = y[0]
-    cdef double X2 = y[1]
-    cdef double X3 = y[2]
-    cdef double X1d = y[3]
-    cdef double X2d = y[4]
-    cdef double X3d = y[5]
+    cdef double X1 = _y[0]
+    cdef double X2 = _y[1]
+    cdef double X3 = _y[2]
+    cdef double X1d = _y[3]
+    cdef double X2d = _y[4]
+    cdef double X3d = _y[5]
     cdef double _cam0[4]  # H(T) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
-    dy[0] = X1d
-    dy[1] = X2d
-    dy[2] = X3d
-    dy[3] = X1*_k2 + X2*_k0 + _cam0[0]*_k1
-    dy[4] = X1*_k3 + X2*_k5 + X3*_k4
-    dy[5] = _k6*(X2 - X3)
+    _dy[0] = X1d
+    _dy[1] = X2d
+    _dy[2] = X3d
+    _dy[3] = X1*_k2 + X2*_k0 + _cam0[0]*_k1
+    _dy[4] = X1*_k3 + X2*_k5 + X3*_k4
+    _dy[5] = _k6*(X2 - X3)
 
 
-cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nogil:
+cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept nogil:
     """The named outputs (U2, U3, X2dd, X3dd, H)."""
-    cdef double dy[6]
-    rhs(t, y, dy, ctx)
+    cdef double _dy[6]
+    rhs(t, _y, _dy, ctx)
     cdef double tau = ctx.p[0]
     cdef double m1 = ctx.p[1]
     cdef double m2 = ctx.p[2]
@@ -117,27 +117,27 @@ cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nog
     cdef double _k4 = ctx.k[4]
     cdef double _k5 = ctx.k[5]
     cdef double _k6 = ctx.k[6]
-    cdef double X1 = y[0]
-    cdef double X2 = y[1]
-    cdef double X3 = y[2]
-    cdef double X1d = y[3]
-    cdef double X2d = y[4]
-    cdef double X3d = y[5]
-    cdef double X1dd = dy[3]
-    cdef double X2dd = dy[4]
-    cdef double X3dd = dy[5]
+    cdef double X1 = _y[0]
+    cdef double X2 = _y[1]
+    cdef double X3 = _y[2]
+    cdef double X1d = _y[3]
+    cdef double X2d = _y[4]
+    cdef double X3d = _y[5]
+    cdef double X1dd = _dy[3]
+    cdef double X2dd = _dy[4]
+    cdef double X3dd = _dy[5]
     cdef double _cam0[4]  # H(T) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
     cdef double _o0 = -_cam0[0]
-    out[0] = X2 + _o0  # U2
-    out[1] = X3 + _o0  # U3
-    out[2] = dy[4]  # X2dd
-    out[3] = dy[5]  # X3dd
-    out[4] = _cam0[0]  # H
+    _out[0] = X2 + _o0  # U2
+    _out[1] = X3 + _o0  # U3
+    _out[2] = _dy[4]  # X2dd
+    _out[3] = _dy[5]  # X3dd
+    _out[4] = _cam0[0]  # H
 
 
-cdef void mass_stiffness(double t, const double* y, double* Mm, double* Km, Ctx* ctx) noexcept nogil:
+cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, Ctx* ctx) noexcept nogil:
     """Mass matrix M and stiffness K = -df/dq (row-major, n x n) at (t, y), for frozen analyses."""
     cdef double tau = ctx.p[0]
     cdef double m1 = ctx.p[1]
@@ -153,12 +153,12 @@ cdef void mass_stiffness(double t, const double* y, double* Mm, double* Km, Ctx*
     cdef double _k4 = ctx.k[4]
     cdef double _k5 = ctx.k[5]
     cdef double _k6 = ctx.k[6]
-    cdef double X1 = y[0]
-    cdef double X2 = y[1]
-    cdef double X3 = y[2]
-    cdef double X1d = y[3]
-    cdef double X2d = y[4]
-    cdef double X3d = y[5]
+    cdef double X1 = _y[0]
+    cdef double X2 = _y[1]
+    cdef double X3 = _y[2]
+    cdef double X1d = _y[3]
+    cdef double X2d = _y[4]
+    cdef double X3d = _y[5]
     cdef double _cam0[4]  # H(T) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
@@ -166,24 +166,24 @@ cdef void mass_stiffness(double t, const double* y, double* Mm, double* Km, Ctx*
     cdef double _m1 = -_m0*c2
     cdef double _m2 = _m0*c3
     cdef double _m3 = -_m2
-    Mm[0] = m1
-    Mm[1] = 0.0
-    Mm[2] = 0.0
-    Mm[3] = 0.0
-    Mm[4] = m2
-    Mm[5] = 0.0
-    Mm[6] = 0.0
-    Mm[7] = 0.0
-    Mm[8] = m3
-    Km[0] = _m0*(c1 + c2)
-    Km[1] = _m1
-    Km[2] = 0.0
-    Km[3] = _m1
-    Km[4] = _m0*(c2 + c3)
-    Km[5] = _m3
-    Km[6] = 0.0
-    Km[7] = _m3
-    Km[8] = _m2
+    _Mm[0] = m1
+    _Mm[1] = 0.0
+    _Mm[2] = 0.0
+    _Mm[3] = 0.0
+    _Mm[4] = m2
+    _Mm[5] = 0.0
+    _Mm[6] = 0.0
+    _Mm[7] = 0.0
+    _Mm[8] = m3
+    _Km[0] = _m0*(c1 + c2)
+    _Km[1] = _m1
+    _Km[2] = 0.0
+    _Km[3] = _m1
+    _Km[4] = _m0*(c2 + c3)
+    _Km[5] = _m3
+    _Km[6] = 0.0
+    _Km[7] = _m3
+    _Km[8] = _m2
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -194,7 +194,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
 
 
-cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
+cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     """Segment of every cam input at (t, y); the force elements keep their modes."""
     cdef double tau = ctx.p[0]
     cdef double m1 = ctx.p[1]
@@ -210,33 +210,45 @@ cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
     cdef double _k4 = ctx.k[4]
     cdef double _k5 = ctx.k[5]
     cdef double _k6 = ctx.k[6]
-    cdef double X1 = y[0]
-    cdef double X2 = y[1]
-    cdef double X3 = y[2]
-    cdef double X1d = y[3]
-    cdef double X2d = y[4]
-    cdef double X3d = y[5]
+    cdef double X1 = _y[0]
+    cdef double X2 = _y[1]
+    cdef double X3 = _y[2]
+    cdef double X1d = _y[3]
+    cdef double X2d = _y[4]
+    cdef double X3d = _y[5]
 
     ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], t)
     refresh(ctx)
 
 
-cdef void events(double t, const double* y, double* g, Ctx* ctx) noexcept nogil:
+cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogil:
     """Event functions; an event not armed in the current modes reads 1 (never crosses)."""
     pass
 
 
-cdef void on_event(int k, double t, double* y, Ctx* ctx) noexcept nogil:
+cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     """What event k does: new modes (and state resets) at its crossing."""
     pass
 
 
-cdef void rhs_ptr(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
-    rhs(t, y, dy, ctx)
+cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
+    rhs(t, _y, _dy, ctx)
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/loops.pxi"
+
+
+def initial_state(p):
+    """The default initial state for the parameter vector p (manifest order)."""
+    cdef double tau = p[0]
+    cdef double m1 = p[1]
+    cdef double m2 = p[2]
+    cdef double m3 = p[3]
+    cdef double c1 = p[4]
+    cdef double c2 = p[5]
+    cdef double c3 = p[6]
+    return [0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
 
 
 def cam_time_affine(p):

@@ -58,7 +58,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[1] = -Mc*_c0  # _k1
 
 
-cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
+cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
     """dy/dt: q', q'' from M q'' = f, and the rates of the first-order states; specialised for cam inputs in a dwell."""
     cdef double J_ma = ctx.p[0]
     cdef double G_a = ctx.p[1]
@@ -66,7 +66,7 @@ cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept n
     cdef double Mc = ctx.p[3]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
-    cdef double dw = y[0]
+    cdef double dw = _y[0]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
     cdef int _v = ctx.variant
     cdef double* _c
@@ -85,29 +85,29 @@ cdef inline void rhs(double t, const double* y, double* dy, Ctx* ctx) noexcept n
             _c[0], _c[1], _c[2], _c[3], _c[4] = _a, _cam0[0], _cam0[1], _cam0[2], _cam0[3]
 
     if _v == 0:
-        dy[0] = _cam0[1]*_cam0[2]*_k1 + _k0*dw
+        _dy[0] = _cam0[1]*_cam0[2]*_k1 + _k0*dw
     elif _v == 1:  # in a dwell: 0
-        dy[0] = _k0*dw
+        _dy[0] = _k0*dw
 
 
-cdef void outputs(double t, const double* y, double* out, Ctx* ctx) noexcept nogil:
+cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept nogil:
     """The named outputs (M_load)."""
-    cdef double dy[1]
-    rhs(t, y, dy, ctx)
+    cdef double _dy[1]
+    rhs(t, _y, _dy, ctx)
     cdef double J_ma = ctx.p[0]
     cdef double G_a = ctx.p[1]
     cdef double t_m = ctx.p[2]
     cdef double Mc = ctx.p[3]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
-    cdef double dw = y[0]
+    cdef double dw = _y[0]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t/t_m, _cam0)
 
-    out[0] = Mc*_cam0[1]*_cam0[2]  # M_load
+    _out[0] = Mc*_cam0[1]*_cam0[2]  # M_load
 
 
-cdef void mass_stiffness(double t, const double* y, double* Mm, double* Km, Ctx* ctx) noexcept nogil:
+cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, Ctx* ctx) noexcept nogil:
     """Mass matrix M and stiffness K = -df/dq (row-major, n x n) at (t, y), for frozen analyses."""
     cdef double J_ma = ctx.p[0]
     cdef double G_a = ctx.p[1]
@@ -115,7 +115,7 @@ cdef void mass_stiffness(double t, const double* y, double* Mm, double* Km, Ctx*
     cdef double Mc = ctx.p[3]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
-    cdef double dw = y[0]
+    cdef double dw = _y[0]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t/t_m, _cam0)
 
@@ -131,7 +131,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
         ctx.variant |= 1
 
 
-cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
+cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     """Segment of every cam input at (t, y); the force elements keep their modes."""
     cdef double J_ma = ctx.p[0]
     cdef double G_a = ctx.p[1]
@@ -139,28 +139,37 @@ cdef void update_modes(double t, const double* y, Ctx* ctx) noexcept nogil:
     cdef double Mc = ctx.p[3]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
-    cdef double dw = y[0]
+    cdef double dw = _y[0]
 
     ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], t/t_m)
     refresh(ctx)
 
 
-cdef void events(double t, const double* y, double* g, Ctx* ctx) noexcept nogil:
+cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogil:
     """Event functions; an event not armed in the current modes reads 1 (never crosses)."""
     pass
 
 
-cdef void on_event(int k, double t, double* y, Ctx* ctx) noexcept nogil:
+cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     """What event k does: new modes (and state resets) at its crossing."""
     pass
 
 
-cdef void rhs_ptr(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil:
-    rhs(t, y, dy, ctx)
+cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
+    rhs(t, _y, _dy, ctx)
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/loops.pxi"
+
+
+def initial_state(p):
+    """The default initial state for the parameter vector p (manifest order)."""
+    cdef double J_ma = p[0]
+    cdef double G_a = p[1]
+    cdef double t_m = p[2]
+    cdef double Mc = p[3]
+    return [0.0]
 
 
 def cam_time_affine(p):

@@ -100,7 +100,7 @@ cdef class Integrator:
         self.n_states = ns
         self.width = 1 + (3 if method == METHOD_DP54 else 2) * ns
 
-    def run(self, double[::1] p, double[::1] stops, Py_ssize_t cap):
+    def run(self, double[::1] p, double[::1] stops, Py_ssize_t cap, y0=None):
         cdef ModelC* m = self.m
         cdef int ns = m.n_states, nm = m.n_modes, ncam = m.n_instances, j
         if p.shape[0] != m.n_params:
@@ -118,7 +118,12 @@ cdef class Integrator:
             PyMem_Free(scratch)
             PyMem_Free(mode)
             raise MemoryError()
-        memcpy(scratch, &self.y0[0], ns * sizeof(double))
+        cdef double[::1] y_start = self.y0 if y0 is None else np.ascontiguousarray(y0, dtype=float)
+        if y_start.shape[0] != ns:
+            PyMem_Free(scratch)
+            PyMem_Free(mode)
+            raise ValueError("initial state of the wrong length")
+        memcpy(scratch, &y_start[0], ns * sizeof(double))
         for j in range(nm - ncam):
             mode[ncam + j] = self.modes0[j]
         cdef Ctx ctx

@@ -5,6 +5,7 @@
     camdyn check [--json]                   every comparison with the thesis
     camdyn laws [--json]                    cam-law characteristics (App. 2)
     camdyn run [SCENE.toml] [--out DIR]     the main job: report and charts
+    camdyn simulate SCENE.toml [--json]     a DYNACAM scene (thesis ch. 6, 7): summary and diagrams
 
 Bad arguments end in one line on stderr naming the argument, and status 2.
 """
@@ -40,15 +41,21 @@ def _cmd_derive(args) -> int:
         out = Path(args.out) if args.out else generate.project_root() / "generated"
     except FileNotFoundError as exc:
         return _fail("camdyn derive", str(exc))
+    only = args.only or None
+    try:
+        if args.check:
+            problems = generate.check(out, only)
+        else:
+            changed = generate.write(out, only)
+    except KeyError as exc:
+        return _fail("camdyn derive", f"argument --only: {exc.args[0]}")
     if args.check:
-        problems = generate.check(out)
         if problems:
             print("generated/ is stale; run `camdyn derive` and rebuild:", file=sys.stderr)
             print("\n".join(problems), file=sys.stderr)
             return 1
         print(f"{out}: up to date")
         return 0
-    changed = generate.write(out)
     for name in changed:
         print(f"wrote {out / name}")
     if changed:
@@ -60,19 +67,41 @@ def _cmd_derive(args) -> int:
 
 # -- camdyn residual ----------------------------------------------------------------
 
-_MODELS = {"one-dof": "one_dof", "camshaft1": "camshaft1"}
+_MODELS = {"one-dof": "one_dof", "camshaft1": "camshaft1", "camshaft2": "camshaft2"}
 
 
 def residual_run(model: str, tau: float, fa: float | None, law: str, theta: float | None,
                  method: str, rtol: float | None, step: float | None, q: float = 0.0,
-                 t_end: float = 3.0) -> dict:
-    """One rise and dwell; the residual figures with the run's settings, as a dict."""
+                 t_end: float = 3.0, fv: float | None = None) -> dict:
+    """One rise and dwell; the residual figures with the run's settings, as a dict.
+
+    camshaft2 (thesis ch. 5) needs both Fa (5.12b) and the flywheel factor Fv (5.14) and adds
+    the cam's largest speed deviation max |B' - 1| and the largest wind-up max (T - B) over the
+    run (sec. 5.5.5, fig. 5.6).
+    """
     from . import closed_forms
-    from .residual import residual
+    from .residual import extreme, residual
     from .simulate import simulate
 
     params = {"tau": tau}
-    if model == "camshaft1":
+    if fv is not None and model != "camshaft2":
+        limit = {"one-dof": "Fv -> 0, a cam of infinite inertia", "camshaft1": "Fv -> oo, a massless cam"}
+        raise CamdynInputError(f"Fv applies to camshaft2 only: {model} is its limit {limit[model]} "
+                               "(thesis sec. 5.7); use --model camshaft2 for a cam with inertia")
+    if model == "camshaft2":
+        # Fa = 0 or Fv = 0 leave (5.16) without a shaft or without a cam mass: both limits
+        # are other models (CAMSHAFT-1, one-dof), so neither has a default here
+        if fv is None:
+            raise CamdynInputError("argument --fv: required with --model camshaft2 "
+                                   "(flywheel factor Fv > 0, thesis (5.14))")
+        if fa is None:
+            raise CamdynInputError("argument --fa: required with --model camshaft2 "
+                                   "(shaft stiffness factor Fa > 0, thesis (5.12b))")
+        params.update(Fa=fa, Fv=fv)
+        if q:
+            raise CamdynInputError("q applies to one-dof only: CAMSHAFT-2 (5.15), (5.16) has no "
+                                   "damping")
+    elif model == "camshaft1":
         params["Fa"] = 0.0 if fa is None else fa
         if q:
             raise CamdynInputError("q applies to one-dof only: CAMSHAFT-1 (4.15) has no damping "
@@ -80,10 +109,14 @@ def residual_run(model: str, tau: float, fa: float | None, law: str, theta: floa
     else:
         params["q"] = q
     if model == "one-dof" and fa not in (None, 0.0):
-        raise CamdynInputError("Fa applies to camshaft1 only: the one-dof model has constant fictitious angular velocity "
-                               "(Fa = 0); use --model camshaft1 for a flexible shaft")
+        raise CamdynInputError("Fa applies to camshaft1 and camshaft2 only: the one-dof model has "
+                               "constant fictitious angular velocity (Fa = 0); use --model camshaft1 "
+                               "for a flexible shaft")
     if method in ("rk4", "koster") and step is None:
         step = 0.01 * tau  # the thesis's fine step (sec. 4.4.2)
+        if model == "camshaft2" and fa > 0 and fv > 0:
+            # sec. 5.4: the step follows the smaller period, tau_b = tau (Fa/Fv)^(1/2) (5.19)
+            step = 0.01 * min(tau, tau * (fa / fv) ** 0.5)
     if method == "dp54" and rtol is None and step is None:
         rtol = 1e-10
     if not t_end > 1.0:
@@ -98,6 +131,10 @@ def residual_run(model: str, tau: float, fa: float | None, law: str, theta: floa
         out["theta"] = res.laws["H"].par
     out.update(rtol=rtol, step=step)
     out.update(fig.as_dict())
+    if model == "camshaft2":
+        t0, t1 = float(res.t[0]), float(res.t[-1])
+        out["Bdot_dev_max"] = extreme(res, "Bdot_dev", t0, t1, absolute=True, minimum=False)[0]
+        out["windup_max"] = extreme(res, "windup", t0, t1, absolute=False, minimum=False)[0]
     out.update({k: res.stats[k] for k in ("n_steps", "n_rejected", "n_rhs")})
     out["cpu_seconds"] = cpu  # integration and post-processing
     if law == "cycloidal" and params.get("Fa", 0.0) == 0.0 and q == 0.0:
@@ -112,7 +149,7 @@ def _cmd_residual(args) -> int:
         return _fail(prog, "argument --step: not allowed with argument --rtol")
     try:
         out = residual_run(args.model, args.tau, args.fa, args.law, args.theta, args.method,
-                           args.rtol, args.step, args.q, args.t_end)
+                           args.rtol, args.step, args.q, args.t_end, fv=args.fv)
     except CamdynInputError as exc:
         return _fail(prog, _name_argument(str(exc)))
     except SimulationError as exc:
@@ -128,7 +165,7 @@ def _cmd_residual(args) -> int:
 
 def _name_argument(message: str) -> str:
     """Prefix the command-line spelling of the parameter a message is about."""
-    flags = {"tau": "--tau", "Fa": "--fa", "q": "--q", "theta": "--theta", "rtol": "--rtol",
+    flags = {"tau": "--tau", "Fa": "--fa", "Fv": "--fv", "q": "--q", "theta": "--theta", "rtol": "--rtol",
              "step": "--step", "t_end": "--t-end"}
     head = message.split("=", 1)[0].split(" ", 1)[0]
     if head in flags and not message.startswith("--"):
@@ -245,6 +282,40 @@ def _cmd_run(args) -> int:
     return 0
 
 
+# -- camdyn simulate ----------------------------------------------------------------
+
+def _cmd_simulate(args) -> int:
+    from . import dynacam, scene as scenes
+
+    def progress(msg):
+        if not args.json:
+            print(msg, file=sys.stderr)
+
+    try:
+        sc = scenes.load(args.scene)
+        summary, res = dynacam.run(sc, progress=progress)
+        if args.out:
+            summary["figures"] = dynacam.plot(sc, res, summary, args.out)
+    except CamdynInputError as exc:
+        return _fail("camdyn simulate", str(exc))
+    except SimulationError as exc:
+        print(f"camdyn simulate: run failed: {exc}", file=sys.stderr)
+        return 1
+    if args.json:
+        print(json.dumps(summary, indent=1))
+        return 0
+    print(sc.title)
+    for key in dynacam.KEYS:
+        v = summary.get(key)
+        if key == "jump":
+            v = summary["jump"]
+            v = f"from T = {v['T']:.4g}" if v["occurs"] else "no"
+        print(f"  {key:26s} {v if isinstance(v, str) else _fmt(v)}")
+    for f in summary.get("figures", []):
+        print(f"wrote {f}")
+    return 0
+
+
 # -- parser -------------------------------------------------------------------------
 
 def build_parser() -> argparse.ArgumentParser:
@@ -256,12 +327,16 @@ def build_parser() -> argparse.ArgumentParser:
     d = sub.add_parser("derive", help="regenerate generated/ from the model declarations")
     d.add_argument("--check", action="store_true", help="exit 1 when generated/ is stale")
     d.add_argument("--out", help="target folder (default: generated/ of this checkout)")
+    d.add_argument("--only", nargs="+", metavar="MODEL", help="only these registered models")
     d.set_defaults(func=_cmd_derive)
 
-    r = sub.add_parser("residual", help="residual vibration after one rise (thesis ch. 3, 4)")
+    r = sub.add_parser("residual", help="residual vibration after one rise (thesis ch. 3-5)")
     r.add_argument("--model", required=True, choices=sorted(_MODELS))
     r.add_argument("--tau", required=True, type=float, help="T_e/t_m (3.3), (4.12)")
-    r.add_argument("--fa", type=float, default=None, help="shaft stiffness factor Fa (4.14), camshaft1")
+    r.add_argument("--fa", type=float, default=None,
+                   help="shaft stiffness factor Fa (4.14), (5.12b): camshaft1, camshaft2")
+    r.add_argument("--fv", type=float, default=None,
+                   help="flywheel factor Fv (5.14): camshaft2 only, required there")
     r.add_argument("--q", type=float, default=0.0, help="relative damping q (6.47), one-dof only; default 0")
     r.add_argument("--law", default="cycloidal", choices=laws.NAMES)
     r.add_argument("--theta", type=float, default=None, help="shape parameter of the modified sine")
@@ -289,6 +364,12 @@ def build_parser() -> argparse.ArgumentParser:
     m.add_argument("--out", default="out", help="folder for report and charts (default out/)")
     m.add_argument("--quiet", action="store_true", help="no progress lines")
     m.set_defaults(func=_cmd_run)
+
+    sm = sub.add_parser("simulate", help="a DYNACAM scene (thesis ch. 6, 7): summary and diagrams")
+    sm.add_argument("scene", help="scene TOML, or a built-in scene: indexing, spring_loaded")
+    sm.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    sm.add_argument("--out", default=None, help="folder for the diagrams (PNG)")
+    sm.set_defaults(func=_cmd_simulate)
     return top
 
 

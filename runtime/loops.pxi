@@ -550,7 +550,9 @@ cdef int run_loops(Run* run) noexcept nogil:
         b = run.stops[k]
         if b <= a:
             continue
-        update_modes(a, run.y, run.ctx)
+        # segments are decided inside the interval: a stop computed as (b_k - b)/a may round
+        # to a hair before the breakpoint, where its start would still see the old segment
+        update_modes(0.5 * (a + b), run.y, run.ctx)
         if run.method == METHOD_DP54:
             status = _loop_dp54(run, a, b)
         else:

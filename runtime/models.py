@@ -79,8 +79,11 @@ class CompiledModel:
             vec[k] = raw
         return vec
 
-    def initial_state(self) -> np.ndarray:
-        return np.array([s["initial"] for s in self.manifest["states"]], dtype=float)
+    def initial_state(self, p: np.ndarray | None = None) -> np.ndarray:
+        """Default initial state; it may depend on the parameters (a cam turning at w_s)."""
+        if p is None:
+            p = self.parameter_vector()
+        return np.array(self.module.initial_state(p), dtype=float)
 
     def state_scales(self) -> np.ndarray:
         return np.array([s["scale"] for s in self.manifest["states"]], dtype=float)

@@ -102,6 +102,9 @@ class Simulator:
         self.model, self.method, self.t0, self.t_end, self.max_steps = m, method, t0, t_end, max_steps
         self.laws, self._codes, self._pars = _law_choices(m, law, theta)
         n = len(m.state_names)
+        # a default initial state that depends on the parameters is worked out per run
+        self._y0_given = y0 is not None or all(
+            isinstance(st["initial"], float) for st in m.manifest["states"])
         y_init = m.initial_state() if y0 is None else np.array(y0, dtype=float).ravel()
         if y_init.shape != (n,) or not np.all(np.isfinite(y_init)):
             raise CamdynInputError(f"y0 must be {n} finite numbers ({', '.join(m.state_names)})")
@@ -142,7 +145,8 @@ class Simulator:
         m = self.model
         p = m.parameter_vector(params)
         stops, cap = self._stops_and_cap(p)
-        out = self._integrator.run(p, stops, cap or self._cap)
+        y0 = None if self._y0_given else m.initial_state(p)
+        out = self._integrator.run(p, stops, cap or self._cap, y0)
         if out[0] != 0:
             raise SimulationError(f"{m.name} with {self.method.name}: "
                                   f"{_integrate.STATUS_TEXT[out[0]]} at "

@@ -79,3 +79,67 @@ def test_laws_table_json():
     assert rows["modified-sine"]["H2_max"] == pytest.approx(5.398, abs=1e-3)   # theta = 0.1
     assert set(rows) == {"cycloidal", "modified-sine", "3-4-5", "simple-harmonic", "parabolic",
                          "4-5-6-7", "modified-trapezoid", "uniform"}
+
+
+# -- camshaft2 (thesis ch. 5) ---------------------------------------------------------------------
+
+def test_residual_json_camshaft2():
+    """--model camshaft2 with --fa and --fv: the keys of the other models plus Bdot_dev_max and
+    windup_max; at tau = 0.16, Fa = 1.5, Fv = 10 the cam's speed error is "a maximum of 30 %"
+    (sec. 5.5.5), and the figures equal those of the API run (DP54, rtol 1e-10)."""
+    from camdyn.runtime.checks import camshaft2 as c2
+
+    p = camdyn("residual", "--model", "camshaft2", "--tau", "0.16", "--fa", "1.5", "--fv", "10", "--json")
+    assert p.returncode == 0, p.stderr
+    out = json.loads(p.stdout)
+    assert {"U0", "U0dd", "Xdd_min_rise", "T_at_Xdd_min", "Bdot_dev_max", "windup_max"} <= set(out)
+    assert out["model"] == "camshaft2" and out["Fa"] == 1.5 and out["Fv"] == 10.0
+    assert out["Bdot_dev_max"] == pytest.approx(0.30, rel=0.10)
+    assert out["Bdot_dev_max"] == pytest.approx(c2.speed_deviation(**c2.FIG_5_6)[0], rel=1e-9)
+    assert out["U0"] == pytest.approx(c2.residual2(0.16, 1.5, 10.0).U0, rel=1e-9)
+    # largest T - B (shaft wound by the driving torque): 0.0095 at T = 0.38, before the cam
+    # overtakes the input near T = 0.68 (fig. 5.6, Delta B-curve (2))
+    assert 0 < out["windup_max"] < c2.windup_extreme(**c2.FIG_5_6)[0]
+    assert "U0_closed_form" not in out
+
+
+def test_residual_camshaft2_small_fv_is_the_one_dof_closed_form():
+    """Fv -> 0 is the constant-speed model of ch. 3 (sec. 5.7 (2)): U0 within 1e-4 of (3.5)."""
+    p = camdyn("residual", "--model", "camshaft2", "--tau", "0.4", "--fa", "1", "--fv", "1e-6", "--json")
+    assert p.returncode == 0, p.stderr
+    out = json.loads(p.stdout)
+    assert out["U0"] == pytest.approx(cf.U0(0.4), rel=1e-4)
+    assert out["Bdot_dev_max"] < 1e-4
+
+
+def test_residual_camshaft2_koster_default_step_follows_the_shaft_period():
+    """With the thesis scheme the default step is 0.01 min(tau, tau_b), tau_b = tau (Fa/Fv)^(1/2)
+    (sec. 5.4): at Fv = 10, Fa = 0.15 that is 0.01 * 0.16 * 0.122; U0 within 0.5 % of DP54."""
+    p = camdyn("residual", "--model", "camshaft2", "--tau", "0.16", "--fa", "0.15", "--fv", "10",
+               "--method", "koster", "--json")
+    assert p.returncode == 0, p.stderr
+    out = json.loads(p.stdout)
+    assert out["step"] == pytest.approx(0.01 * 0.16 * (0.15 / 10) ** 0.5, rel=1e-12)
+    from camdyn.runtime.checks import camshaft2 as c2
+    assert out["U0"] == pytest.approx(c2.residual2(0.16, 0.15, 10.0).U0, rel=5e-3)
+
+
+@pytest.mark.parametrize("args,argument", [
+    (["--model", "one-dof", "--tau", "0.15", "--fv", "2"], "--fv"),
+    (["--model", "camshaft1", "--tau", "0.15", "--fa", "1", "--fv", "2"], "--fv"),
+    (["--model", "camshaft2", "--tau", "0.15", "--fa", "1"], "--fv"),
+    (["--model", "camshaft2", "--tau", "0.15", "--fv", "2"], "--fa"),
+    (["--model", "camshaft2", "--tau", "0.15", "--fa", "1", "--fv", "0"], "--fv"),
+    (["--model", "camshaft2", "--tau", "0.15", "--fa", "1", "--fv", "-3"], "--fv"),
+    (["--model", "camshaft2", "--tau", "0.15", "--fa", "0", "--fv", "2"], "--fa"),
+    (["--model", "camshaft2", "--tau", "0.15", "--fa", "1", "--fv", "2", "--q", "0.05"], "--q"),
+    (["--model", "camshaft2", "--tau", "0", "--fa", "1", "--fv", "2"], "--tau"),
+])
+def test_camshaft2_bad_arguments_one_line_status_2(args, argument):
+    p = camdyn("residual", *args)
+    assert p.returncode == 2
+    lines = p.stderr.strip().splitlines()
+    assert len(lines) == 1, p.stderr
+    assert argument in lines[0]
+    assert "Traceback" not in p.stderr
+    assert p.stdout == ""

@@ -137,7 +137,7 @@ def test_declarations_reject_bad_names():
     with pytest.raises(ValueError, match="not usable"):
         Parameter("lambda", 1.0, "1", "a Python keyword")
     with pytest.raises(ValueError, match="not usable"):
-        Coordinate("y", "m", "the generated code's state vector")
+        Coordinate("ctx", "m", "the generated code's context")
     with pytest.raises(ValueError, match="not usable"):
         Coordinate("_x", "m", "names starting with _ belong to the generated code")
     with pytest.raises(ValueError, match="outside its own range"):

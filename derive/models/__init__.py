@@ -3,7 +3,7 @@
 Each entry maps the generated module name to a function returning the
 :class:`~camdyn.derive.model.Model` declaration.
 """
-from . import camshaft1, camshaft2, chain3, motor, one_dof
+from . import camshaft1, camshaft2, chain3, dynacam, motor, one_dof
 
 REGISTRY = {
     "one_dof": one_dof.build,
@@ -13,3 +13,24 @@ REGISTRY = {
     "motor1": motor.build_first_order,
     "motor2": motor.build_second_order,
 }
+
+DYNACAM_VARIANTS = (
+    # four DOF at constant speed, rigid drive: sec. 8.2 (fig. 8.3), with its 2-DOF reduction
+    dynacam.Options(),
+    dynacam.Options(shaft_y=False, shaft_z=False),
+    # the spring-loaded follower of fig. 7.2 (scenes/spring_loaded.toml), and the same at
+    # constant speed (the motor made ideal)
+    dynacam.Options(motor="second", roller="contact", spring=True),
+    dynacam.Options(roller="contact", spring=True),
+    # the indexing mechanism of fig. 7.1 (scenes/indexing.toml): an axial (globoidal) cam at
+    # constant (synchronous) speed with backlash in gear and groove (fig. 7.16), and without
+    # backlash (fig. 7.15), and with the squeeze film in gear and groove (figs 7.11b, 7.20)
+    dynacam.Options(cam="axial", gear="backlash", roller="groove"),
+    dynacam.Options(cam="axial"),
+    dynacam.Options(cam="axial", gear="squeeze", roller="groove-squeeze"),
+)
+"""The DYNACAM variants generated: what the scenes ask for, and the reductions the tests
+compare them with.  A scene whose options are not here is refused with the list."""
+
+for _opts in DYNACAM_VARIANTS:
+    REGISTRY[_opts.name] = (lambda o: lambda: dynacam.build(o))(_opts)

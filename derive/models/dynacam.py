@@ -1,0 +1,393 @@
+"""DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
+
+Degrees of freedom (figs 6.1, 6.2, all reduced to the output member, SI units):
+the cam angle beta, the shaft's tangential deflection y (6.12), (6.16), its
+deflection z along the follower (6.11), (6.15), and the follower output x
+(6.42), (6.44); plus, as first-order states, the asynchronous motor
+(A.5.6)-(A.5.9), and the massless gear wheel or roller in a squeeze film
+(6.9), (6.41).
+
+Smooth mechanics from energies:
+
+    kinetic energy     1/2 J beta'^2 + 1/2 m_y y'^2 + 1/2 m_z z'^2 + 1/2 m_x x'^2
+    potential energy   1/2 c_y y^2 + 1/2 c_z z^2 [+ F_0 x + 1/2 c_s x^2, follower spring (6.45)]
+    dissipation        1/2 d_y y'^2 + 1/2 d_z z'^2,   d = 2 q sqrt(m c) (6.47)
+
+The nonsmooth laws are force elements with modes and events:
+
+* the roller: the cam contact point moves by h_c = h(beta) - y tan(alpha) - z
+  (6.22), tan(alpha) = (dh/dbeta)/R(beta) (6.20), R = R_b + h (radial cam) or
+  R_b (axial) (6.21).  The linkage spring-damper (c_x, d_x) carries
+  F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
+  (6.42).  Contact law taken here, with zero viscosity: the roller is massless
+  and the spring-damper engages when the roller reaches a wall (delta = 0 or
+  the far groove wall delta = -s_r) and releases when it leaves it again;
+  these crossings are events.  So a spring-loaded follower can jump (mode
+  "free"), a positive-drive cam traverses its groove backlash s_r, and the
+  "impact" is the sudden engagement of the linkage stiffness, the ramp input
+  of sec. 3.6.  With the squeeze film (A.4.11) instead the roller position is
+  a state, h_r' = h_c' - F_x/(V_R gap^(-3/2)) on the compressed side (6.41);
+* the reduction gear: the shaft torque M = k (phi_r - beta) + d_b (phi_r' - beta')
+  (6.10) with the gear output phi_r either the input phi (rigid), within the
+  backlash s_g with the same contact law (dry), or in a squeeze film (6.9);
+* Coulomb friction on the cam (6.13) and in the linkage (6.43): modes slip
+  forward, stick, slip backward; sticking holds the velocity at zero while
+  the other forces stay within the friction limit;
+* the worm gear passes the torque with efficiency tan(a)/tan(a + mu) when the
+  motor drives and tan(a - mu)/tan(a) when it is driven (6.71), (6.72).
+
+The option set of a variant (which of these elements and degrees of freedom
+it has) is in its manifest; a scene generates only what it asks for.
+"""
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+
+import sympy as sp
+
+from ..model import Branch, Coordinate, Event, FirstOrder, Mode, Model, Output, Parameter, Residual, \
+    cam_input, time
+
+t = time("t")
+H = cam_input("H")
+
+
+@dataclass(frozen=True)
+class Options:
+    """What a DYNACAM variant contains (each field names the thesis section)."""
+
+    cam: str = "radial"            # "radial" | "axial" (6.21)
+    motor: str = "constant"        # "constant" | "first" | "second" (App. 5, sec. 6.7)
+    gear: str = "rigid"            # "rigid" | "backlash" | "squeeze" (6.1)-(6.9)
+    roller: str = "bilateral"      # "bilateral" | "contact" | "groove" | "groove-squeeze" (6.27)-(6.41)
+    shaft_y: bool = True           # tangential shaft deflection y' (6.12), (6.16)
+    shaft_z: bool = True           # shaft deflection z' along the follower (6.11), (6.15)
+    cam_friction: bool = False     # (6.13)
+    linkage_friction: bool = False  # (6.43)
+    spring: bool = False           # follower spring with preload (6.45)
+    external: bool = False         # constant external force on the output (6.46)
+
+    CHOICES = {"cam": ("radial", "axial"), "motor": ("constant", "first", "second"),
+               "gear": ("rigid", "backlash", "squeeze"),
+               "roller": ("bilateral", "contact", "groove", "groove-squeeze")}
+
+    def __post_init__(self):
+        for key, allowed in self.CHOICES.items():
+            if getattr(self, key) not in allowed:
+                raise ValueError(f"option {key}={getattr(self, key)!r}: choose one of {', '.join(allowed)}")
+
+    @property
+    def name(self) -> str:
+        """Module name: dynacam_<cam><motor><gear><roller>_<flags>."""
+        code = (self.cam[0] + {"constant": "c", "first": "1", "second": "2"}[self.motor]
+                + {"rigid": "r", "backlash": "b", "squeeze": "s"}[self.gear]
+                + {"bilateral": "b", "contact": "c", "groove": "g", "groove-squeeze": "s"}[self.roller])
+        flags = "".join(c for c, on in (("y", self.shaft_y), ("z", self.shaft_z), ("f", self.cam_friction),
+                                        ("l", self.linkage_friction), ("s", self.spring),
+                                        ("e", self.external)) if on)
+        return f"dynacam_{code}_{flags or 'n'}"
+
+    def items(self) -> tuple:
+        return tuple(sorted(asdict(self).items()))
+
+
+def _p(name, default, unit, doc, low=0.0, open_low=True, high=float("inf")):
+    return Parameter(name, default, unit, doc, low=low, open_low=open_low, high=high)
+
+
+# parameters, SI; defaults roughly those of the spring-loaded follower of fig. 7.2 (App. 7)
+h_m = _p("h_m", 0.015, "m", "stroke of the output member (reduced)")
+beta_m = _p("beta_m", 0.436, "rad", "cam angle of the rise")
+beta_0 = _p("beta_0", 0.0, "rad", "cam angle where the rise starts", low=-100.0, open_low=False)
+R_b = _p("R_b", 0.0675, "m", "base pitch radius (reduced) (6.21)")
+omega_s = _p("omega_s", 4.95, "rad/s", "nominal angular velocity of the camshaft")
+J = _p("J", 0.01, "kg m^2", "polar moment of inertia of the cam, reduced to the output member")
+k = _p("k", 1.0e3, "N m/rad", "torsional stiffness between gear and cam (6.10)")
+q_b = _p("q_b", 0.05, "1", "relative damping of the torsion (6.47)", open_low=False, high=1.0)
+m_x = _p("m_x", 1.46, "kg", "equivalent follower mass")
+c_x = _p("c_x", 0.376e6, "N/m", "linkage stiffness at the roller (6.42)")
+q_x = _p("q_x", 0.023, "1", "relative damping of the linkage (6.47)", open_low=False, high=1.0)
+m_y = _p("m_y", 0.1, "kg", "cam mass in the tangential direction (6.16)")
+c_y = _p("c_y", 1.0e6, "N/m", "tangential shaft stiffness (6.12)")
+q_y = _p("q_y", 0.05, "1", "relative damping, tangential (6.47)", open_low=False, high=1.0)
+m_z = _p("m_z", 0.1, "kg", "cam mass along the follower (6.15)")
+c_z = _p("c_z", 1.0e6, "N/m", "shaft stiffness along the follower (6.11)")
+q_z = _p("q_z", 0.05, "1", "relative damping along the follower (6.47)", open_low=False, high=1.0)
+J_ma = _p("J_ma", 0.05, "kg m^2", "motor inertia reduced to the camshaft (A.5.7)")
+G_a = _p("G_a", 5.0, "N m s/rad", "slope of the motor's torque-speed line, reduced (A.5.4b)")
+T_el = _p("T_el", 8.6e-3, "s", "electrical time constant of the motor (A.5.3)")
+alpha_w = _p("alpha_w", 0.36, "rad", "lead angle of the worm (6.71)", high=1.5)
+mu_w = _p("mu_w", 0.05, "1", "friction coefficient of the worm gear (6.71)", open_low=False, high=1.0)
+s_g = _p("s_g", 1.0e-2, "rad", "backlash of the reduction gear, reduced to the camshaft (6.1)")
+V_T = _p("V_T", 1.0e-3, "N m s/rad^(3/2)", "squeeze coefficient of the gear teeth (6.6), with R_b^(1/2)")
+s_r = _p("s_r", 1.3e-4, "m", "backlash of the roller in its groove (6.27)")
+V_R = _p("V_R", 1.0e-5, "N s/m^(3/2)", "squeeze coefficient of the roller (6.38)")
+nu_b = _p("nu_b", 0.01, "1", "friction coefficient on the cam (6.13)", open_low=False, high=1.0)
+nu_x = _p("nu_x", 0.01, "1", "friction coefficient of the follower linkage (6.43)", open_low=False, high=1.0)
+F_0 = _p("F_0", 100.0, "N", "follower spring preload at x = 0 (6.45)", open_low=False)
+c_s = _p("c_s", 1.0e4, "N/m", "follower spring stiffness (6.45)", open_low=False)
+F_ex = _p("F_ex", 0.0, "N", "constant external force on the output, positive along x (6.46)",
+          low=-1e9, open_low=False)
+
+GAP_MIN = sp.Rational(1, 10**12)
+"""Smallest squeeze gap [m or rad]: the film never closes in exact arithmetic, but a step may
+overshoot by rounding; the gap is clipped there instead of taking a negative power."""
+
+
+STATIC = sp.Rational(1001, 1000)
+"""Static over sliding friction: sticking breaks when the other forces exceed the sliding
+limit by 0.1 %, so that a slip always starts with a positive acceleration."""
+
+
+def _clipped(gap):
+    return sp.Piecewise((gap, gap > GAP_MIN), (GAP_MIN, True))
+
+
+def _coulomb(name: str, coordinate, rate, friction_force, other_force, doc, initial):
+    """Mode, generalized force and events of Coulomb friction on one coordinate.
+
+    Slip forward/backward: the friction force opposes the motion; stick: it balances the
+    other forces exactly (the velocity stays zero) while they stay within the limit.
+    """
+    mode = Mode(name, ("forward", "stick", "backward"), doc, initial=initial)
+    force = mode.select(forward=-friction_force, stick=-other_force, backward=friction_force)
+    # sticking holds up to STATIC times the sliding friction: at exactly 1 a slip that starts
+    # with zero acceleration turns back at once and the modes chatter at zero velocity
+    static = STATIC * friction_force
+    holds = sp.Abs(other_force) <= static
+    events = (
+        Event(f"{name}_stop_fwd", rate, -1, {name: ("forward",)},
+              (Branch({name: "stick"}, holds, {coordinate.name + "d": 0}), Branch({name: "backward"}))),
+        Event(f"{name}_stop_bwd", rate, 1, {name: ("backward",)},
+              (Branch({name: "stick"}, holds, {coordinate.name + "d": 0}), Branch({name: "forward"}))),
+        Event(f"{name}_break", sp.Abs(other_force) - static, 1, {name: ("stick",)},
+              (Branch({name: "forward"}, other_force > 0), Branch({name: "backward"}))),
+    )
+    return mode, force, events
+
+
+def build(opts: Options = Options()) -> Model:
+    b_c = Coordinate("beta", "rad", "cam angle", scale=1.0, initial_rate=omega_s.symbol)
+    x_c = Coordinate("x", "m", "follower output position", scale=0.01)
+    y_c = Coordinate("y", "m", "tangential deflection of the camshaft", scale=1e-5)
+    z_c = Coordinate("z", "m", "deflection of the camshaft along the follower", scale=1e-5)
+    coords = [b_c] + ([y_c] if opts.shaft_y else []) + ([z_c] if opts.shaft_z else []) + [x_c]
+    beta, x = b_c(t), x_c(t)
+    y = y_c(t) if opts.shaft_y else sp.Integer(0)
+    z = z_c(t) if opts.shaft_z else sp.Integer(0)
+    params = [h_m, beta_m, beta_0, R_b, omega_s, J, k, q_b, m_x, c_x, q_x]
+    if opts.shaft_y:
+        params += [m_y, c_y, q_y]
+    if opts.shaft_z:
+        params += [m_z, c_z, q_z]
+    P = {p.name: p.symbol for p in params}
+    first_order, modes, events, outputs = [], [], [], []
+
+    # cam: (6.17)-(6.21)
+    B = (beta - P["beta_0"]) / P["beta_m"]
+    h = P["h_m"] * H(B)
+    dh = sp.diff(h, beta)
+    R = P["R_b"] + h if opts.cam == "radial" else P["R_b"]
+    tan_a = dh / R
+    h_c = h - y * tan_a - z                       # (6.22)
+    q_funcs = [c(t) for c in coords]
+    dhc = [sp.diff(h_c, qq) for qq in q_funcs]    # dh_c/dq, for the contact force's work
+    hc_rate = sum(g * qq.diff(t) for g, qq in zip(dhc, q_funcs))   # (6.23), (6.26)
+
+    # input angle: constant speed, or the asynchronous motor (A.5.6)-(A.5.9)
+    if opts.motor == "constant":
+        phi, phi_rate = P["omega_s"] * t, P["omega_s"]
+    else:
+        params += [J_ma, G_a, alpha_w, mu_w] + ([T_el] if opts.motor == "second" else [])
+        P.update({p.name: p.symbol for p in params})
+        phi_s = FirstOrder("phi", "rad", "input angle of the camshaft (motor side of the shaft)", 0,
+                           scale=1.0)
+        dw_s = FirstOrder("dw", "rad/s", "speed deviation of the motor, reduced (A.5.8)", 0, scale=0.1)
+        phi, dw = phi_s(t), dw_s(t)
+        phi_rate = P["omega_s"] + dw
+
+    # reduction gear and shaft torsion: the torque M reaching the cam (6.1)-(6.10)
+    d_b = 2 * P["q_b"] * sp.sqrt(P["J"] * P["k"])
+    if opts.gear == "rigid":
+        M = P["k"] * (phi - beta) + d_b * (phi_rate - beta.diff(t))
+    elif opts.gear == "backlash":
+        params.append(s_g)
+        P["s_g"] = s_g.symbol
+        gear = Mode("gear", ("drive", "free", "back"), "flank of the reduction gear in contact",
+                    initial="drive")
+        modes.append(gear)
+        M_drive = P["k"] * (phi - beta) + d_b * (phi_rate - beta.diff(t))
+        M_back = P["k"] * (phi - P["s_g"] - beta) + d_b * (phi_rate - beta.diff(t))
+        M = gear.select(drive=M_drive, free=0, back=M_back)
+        events += [
+            Event("gear_lift_drive", phi - beta, -1, {"gear": ("drive",)}, (Branch({"gear": "free"}),)),
+            Event("gear_hit_drive", phi - beta, 1, {"gear": ("free",)}, (Branch({"gear": "drive"}),)),
+            Event("gear_hit_back", phi - P["s_g"] - beta, -1, {"gear": ("free",)}, (Branch({"gear": "back"}),)),
+            Event("gear_lift_back", phi - P["s_g"] - beta, 1, {"gear": ("back",)}, (Branch({"gear": "free"}),)),
+        ]
+        outputs.append(Output("gear_gap", phi - beta, "rad",
+                              "input minus cam angle: 0 on the driving flank, -s_g on the other"))
+    else:  # squeeze film between the teeth (6.5)-(6.9)
+        params += [s_g, V_T]
+        P.update({"s_g": s_g.symbol, "V_T": V_T.symbol})
+        phir_s = FirstOrder("phir", "rad", "angle of the gear output wheel (6.1)", 0, scale=1.0)
+        phir = phir_s(t)
+        N = P["k"] * (phir - beta) + d_b * (phi_rate - beta.diff(t))
+        gap_d = _clipped(phi - phir)
+        gap_b = _clipped(phir - (phi - P["s_g"]))
+        W = P["V_T"] * sp.Piecewise((gap_d ** sp.Rational(-3, 2), N > 0), (gap_b ** sp.Rational(-3, 2), True))
+        M = N * W / (W + d_b)
+        first_order.append(FirstOrder("phir", phir_s.unit, phir_s.doc, phi_rate - N / (W + d_b),
+                                      scale=1.0))
+        outputs.append(Output("gear_gap", phi - phir, "rad", "input minus gear output angle (6.1)"))
+
+    # roller, linkage and cam contact: the force F_x between cam and follower
+    d_x = 2 * P["q_x"] * sp.sqrt(P["m_x"] * P["c_x"])
+    delta = h_c - x
+    delta_rate = hc_rate - x.diff(t)
+    if opts.roller == "bilateral":
+        Fx = P["c_x"] * delta + d_x * delta_rate
+    elif opts.roller == "contact":
+        roller = Mode("roller", ("contact", "free"), "roller on the cam or lifted off (follower jump)",
+                      initial="contact")
+        modes.append(roller)
+        Fx = roller.select(contact=P["c_x"] * delta + d_x * delta_rate, free=0)
+        events += [
+            Event("roller_lift", delta, -1, {"roller": ("contact",)}, (Branch({"roller": "free"}),)),
+            Event("roller_land", delta, 1, {"roller": ("free",)}, (Branch({"roller": "contact"}),)),
+        ]
+        outputs.append(Output("roller_gap", -delta, "m", "gap between roller and cam (negative: pressed)"))
+    elif opts.roller == "groove":
+        params.append(s_r)
+        P["s_r"] = s_r.symbol
+        roller = Mode("roller", ("lower", "free", "upper"), "groove wall the roller touches",
+                      initial="lower")
+        modes.append(roller)
+        delta_u = x - h_c - P["s_r"]
+        Fx = roller.select(lower=P["c_x"] * delta + d_x * delta_rate, free=0,
+                           upper=-(P["c_x"] * delta_u - d_x * delta_rate))
+        events += [
+            Event("roller_leave_lower", delta, -1, {"roller": ("lower",)}, (Branch({"roller": "free"}),)),
+            Event("roller_hit_lower", delta, 1, {"roller": ("free",)}, (Branch({"roller": "lower"}),)),
+            Event("roller_hit_upper", delta_u, 1, {"roller": ("free",)}, (Branch({"roller": "upper"}),)),
+            Event("roller_leave_upper", delta_u, -1, {"roller": ("upper",)}, (Branch({"roller": "free"}),)),
+        ]
+        outputs.append(Output("roller_gap", -delta, "m",
+                              "roller position in the groove over the cam wall: 0 lower wall, s_r upper"))
+    else:  # groove with the squeeze film (6.37)-(6.41)
+        params += [s_r, V_R]
+        P.update({"s_r": s_r.symbol, "V_R": V_R.symbol})
+        hr_s = FirstOrder("hr", "m", "roller position (6.41)", 0, scale=0.01)
+        hr = hr_s(t)
+        N = P["c_x"] * (hr - x) + d_x * (hc_rate - x.diff(t))
+        gap_l = _clipped(hr - h_c)
+        gap_u = _clipped(h_c + P["s_r"] - hr)
+        W = P["V_R"] * sp.Piecewise((gap_l ** sp.Rational(-3, 2), N > 0), (gap_u ** sp.Rational(-3, 2), True))
+        Fx = N * W / (W + d_x)
+        first_order.append(FirstOrder("hr", "m", hr_s.doc, hc_rate - N / (W + d_x), scale=0.01))
+        outputs.append(Output("roller_gap", hr - h_c, "m", "roller over the cam wall: 0 lower wall, s_r upper"))
+
+    # generalized forces: contact, shaft torque, friction, spring, external
+    Q = {c.name: sp.Integer(0) for c in coords}
+    for c, g in zip(coords, dhc):
+        Q[c.name] += -Fx * g
+    Q["x"] += Fx
+    Q["beta"] += M
+    F_s = 0
+    if opts.spring:
+        params += [F_0, c_s]
+        P.update({"F_0": F_0.symbol, "c_s": c_s.symbol})
+        F_s = P["F_0"] + P["c_s"] * x
+    if opts.external:
+        params.append(F_ex)
+        P["F_ex"] = F_ex.symbol
+        Q["x"] += P["F_ex"]
+    if opts.cam_friction:
+        params.append(nu_b)
+        P["nu_b"] = nu_b.symbol
+        limit = sp.Abs(Fx) * P["nu_b"] * R * sp.sqrt(1 + tan_a**2)             # (6.13)
+        mode, force, evs = _coulomb("camfric", b_c, beta.diff(t), limit, Q["beta"],
+                                    "friction on the cam: slipping forward, sticking, backward", "forward")
+        modes.append(mode)
+        events += evs
+        Q["beta"] += force
+    if opts.linkage_friction:
+        params.append(nu_x)
+        P["nu_x"] = nu_x.symbol
+        limit = sp.Abs(Fx) * P["nu_x"]                                           # (6.43)
+        mode, force, evs = _coulomb("linkfric", x_c, x.diff(t), limit, Q["x"] - F_s,
+                                    "friction in the follower linkage: forward, sticking, backward", "stick")
+        modes.append(mode)
+        events += evs
+        Q["x"] += force
+
+    # the motor: its torque drives phi through the worm gear (6.71), (6.72)
+    if opts.motor != "constant":
+        worm = Mode("worm", ("drive", "driven"), "worm gear: motor driving or driven", initial="drive")
+        modes.append(worm)
+        ta = sp.tan(P["alpha_w"])
+        M_ma = worm.select(drive=M * sp.tan(P["alpha_w"] + P["mu_w"]) / ta,
+                           driven=M * sp.tan(P["alpha_w"] - P["mu_w"]) / ta)
+        events += [Event("worm_reverse", M, -1, {"worm": ("drive",)}, (Branch({"worm": "driven"}),)),
+                   Event("worm_forward", M, 1, {"worm": ("driven",)}, (Branch({"worm": "drive"}),))]
+        if opts.motor == "second":
+            Mea_s = FirstOrder("Mea", "N m", "electromagnetic torque, reduced (A.5.6)", 0, scale=1.0)
+            Mea = Mea_s(t)
+            first_order.append(FirstOrder("Mea", "N m", Mea_s.doc, (-P["G_a"] * dw - Mea) / P["T_el"]))
+        else:
+            Mea = -P["G_a"] * dw                                                   # T_el -> 0
+        first_order = [FirstOrder("phi", "rad", "input angle of the camshaft (motor side)", phi_rate),
+                       FirstOrder("dw", "rad/s", "speed deviation of the motor, reduced (A.5.8)",
+                                  (Mea - M_ma) / P["J_ma"], scale=0.1)] + first_order
+        outputs += [Output("motor_speed_var", dw / P["omega_s"], "1", "motor speed deviation over w_s"),
+                    Output("M_motor", Mea, "N m", "electromagnetic torque of the motor, reduced")]
+
+    kinetic = P["J"] * beta.diff(t) ** 2 / 2 + P["m_x"] * x.diff(t) ** 2 / 2
+    potential = sp.Integer(0)
+    dissipation = sp.Integer(0)
+    if opts.shaft_y:
+        kinetic += P["m_y"] * y.diff(t) ** 2 / 2
+        potential += P["c_y"] * y**2 / 2
+        dissipation += 2 * P["q_y"] * sp.sqrt(P["m_y"] * P["c_y"]) * y.diff(t) ** 2 / 2
+    if opts.shaft_z:
+        kinetic += P["m_z"] * z.diff(t) ** 2 / 2
+        potential += P["c_z"] * z**2 / 2
+        dissipation += 2 * P["q_z"] * sp.sqrt(P["m_z"] * P["c_z"]) * z.diff(t) ** 2 / 2
+    if opts.spring:
+        potential += P["F_0"] * x + P["c_s"] * x**2 / 2
+
+    t_m = P["beta_m"] / P["omega_s"]
+    outputs = [
+        Output("B", B, "1", "cam angle over the rise angle (6.17)"),
+        Output("Xdd", x.diff(t, 2) * t_m**2 / P["h_m"], "1", "follower acceleration x'' t_m^2/h_m"),
+        Output("Bdd", beta.diff(t, 2) * t_m**2 / P["beta_m"], "1", "cam angular acceleration beta'' t_m^2/beta_m"),
+        Output("U", (x - h) / P["h_m"], "1", "positional error over the stroke, (x - h(beta))/h_m"),
+        Output("xdd", x.diff(t, 2), "m/s^2", "follower acceleration"),
+        Output("torque", M, "N m", "shaft torque driving the cam (6.10)"),
+        Output("Fx", Fx, "N", "force between cam and follower linkage (6.42)"),
+        Output("speed_var", (beta.diff(t) - (y.diff(t) / R if opts.shaft_y else 0)) / P["omega_s"] - 1,
+               "1", "variation of the fictitious angular velocity seen by the roller (2.54)"),
+        Output("tan_alpha", tan_a, "1", "cam slope (6.20)"),
+    ] + outputs
+
+    forces = tuple(Q[c.name] for c in coords)
+    return Model(
+        name=opts.name,
+        title="DYNACAM, cam mechanism with four degrees of freedom and drive",
+        reference="thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18",
+        doc=__doc__,
+        time=t,
+        time_unit="s",
+        coordinates=tuple(coords),
+        kinetic=kinetic,
+        potential=potential,
+        dissipation=dissipation,
+        forces=forces,
+        parameters=tuple(params),
+        outputs=tuple(outputs),
+        first_order=tuple(first_order),
+        modes=tuple(modes),
+        events=tuple(events),
+        residual=Residual(error="U", acceleration="Xdd", rise_end=1.0, rise_state="B"),
+        options=opts.items(),
+    )

@@ -1,0 +1,225 @@
+"""Running a DYNACAM scene: consistent initial state, one compiled run, the thesis's figures.
+
+The run starts at rest relative to the nominal motion, in the dwell before the rise
+(T = run.T_start < 0): the cam turns at w_s, every other velocity is zero and the
+positions are the static equilibrium under the spring preload, the external force and
+friction, with every element in its initial mode.  This is what the consistent initial
+conditions (6.49)-(6.68) of the thesis give; here they are found numerically from the
+generated right-hand side (all accelerations and first-order rates zero), so they hold
+for any option set.
+"""
+from __future__ import annotations
+
+import math
+import time
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from . import _integrate
+from .errors import CamdynInputError, SimulationError
+from .models import load
+from .scene import Scene
+from .simulate import Simulator
+
+# summary keys, in the order printed
+KEYS = ("variant", "tau", "Fa", "Fv", "Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_rise", "U0dd", "U0",
+        "jump", "speed_variation_max", "motor_speed_variation_max", "n_events", "cpu_seconds")
+
+
+def characteristics(opts, p: dict) -> dict:
+    """tau, Fa, Fv of the scene's parameters, as App. 7 forms them.
+
+    c_c = 1/(1/c_x + 1/c_z) (4.3); m = m_x + m_z (c_c/c_z)^2 (4.39), (5.50);
+    tan alpha_me = h_m/(R_1/2 beta_m) (4.13) with R_1/2 = R_b + h_m/2 for radial cams (4.1),
+    R_b for axial ones; the shaft's tangential stiffness at R_1/2, 1/c_tan = R_1/2^2/k + 1/c_y
+    (4.4); Fa = (c_c/c_tan) tan^2 alpha_me (4.14); m_tan = (J/R_1/2^2)(c_tan/c_beta)^2 +
+    m_y (c_tan/c_y)^2 (5.51); Fv = (m/m_tan) tan^2 alpha_me (5.52); tau = T_e/t_m with
+    T_e = 2 pi (m/c_c)^(1/2) and t_m = beta_m/w_s.
+    """
+    c_x, m_x = p["c_x"], p["m_x"]
+    if opts.shaft_z:
+        c_c = 1.0 / (1.0 / c_x + 1.0 / p["c_z"])
+        m = m_x + p["m_z"] * (c_c / p["c_z"]) ** 2
+    else:
+        c_c, m = c_x, m_x
+    R_half = p["R_b"] + p["h_m"] / 2 if opts.cam == "radial" else p["R_b"]
+    tan_me = p["h_m"] / (R_half * p["beta_m"])
+    c_beta = p["k"] / R_half**2
+    flex = 1.0 / c_beta + (1.0 / p["c_y"] if opts.shaft_y else 0.0)
+    c_tan = 1.0 / flex
+    m_tan = p["J"] / R_half**2 * (c_tan / c_beta) ** 2
+    if opts.shaft_y:
+        m_tan += p["m_y"] * (c_tan / p["c_y"]) ** 2
+    t_m = p["beta_m"] / p["omega_s"]
+    return {"tau": 2 * math.pi * math.sqrt(m / c_c) / t_m, "Fa": c_c / c_tan * tan_me**2,
+            "Fv": m / m_tan * tan_me**2, "t_m": t_m, "c_c": c_c, "m": m, "tan_alpha_me": tan_me,
+            "c_tan": c_tan, "m_tan": m_tan}
+
+
+def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
+    """State at t = 0 in steady dwell: accelerations and first-order rates zero.
+
+    Unknowns: every position but the input angle phi (it is the time reference), the
+    first-order states; velocities are the nominal ones (cam at the input speed).
+    """
+    names = model.state_names
+    n_q = model.manifest["n_q"]
+    y = model.initial_state(p)
+    w_s = p[model.parameter_names.index("omega_s")]
+    free = [k for k, s in enumerate(names) if k < n_q or (k >= 2 * n_q and s != "phi")]
+    scale = model.state_scales()[free]
+    modes = np.array(sim.modes0, dtype=np.intc)
+    # sticking linkage friction leaves x undetermined: solve without it (the frictionless
+    # equilibrium has zero force to hold, so sticking is consistent there)
+    specs = model.manifest.get("modes", [])
+    for j, spec in enumerate(specs):
+        if spec["name"] == "linkfric":
+            p = p.copy()
+            p[model.parameter_names.index("nu_x")] = 0.0
+            modes[j] = spec["values"].index("forward")
+    t0 = np.zeros(1)
+    i_dw = names.index("dw") if "dw" in names else None
+    i_beta = names.index("beta")
+
+    def state(u):
+        yy = y.copy()
+        yy[free] = u * scale
+        yy[n_q + i_beta] = w_s + (yy[i_dw] if i_dw is not None else 0.0)
+        return yy
+
+    def resid(u):
+        f = _integrate.eval_rhs(model.capsule, p, sim._codes, sim._pars, t0, state(u)[None, :],
+                                element_modes=modes)[0]
+        r = np.concatenate([f[n_q:2 * n_q], [f[k] for k in free if k >= 2 * n_q]])
+        return r
+
+    r0 = np.abs(resid(y[free] / scale)) + 1.0
+    sol = least_squares(lambda u: resid(u) / r0, y[free] / scale, xtol=1e-15, ftol=1e-15,
+                        gtol=1e-15, max_nfev=2000)
+    out = state(sol.x)
+    if not np.all(np.isfinite(out)):
+        raise SimulationError("no consistent initial state found (non-finite equilibrium)")
+    return out
+
+
+def run(scene: Scene, progress=None) -> tuple[dict, object]:
+    """Run a scene; returns (summary, result)."""
+    try:
+        model = load(scene.variant)
+    except CamdynInputError:
+        from camdyn.derive.models import DYNACAM_VARIANTS
+
+        raise CamdynInputError(
+            f"the options of {scene.path} select the variant {scene.variant}, which is not generated; "
+            f"generated variants: {', '.join(o.name for o in DYNACAM_VARIANTS)}.  Add its Options(...) "
+            f"to DYNACAM_VARIANTS in camdyn/derive/models/__init__.py, then run `camdyn derive` and "
+            f"`pip install -e .`") from None
+    params = dict(scene.parameters)
+    params["beta_0"] = -scene.T_start * params["beta_m"]
+    ch = characteristics(scene.options, params)
+    t_m = ch["t_m"]
+    t_end = (scene.T_end - scene.T_start) * t_m
+    sim = Simulator(model, t_end, scene.method, rtol=scene.rtol, law=scene.law, theta=scene.theta,
+                    modes=scene.modes, max_steps=2_000_000)
+    p = model.parameter_vector(params)
+    y0 = equilibrium(model, p, sim)
+    sim = Simulator(model, t_end, scene.method, rtol=scene.rtol, law=scene.law, theta=scene.theta,
+                    modes=scene.modes, max_steps=2_000_000, y0=y0)
+    if progress:
+        progress(f"{scene.title}: {scene.variant}, T from {scene.T_start:g} to {scene.T_end:g}")
+    start = time.process_time()
+    res = sim.run(params)
+    cpu = time.process_time() - start
+    summary = summarize(scene, model, res, ch, cpu)
+    return summary, res
+
+
+def nominal_T(scene: Scene, res) -> np.ndarray:
+    """Dimensionless time of the nominal motion, T = w_s t/beta_m + T_start."""
+    t_m = res.params["beta_m"] / res.params["omega_s"]
+    return res.t / t_m + scene.T_start
+
+
+def summarize(scene: Scene, model, res, ch: dict, cpu: float) -> dict:
+    T = nominal_T(scene, res)
+    Xdd = res["Xdd"]
+    rise = (T >= 0) & (T <= 1)
+    k = np.flatnonzero(rise)[np.argmin(Xdd[rise])]
+    dwell = T > 1
+    out = {"title": scene.title, "variant": scene.variant, "tau": ch["tau"], "Fa": ch["Fa"],
+           "Fv": ch["Fv"], "Xdd_min_rise": float(Xdd[k]), "T_at_Xdd_min": float(T[k]),
+           "Xdd_max_rise": float(Xdd[rise].max()),
+           "U0dd": float(np.abs(Xdd[dwell]).max()) if dwell.any() else None,
+           "U0": float(np.abs(res["U"][dwell]).max()) if dwell.any() else None}
+    jump = {"occurs": False, "T": None}
+    if scene.options.roller == "contact":
+        free = res.element_mode("roller") == "free"
+        if free.any():
+            jump = {"occurs": True, "T": float(T[np.flatnonzero(free)[0]])}
+    out["jump"] = jump
+    out["speed_variation_max"] = float(np.abs(res["speed_var"]).max())
+    out["motor_speed_variation_max"] = (float(np.abs(res["motor_speed_var"]).max())
+                                        if "motor_speed_var" in model.output_names else None)
+    out["n_events"] = int(res.stats["n_events"])
+    out["n_steps"] = int(res.stats["n_steps"])
+    out["cpu_seconds"] = cpu
+    out["characteristics"] = {k: ch[k] for k in ("t_m", "c_c", "m", "tan_alpha_me", "c_tan", "m_tan")}
+    return out
+
+
+DIAGRAMS = (
+    ("Xdd", "X''", "acceleration of the output member, x'' t_m^2/h_m"),
+    ("Bdd", "B''", "angular acceleration of the cam, beta'' t_m^2/beta_m"),
+    ("torque", "M [N m]", "torque in the camshaft"),
+    ("gaps", "gap", "backlash positions: gear (rad) and roller (m)"),
+    ("speed_var", "dOmega_fic/w_s", "variation of the fictitious angular velocity"),
+    ("motor_speed_var", "dw/w_s", "speed variation of the motor"),
+)
+
+
+def plot(scene: Scene, res, summary: dict, out_dir) -> list:
+    """The thesis's diagrams (figs 7.11, 7.12, 7.15, 7.16) as PNG files in ``out_dir``."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from pathlib import Path
+
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    T = nominal_T(scene, res)
+    names = res.output_names
+    written = []
+    for key, ylabel, title in DIAGRAMS:
+        if key == "gaps":
+            series = [(n, res[n]) for n in ("gear_gap", "roller_gap") if n in names]
+        else:
+            series = [(key, res[key])] if key in names else []
+        if not series:
+            continue
+        fig, axes = plt.subplots(len(series), 1, figsize=(7, 2.6 * len(series)), sharex=True,
+                                 squeeze=False)
+        for ax, (n, v) in zip(axes[:, 0], series):
+            ax.plot(T, v, lw=0.8)
+            ax.axvspan(0, 1, color="0.93", zorder=0)
+            ax.set_ylabel(n if key == "gaps" else ylabel)
+            ax.grid(alpha=0.3)
+        if key == "Xdd":
+            Tn = np.clip(T, 0, 1)
+            from .laws import choose
+
+            H = choose(scene.law, scene.theta).evaluate(Tn)
+            axes[0, 0].plot(T, np.where((T > 0) & (T < 1), H[:, 2], 0.0), "k--", lw=0.7,
+                            label="nominal H''")
+            axes[0, 0].plot([summary["T_at_Xdd_min"]], [summary["Xdd_min_rise"]], "rv")
+            axes[0, 0].legend(loc="upper right", fontsize=8)
+        axes[-1, 0].set_xlabel("T = t/t_m")
+        fig.suptitle(f"{scene.title}\n{title} (tau={summary['tau']:.3g}, Fa={summary['Fa']:.3g})",
+                     fontsize=9)
+        fig.tight_layout()
+        path = out_dir / f"{Path(scene.path).stem}_{key}.png"
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        written.append(str(path))
+    return written
