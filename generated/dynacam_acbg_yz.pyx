@@ -4,7 +4,7 @@
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:24c5674629a82edbb42e44dd9916d221d41d356bb66adc9dd7d0497b2eb0a6ce
+# Source hash: sha256:0ad777e2ff372fb7c449a9f8f764bbcb193e2c19390519dfadd88bea6d56f96a
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -111,10 +111,9 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c7 = _c3*h_m/_c6
     cdef double _c8 = 2.0*sqrt(J)*sqrt(k)*q_b
     cdef double _c9 = _c8*omega_s
-    cdef double _c10 = -k*s_g
-    cdef double _c11 = (1.0/m_y)
-    cdef double _c12 = (1.0/h_m)
-    cdef double _c13 = (1.0/(omega_s*omega_s))
+    cdef double _c10 = (1.0/m_y)
+    cdef double _c11 = (1.0/h_m)
+    cdef double _c12 = (1.0/(omega_s*omega_s))
     ctx.k[0] = -c_x  # _k0
     ctx.k[1] = _c0  # _k1
     ctx.k[2] = -_c1  # _k2
@@ -129,31 +128,30 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[11] = k*omega_s  # _k11
     ctx.k[12] = -_c8  # _k12
     ctx.k[13] = _c9  # _k13
-    ctx.k[14] = _c10 + _c9  # _k14
+    ctx.k[14] = _c9 + k*s_g  # _k14
     ctx.k[15] = (1.0/J)  # _k15
-    ctx.k[16] = -_c11*c_y  # _k16
+    ctx.k[16] = -_c10*c_y  # _k16
     ctx.k[17] = -2.0*sqrt(c_y)*q_y/sqrt(m_y)  # _k17
-    ctx.k[18] = _c11*_c5  # _k18
+    ctx.k[18] = _c10*_c5  # _k18
     ctx.k[19] = -c_z  # _k19
     ctx.k[20] = -2.0*sqrt(c_z)*sqrt(m_z)*q_z  # _k20
     ctx.k[21] = (1.0/m_z)  # _k21
     ctx.k[22] = (1.0/m_x)  # _k22
     ctx.k[23] = -beta_0  # _k23
     ctx.k[24] = _c2  # _k24
-    ctx.k[25] = _c12*_c13*_c6  # _k25
-    ctx.k[26] = _c13*beta_m  # _k26
+    ctx.k[25] = _c11*_c12*_c6  # _k25
+    ctx.k[26] = _c12*beta_m  # _k26
     ctx.k[27] = -h_m  # _k27
-    ctx.k[28] = _c12  # _k28
+    ctx.k[28] = _c11  # _k28
     ctx.k[29] = _c8  # _k29
-    ctx.k[30] = _c10  # _k30
-    ctx.k[31] = _c4  # _k31
-    ctx.k[32] = -_c7  # _k32
-    ctx.k[33] = -_c5  # _k33
-    ctx.k[34] = _c1  # _k34
-    ctx.k[35] = -s_r  # _k35
-    ctx.k[36] = _c5  # _k36
-    ctx.k[37] = -_c3  # _k37
-    ctx.k[38] = (1.0/omega_s)  # _k38
+    ctx.k[30] = _c4  # _k30
+    ctx.k[31] = -_c7  # _k31
+    ctx.k[32] = -_c5  # _k32
+    ctx.k[33] = _c1  # _k33
+    ctx.k[34] = -s_r  # _k34
+    ctx.k[35] = _c5  # _k35
+    ctx.k[36] = -_c3  # _k36
+    ctx.k[37] = (1.0/omega_s)  # _k37
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -215,7 +213,6 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k35 = ctx.k[35]
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
-    cdef double _k38 = ctx.k[38]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -327,7 +324,6 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k35 = ctx.k[35]
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
-    cdef double _k38 = ctx.k[38]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -344,18 +340,18 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef double _o0 = _cam0[0]*_k27 + x
-    cdef double _o1 = _k10*beta + _k11*t - _k29*(betad - omega_s)
-    cdef double _o2 = _k34*(_cam0[1]*_k33*yd + betad*(_cam0[1]*_k31 + _cam0[2]*_k32*y) - xd - zd)
-    cdef double _o3 = _cam0[1]*_k36
+    cdef double _o1 = _k29*(betad - omega_s)
+    cdef double _o2 = _k33*(_cam0[1]*_k32*yd + betad*(_cam0[1]*_k30 + _cam0[2]*_k31*y) - xd - zd)
+    cdef double _o3 = _cam0[1]*_k35
     cdef double _o4 = _o0 + _o3*y + z
     _out[0] = _k24*(_k23 + beta)  # B
     _out[1] = _k25*_dy[7]  # Xdd
     _out[2] = _k26*_dy[4]  # Bdd
     _out[3] = _k28*_o0  # U
     _out[4] = _dy[7]  # xdd
-    _out[5] = ((_o1) if ((ctx.mode[1] == 0.0)) else (((0.0) if ((ctx.mode[1] == 1.0)) else (_k30 + _o1))))  # torque
-    _out[6] = ((_cam0[0]*_k1 + _cam0[1]*_k3*y + _k0*x + _k0*z + _o2) if ((ctx.mode[2] == 0.0)) else (((0.0) if ((ctx.mode[2] == 1.0)) else (_k0*(_k35 + _o4) + _o2))))  # Fx
-    _out[7] = _k38*(_k37*yd + betad) - 1.0  # speed_var
+    _out[5] = ((_k10*beta + _k11*t - _o1) if ((ctx.mode[1] == 0.0)) else (((0.0) if ((ctx.mode[1] == 1.0)) else (-_o1 + k*(-beta + omega_s*t + s_g)))))  # torque
+    _out[6] = ((_cam0[0]*_k1 + _cam0[1]*_k3*y + _k0*x + _k0*z + _o2) if ((ctx.mode[2] == 0.0)) else (((0.0) if ((ctx.mode[2] == 1.0)) else (_k0*(_k34 + _o4) + _o2))))  # Fx
+    _out[7] = _k37*(_k36*yd + betad) - 1.0  # speed_var
     _out[8] = _o3  # tan_alpha
     _out[9] = -beta + omega_s*t  # gear_gap
     _out[10] = _o4  # roller_gap
@@ -420,7 +416,6 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k35 = ctx.k[35]
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
-    cdef double _k38 = ctx.k[38]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -535,7 +530,6 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k35 = ctx.k[35]
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
-    cdef double _k38 = ctx.k[38]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -608,7 +602,6 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double _k35 = ctx.k[35]
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
-    cdef double _k38 = ctx.k[38]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -622,8 +615,8 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
 
     _g[0] = (-beta + omega_s*t) if (ctx.mode[1] == 0.0) else 1.0  # gear_lift_drive
     _g[1] = (-beta + omega_s*t) if (ctx.mode[1] == 1.0) else 1.0  # gear_hit_drive
-    _g[2] = (-beta + omega_s*t - s_g) if (ctx.mode[1] == 1.0) else 1.0  # gear_hit_back
-    _g[3] = (-beta + omega_s*t - s_g) if (ctx.mode[1] == 2.0) else 1.0  # gear_lift_back
+    _g[2] = (-beta + omega_s*t + s_g) if (ctx.mode[1] == 1.0) else 1.0  # gear_hit_back
+    _g[3] = (-beta + omega_s*t + s_g) if (ctx.mode[1] == 2.0) else 1.0  # gear_lift_back
     _g[4] = (_cam0[0]*h_m - x - z - _cam0[1]*h_m*y/(R_b*beta_m)) if (ctx.mode[2] == 0.0) else 1.0  # roller_leave_lower
     _g[5] = (_cam0[0]*h_m - x - z - _cam0[1]*h_m*y/(R_b*beta_m)) if (ctx.mode[2] == 1.0) else 1.0  # roller_hit_lower
     _g[6] = (-_cam0[0]*h_m - s_r + x + z + _cam0[1]*h_m*y/(R_b*beta_m)) if (ctx.mode[2] == 1.0) else 1.0  # roller_hit_upper
@@ -691,7 +684,6 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k35 = ctx.k[35]
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
-    cdef double _k38 = ctx.k[38]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -800,7 +792,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 39
+_model.n_const = 38
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -1180,7 +1172,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:24c5674629a82edbb42e44dd9916d221d41d356bb66adc9dd7d0497b2eb0a6ce",
+ "source_hash": "sha256:0ad777e2ff372fb7c449a9f8f764bbcb193e2c19390519dfadd88bea6d56f96a",
  "states": [
   {
    "doc": "cam angle",

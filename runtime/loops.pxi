@@ -78,7 +78,9 @@ cdef inline bint _finite(int n, const double* y) noexcept nogil:
 
 
 cdef inline bint _crossed(int direction, double g) noexcept nogil:
-    return g >= 0.0 if direction > 0 else g <= 0.0
+    # strict: an element that switched at g = 0 exactly (a gap closed at rest, as in a dwell)
+    # must still see the next crossing in the other direction
+    return g > 0.0 if direction > 0 else g < 0.0
 
 
 cdef inline void _dense(double s, double h, const double* y0, const double* y1, const double* f0,
@@ -258,6 +260,8 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
                 status = _apply_event(run, ev, t, y, k1, g0)
                 if status != STATUS_OK:
                     break
+                # the event refreshed run.ctx (the rhs variant of the new cam segments)
+                local_ctx = run.ctx[0]
                 a = t   # equal steps again over the rest of the interval
                 k = 0
                 nstep = fixed_steps(a, b, run.h) if b > a else 0
@@ -512,6 +516,8 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
                     status = _apply_event(run, hit, t, y, k1, g0)
                     if status != STATUS_OK:
                         break
+                    # the event refreshed run.ctx (the rhs variant of the new cam segments)
+                    local_ctx = run.ctx[0]
                     rejected = False
                     continue
                 memcpy(g0, g1, sizeof(g0))

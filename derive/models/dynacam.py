@@ -217,13 +217,14 @@ def build(opts: Options = Options()) -> Model:
                     initial="drive")
         modes.append(gear)
         M_drive = P["k"] * (phi - beta) + d_b * (phi_rate - beta.diff(t))
-        M_back = P["k"] * (phi - P["s_g"] - beta) + d_b * (phi_rate - beta.diff(t))
+        # the cam runs ahead of the gear by s_g when the back flank is hit
+        M_back = P["k"] * (phi + P["s_g"] - beta) + d_b * (phi_rate - beta.diff(t))
         M = gear.select(drive=M_drive, free=0, back=M_back)
         events += [
             Event("gear_lift_drive", phi - beta, -1, {"gear": ("drive",)}, (Branch({"gear": "free"}),)),
             Event("gear_hit_drive", phi - beta, 1, {"gear": ("free",)}, (Branch({"gear": "drive"}),)),
-            Event("gear_hit_back", phi - P["s_g"] - beta, -1, {"gear": ("free",)}, (Branch({"gear": "back"}),)),
-            Event("gear_lift_back", phi - P["s_g"] - beta, 1, {"gear": ("back",)}, (Branch({"gear": "free"}),)),
+            Event("gear_hit_back", phi + P["s_g"] - beta, -1, {"gear": ("free",)}, (Branch({"gear": "back"}),)),
+            Event("gear_lift_back", phi + P["s_g"] - beta, 1, {"gear": ("back",)}, (Branch({"gear": "free"}),)),
         ]
         outputs.append(Output("gear_gap", phi - beta, "rad",
                               "input minus cam angle: 0 on the driving flank, -s_g on the other"))

@@ -1,0 +1,140 @@
+"""DYNACAM runs of the two measured mechanisms against what thesis ch. 7 reports.
+
+The scenes (camdyn/runtime/scenes/*.toml) carry App. 7's data; the splits the scan
+lost are taken as the scene files say, so the tolerances here are those of reading a
+measured diagram (the thesis itself calls errors up to 20 % satisfactory, sec. 7.4.7).
+"""
+import copy
+import math
+
+import numpy as np
+import pytest
+
+from camdyn.runtime import dynacam, scene as scenes
+
+NOMINAL_MAX = 2 * math.pi      # cycloid: max |H''| = 2 pi (A.2.10)
+
+
+@pytest.fixture(scope="module")
+def spring_loaded():
+    sc = scenes.load("spring_loaded")
+    return sc, *dynacam.run(sc)
+
+
+def _at_tau(sc, tau):
+    """The scene at another tau, by the cam speed (tau = T_e w_s/beta_m)."""
+    ch = dynacam.characteristics(sc.options, sc.parameters)
+    p = dict(sc.parameters)
+    p["omega_s"] *= tau / ch["tau"]
+    return scenes.Scene(**{**sc.__dict__, "parameters": p})
+
+
+def test_spring_loaded_deceleration_sec_7_4_2(spring_loaded):
+    """Sec. 7.4.2 (fig. 7.12): 'the maximum deceleration at T = 0.8 exceeds the maximum nominal
+    deceleration by a factor of 2.2', and the residual amplitude exceeds the maximum nominal
+    acceleration.  Tolerance: the factor within 2.2 +- 25 %, its T within 0.8 +- 0.15."""
+    _, s, _ = spring_loaded
+    factor = -s["Xdd_min_rise"] / NOMINAL_MAX
+    assert factor == pytest.approx(2.2, rel=0.25)
+    assert s["T_at_Xdd_min"] == pytest.approx(0.8, abs=0.15)
+    assert s["U0dd"] > NOMINAL_MAX
+    assert not s["jump"]["occurs"]
+
+
+def test_spring_loaded_fictitious_speed_fig_7_12(spring_loaded):
+    """Sec. 7.6 (fig. 7.12): the fictitious angular velocity varies 'up to a maximum of 40 %';
+    tolerance +- 25 % of that."""
+    _, s, _ = spring_loaded
+    assert s["speed_variation_max"] == pytest.approx(0.40, rel=0.25)
+
+
+def test_motor_speed_varies_under_2_percent(spring_loaded):
+    """Sec. A.5.4.3: the asynchronous motor's speed varies by under 2 % (1.6 % measured, 1.8 %
+    simulated, for the mechanism of fig. A.5.7)."""
+    _, s, _ = spring_loaded
+    assert 0 < s["motor_speed_variation_max"] < 0.02
+
+
+def test_follower_jump_at_tau_0_16_sec_7_5(spring_loaded):
+    """Sec. 7.5 (figs 7.21, 7.22): with the spring of fig. 7.21 the follower jumps at tau = 0.16,
+    Fa = 2.04.  The spring is not legible; the scene's F_0, c_s hold the roller at the
+    scene's tau = 0.141 (no jump there) and the same spring lets it jump at 0.16."""
+    sc, s, _ = spring_loaded
+    fast = _at_tau(sc, 0.16)
+    s16, res = dynacam.run(fast)
+    assert s16["tau"] == pytest.approx(0.16, rel=1e-9)
+    assert s16["Fa"] == pytest.approx(s["Fa"], rel=1e-12)
+    assert s16["jump"]["occurs"]
+    assert 0.0 < s16["jump"]["T"] < 1.0   # within the rise; fig. 7.22 is not legible enough for T
+    # the roller leaves the cam exactly where the contact force reaches zero (event located)
+    free = res.element_mode("roller") == "free"
+    k = np.flatnonzero(free)[0]
+    assert abs(res["roller_gap"][k]) < 1e-9
+
+
+# -- indexing mechanism, sec. 7.4.4 -----------------------------------------------------------
+@pytest.fixture(scope="module")
+def indexing():
+    sc = scenes.load("indexing")
+    return sc, *dynacam.run(sc)
+
+
+def _Xdd_at(sc, res, summary, T):
+    t_m = summary["characteristics"]["t_m"]
+    return res.sample(np.array([(T - sc.T_start) * t_m]))["Xdd"][0]
+
+
+def _without_backlash(sc):
+    import tomllib
+
+    d = tomllib.loads(open(sc.path).read())
+    d["options"].update(gear="rigid", roller="bilateral")
+    for name in ("s_g", "s_r"):
+        del d["parameters"][name]
+    return scenes.from_dict(d)
+
+
+def test_indexing_gear_impact_at_T_0_58(indexing):
+    """Sec. 7.4.4: the gear teeth lift off after T = 0.5, where the torque reverses, and 'the
+    impact of the gear teeth at T = 0.58' follows.  Tolerance +- 0.03 in T."""
+    sc, s, res = indexing
+    T = dynacam.nominal_T(sc, res)
+    gear = res.element_mode("gear")
+    changes = [(T[i + 1], gear[i + 1]) for i in np.flatnonzero(gear[1:] != gear[:-1]) if T[i + 1] > 0.3]
+    lift, impact = changes[0], changes[1]
+    assert lift[1] == "free" and lift[0] == pytest.approx(0.5, abs=0.03)
+    assert impact[1] == "back" and impact[0] == pytest.approx(0.58, abs=0.03)
+
+
+def test_indexing_backlash_Xdd_at_T_0_68_fig_7_16(indexing):
+    """Fig. 7.16 (zero damping and viscosity): X''_0.68 = -16; sec. 7.4.4's estimate by (3.12),
+    (3.16) gives -16.2.  Tolerance 10 %."""
+    sc, s, res = indexing
+    assert _Xdd_at(sc, res, s, 0.68) == pytest.approx(-16.0, rel=0.10)
+
+
+def test_indexing_without_backlash_fig_7_15_and_impact_estimate(indexing):
+    """Fig. 7.15: without backlash X'' = -7.4 at T = 0.68 (tolerance 5 %); Van der Hoek's
+    estimate X''_(s=0) - U_sn'' (3.12), (3.16), (4.32) from that simulated value agrees with
+    the simulation with backlash to 10 %, as the thesis concludes (sec. 7.4.4)."""
+    from camdyn.derive import examples
+
+    sc, s, res = indexing
+    sc0 = _without_backlash(sc)
+    assert sc0.variant == "dynacam_acrb_yz"
+    s0, res0 = dynacam.run(sc0)
+    x0 = _Xdd_at(sc0, res0, s0, 0.68)
+    assert x0 == pytest.approx(-7.4, rel=0.05)
+    estimate = examples.indexing_impact(Xdd_s0=x0).Xdd
+    assert _Xdd_at(sc, res, s, 0.68) == pytest.approx(estimate, rel=0.10)
+
+
+def test_indexing_amplitude_grows_towards_T_1_without_damping(indexing):
+    """Sec. 7.4.4: 'Figure 7.16 ... shows that the amplitude increases towards T = 1, because of
+    the increasing stiffness in the absence of damping': the largest |X''| over 0.85 <= T <= 1
+    exceeds the one right after the impact (0.6 <= T <= 0.75)."""
+    sc, s, res = indexing
+    T = dynacam.nominal_T(sc, res)
+    late = np.abs(res["Xdd"][(T >= 0.85) & (T <= 1.0)]).max()
+    early = np.abs(res["Xdd"][(T >= 0.6) & (T <= 0.75)]).max()
+    assert late > early
