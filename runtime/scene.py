@@ -181,3 +181,24 @@ def from_dict(data: dict, path: str = "<scene>") -> Scene:
     return Scene(path=path, title=str(data.get("title", Path(path).stem)),
                  reference=str(data.get("reference", "")), law=law, theta=theta,
                  options=options, parameters=params, modes=dict(modes), **settings)
+
+
+def replace(sc: Scene, options: dict | None = None, parameters: dict | None = None,
+            drop: tuple = ()) -> Scene:
+    """The scene with some options or parameters changed (``drop``: parameters the new
+    options no longer have), checked again as a scene file would be."""
+    from dataclasses import asdict
+
+    opts = {**asdict(sc.options), **(options or {})}
+    params = {k: v for k, v in {**sc.parameters, **(parameters or {})}.items() if k not in drop}
+    data = {"title": sc.title, "reference": sc.reference, "law": sc.law, "options": opts,
+            "parameters": params, "modes": dict(sc.modes),
+            "run": {"T_start": sc.T_start, "T_end": sc.T_end, "rtol": sc.rtol, "method": sc.method}}
+    if sc.theta is not None:
+        data["theta"] = sc.theta
+    return from_dict(data, sc.path)
+
+
+def without_backlash(sc: Scene) -> Scene:
+    """The scene with a rigid gear and a bilateral roller (figs 7.15 against 7.16)."""
+    return replace(sc, {"gear": "rigid", "roller": "bilateral"}, drop=("s_g", "s_r", "V_T", "V_R"))

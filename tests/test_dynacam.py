@@ -4,7 +4,6 @@ The scenes (camdyn/runtime/scenes/*.toml) carry App. 7's data; the splits the sc
 lost are taken as the scene files say, so the tolerances here are those of reading a
 measured diagram (the thesis itself calls errors up to 20 % satisfactory, sec. 7.4.7).
 """
-import copy
 import math
 
 import numpy as np
@@ -24,9 +23,7 @@ def spring_loaded():
 def _at_tau(sc, tau):
     """The scene at another tau, by the cam speed (tau = T_e w_s/beta_m)."""
     ch = dynacam.characteristics(sc.options, sc.parameters)
-    p = dict(sc.parameters)
-    p["omega_s"] *= tau / ch["tau"]
-    return scenes.Scene(**{**sc.__dict__, "parameters": p})
+    return scenes.replace(sc, parameters={"omega_s": sc.parameters["omega_s"] * tau / ch["tau"]})
 
 
 def test_spring_loaded_deceleration_sec_7_4_2(spring_loaded):
@@ -85,13 +82,7 @@ def _Xdd_at(sc, res, summary, T):
 
 
 def _without_backlash(sc):
-    import tomllib
-
-    d = tomllib.loads(open(sc.path).read())
-    d["options"].update(gear="rigid", roller="bilateral")
-    for name in ("s_g", "s_r"):
-        del d["parameters"][name]
-    return scenes.from_dict(d)
+    return scenes.without_backlash(sc)
 
 
 def test_indexing_gear_impact_at_T_0_58(indexing):
@@ -145,17 +136,9 @@ def test_constant_speed_variant_is_the_stiff_motor_limit(spring_loaded):
     """rcrc_yzs (no motor states) against r2rc_yzs with a motor of huge inertia and torque
     slope (J_ma = 1e6 kg m^2, G_a = 1e9 N m s/rad: speed deviation M/G_a ~ 1e-8 rad/s): the
     follower accelerations agree to 1e-5 of their peak over the whole run."""
-    import tomllib
-
     sc, _, _ = spring_loaded
-    d = tomllib.loads(open(sc.path).read())
-    stiff = copy.deepcopy(d)
-    stiff["parameters"].update(J_ma=1e6, G_a=1e9)
-    ideal = copy.deepcopy(d)
-    ideal["options"]["motor"] = "constant"
-    for key in ("J_ma", "G_a", "T_el", "alpha_w", "mu_w"):
-        del ideal["parameters"][key]
-    full, reduced = scenes.from_dict(stiff, sc.path), scenes.from_dict(ideal, sc.path)
+    full = scenes.replace(sc, parameters={"J_ma": 1e6, "G_a": 1e9})
+    reduced = scenes.replace(sc, {"motor": "constant"}, drop=("J_ma", "G_a", "T_el", "alpha_w", "mu_w"))
     assert (full.variant, reduced.variant) == ("dynacam_r2rc_yzs", "dynacam_rcrc_yzs")
     sf, rf = dynacam.run(full)
     sr, rr = dynacam.run(reduced)
@@ -176,7 +159,6 @@ def test_backlash_variant_tends_to_the_backlash_free_one(indexing):
     ref = rr.sample(t)["Xdd"]
     diffs = []
     for s_g in (1e-4, 1e-6):
-        p = dict(sc.parameters, s_g=s_g, s_r=s_g / 100)
-        s, r = dynacam.run(scenes.Scene(**{**sc.__dict__, "parameters": p}))
+        s, r = dynacam.run(scenes.replace(sc, parameters={"s_g": s_g, "s_r": s_g / 100}))
         diffs.append(np.max(np.abs(r.sample(t)["Xdd"] - ref)) / np.max(np.abs(ref)))
     assert diffs[1] < 0.01 < diffs[0]

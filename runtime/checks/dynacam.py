@@ -7,7 +7,6 @@ the thesis prints are read from simulated or measured diagrams, so the rules are
 from __future__ import annotations
 
 import math
-import tomllib
 from functools import lru_cache
 
 import numpy as np
@@ -21,11 +20,7 @@ def _run(name: str, backlash: bool = True):
 
     sc = scenes.load(name)
     if not backlash:
-        d = tomllib.loads(open(sc.path).read())
-        d["options"].update(gear="rigid", roller="bilateral")
-        for key in ("s_g", "s_r"):
-            d["parameters"].pop(key, None)
-        sc = scenes.from_dict(d, sc.path)
+        sc = scenes.without_backlash(sc)
     summary, res = dynacam.run(sc)
     return sc, summary, res
 
