@@ -61,3 +61,32 @@ def test_follower_jump_where_the_spring_can_no_longer_hold_the_follower():
     k = np.flatnonzero(free)[0]
     assert np.all(res["roller_gap"][:k] <= 1e-12)
     assert abs(res["roller_gap"][k]) < 1e-12
+
+
+def test_stick_slip_threshold_of_linkage_friction():
+    """Coulomb friction in the linkage (6.43), initially sticking: with the follower held, the
+    contact force grows by c h_m H(T) over the preload F_0 (c = c_x c_z/(c_x + c_z), the cam
+    turning at constant speed); sticking breaks when that growth reaches the static limit
+    1.001 nu (F_0 + growth), i.e. c h_m H(T) = 1.001 nu F_0/(1 - 1.001 nu).  The cycloid's
+    H(T) = T - sin(2 pi T)/(2 pi) is inverted numerically.  Tolerance 1e-3 relative in H."""
+    m = load("dynacam_rcrc_yzfls")
+    h_m, F_0, nu, c_x, c_z = 0.01, 5.0, 0.1, 1e6, 1e9
+    p = _p(m, h_m=h_m, beta_m=1.0, beta_0=0.1, R_b=1.0, omega_s=1.0, J=1e6, k=1e9, q_b=0.05,
+           m_x=1.0, c_x=c_x, q_x=0.0, m_y=1.0, c_y=1e9, q_y=0.05, m_z=1.0, c_z=c_z, q_z=0.0,
+           F_0=F_0, c_s=0.0, nu_b=0.0, nu_x=nu)
+    c = c_x * c_z / (c_x + c_z)
+    y0 = np.zeros(len(m.state_names))
+    y0[m.state_names.index("betad")] = 1.0
+    # preload equilibrium: the shaft yields by F_0/c_z, the linkage is compressed by F_0/c_x
+    y0[m.state_names.index("z")] = F_0 / c_z
+    y0[m.state_names.index("x")] = -F_0 / c_z - F_0 / c_x
+    sim = Simulator(m, 0.4, "dp54", rtol=1e-10, y0=y0)
+    res = sim.run(dict(zip(m.parameter_names, p)))
+    fric = res.element_mode("linkfric")
+    assert fric[0] == "stick"
+    k = np.flatnonzero(fric != "stick")[0]
+    T_break = res.t[k] - 0.1
+    H = T_break - math.sin(2 * math.pi * T_break) / (2 * math.pi)
+    s = 1.001 * nu
+    assert c * h_m * H == pytest.approx(s * F_0 / (1 - s), rel=1e-3)
+    assert fric[k] == "forward"

@@ -22,6 +22,8 @@ DYNACAM_VARIANTS = (
     # constant speed (the motor made ideal)
     dynacam.Options(motor="second", roller="contact", spring=True),
     dynacam.Options(roller="contact", spring=True),
+    # the same with Coulomb friction on the cam and in the linkage (6.13), (6.43): tests/test_nonsmooth.py
+    dynacam.Options(roller="contact", spring=True, cam_friction=True, linkage_friction=True),
     # the indexing mechanism of fig. 7.1 (scenes/indexing.toml): an axial (globoidal) cam at
     # constant (synchronous) speed with backlash in gear and groove (fig. 7.16), and without
     # backlash (fig. 7.15), and with the squeeze film in gear and groove (figs 7.11b, 7.20)

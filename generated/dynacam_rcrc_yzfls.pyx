@@ -1,0 +1,1406 @@
+# cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
+#
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam_rcrc_yzfls.py;
+# edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+#
+# DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
+# Source hash: sha256:38f51eea7b4df33419d505fefe9fecae0c92e3d2738852226abd4a73c87fa423
+#
+# DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
+#
+# Degrees of freedom (figs 6.1, 6.2, all reduced to the output member, SI units):
+# the cam angle beta, the shaft's tangential deflection y (6.12), (6.16), its
+# deflection z along the follower (6.11), (6.15), and the follower output x
+# (6.42), (6.44); plus, as first-order states, the asynchronous motor
+# (A.5.6)-(A.5.9), and the massless gear wheel or roller in a squeeze film
+# (6.9), (6.41).
+#
+# Smooth mechanics from energies:
+#
+#     kinetic energy     1/2 J beta'^2 + 1/2 m_y y'^2 + 1/2 m_z z'^2 + 1/2 m_x x'^2
+#     potential energy   1/2 c_y y^2 + 1/2 c_z z^2 [+ F_0 x + 1/2 c_s x^2, follower spring (6.45)]
+#     dissipation        1/2 d_y y'^2 + 1/2 d_z z'^2,   d = 2 q sqrt(m c) (6.47)
+#
+# The nonsmooth laws are force elements with modes and events:
+#
+# * the roller: the cam contact point moves by h_c = h(beta) - y tan(alpha) - z
+#   (6.22), tan(alpha) = (dh/dbeta)/R(beta) (6.20), R = R_b + h (radial cam) or
+#   R_b (axial) (6.21).  The linkage spring-damper (c_x, d_x) carries
+#   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
+#   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
+#   and the spring-damper engages when the roller reaches a wall (delta = 0 or
+#   the far groove wall delta = -s_r) and releases when it leaves it again;
+#   these crossings are events.  So a spring-loaded follower can jump (mode
+#   "free"), a positive-drive cam traverses its groove backlash s_r, and the
+#   "impact" is the sudden engagement of the linkage stiffness, the ramp input
+#   of sec. 3.6.  With the squeeze film (A.4.11) instead the roller position is
+#   a state, h_r' = h_c' - F_x/(V_R gap^(-3/2)) on the compressed side (6.41);
+# * the reduction gear: the shaft torque M = k (phi_r - beta) + d_b (phi_r' - beta')
+#   (6.10) with the gear output phi_r either the input phi (rigid), within the
+#   backlash s_g with the same contact law (dry), or in a squeeze film (6.9);
+# * Coulomb friction on the cam (6.13) and in the linkage (6.43): modes slip
+#   forward, stick, slip backward; sticking holds the velocity at zero while
+#   the other forces stay within the friction limit;
+# * the worm gear passes the torque with efficiency tan(a)/tan(a + mu) when the
+#   motor drives and tan(a - mu)/tan(a) when it is driven (6.71), (6.72).
+#
+# The option set of a variant (which of these elements and degrees of freedom
+# it has) is in its manifest; a scene generates only what it asks for.
+
+import json
+
+from cpython.pycapsule cimport PyCapsule_New
+from libc.math cimport fabs, sqrt
+
+from camdyn.runtime.abi cimport *
+from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
+                                       camlaw_lo, camlaw_segment)
+
+# sizes, known when the integration loops (loops.pxi) are compiled into this module
+cdef enum:
+    _NQ = 4                  # second-order coordinates
+    _NS = 8                  # states: q, q', first-order states
+    _NCAM = 1                # cam input instances (one segment mode each)
+    _NM = 4                  # modes: cam segments, then the force elements' modes
+    _NE = 10                  # events
+    _NQ1 = 4                 # array sizes that must not be zero
+    _NE1 = 10
+
+cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
+_EDIR[0] = -1  # roller_lift
+_EDIR[1] = 1  # roller_land
+_EDIR[2] = -1  # camfric_stop_fwd
+_EDIR[3] = 1  # camfric_stop_bwd
+_EDIR[4] = 1  # camfric_break
+_EDIR[5] = -1  # linkfric_stop_fwd
+_EDIR[6] = 1  # linkfric_stop_bwd
+_EDIR[7] = 1  # linkfric_break
+_EDIR[8] = 1  # cam0_hi
+_EDIR[9] = -1  # cam0_lo
+
+
+
+cdef void prepare(Ctx* ctx) noexcept nogil:
+    """Parameter-only subexpressions, once per run, into ctx.k."""
+    cdef double h_m = ctx.p[0]
+    cdef double beta_m = ctx.p[1]
+    cdef double beta_0 = ctx.p[2]
+    cdef double R_b = ctx.p[3]
+    cdef double omega_s = ctx.p[4]
+    cdef double J = ctx.p[5]
+    cdef double k = ctx.p[6]
+    cdef double q_b = ctx.p[7]
+    cdef double m_x = ctx.p[8]
+    cdef double c_x = ctx.p[9]
+    cdef double q_x = ctx.p[10]
+    cdef double m_y = ctx.p[11]
+    cdef double c_y = ctx.p[12]
+    cdef double q_y = ctx.p[13]
+    cdef double m_z = ctx.p[14]
+    cdef double c_z = ctx.p[15]
+    cdef double q_z = ctx.p[16]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
+    cdef double nu_b = ctx.p[19]
+    cdef double nu_x = ctx.p[20]
+    cdef double _c0 = k*omega_s
+    cdef double _c1 = c_x*h_m
+    cdef double _c2 = 2.0*sqrt(c_x)*sqrt(m_x)*q_x
+    cdef double _c3 = (1.0/beta_m)
+    cdef double _c4 = _c3*h_m
+    cdef double _c5 = (beta_m*beta_m)
+    cdef double _c6 = R_b*_c5
+    cdef double _c7 = (h_m*h_m)
+    cdef double _c8 = 2.0*sqrt(J)*sqrt(k)*q_b
+    cdef double _c9 = _c8*omega_s
+    cdef double _c10 = R_b*nu_b
+    cdef double _c11 = h_m*nu_b
+    cdef double _c12 = (1.0/m_y)
+    cdef double _c13 = (1.0/h_m)
+    cdef double _c14 = (1.0/(omega_s*omega_s))
+    cdef double _c15 = (1.0/_c5)
+    ctx.k[0] = -k  # _k0
+    ctx.k[1] = _c0  # _k1
+    ctx.k[2] = -c_x  # _k2
+    ctx.k[3] = _c1  # _k3
+    ctx.k[4] = -_c2  # _k4
+    ctx.k[5] = R_b*beta_m  # _k5
+    ctx.k[6] = beta_m*h_m  # _k6
+    ctx.k[7] = -_c1  # _k7
+    ctx.k[8] = -_c2*h_m  # _k8
+    ctx.k[9] = _c2*_c4  # _k9
+    ctx.k[10] = _c6  # _k10
+    ctx.k[11] = _c5*h_m  # _k11
+    ctx.k[12] = (R_b*R_b)*_c5  # _k12
+    ctx.k[13] = _c5*_c7  # _k13
+    ctx.k[14] = 2.0*_c6*h_m  # _k14
+    ctx.k[15] = _c2*_c7  # _k15
+    ctx.k[16] = -_c4  # _k16
+    ctx.k[17] = -_c8  # _k17
+    ctx.k[18] = _c9  # _k18
+    ctx.k[19] = -_c7  # _k19
+    ctx.k[20] = _c7  # _k20
+    ctx.k[21] = -_c10  # _k21
+    ctx.k[22] = -_c11  # _k22
+    ctx.k[23] = -_c0  # _k23
+    ctx.k[24] = _c4  # _k24
+    ctx.k[25] = -_c9  # _k25
+    ctx.k[26] = _c8  # _k26
+    ctx.k[27] = -h_m  # _k27
+    ctx.k[28] = _c10  # _k28
+    ctx.k[29] = _c11  # _k29
+    ctx.k[30] = (1.0/J)  # _k30
+    ctx.k[31] = -_c12*c_y  # _k31
+    ctx.k[32] = _c12*h_m  # _k32
+    ctx.k[33] = -2.0*sqrt(c_y)*q_y/sqrt(m_y)  # _k33
+    ctx.k[34] = -c_z  # _k34
+    ctx.k[35] = -2.0*sqrt(c_z)*sqrt(m_z)*q_z  # _k35
+    ctx.k[36] = (1.0/m_z)  # _k36
+    ctx.k[37] = -F_0  # _k37
+    ctx.k[38] = -c_s  # _k38
+    ctx.k[39] = -nu_x  # _k39
+    ctx.k[40] = (1.0/m_x)  # _k40
+    ctx.k[41] = _c2  # _k41
+    ctx.k[42] = -beta_0  # _k42
+    ctx.k[43] = _c3  # _k43
+    ctx.k[44] = _c13*_c14*_c5  # _k44
+    ctx.k[45] = _c14*beta_m  # _k45
+    ctx.k[46] = _c13  # _k46
+    ctx.k[47] = -_c1*_c3  # _k47
+    ctx.k[48] = _c15*_c7  # _k48
+    ctx.k[49] = -_c15*h_m  # _k49
+    ctx.k[50] = (1.0/omega_s)  # _k50
+
+
+cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
+    """dy/dt: q', q'' from M q'' = f, and the rates of the first-order states; specialised for cam inputs in a dwell."""
+    cdef double h_m = ctx.p[0]
+    cdef double beta_m = ctx.p[1]
+    cdef double beta_0 = ctx.p[2]
+    cdef double R_b = ctx.p[3]
+    cdef double omega_s = ctx.p[4]
+    cdef double J = ctx.p[5]
+    cdef double k = ctx.p[6]
+    cdef double q_b = ctx.p[7]
+    cdef double m_x = ctx.p[8]
+    cdef double c_x = ctx.p[9]
+    cdef double q_x = ctx.p[10]
+    cdef double m_y = ctx.p[11]
+    cdef double c_y = ctx.p[12]
+    cdef double q_y = ctx.p[13]
+    cdef double m_z = ctx.p[14]
+    cdef double c_z = ctx.p[15]
+    cdef double q_z = ctx.p[16]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
+    cdef double nu_b = ctx.p[19]
+    cdef double nu_x = ctx.p[20]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
+    cdef double _k10 = ctx.k[10]
+    cdef double _k11 = ctx.k[11]
+    cdef double _k12 = ctx.k[12]
+    cdef double _k13 = ctx.k[13]
+    cdef double _k14 = ctx.k[14]
+    cdef double _k15 = ctx.k[15]
+    cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
+    cdef double _k21 = ctx.k[21]
+    cdef double _k22 = ctx.k[22]
+    cdef double _k23 = ctx.k[23]
+    cdef double _k24 = ctx.k[24]
+    cdef double _k25 = ctx.k[25]
+    cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
+    cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double beta = _y[0]
+    cdef double y = _y[1]
+    cdef double z = _y[2]
+    cdef double x = _y[3]
+    cdef double betad = _y[4]
+    cdef double yd = _y[5]
+    cdef double zd = _y[6]
+    cdef double xd = _y[7]
+    cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
+    cdef int _v = ctx.variant
+    cdef double* _c
+    cdef double _a
+    if _v & 1:
+        _cam0[0] = ctx.cache[1]  # H in the dwell, set by refresh()
+    else:
+        # the stages of a step share arguments (RK4: t + h/2 twice, t + h for the next
+        # k1): the last evaluation is kept in ctx.cache and reused
+        _a = beta/beta_m - beta_0/beta_m
+        _c = &ctx.cache[0]
+        if _a == _c[0]:
+            _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+        else:
+            camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], _a, _cam0)
+            _c[0], _c[1], _c[2], _c[3], _c[4] = _a, _cam0[0], _cam0[1], _cam0[2], _cam0[3]
+
+    cdef double _s0_0, _s0_1, _s0_2, _s0_3, _s0_4, _s0_5, _s0_6, _s0_7, _s0_8, _s0_9, _s0_10, _s0_11, _s0_12, _s0_13, _s1_0, _s1_1, _s1_2
+    _dy[0] = betad
+    _dy[1] = yd
+    _dy[2] = zd
+    _dy[3] = xd
+    if _v == 0:
+        _s0_0 = (1.0/(_cam0[0]*_k6 + _k5))
+        _s0_1 = _cam0[1]*_s0_0
+        _s0_2 = betad*y
+        _s0_3 = _cam0[2]/(_cam0[0]*_k11 + _k10)
+        _s0_4 = (_cam0[1]*_cam0[1])/((_cam0[0]*_cam0[0])*_k13 + _cam0[0]*_k14 + _k12)
+        _s0_5 = _cam0[0]*_k3 + _cam0[1]*_k9*betad + _k15*_s0_2*_s0_4 + _k2*x + _k2*z + _k4*xd + _k4*zd + _k7*_s0_1*y + _k8*_s0_1*yd + _k8*_s0_2*_s0_3
+        _s0_6 = (ctx.mode[1] == 0.0)
+        _s0_7 = ((_s0_5) if (_s0_6) else (0.0))
+        _s0_8 = _cam0[1]*_s0_7
+        _s0_9 = _s0_7*y
+        _s0_10 = _s0_3*_s0_9
+        _s0_11 = ((sqrt((_s0_5*_s0_5))) if (_s0_6) else (0.0))
+        _s0_12 = _k20*_s0_4
+        _s0_13 = _s0_11*sqrt(_s0_12 + 1.0)
+        _dy[4] = _k30*(_k0*beta + _k1*t + _k16*_s0_8 + _k17*betad + _k18 + _k19*_s0_4*_s0_9 + _s0_10*h_m + ((_s0_13*(_cam0[0]*_k22 + _k21)) if ((ctx.mode[2] == 0.0)) else (((_k23*t + _k24*_s0_8 + _k25 + _k26*betad + _k27*_s0_10 + _s0_12*_s0_9 + beta*k) if ((ctx.mode[2] == 1.0)) else (_s0_13*(_cam0[0]*_k29 + _k28))))))
+        _dy[5] = _k31*y + _k32*_s0_0*_s0_8 + _k33*yd
+        _dy[6] = _k36*(_k34*z + _k35*zd + _s0_7)
+        _dy[7] = _k40*(_k37 + _k38*x + _s0_7 + ((_k39*_s0_11) if ((ctx.mode[3] == 0.0)) else (((F_0 - _s0_7 + c_s*x) if ((ctx.mode[3] == 1.0)) else (_s0_11*nu_x)))))
+    elif _v == 1:  # in a dwell: 0
+        _s1_0 = (ctx.mode[1] == 0.0)
+        _s1_1 = ((fabs(_cam0[0]*_k7 + _k41*xd + _k41*zd + c_x*x + c_x*z)) if (_s1_0) else (0.0))
+        _s1_2 = ((_cam0[0]*_k3 + _k2*x + _k2*z + _k4*xd + _k4*zd) if (_s1_0) else (0.0))
+        _dy[4] = _k30*(_k0*beta + _k1*t + _k17*betad + _k18 + ((_s1_1*(_cam0[0]*_k22 + _k21)) if ((ctx.mode[2] == 0.0)) else (((_k23*t + _k25 + _k26*betad + beta*k) if ((ctx.mode[2] == 1.0)) else (_s1_1*(_cam0[0]*_k29 + _k28))))))
+        _dy[5] = _k31*y + _k33*yd
+        _dy[6] = _k36*(_k34*z + _k35*zd + _s1_2)
+        _dy[7] = _k40*(_k37 + _k38*x + _s1_2 + ((_k39*_s1_1) if ((ctx.mode[3] == 0.0)) else (((F_0 - _s1_2 + c_s*x) if ((ctx.mode[3] == 1.0)) else (_s1_1*nu_x)))))
+
+
+cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept nogil:
+    """The named outputs (B, Xdd, Bdd, U, xdd, torque, Fx, speed_var, tan_alpha, roller_gap)."""
+    cdef double _dy[8]
+    rhs(t, _y, _dy, ctx)
+    cdef double h_m = ctx.p[0]
+    cdef double beta_m = ctx.p[1]
+    cdef double beta_0 = ctx.p[2]
+    cdef double R_b = ctx.p[3]
+    cdef double omega_s = ctx.p[4]
+    cdef double J = ctx.p[5]
+    cdef double k = ctx.p[6]
+    cdef double q_b = ctx.p[7]
+    cdef double m_x = ctx.p[8]
+    cdef double c_x = ctx.p[9]
+    cdef double q_x = ctx.p[10]
+    cdef double m_y = ctx.p[11]
+    cdef double c_y = ctx.p[12]
+    cdef double q_y = ctx.p[13]
+    cdef double m_z = ctx.p[14]
+    cdef double c_z = ctx.p[15]
+    cdef double q_z = ctx.p[16]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
+    cdef double nu_b = ctx.p[19]
+    cdef double nu_x = ctx.p[20]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
+    cdef double _k10 = ctx.k[10]
+    cdef double _k11 = ctx.k[11]
+    cdef double _k12 = ctx.k[12]
+    cdef double _k13 = ctx.k[13]
+    cdef double _k14 = ctx.k[14]
+    cdef double _k15 = ctx.k[15]
+    cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
+    cdef double _k21 = ctx.k[21]
+    cdef double _k22 = ctx.k[22]
+    cdef double _k23 = ctx.k[23]
+    cdef double _k24 = ctx.k[24]
+    cdef double _k25 = ctx.k[25]
+    cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
+    cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double beta = _y[0]
+    cdef double y = _y[1]
+    cdef double z = _y[2]
+    cdef double x = _y[3]
+    cdef double betad = _y[4]
+    cdef double yd = _y[5]
+    cdef double zd = _y[6]
+    cdef double xd = _y[7]
+    cdef double betadd = _dy[4]
+    cdef double ydd = _dy[5]
+    cdef double zdd = _dy[6]
+    cdef double xdd = _dy[7]
+    cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
+
+    cdef double _o0 = _cam0[0]*_k27 + x
+    cdef double _o1 = R_b + _cam0[0]*h_m
+    cdef double _o2 = (1.0/_o1)
+    cdef double _o3 = _o2*y
+    cdef double _o4 = _o2*yd
+    cdef double _o5 = _cam0[1]*_k24
+    cdef double _o6 = _o2*_o5
+    _out[0] = _k43*(_k42 + beta)  # B
+    _out[1] = _k44*_dy[7]  # Xdd
+    _out[2] = _k45*_dy[4]  # Bdd
+    _out[3] = _k46*_o0  # U
+    _out[4] = _dy[7]  # xdd
+    _out[5] = _k0*beta + _k1*t - _k26*(betad - omega_s)  # torque
+    _out[6] = ((_cam0[0]*_k3 + _cam0[1]*_k47*_o3 + _k2*x + _k2*z + _k41*(_cam0[1]*_k16*_o4 + betad*((_cam0[1]*_cam0[1])*_k48*y/(_o1*_o1) + _cam0[2]*_k49*_o3 + _o5) - xd - zd)) if ((ctx.mode[1] == 0.0)) else (0.0))  # Fx
+    _out[7] = _k50*(-_o4 + betad) - 1.0  # speed_var
+    _out[8] = _o6  # tan_alpha
+    _out[9] = _o0 + _o6*y + z  # roller_gap
+
+
+cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, Ctx* ctx) noexcept nogil:
+    """Mass matrix M and stiffness K = -df/dq (row-major, n x n) at (t, y), for frozen analyses."""
+    cdef double h_m = ctx.p[0]
+    cdef double beta_m = ctx.p[1]
+    cdef double beta_0 = ctx.p[2]
+    cdef double R_b = ctx.p[3]
+    cdef double omega_s = ctx.p[4]
+    cdef double J = ctx.p[5]
+    cdef double k = ctx.p[6]
+    cdef double q_b = ctx.p[7]
+    cdef double m_x = ctx.p[8]
+    cdef double c_x = ctx.p[9]
+    cdef double q_x = ctx.p[10]
+    cdef double m_y = ctx.p[11]
+    cdef double c_y = ctx.p[12]
+    cdef double q_y = ctx.p[13]
+    cdef double m_z = ctx.p[14]
+    cdef double c_z = ctx.p[15]
+    cdef double q_z = ctx.p[16]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
+    cdef double nu_b = ctx.p[19]
+    cdef double nu_x = ctx.p[20]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
+    cdef double _k10 = ctx.k[10]
+    cdef double _k11 = ctx.k[11]
+    cdef double _k12 = ctx.k[12]
+    cdef double _k13 = ctx.k[13]
+    cdef double _k14 = ctx.k[14]
+    cdef double _k15 = ctx.k[15]
+    cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
+    cdef double _k21 = ctx.k[21]
+    cdef double _k22 = ctx.k[22]
+    cdef double _k23 = ctx.k[23]
+    cdef double _k24 = ctx.k[24]
+    cdef double _k25 = ctx.k[25]
+    cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
+    cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double beta = _y[0]
+    cdef double y = _y[1]
+    cdef double z = _y[2]
+    cdef double x = _y[3]
+    cdef double betad = _y[4]
+    cdef double yd = _y[5]
+    cdef double zd = _y[6]
+    cdef double xd = _y[7]
+    cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
+
+    _Mm[0] = J
+    _Mm[1] = 0.0
+    _Mm[2] = 0.0
+    _Mm[3] = 0.0
+    _Mm[4] = 0.0
+    _Mm[5] = m_y
+    _Mm[6] = 0.0
+    _Mm[7] = 0.0
+    _Mm[8] = 0.0
+    _Mm[9] = 0.0
+    _Mm[10] = m_z
+    _Mm[11] = 0.0
+    _Mm[12] = 0.0
+    _Mm[13] = 0.0
+    _Mm[14] = 0.0
+    _Mm[15] = m_x
+    _Km[0] = 0.0 / 0.0
+    _Km[1] = 0.0 / 0.0
+    _Km[2] = 0.0 / 0.0
+    _Km[3] = 0.0 / 0.0
+    _Km[4] = 0.0 / 0.0
+    _Km[5] = 0.0 / 0.0
+    _Km[6] = 0.0 / 0.0
+    _Km[7] = 0.0 / 0.0
+    _Km[8] = 0.0 / 0.0
+    _Km[9] = 0.0 / 0.0
+    _Km[10] = 0.0 / 0.0
+    _Km[11] = 0.0 / 0.0
+    _Km[12] = 0.0 / 0.0
+    _Km[13] = 0.0 / 0.0
+    _Km[14] = 0.0 / 0.0
+    _Km[15] = 0.0 / 0.0
+
+
+cdef void refresh(Ctx* ctx) noexcept nogil:
+    """ctx.variant from the modes (bit i set when cam input i sits in a dwell); the cam
+    cache is emptied, its entries belong to the old segments."""
+    ctx.variant = 0
+    ctx.cache[0] = 0.0 / 0.0
+    ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
+    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+        ctx.variant |= 1
+
+
+cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
+    """Segment of every cam input at (t, y); the force elements keep their modes."""
+    cdef double h_m = ctx.p[0]
+    cdef double beta_m = ctx.p[1]
+    cdef double beta_0 = ctx.p[2]
+    cdef double R_b = ctx.p[3]
+    cdef double omega_s = ctx.p[4]
+    cdef double J = ctx.p[5]
+    cdef double k = ctx.p[6]
+    cdef double q_b = ctx.p[7]
+    cdef double m_x = ctx.p[8]
+    cdef double c_x = ctx.p[9]
+    cdef double q_x = ctx.p[10]
+    cdef double m_y = ctx.p[11]
+    cdef double c_y = ctx.p[12]
+    cdef double q_y = ctx.p[13]
+    cdef double m_z = ctx.p[14]
+    cdef double c_z = ctx.p[15]
+    cdef double q_z = ctx.p[16]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
+    cdef double nu_b = ctx.p[19]
+    cdef double nu_x = ctx.p[20]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
+    cdef double _k10 = ctx.k[10]
+    cdef double _k11 = ctx.k[11]
+    cdef double _k12 = ctx.k[12]
+    cdef double _k13 = ctx.k[13]
+    cdef double _k14 = ctx.k[14]
+    cdef double _k15 = ctx.k[15]
+    cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
+    cdef double _k21 = ctx.k[21]
+    cdef double _k22 = ctx.k[22]
+    cdef double _k23 = ctx.k[23]
+    cdef double _k24 = ctx.k[24]
+    cdef double _k25 = ctx.k[25]
+    cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
+    cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double beta = _y[0]
+    cdef double y = _y[1]
+    cdef double z = _y[2]
+    cdef double x = _y[3]
+    cdef double betad = _y[4]
+    cdef double yd = _y[5]
+    cdef double zd = _y[6]
+    cdef double xd = _y[7]
+
+    ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], beta/beta_m - beta_0/beta_m)
+    refresh(ctx)
+
+
+cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogil:
+    """Event functions; an event not armed in the current modes reads 1 (never crosses)."""
+    cdef double h_m = ctx.p[0]
+    cdef double beta_m = ctx.p[1]
+    cdef double beta_0 = ctx.p[2]
+    cdef double R_b = ctx.p[3]
+    cdef double omega_s = ctx.p[4]
+    cdef double J = ctx.p[5]
+    cdef double k = ctx.p[6]
+    cdef double q_b = ctx.p[7]
+    cdef double m_x = ctx.p[8]
+    cdef double c_x = ctx.p[9]
+    cdef double q_x = ctx.p[10]
+    cdef double m_y = ctx.p[11]
+    cdef double c_y = ctx.p[12]
+    cdef double q_y = ctx.p[13]
+    cdef double m_z = ctx.p[14]
+    cdef double c_z = ctx.p[15]
+    cdef double q_z = ctx.p[16]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
+    cdef double nu_b = ctx.p[19]
+    cdef double nu_x = ctx.p[20]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
+    cdef double _k10 = ctx.k[10]
+    cdef double _k11 = ctx.k[11]
+    cdef double _k12 = ctx.k[12]
+    cdef double _k13 = ctx.k[13]
+    cdef double _k14 = ctx.k[14]
+    cdef double _k15 = ctx.k[15]
+    cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
+    cdef double _k21 = ctx.k[21]
+    cdef double _k22 = ctx.k[22]
+    cdef double _k23 = ctx.k[23]
+    cdef double _k24 = ctx.k[24]
+    cdef double _k25 = ctx.k[25]
+    cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
+    cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double beta = _y[0]
+    cdef double y = _y[1]
+    cdef double z = _y[2]
+    cdef double x = _y[3]
+    cdef double betad = _y[4]
+    cdef double yd = _y[5]
+    cdef double zd = _y[6]
+    cdef double xd = _y[7]
+    cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
+
+    _g[0] = (_cam0[0]*h_m - _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) - x - z) if (ctx.mode[1] == 0.0) else 1.0  # roller_lift
+    _g[1] = (_cam0[0]*h_m - _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) - x - z) if (ctx.mode[1] == 1.0) else 1.0  # roller_land
+    _g[2] = (betad) if (ctx.mode[2] == 0.0) else 1.0  # camfric_stop_fwd
+    _g[3] = (betad) if (ctx.mode[2] == 2.0) else 1.0  # camfric_stop_bwd
+    _g[4] = (-1.001*nu_b*(R_b + _cam0[0]*h_m)*sqrt((_cam0[1]*_cam0[1])*(h_m*h_m)/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + 1.0)*((sqrt(((_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)*(_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)))) if ((ctx.mode[1] == 0.0)) else (0.0)) + fabs(2.0*sqrt(J)*sqrt(k)*q_b*(betad - omega_s) + k*(beta - omega_s*t) + ((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m)))*((-2.0*sqrt(c_x)*sqrt(m_x)*q_x*(_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) - betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) + xd + zd) - c_x*(-_cam0[0]*h_m + _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) + x + z)) if ((ctx.mode[1] == 0.0)) else (0.0)))) if (ctx.mode[2] == 1.0) else 1.0  # camfric_break
+    _g[5] = (xd) if (ctx.mode[3] == 0.0) else 1.0  # linkfric_stop_fwd
+    _g[6] = (xd) if (ctx.mode[3] == 2.0) else 1.0  # linkfric_stop_bwd
+    _g[7] = (-1.001*nu_x*((sqrt(((_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)*(_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)))) if ((ctx.mode[1] == 0.0)) else (0.0)) + fabs(F_0 + c_s*x - ((-2.0*sqrt(c_x)*sqrt(m_x)*q_x*(_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) - betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) + xd + zd) - c_x*(-_cam0[0]*h_m + _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) + x + z)) if ((ctx.mode[1] == 0.0)) else (0.0)))) if (ctx.mode[3] == 1.0) else 1.0  # linkfric_break
+    _g[8] = (beta/beta_m - beta_0/beta_m) - camlaw_hi(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_hi: next segment
+    _g[9] = (beta/beta_m - beta_0/beta_m) - camlaw_lo(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_lo: previous segment
+
+
+cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
+    """What event k does: new modes (and state resets) at its crossing."""
+    cdef double h_m = ctx.p[0]
+    cdef double beta_m = ctx.p[1]
+    cdef double beta_0 = ctx.p[2]
+    cdef double R_b = ctx.p[3]
+    cdef double omega_s = ctx.p[4]
+    cdef double J = ctx.p[5]
+    cdef double k = ctx.p[6]
+    cdef double q_b = ctx.p[7]
+    cdef double m_x = ctx.p[8]
+    cdef double c_x = ctx.p[9]
+    cdef double q_x = ctx.p[10]
+    cdef double m_y = ctx.p[11]
+    cdef double c_y = ctx.p[12]
+    cdef double q_y = ctx.p[13]
+    cdef double m_z = ctx.p[14]
+    cdef double c_z = ctx.p[15]
+    cdef double q_z = ctx.p[16]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
+    cdef double nu_b = ctx.p[19]
+    cdef double nu_x = ctx.p[20]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
+    cdef double _k10 = ctx.k[10]
+    cdef double _k11 = ctx.k[11]
+    cdef double _k12 = ctx.k[12]
+    cdef double _k13 = ctx.k[13]
+    cdef double _k14 = ctx.k[14]
+    cdef double _k15 = ctx.k[15]
+    cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
+    cdef double _k21 = ctx.k[21]
+    cdef double _k22 = ctx.k[22]
+    cdef double _k23 = ctx.k[23]
+    cdef double _k24 = ctx.k[24]
+    cdef double _k25 = ctx.k[25]
+    cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
+    cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double beta = _y[0]
+    cdef double y = _y[1]
+    cdef double z = _y[2]
+    cdef double x = _y[3]
+    cdef double betad = _y[4]
+    cdef double yd = _y[5]
+    cdef double zd = _y[6]
+    cdef double xd = _y[7]
+    cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
+
+    if _e == 0:  # roller_lift
+        if True:
+            ctx.mode[1] = 1  # roller = free
+    elif _e == 1:  # roller_land
+        if True:
+            ctx.mode[1] = 0  # roller = contact
+    elif _e == 2:  # camfric_stop_fwd
+        if (fabs(2.0*sqrt(J)*sqrt(k)*q_b*(betad - omega_s) + k*(beta - omega_s*t) + ((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m)))*((-2.0*sqrt(c_x)*sqrt(m_x)*q_x*(_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) - betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) + xd + zd) - c_x*(-_cam0[0]*h_m + _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) + x + z)) if ((ctx.mode[1] == 0.0)) else (0.0))) <= 1.001*nu_b*(R_b + _cam0[0]*h_m)*sqrt((_cam0[1]*_cam0[1])*(h_m*h_m)/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + 1.0)*((sqrt(((_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)*(_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)))) if ((ctx.mode[1] == 0.0)) else (0.0))):
+            _y[4] = 0.0  # betad
+            ctx.mode[2] = 1  # camfric = stick
+        elif True:
+            ctx.mode[2] = 2  # camfric = backward
+    elif _e == 3:  # camfric_stop_bwd
+        if (fabs(2.0*sqrt(J)*sqrt(k)*q_b*(betad - omega_s) + k*(beta - omega_s*t) + ((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m)))*((-2.0*sqrt(c_x)*sqrt(m_x)*q_x*(_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) - betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) + xd + zd) - c_x*(-_cam0[0]*h_m + _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) + x + z)) if ((ctx.mode[1] == 0.0)) else (0.0))) <= 1.001*nu_b*(R_b + _cam0[0]*h_m)*sqrt((_cam0[1]*_cam0[1])*(h_m*h_m)/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + 1.0)*((sqrt(((_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)*(_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)))) if ((ctx.mode[1] == 0.0)) else (0.0))):
+            _y[4] = 0.0  # betad
+            ctx.mode[2] = 1  # camfric = stick
+        elif True:
+            ctx.mode[2] = 0  # camfric = forward
+    elif _e == 4:  # camfric_break
+        if (2.0*sqrt(J)*sqrt(k)*q_b*(-betad + omega_s) + k*(-beta + omega_s*t) - ((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m)))*((2.0*sqrt(c_x)*sqrt(m_x)*q_x*(-_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) + betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) - xd - zd) + c_x*(_cam0[0]*h_m - _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) - x - z)) if ((ctx.mode[1] == 0.0)) else (0.0)) > 0.0):
+            ctx.mode[2] = 0  # camfric = forward
+        elif True:
+            ctx.mode[2] = 2  # camfric = backward
+    elif _e == 5:  # linkfric_stop_fwd
+        if (fabs(F_0 + c_s*x - ((-2.0*sqrt(c_x)*sqrt(m_x)*q_x*(_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) - betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) + xd + zd) - c_x*(-_cam0[0]*h_m + _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) + x + z)) if ((ctx.mode[1] == 0.0)) else (0.0))) <= 1.001*nu_x*((sqrt(((_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)*(_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)))) if ((ctx.mode[1] == 0.0)) else (0.0))):
+            _y[7] = 0.0  # xd
+            ctx.mode[3] = 1  # linkfric = stick
+        elif True:
+            ctx.mode[3] = 2  # linkfric = backward
+    elif _e == 6:  # linkfric_stop_bwd
+        if (fabs(F_0 + c_s*x - ((-2.0*sqrt(c_x)*sqrt(m_x)*q_x*(_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) - betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) + xd + zd) - c_x*(-_cam0[0]*h_m + _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) + x + z)) if ((ctx.mode[1] == 0.0)) else (0.0))) <= 1.001*nu_x*((sqrt(((_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)*(_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)))) if ((ctx.mode[1] == 0.0)) else (0.0))):
+            _y[7] = 0.0  # xd
+            ctx.mode[3] = 1  # linkfric = stick
+        elif True:
+            ctx.mode[3] = 0  # linkfric = forward
+    elif _e == 7:  # linkfric_break
+        if (-F_0 - c_s*x + ((2.0*sqrt(c_x)*sqrt(m_x)*q_x*(-_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) + betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) - xd - zd) + c_x*(_cam0[0]*h_m - _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) - x - z)) if ((ctx.mode[1] == 0.0)) else (0.0)) > 0.0):
+            ctx.mode[3] = 0  # linkfric = forward
+        elif True:
+            ctx.mode[3] = 2  # linkfric = backward
+    elif _e == 8:  # cam0_hi
+        ctx.mode[0] += 1
+    elif _e == 9:  # cam0_lo
+        ctx.mode[0] += -1
+    refresh(ctx)
+
+
+cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
+    rhs(t, _y, _dy, ctx)
+
+
+# the integration loops of camdyn.runtime, compiled here with rhs() inlined
+include "camdyn/runtime/loops.pxi"
+
+
+def initial_state(p):
+    """The default initial state for the parameter vector p (manifest order)."""
+    cdef double h_m = p[0]
+    cdef double beta_m = p[1]
+    cdef double beta_0 = p[2]
+    cdef double R_b = p[3]
+    cdef double omega_s = p[4]
+    cdef double J = p[5]
+    cdef double k = p[6]
+    cdef double q_b = p[7]
+    cdef double m_x = p[8]
+    cdef double c_x = p[9]
+    cdef double q_x = p[10]
+    cdef double m_y = p[11]
+    cdef double c_y = p[12]
+    cdef double q_y = p[13]
+    cdef double m_z = p[14]
+    cdef double c_z = p[15]
+    cdef double q_z = p[16]
+    cdef double F_0 = p[17]
+    cdef double c_s = p[18]
+    cdef double nu_b = p[19]
+    cdef double nu_x = p[20]
+    return [0.0, 0.0, 0.0, 0.0, omega_s, 0.0, 0.0, 0.0]
+
+
+def cam_time_affine(p):
+    """Per cam input, (a, b) with argument a t + b, or None when it depends on the state."""
+    cdef double h_m = p[0]
+    cdef double beta_m = p[1]
+    cdef double beta_0 = p[2]
+    cdef double R_b = p[3]
+    cdef double omega_s = p[4]
+    cdef double J = p[5]
+    cdef double k = p[6]
+    cdef double q_b = p[7]
+    cdef double m_x = p[8]
+    cdef double c_x = p[9]
+    cdef double q_x = p[10]
+    cdef double m_y = p[11]
+    cdef double c_y = p[12]
+    cdef double q_y = p[13]
+    cdef double m_z = p[14]
+    cdef double c_z = p[15]
+    cdef double q_z = p[16]
+    cdef double F_0 = p[17]
+    cdef double c_s = p[18]
+    cdef double nu_b = p[19]
+    cdef double nu_x = p[20]
+    return [None]
+
+
+cdef ModelC _model
+_model.abi_version = CAMDYN_ABI
+_model.n_q = _NQ
+_model.n_states = _NS
+_model.n_params = 21
+_model.n_outputs = 10
+_model.n_families = 1
+_model.n_instances = _NCAM
+_model.n_modes = _NM
+_model.n_events = _NE
+_model.n_const = 51
+_model.n_cache = 5
+_model.prepare = prepare
+_model.rhs = rhs_ptr
+_model.outputs = outputs
+_model.update_modes = update_modes
+_model.refresh = refresh
+_model.events = events
+_model.on_event = on_event
+_model.mass_stiffness = mass_stiffness
+_model.run = run_loops
+
+MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
+"""The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""
+
+_MANIFEST_JSON = """
+{
+ "cam_families": [
+  "H"
+ ],
+ "cam_instances": [
+  {
+   "argument": "beta/beta_m - beta_0/beta_m",
+   "family": "H",
+   "time_affine": false
+  }
+ ],
+ "events": [
+  "roller_lift",
+  "roller_land",
+  "camfric_stop_fwd",
+  "camfric_stop_bwd",
+  "camfric_break",
+  "linkfric_stop_fwd",
+  "linkfric_stop_bwd",
+  "linkfric_break",
+  "cam0_hi",
+  "cam0_lo"
+ ],
+ "modes": [
+  {
+   "doc": "roller on the cam or lifted off (follower jump)",
+   "initial": "contact",
+   "name": "roller",
+   "values": [
+    "contact",
+    "free"
+   ]
+  },
+  {
+   "doc": "friction on the cam: slipping forward, sticking, backward",
+   "initial": "forward",
+   "name": "camfric",
+   "values": [
+    "forward",
+    "stick",
+    "backward"
+   ]
+  },
+  {
+   "doc": "friction in the follower linkage: forward, sticking, backward",
+   "initial": "stick",
+   "name": "linkfric",
+   "values": [
+    "forward",
+    "stick",
+    "backward"
+   ]
+  }
+ ],
+ "n_q": 4,
+ "name": "dynacam_rcrc_yzfls",
+ "options": [
+  [
+   "cam",
+   "radial"
+  ],
+  [
+   "cam_friction",
+   true
+  ],
+  [
+   "external",
+   false
+  ],
+  [
+   "gear",
+   "rigid"
+  ],
+  [
+   "linkage_friction",
+   true
+  ],
+  [
+   "motor",
+   "constant"
+  ],
+  [
+   "roller",
+   "contact"
+  ],
+  [
+   "shaft_y",
+   true
+  ],
+  [
+   "shaft_z",
+   true
+  ],
+  [
+   "spring",
+   true
+  ]
+ ],
+ "outputs": [
+  {
+   "doc": "cam angle over the rise angle (6.17)",
+   "name": "B",
+   "unit": "1"
+  },
+  {
+   "doc": "follower acceleration x'' t_m^2/h_m",
+   "name": "Xdd",
+   "unit": "1"
+  },
+  {
+   "doc": "cam angular acceleration beta'' t_m^2/beta_m",
+   "name": "Bdd",
+   "unit": "1"
+  },
+  {
+   "doc": "positional error over the stroke, (x - h(beta))/h_m",
+   "name": "U",
+   "unit": "1"
+  },
+  {
+   "doc": "follower acceleration",
+   "name": "xdd",
+   "unit": "m/s^2"
+  },
+  {
+   "doc": "shaft torque driving the cam (6.10)",
+   "name": "torque",
+   "unit": "N m"
+  },
+  {
+   "doc": "force between cam and follower linkage (6.42)",
+   "name": "Fx",
+   "unit": "N"
+  },
+  {
+   "doc": "variation of the fictitious angular velocity seen by the roller (2.54)",
+   "name": "speed_var",
+   "unit": "1"
+  },
+  {
+   "doc": "cam slope (6.20)",
+   "name": "tan_alpha",
+   "unit": "1"
+  },
+  {
+   "doc": "gap between roller and cam (negative: pressed)",
+   "name": "roller_gap",
+   "unit": "m"
+  }
+ ],
+ "parameters": [
+  {
+   "default": 0.015,
+   "doc": "stroke of the output member (reduced)",
+   "high": null,
+   "low": 0.0,
+   "name": "h_m",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < h_m",
+   "unit": "m"
+  },
+  {
+   "default": 0.436,
+   "doc": "cam angle of the rise",
+   "high": null,
+   "low": 0.0,
+   "name": "beta_m",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < beta_m",
+   "unit": "rad"
+  },
+  {
+   "default": 0.0,
+   "doc": "cam angle where the rise starts",
+   "high": null,
+   "low": -100.0,
+   "name": "beta_0",
+   "open_high": false,
+   "open_low": false,
+   "range": "-100 <= beta_0",
+   "unit": "rad"
+  },
+  {
+   "default": 0.0675,
+   "doc": "base pitch radius (reduced) (6.21)",
+   "high": null,
+   "low": 0.0,
+   "name": "R_b",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < R_b",
+   "unit": "m"
+  },
+  {
+   "default": 4.95,
+   "doc": "nominal angular velocity of the camshaft",
+   "high": null,
+   "low": 0.0,
+   "name": "omega_s",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < omega_s",
+   "unit": "rad/s"
+  },
+  {
+   "default": 0.01,
+   "doc": "polar moment of inertia of the cam, reduced to the output member",
+   "high": null,
+   "low": 0.0,
+   "name": "J",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < J",
+   "unit": "kg m^2"
+  },
+  {
+   "default": 1000.0,
+   "doc": "torsional stiffness between gear and cam (6.10)",
+   "high": null,
+   "low": 0.0,
+   "name": "k",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < k",
+   "unit": "N m/rad"
+  },
+  {
+   "default": 0.05,
+   "doc": "relative damping of the torsion (6.47)",
+   "high": 1.0,
+   "low": 0.0,
+   "name": "q_b",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= q_b <= 1",
+   "unit": "1"
+  },
+  {
+   "default": 1.46,
+   "doc": "equivalent follower mass",
+   "high": null,
+   "low": 0.0,
+   "name": "m_x",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < m_x",
+   "unit": "kg"
+  },
+  {
+   "default": 376000.0,
+   "doc": "linkage stiffness at the roller (6.42)",
+   "high": null,
+   "low": 0.0,
+   "name": "c_x",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < c_x",
+   "unit": "N/m"
+  },
+  {
+   "default": 0.023,
+   "doc": "relative damping of the linkage (6.47)",
+   "high": 1.0,
+   "low": 0.0,
+   "name": "q_x",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= q_x <= 1",
+   "unit": "1"
+  },
+  {
+   "default": 0.1,
+   "doc": "cam mass in the tangential direction (6.16)",
+   "high": null,
+   "low": 0.0,
+   "name": "m_y",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < m_y",
+   "unit": "kg"
+  },
+  {
+   "default": 1000000.0,
+   "doc": "tangential shaft stiffness (6.12)",
+   "high": null,
+   "low": 0.0,
+   "name": "c_y",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < c_y",
+   "unit": "N/m"
+  },
+  {
+   "default": 0.05,
+   "doc": "relative damping, tangential (6.47)",
+   "high": 1.0,
+   "low": 0.0,
+   "name": "q_y",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= q_y <= 1",
+   "unit": "1"
+  },
+  {
+   "default": 0.1,
+   "doc": "cam mass along the follower (6.15)",
+   "high": null,
+   "low": 0.0,
+   "name": "m_z",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < m_z",
+   "unit": "kg"
+  },
+  {
+   "default": 1000000.0,
+   "doc": "shaft stiffness along the follower (6.11)",
+   "high": null,
+   "low": 0.0,
+   "name": "c_z",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < c_z",
+   "unit": "N/m"
+  },
+  {
+   "default": 0.05,
+   "doc": "relative damping along the follower (6.47)",
+   "high": 1.0,
+   "low": 0.0,
+   "name": "q_z",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= q_z <= 1",
+   "unit": "1"
+  },
+  {
+   "default": 100.0,
+   "doc": "follower spring preload at x = 0 (6.45)",
+   "high": null,
+   "low": 0.0,
+   "name": "F_0",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= F_0",
+   "unit": "N"
+  },
+  {
+   "default": 10000.0,
+   "doc": "follower spring stiffness (6.45)",
+   "high": null,
+   "low": 0.0,
+   "name": "c_s",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= c_s",
+   "unit": "N/m"
+  },
+  {
+   "default": 0.01,
+   "doc": "friction coefficient on the cam (6.13)",
+   "high": 1.0,
+   "low": 0.0,
+   "name": "nu_b",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= nu_b <= 1",
+   "unit": "1"
+  },
+  {
+   "default": 0.01,
+   "doc": "friction coefficient of the follower linkage (6.43)",
+   "high": 1.0,
+   "low": 0.0,
+   "name": "nu_x",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= nu_x <= 1",
+   "unit": "1"
+  }
+ ],
+ "reference": "thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18",
+ "residual": {
+  "acceleration": "Xdd",
+  "error": "U",
+  "rise_end": 1.0,
+  "rise_state": "B"
+ },
+ "source_hash": "sha256:38f51eea7b4df33419d505fefe9fecae0c92e3d2738852226abd4a73c87fa423",
+ "states": [
+  {
+   "doc": "cam angle",
+   "initial": 0.0,
+   "name": "beta",
+   "scale": 1.0,
+   "unit": "rad"
+  },
+  {
+   "doc": "tangential deflection of the camshaft",
+   "initial": 0.0,
+   "name": "y",
+   "scale": 1e-05,
+   "unit": "m"
+  },
+  {
+   "doc": "deflection of the camshaft along the follower",
+   "initial": 0.0,
+   "name": "z",
+   "scale": 1e-05,
+   "unit": "m"
+  },
+  {
+   "doc": "follower output position",
+   "initial": 0.0,
+   "name": "x",
+   "scale": 0.01,
+   "unit": "m"
+  },
+  {
+   "doc": "rate of beta",
+   "initial": "omega_s",
+   "name": "betad",
+   "scale": 1.0,
+   "unit": "rad/s"
+  },
+  {
+   "doc": "rate of y",
+   "initial": 0.0,
+   "name": "yd",
+   "scale": 1e-05,
+   "unit": "m/s"
+  },
+  {
+   "doc": "rate of z",
+   "initial": 0.0,
+   "name": "zd",
+   "scale": 1e-05,
+   "unit": "m/s"
+  },
+  {
+   "doc": "rate of x",
+   "initial": 0.0,
+   "name": "xd",
+   "scale": 0.01,
+   "unit": "m/s"
+  }
+ ],
+ "time": {
+  "name": "t",
+  "unit": "s"
+ },
+ "title": "DYNACAM, cam mechanism with four degrees of freedom and drive"
+}
+"""
+MANIFEST = json.loads(_MANIFEST_JSON)
+"""States, parameters (defaults, units, ranges), outputs, cam inputs, modes, events, source hash."""
