@@ -145,6 +145,19 @@ def nominal_T(scene: Scene, res) -> np.ndarray:
     return res.t / t_m + scene.T_start
 
 
+def sample_at(scene: Scene, res, T: float, name: str = "Xdd") -> float:
+    """Output ``name`` at the nominal time T, through the dense output."""
+    t_m = res.params["beta_m"] / res.params["omega_s"]
+    return float(res.sample(np.array([(T - scene.T_start) * t_m]))[name][0])
+
+
+def mode_changes(scene: Scene, res, mode: str) -> list:
+    """(T, new value) at every switch of a force element's mode, in order."""
+    T = nominal_T(scene, res)
+    values = res.element_mode(mode)
+    return [(float(T[i + 1]), values[i + 1]) for i in np.flatnonzero(values[1:] != values[:-1])]
+
+
 def summarize(scene: Scene, model, res, ch: dict, cpu: float) -> dict:
     T = nominal_T(scene, res)
     Xdd = res["Xdd"]

@@ -76,22 +76,11 @@ def indexing():
     return sc, *dynacam.run(sc)
 
 
-def _Xdd_at(sc, res, summary, T):
-    t_m = summary["characteristics"]["t_m"]
-    return res.sample(np.array([(T - sc.T_start) * t_m]))["Xdd"][0]
-
-
-def _without_backlash(sc):
-    return scenes.without_backlash(sc)
-
-
 def test_indexing_gear_impact_at_T_0_58(indexing):
     """Sec. 7.4.4: the gear teeth lift off after T = 0.5, where the torque reverses, and 'the
     impact of the gear teeth at T = 0.58' follows.  Tolerance +- 0.03 in T."""
     sc, s, res = indexing
-    T = dynacam.nominal_T(sc, res)
-    gear = res.element_mode("gear")
-    changes = [(T[i + 1], gear[i + 1]) for i in np.flatnonzero(gear[1:] != gear[:-1]) if T[i + 1] > 0.3]
+    changes = [c for c in dynacam.mode_changes(sc, res, "gear") if c[0] > 0.3]
     lift, impact = changes[0], changes[1]
     assert lift[1] == "free" and lift[0] == pytest.approx(0.5, abs=0.03)
     assert impact[1] == "back" and impact[0] == pytest.approx(0.58, abs=0.03)
@@ -101,7 +90,7 @@ def test_indexing_backlash_Xdd_at_T_0_68_fig_7_16(indexing):
     """Fig. 7.16 (zero damping and viscosity): X''_0.68 = -16; sec. 7.4.4's estimate by (3.12),
     (3.16) gives -16.2.  Tolerance 10 %."""
     sc, s, res = indexing
-    assert _Xdd_at(sc, res, s, 0.68) == pytest.approx(-16.0, rel=0.10)
+    assert dynacam.sample_at(sc, res, 0.68) == pytest.approx(-16.0, rel=0.10)
 
 
 def test_indexing_without_backlash_fig_7_15_and_impact_estimate(indexing):
@@ -111,13 +100,13 @@ def test_indexing_without_backlash_fig_7_15_and_impact_estimate(indexing):
     from camdyn.derive import examples
 
     sc, s, res = indexing
-    sc0 = _without_backlash(sc)
+    sc0 = scenes.without_backlash(sc)
     assert sc0.variant == "dynacam_acrb_yz"
     s0, res0 = dynacam.run(sc0)
-    x0 = _Xdd_at(sc0, res0, s0, 0.68)
+    x0 = dynacam.sample_at(sc0, res0, 0.68)
     assert x0 == pytest.approx(-7.4, rel=0.05)
     estimate = examples.indexing_impact(Xdd_s0=x0).Xdd
-    assert _Xdd_at(sc, res, s, 0.68) == pytest.approx(estimate, rel=0.10)
+    assert dynacam.sample_at(sc, res, 0.68) == pytest.approx(estimate, rel=0.10)
 
 
 def test_indexing_amplitude_grows_towards_T_1_without_damping(indexing):
@@ -154,7 +143,7 @@ def test_backlash_variant_tends_to_the_backlash_free_one(indexing):
     from 10 % of the peak at s_g = 1e-4 rad to under 1 % at s_g = 1e-6 rad (s_r = s_g/100 m).
     It levels off near 0.3 % (event location at rtol 1e-8 with undamped contacts)."""
     sc, _, _ = indexing
-    sr, rr = dynacam.run(_without_backlash(sc))
+    sr, rr = dynacam.run(scenes.without_backlash(sc))
     t = np.linspace(0.0, rr.t[-1], 400)
     ref = rr.sample(t)["Xdd"]
     diffs = []

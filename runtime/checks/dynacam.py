@@ -26,18 +26,17 @@ def _run(name: str, backlash: bool = True):
 
 
 def _Xdd(name: str, T: float, backlash: bool = True) -> float:
-    sc, s, res = _run(name, backlash)
-    return float(res.sample(np.array([(T - sc.T_start) * s["characteristics"]["t_m"]]))["Xdd"][0])
+    from camdyn.runtime import dynacam
+
+    sc, _, res = _run(name, backlash)
+    return dynacam.sample_at(sc, res, T)
 
 
 def _gear_impact_T() -> float:
     from camdyn.runtime import dynacam
 
     sc, _, res = _run("indexing")
-    T = dynacam.nominal_T(sc, res)
-    gear = res.element_mode("gear")
-    hits = [T[i + 1] for i in np.flatnonzero(gear[1:] != gear[:-1]) if gear[i + 1] == "back"]
-    return float(hits[0])
+    return next(T for T, value in dynacam.mode_changes(sc, res, "gear") if value == "back")
 
 
 def _impact_estimate() -> float:
