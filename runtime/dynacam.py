@@ -185,6 +185,27 @@ def summarize(scene: Scene, model, res, ch: dict, cpu: float) -> dict:
     return out
 
 
+def reduced_models(scene: Scene, summary: dict) -> dict:
+    """Residual acceleration amplitude U0dd of the scene's run beside that of the reduced
+    models with the same characteristic numbers (thesis sec. 8.2.4, 8.2.5, fig. 8.3 curves
+    (4), (5), (6)): CAMSHAFT-2 at (tau, Fa, Fv) (5.15), (5.16) and CAMSHAFT-1 at (tau, Fa)
+    (4.15), each over the same dwell, 1 < T < T_end.
+
+    The comparison is the thesis's only when the scene is undamped, without follower spring
+    and with the roller held on the cam, as fig. 8.3's curves (4)-(6) are.
+    """
+    from .residual import residual
+    from .simulate import simulate
+
+    tau, Fa, Fv = summary["tau"], summary["Fa"], summary["Fv"]
+    out = {"4dof": summary["U0dd"]}
+    for key, model, params in (("2dof", "camshaft2", {"tau": tau, "Fa": Fa, "Fv": Fv}),
+                               ("1dof", "camshaft1", {"tau": tau, "Fa": Fa})):
+        res = simulate(model, params, scene.T_end, "dp54", rtol=1e-10)
+        out[key] = residual(res).U0dd
+    return out
+
+
 DIAGRAMS = (
     ("Xdd", "X''", "acceleration of the output member, x'' t_m^2/h_m"),
     ("Bdd", "B''", "angular acceleration of the cam, beta'' t_m^2/beta_m"),

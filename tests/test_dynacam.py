@@ -151,3 +151,51 @@ def test_backlash_variant_tends_to_the_backlash_free_one(indexing):
         s, r = dynacam.run(scenes.replace(sc, parameters={"s_g": s_g, "s_r": s_g / 100}))
         diffs.append(np.max(np.abs(r.sample(t)["Xdd"] - ref)) / np.max(np.abs(ref)))
     assert diffs[1] < 0.01 < diffs[0]
+
+
+# -- item 5: the model comparison of sec. 8.2 (fig. 8.1a/b, 8.3a/b curves (4), (5), (6)) -----------
+@pytest.fixture(scope="module")
+def comparison():
+    """fig8_1a.toml (c_z' << c_x) and fig8_1b.toml (c_z' >> c_x): the 4-DOF run and the U0dd of
+    the 4-, 2- and 1-DOF models at the same tau, Fa, Fv."""
+    out = {}
+    for case in ("a", "b"):
+        sc = scenes.load(f"fig8_1{case}")
+        s, _ = dynacam.run(sc)
+        out[case] = (s, dynacam.reduced_models(sc, s))
+    return out
+
+
+@pytest.mark.parametrize("case, printed", [("a", (0.161, 1.64, 2.42)), ("b", (0.141, 2.04, 2.68))])
+def test_comparison_scenes_have_the_printed_characteristics(comparison, case, printed):
+    """Fig. 8.1a/b print tau, Fa, Fv; the scene files split them over the degrees of freedom
+    (their header says how) and must give them back by (4.14), (4.39), (5.52) to 1e-4."""
+    s, _ = comparison[case]
+    assert (s["tau"], s["Fa"], s["Fv"]) == pytest.approx(printed, rel=1e-4)
+
+
+def test_two_dof_model_overestimates_when_c_z_is_low_sec_8_2_4(comparison):
+    """Sec. 8.2.4, fig. 8.3a: with c_z' << c_x 'the X-curve (5) [2 DOF] deviates from curve (4)
+    [4 DOF] by a factor of 2.45'; replacing the 4-DOF model by CAMSHAFT-2 'is not permissible'.
+    Ratio of the residual acceleration amplitudes U0dd (1 < T < 1.5), tolerance 10 %.  The
+    factor depends on the cam's mass along z, which fig. 8.1a does not show legibly: with the
+    taken m_z' = 0.5 kg it is 2.44, with 0.2 kg it would be 1.35 (still far from 1)."""
+    _, u = comparison["a"]
+    assert u["2dof"] / u["4dof"] == pytest.approx(2.45, rel=0.10)
+
+
+def test_two_dof_model_holds_when_c_z_is_high_sec_8_2_4(comparison):
+    """Sec. 8.2.4, fig. 8.3b: with c_z' >> c_x the curves (4) and (5) 'differ only by a factor of
+    1.08', the 4-DOF model 'resembles that with two degrees of freedom'.  Ours: 1.01; asserted
+    within 0.1 of the thesis's 1.08 (read from the diagram)."""
+    _, u = comparison["b"]
+    assert abs(u["2dof"] / u["4dof"] - 1.08) <= 0.1
+
+
+@pytest.mark.parametrize("case", ["a", "b"])
+def test_one_dof_model_close_to_two_dof_at_high_Fv_sec_8_2_5(comparison, case):
+    """Sec. 8.2.5: 'the curves (6) of the single-degree-of-freedom model and those of the
+    two-degrees-of-freedom model (5) show hardly any differences, due to the high Fv-numbers'
+    (2.42, 2.68): CAMSHAFT-1 and CAMSHAFT-2 U0dd within 10 % (ours: 3 % and 8 %)."""
+    _, u = comparison[case]
+    assert u["1dof"] / u["2dof"] == pytest.approx(1.0, abs=0.10)

@@ -45,6 +45,19 @@ def _impact_estimate() -> float:
     return examples.indexing_impact(Xdd_s0=_Xdd("indexing", 0.68, backlash=False)).Xdd
 
 
+@lru_cache(maxsize=None)
+def _ladder(case: str) -> dict:
+    from camdyn.runtime import dynacam
+
+    sc, summary, _ = _run(f"fig8_1{case}")
+    return dynacam.reduced_models(sc, summary)
+
+
+def _factor(case: str, num: str, den: str) -> float:
+    u = _ladder(case)
+    return u[num] / u[den]
+
+
 def checks() -> list:
     return [
         Check("sec7_4_4.gear_impact_T", "indexing: T of the gear-teeth impact after the torque reversal",
@@ -63,4 +76,16 @@ def checks() -> list:
         Check("fig7_12.speed_variation", "spring-loaded: largest fictitious angular velocity variation",
               "sec. 7.6, fig. 7.12", "0.40", lambda: _run("spring_loaded")[1]["speed_variation_max"],
               rule="rel:0.25"),
+            Check("sec8_2_4.factor_a", "c_z' << c_x: U0dd of CAMSHAFT-2 over the 4-DOF model's",
+              "sec. 8.2.4, fig. 8.3a", "2.45", lambda: _factor("a", "2dof", "4dof"), rule="rel:0.10",
+              note="scene fig8_1a.toml; m_z' = 0.5 kg taken (0.2 kg gives 1.35)"),
+        Check("sec8_2_4.factor_b", "c_z' >> c_x: U0dd of CAMSHAFT-2 over the 4-DOF model's",
+              "sec. 8.2.4, fig. 8.3b", "1.08", lambda: _factor("b", "2dof", "4dof"), rule="abs:0.10",
+              note="scene fig8_1b.toml"),
+        Check("sec8_2_5.one_vs_two_a", "c_z' << c_x: U0dd of CAMSHAFT-1 over CAMSHAFT-2's",
+              "sec. 8.2.5, fig. 8.3a", "1", lambda: _factor("a", "1dof", "2dof"),
+              rule="abs:0.10", note="'hardly any differences'"),
+        Check("sec8_2_5.one_vs_two_b", "c_z' >> c_x: U0dd of CAMSHAFT-1 over CAMSHAFT-2's",
+              "sec. 8.2.5, fig. 8.3b", "1", lambda: _factor("b", "1dof", "2dof"),
+              rule="abs:0.10", note="'hardly any differences'"),
     ]
