@@ -259,3 +259,42 @@ def impact_as_printed(mech: IndexingMechanism = INDEXING) -> dict[str, float]:
     tau_T = tau_at(tau, Fa, float(p["Hd_068"].text))
     Udd = impact.Udd_sn(float(p["r_e"].text), float(p["tau_068"].text))
     return {"tau_068": tau_T, "Udd_sn": Udd, "Xdd_068": float(p["Xdd_s0_068"].text) - Udd}
+
+
+def contact_ratio_rack(z: float, alpha: float) -> float:
+    """Contact ratio of a gear of z standard teeth (addendum = module) meshing with a rack,
+    the worm's axial section: the path of contact over the base pitch, pi m cos alpha.  The
+    App. 6 listing evaluates the same expression (EPS, for the contact ratio of (6.3))."""
+    path_wheel = math.sqrt((z / 2 + 1) ** 2 - (z / 2 * math.cos(alpha)) ** 2) - z / 2 * math.sin(alpha)
+    path_rack = 1 / math.sin(alpha)
+    return (path_wheel + path_rack) / (math.pi * math.cos(alpha))
+
+
+def gear_squeeze_coefficient(eta: float, eps: float, b: float, R_e: float, R: float) -> float:
+    """V_T of the generated model, so that the torque the gear film passes is
+    M = V_T (phi' - phi_r') gap^(-3/2) (gap in rad): (6.5), (6.6) with the teeth at the pitch
+    radius R of the wheel, V_T = 12 pi eta eps b (R_e/2)^(3/2) R^(1/2).  (Reducing everything
+    to R_b' first by (2.59), as the thesis does, gives the same number.)"""
+    return 12 * math.pi * eta * eps * b * (R_e / 2) ** 1.5 * math.sqrt(R)
+
+
+def roller_squeeze_coefficient(eta: float, b: float, R_r: float) -> float:
+    """V_R = 12 pi eta' b' (R_r'/2)^(3/2) (6.38), reduced magnitudes, so that the roller film
+    passes F_x = V_R (h_c' - h_r') gap^(-3/2) (6.37)."""
+    return 12 * math.pi * eta * b * (R_r / 2) ** 1.5
+
+
+def indexing_squeeze(mech: IndexingMechanism = INDEXING) -> dict[str, float]:
+    """The squeeze coefficients of the indexing mechanism from the App. 6 data, reduced to the
+    output member (roller: lengths times i, viscosity over i^3, (2.55), (2.59))."""
+    i = mech.i.value
+    alpha = mech.pressure_angle.value
+    z, m_t = mech.gear_teeth.value, mech.gear_module.value
+    eps = contact_ratio_rack(z, alpha)
+    R_e = m_t * z * math.sin(alpha) / 2          # (6.4)
+    V_T = gear_squeeze_coefficient(mech.eta_gear.value, eps, mech.gear_width.value, R_e,
+                                   mech.gear_radius.value)
+    V_R = roller_squeeze_coefficient(mech.eta_roller.value / i**3, i * mech.roller_width.value,
+                                     i * mech.roller_radius.value)
+    return {"eps": eps, "R_e": R_e, "V_T": V_T, "V_R": V_R}
+

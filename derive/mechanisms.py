@@ -114,6 +114,15 @@ class IndexingMechanism:
     s_half_out: Quantity
     q_linkage: Quantity
     q_shaft: Quantity
+    eta_roller: Quantity
+    roller_width: Quantity
+    roller_radius: Quantity
+    eta_gear: Quantity
+    gear_module: Quantity
+    gear_teeth: Quantity
+    gear_width: Quantity
+    gear_radius: Quantity
+    pressure_angle: Quantity
     printed: dict = field(default_factory=dict, compare=False)
 
     name = "indexing mechanism"
@@ -204,6 +213,24 @@ INDEXING = IndexingMechanism(
                  "q_x = q_y = q_z of the simulation of fig. 7.19; fig. 7.11 used instead "
                  "q = q0 exp(b |H' - X'|), q0 = 0.013, b = 19 (sec. 7.4.5)"),
     q_shaft=_q(0.4, "1", "fig. 7.19", "0.4", "q_beta of the simulation of fig. 7.19"),
+    # squeeze films (sec. 6.5.2, 6.5.12; App. 4): only the App. 6 listing gives these
+    eta_roller=_q(0.1, "Pa s", "App. 6 listing, VISRS", note="lubricant viscosity in the cam groove; "
+                  "scan 'Y!SRS•Ool' read VISRS=0.1 (the listing reduces it as VISR = VISRS/IX**3, (2.59))"),
+    roller_width=_q(14e-3, "m", "App. 6 listing, BROLS", note="scan 'BR0LSe14.E.3': 14 mm"),
+    roller_radius=_q(15e-3, "m", "App. 6 listing, RROLS",
+                     note="scan 'RROLSW15 0 1•3' read 15.E-3; R_e' = R_r' for a roller on a cam of "
+                          "much larger curvature radius (6.36)"),
+    eta_gear=_q(0.1, "Pa s", "App. 6 listing, VISTW", note="lubricant viscosity of the worm gear; "
+                "scan 'VISTW•O.I'"),
+    gear_module=_q(4e-3, "m", "App. 6 listing, MODULW", note="scan 'M0DULiol•4oE•3': 4 mm"),
+    gear_teeth=_q(54, "1", "App. 6 listing, ZT",
+                  note="scan 'zr•S4' read ZT=54; it gives the pitch radius m z/2 = 0.108 m that the "
+                       "listing also sets ('R~•Oo108')"),
+    gear_width=_q(2.7e-2, "m", "App. 6 listing, BTW", note="scan '.aTW•2.71i•2' read 2.7E-2"),
+    gear_radius=_q(0.108, "m", "App. 6 listing", note="pitch radius of the worm wheel on the camshaft"),
+    pressure_angle=_q(math.radians(20), "rad", "fig. 6.4; App. 6 listing",
+                      note="fig. 6.4 prints alpha_n = 20 deg; the listing's 0.085 m z is "
+                           "(m z sin 20 deg/2)/2 = R_e'/2 (6.4)"),
     printed={
         "c_c": Printed("3.65e6", "N/m", "App. 7, A.7.2 (5); table 7-I",
                        "1/c_c = 1/c1 + 1/c_4z' (4.3), tan alpha = 0"),

@@ -38,6 +38,9 @@ class ConstantTable:
             return expr
         if self._const(expr):
             return self._symbol(expr)
+        if isinstance(expr, sp.Piecewise):
+            # a piece (value, condition) is no expression of its own: hoist inside it
+            return sp.Piecewise(*[(self.hoist(e), self.hoist(c)) for e, c in expr.args])
         if expr.is_Mul:
             const = [a for a in expr.args if self._const(a)]
             other = [a for a in expr.args if not self._const(a)]

@@ -4,7 +4,7 @@
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:0ad777e2ff372fb7c449a9f8f764bbcb193e2c19390519dfadd88bea6d56f96a
+# Source hash: sha256:347f5e213ab558582dc4001d4fefee5ca7cff535c2a92098389a5ca7d391cd67
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -152,6 +152,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[35] = _c5  # _k35
     ctx.k[36] = -_c3  # _k36
     ctx.k[37] = (1.0/omega_s)  # _k37
+    ctx.k[38] = -s_g  # _k38
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -213,6 +214,7 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k35 = ctx.k[35]
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -324,6 +326,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k35 = ctx.k[35]
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -341,20 +344,24 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
 
     cdef double _o0 = _cam0[0]*_k27 + x
     cdef double _o1 = _k29*(betad - omega_s)
-    cdef double _o2 = _k33*(_cam0[1]*_k32*yd + betad*(_cam0[1]*_k30 + _cam0[2]*_k31*y) - xd - zd)
-    cdef double _o3 = _cam0[1]*_k35
-    cdef double _o4 = _o0 + _o3*y + z
+    cdef double _o2 = (ctx.mode[1] == 0.0)
+    cdef double _o3 = (ctx.mode[1] == 1.0)
+    cdef double _o4 = _k33*(_cam0[1]*_k32*yd + betad*(_cam0[1]*_k30 + _cam0[2]*_k31*y) - xd - zd)
+    cdef double _o5 = (ctx.mode[2] == 0.0)
+    cdef double _o6 = (ctx.mode[2] == 1.0)
+    cdef double _o7 = _cam0[1]*_k35
+    cdef double _o8 = _o0 + _o7*y + z
     _out[0] = _k24*(_k23 + beta)  # B
     _out[1] = _k25*_dy[7]  # Xdd
     _out[2] = _k26*_dy[4]  # Bdd
     _out[3] = _k28*_o0  # U
     _out[4] = _dy[7]  # xdd
-    _out[5] = ((_k10*beta + _k11*t - _o1) if ((ctx.mode[1] == 0.0)) else (((0.0) if ((ctx.mode[1] == 1.0)) else (-_o1 + k*(-beta + omega_s*t + s_g)))))  # torque
-    _out[6] = ((_cam0[0]*_k1 + _cam0[1]*_k3*y + _k0*x + _k0*z + _o2) if ((ctx.mode[2] == 0.0)) else (((0.0) if ((ctx.mode[2] == 1.0)) else (_k0*(_k34 + _o4) + _o2))))  # Fx
+    _out[5] = ((_k10*beta + _k11*t - _o1) if (_o2) else (((0.0) if (_o3) else (-_o1 + k*(-beta + omega_s*t + s_g)))))  # torque
+    _out[6] = ((_cam0[0]*_k1 + _cam0[1]*_k3*y + _k0*x + _k0*z + _o4) if (_o5) else (((0.0) if (_o6) else (_k0*(_k34 + _o8) + _o4))))  # Fx
     _out[7] = _k37*(_k36*yd + betad) - 1.0  # speed_var
-    _out[8] = _o3  # tan_alpha
-    _out[9] = -beta + omega_s*t  # gear_gap
-    _out[10] = _o4  # roller_gap
+    _out[8] = _o7  # tan_alpha
+    _out[9] = ((0.0) if (_o2) else (((-beta + omega_s*t) if (_o3) else (_k38))))  # gear_gap
+    _out[10] = ((0.0) if (_o5) else (((_o8) if (_o6) else (s_r))))  # roller_gap
 
 
 cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, Ctx* ctx) noexcept nogil:
@@ -416,6 +423,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k35 = ctx.k[35]
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -530,6 +538,7 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k35 = ctx.k[35]
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -602,6 +611,7 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double _k35 = ctx.k[35]
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -684,6 +694,7 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k35 = ctx.k[35]
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -792,7 +803,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 38
+_model.n_const = 39
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -944,7 +955,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "input minus cam angle: 0 on the driving flank, -s_g on the other",
+   "doc": "input minus gear output angle (6.1): 0 on the driving flank, -s_g on the other",
    "name": "gear_gap",
    "unit": "rad"
   },
@@ -1172,7 +1183,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:0ad777e2ff372fb7c449a9f8f764bbcb193e2c19390519dfadd88bea6d56f96a",
+ "source_hash": "sha256:347f5e213ab558582dc4001d4fefee5ca7cff535c2a92098389a5ca7d391cd67",
  "states": [
   {
    "doc": "cam angle",

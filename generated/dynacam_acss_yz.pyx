@@ -4,7 +4,7 @@
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:16de92354fda75baf0bf378b2ef49100b947c88af4ce125575ed9905ded68e67
+# Source hash: sha256:38dc387b316e062cdefa30ad3ba79e35b33ea1730e89a4b484fe60f461f3142e
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -142,10 +142,10 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c44 = _c43*h_m
     cdef double _c45 = (1.0/h_m)
     cdef double _c46 = (1.0/(omega_s*omega_s))
-    ctx.k[0] = -k  # _k0
-    ctx.k[1] = -_c2*omega_s  # _k1
-    ctx.k[2] = _c2  # _k2
-    ctx.k[3] = -omega_s  # _k3
+    ctx.k[0] = -omega_s  # _k0
+    ctx.k[1] = -k  # _k1
+    ctx.k[2] = -_c2*omega_s  # _k2
+    ctx.k[3] = _c2  # _k3
     ctx.k[4] = _c4  # _k4
     ctx.k[5] = -_c4  # _k5
     ctx.k[6] = -h_m  # _k6
@@ -332,109 +332,111 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
             camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], _a, _cam0)
             _c[0], _c[1], _c[2], _c[3], _c[4] = _a, _cam0[0], _cam0[1], _cam0[2], _cam0[3]
 
-    cdef double _s0_0, _s0_1, _s0_2, _s0_3, _s0_4, _s0_5, _s0_6, _s0_7, _s0_8, _s0_9, _s0_10, _s0_11, _s0_12, _s0_13, _s0_14, _s0_15, _s0_16, _s0_17, _s0_18, _s0_19, _s0_20, _s0_21, _s0_22, _s0_23, _s0_24, _s0_25, _s0_26, _s0_27, _s0_28, _s0_29, _s0_30, _s0_31, _s0_32, _s0_33, _s0_34, _s0_35, _s0_36, _s0_37, _s0_38, _s0_39, _s0_40, _s0_41, _s0_42, _s0_43, _s0_44, _s0_45, _s0_46, _s0_47, _s0_48, _s0_49, _s0_50, _s0_51, _s0_52, _s0_53, _s0_54, _s0_55, _s0_56, _s1_0, _s1_1, _s1_2, _s1_3, _s1_4, _s1_5, _s1_6, _s1_7, _s1_8, _s1_9, _s1_10, _s1_11, _s1_12, _s1_13, _s1_14, _s1_15, _s1_16, _s1_17, _s1_18, _s1_19, _s1_20, _s1_21, _s1_22, _s1_23, _s1_24, _s1_25, _s1_26
+    cdef double _s0_0, _s0_1, _s0_2, _s0_3, _s0_4, _s0_5, _s0_6, _s0_7, _s0_8, _s0_9, _s0_10, _s0_11, _s0_12, _s0_13, _s0_14, _s0_15, _s0_16, _s0_17, _s0_18, _s0_19, _s0_20, _s0_21, _s0_22, _s0_23, _s0_24, _s0_25, _s0_26, _s0_27, _s0_28, _s0_29, _s0_30, _s0_31, _s0_32, _s0_33, _s0_34, _s0_35, _s0_36, _s0_37, _s0_38, _s0_39, _s0_40, _s0_41, _s0_42, _s0_43, _s0_44, _s0_45, _s0_46, _s0_47, _s0_48, _s0_49, _s0_50, _s0_51, _s0_52, _s0_53, _s0_54, _s0_55, _s0_56, _s0_57, _s1_0, _s1_1, _s1_2, _s1_3, _s1_4, _s1_5, _s1_6, _s1_7, _s1_8, _s1_9, _s1_10, _s1_11, _s1_12, _s1_13, _s1_14, _s1_15, _s1_16, _s1_17, _s1_18, _s1_19, _s1_20, _s1_21, _s1_22, _s1_23, _s1_24, _s1_25, _s1_26, _s1_27
     _dy[0] = betad
     _dy[1] = yd
     _dy[2] = zd
     _dy[3] = xd
     if _v == 0:
-        _s0_0 = -phir
-        _s0_1 = omega_s*t
-        _s0_2 = _s0_0 + _s0_1
-        _s0_3 = sqrt(_s0_2)
-        _s0_4 = (_s0_2 > 1.0/1000000000000.0)
-        _s0_5 = _k3*t
-        _s0_6 = _s0_5 + phir + s_g
-        _s0_7 = sqrt(_s0_6)
-        _s0_8 = (_s0_6 > 1.0/1000000000000.0)
-        _s0_9 = (((((1.0/(_s0_1*_s0_3 - _s0_3*phir))) if (_s0_4) else (1e+18))) if ((_k0*phir + _k1 + _k2*betad + beta*k < 0.0)) else ((((1.0/(_s0_5*_s0_7 + _s0_7*phir + _s0_7*s_g))) if (_s0_8) else (1e+18))))
-        _s0_10 = _s0_9/(V_T*_s0_9 + _k2)
-        _s0_11 = _cam0[0]*_k6
-        _s0_12 = _cam0[1]*y
-        _s0_13 = _k7*_s0_12
-        _s0_14 = _s0_11 + _s0_13 + hr + z
-        _s0_15 = sqrt(_s0_14)
-        _s0_16 = (_s0_14 > 1.0/1000000000000.0)
-        _s0_17 = _cam0[1]*betad
-        _s0_18 = _cam0[1]*yd
-        _s0_19 = _cam0[2]*y
-        _s0_20 = _s0_19*betad
-        _s0_21 = _cam0[0]*h_m
-        _s0_22 = _k13*_s0_12
-        _s0_23 = _s0_21 + _s0_22 - hr + s_r - z
-        _s0_24 = sqrt(_s0_23)
-        _s0_25 = (_k14 + _s0_14 < -1.0/1000000000000.0)
-        _s0_26 = (((((1.0/(_s0_11*_s0_15 + _s0_13*_s0_15 + _s0_15*hr + _s0_15*z))) if (_s0_16) else (1e+18))) if ((_k10*_s0_17 + _k11*_s0_18 + _k12*_s0_20 + _k8*hr + _k9*xd + _k9*zd + c_x*x < 0.0)) else ((((1.0/(_s0_21*_s0_24 + _s0_22*_s0_24 - _s0_24*hr + _s0_24*s_r - _s0_24*z))) if (_s0_25) else (1e+18))))
-        _s0_27 = (1.0/(_k15*_s0_26 + _k16))
-        _s0_28 = _cam0[1]*_s0_26
-        _s0_29 = _s0_27*_s0_28
-        _s0_30 = _k26*_s0_29
-        _s0_31 = (1.0/(_k21*_s0_26 + _k22))
-        _s0_32 = _s0_19*_s0_26*_s0_31
-        _s0_33 = _k28*_s0_32
-        _s0_34 = (_cam0[1]*_cam0[1])*_s0_26
-        _s0_35 = _s0_34*betad
-        _s0_36 = _s0_34*yd
-        _s0_37 = _k25*_s0_26
-        _s0_38 = _cam0[2]*_s0_12
-        _s0_39 = _s0_38/(_k31*_s0_26 + _k32)
-        _s0_40 = _s0_26*betad
-        _s0_41 = (1.0/(_k38*_s0_26 + _k39))
-        _s0_42 = _s0_28*_s0_41
-        _s0_43 = _k42*_s0_42
-        _s0_44 = _s0_26/(V_R*_s0_26 + _k9)
-        _s0_45 = _s0_44*hr
-        _s0_46 = _s0_44*x
-        _s0_47 = _k51*_s0_44
-        _s0_48 = _k52*_s0_26
-        _s0_49 = _s0_18*_s0_41
-        _s0_50 = _s0_17*_s0_26*_s0_27
-        _s0_51 = _s0_20*_s0_31
-        _s0_52 = _k56*_s0_44
-        _s0_53 = _k57*_s0_26
-        _s0_54 = _k2*(-betad + omega_s) + k*(-_s0_0 - beta)
-        _s0_55 = _k13*_s0_18 + betad*(_cam0[1]*_k59 + _k60*_s0_19) - zd
-        _s0_56 = _k9*(_s0_55 - xd) + c_x*(hr - x)
-        _dy[4] = (_cam0[2]*_cam0[2])*_s0_37*betad*(y*y)/(_k29*_s0_26 + _k30) + _k17*_s0_29*x + _k17*_s0_32*hr + _k18*_s0_29*hr + _k18*_s0_32*x + _k19*_s0_10*betad + _k20*_s0_10 + _k25*_s0_35/(_k23*_s0_26 + _k24) + _k27*_s0_31*_s0_36 + _k35*_s0_38*_s0_40/(_k33*_s0_26 + _k34) + _k4*_s0_10*phir + _k5*_s0_10*beta + _s0_30*xd + _s0_30*zd + _s0_33*xd + _s0_33*zd + _s0_37*_s0_39*yd
-        _dy[5] = _k36*y + _k37*yd + _k40*_s0_42*hr + _k41*_s0_42*x + _k45*_s0_36/(_k43*_s0_26 + _k44) + _k45*_s0_39*_s0_40 + _k46*_s0_31*_s0_35 + _s0_43*xd + _s0_43*zd
-        _dy[6] = _k47*z + _k48*zd + _k49*_s0_45 + _k50*_s0_46 + _k53*_s0_50 + _s0_47*xd + _s0_47*zd + _s0_48*_s0_49 + _s0_48*_s0_51
-        _dy[7] = _k54*_s0_45 + _k55*_s0_46 + _k58*_s0_50 + _s0_49*_s0_53 + _s0_51*_s0_53 + _s0_52*xd + _s0_52*zd
-        _dy[8] = -_s0_54/(V_T*((((pow(_s0_2, -3.0/2.0)) if (_s0_4) else (1e+18))) if ((_s0_54 > 0.0)) else (((pow(_s0_6, -3.0/2.0)) if (_s0_8) else (1e+18)))) + _k2) + omega_s
-        _dy[9] = _s0_55 - _s0_56/(V_R*((((pow(_s0_14, -3.0/2.0)) if (_s0_16) else (1e+18))) if ((_s0_56 > 0.0)) else (((pow(_s0_23, -3.0/2.0)) if (_s0_25) else (1e+18)))) + _k9)
+        _s0_0 = _k0*t
+        _s0_1 = _s0_0 + phir
+        _s0_2 = sqrt(_s0_1)
+        _s0_3 = -phir
+        _s0_4 = omega_s*t
+        _s0_5 = _s0_3 + _s0_4
+        _s0_6 = (_s0_5 < -1.0/1000000000000.0)
+        _s0_7 = _s0_5 + s_g
+        _s0_8 = sqrt(_s0_7)
+        _s0_9 = (_s0_7 > 1.0/1000000000000.0)
+        _s0_10 = (((((1.0/(_s0_0*_s0_2 + _s0_2*phir))) if (_s0_6) else (1e+18))) if ((_k1*phir + _k2 + _k3*betad + beta*k < 0.0)) else ((((1.0/(_s0_4*_s0_8 - _s0_8*phir + _s0_8*s_g))) if (_s0_9) else (1e+18))))
+        _s0_11 = _s0_10/(V_T*_s0_10 + _k3)
+        _s0_12 = _cam0[0]*_k6
+        _s0_13 = _cam0[1]*y
+        _s0_14 = _k7*_s0_13
+        _s0_15 = _s0_12 + _s0_14 + hr + z
+        _s0_16 = sqrt(_s0_15)
+        _s0_17 = (_s0_15 > 1.0/1000000000000.0)
+        _s0_18 = _cam0[1]*betad
+        _s0_19 = _cam0[1]*yd
+        _s0_20 = _cam0[2]*y
+        _s0_21 = _s0_20*betad
+        _s0_22 = _cam0[0]*h_m
+        _s0_23 = _k13*_s0_13
+        _s0_24 = _s0_22 + _s0_23 - hr + s_r - z
+        _s0_25 = sqrt(_s0_24)
+        _s0_26 = (_k14 + _s0_15 < -1.0/1000000000000.0)
+        _s0_27 = (((((1.0/(_s0_12*_s0_16 + _s0_14*_s0_16 + _s0_16*hr + _s0_16*z))) if (_s0_17) else (1e+18))) if ((_k10*_s0_18 + _k11*_s0_19 + _k12*_s0_21 + _k8*hr + _k9*xd + _k9*zd + c_x*x < 0.0)) else ((((1.0/(_s0_22*_s0_25 + _s0_23*_s0_25 - _s0_25*hr + _s0_25*s_r - _s0_25*z))) if (_s0_26) else (1e+18))))
+        _s0_28 = (1.0/(_k15*_s0_27 + _k16))
+        _s0_29 = _cam0[1]*_s0_27
+        _s0_30 = _s0_28*_s0_29
+        _s0_31 = _k26*_s0_30
+        _s0_32 = (1.0/(_k21*_s0_27 + _k22))
+        _s0_33 = _s0_20*_s0_27*_s0_32
+        _s0_34 = _k28*_s0_33
+        _s0_35 = (_cam0[1]*_cam0[1])*_s0_27
+        _s0_36 = _s0_35*betad
+        _s0_37 = _s0_35*yd
+        _s0_38 = _k25*_s0_27
+        _s0_39 = _cam0[2]*_s0_13
+        _s0_40 = _s0_39/(_k31*_s0_27 + _k32)
+        _s0_41 = _s0_27*betad
+        _s0_42 = (1.0/(_k38*_s0_27 + _k39))
+        _s0_43 = _s0_29*_s0_42
+        _s0_44 = _k42*_s0_43
+        _s0_45 = _s0_27/(V_R*_s0_27 + _k9)
+        _s0_46 = _s0_45*hr
+        _s0_47 = _s0_45*x
+        _s0_48 = _k51*_s0_45
+        _s0_49 = _k52*_s0_27
+        _s0_50 = _s0_19*_s0_42
+        _s0_51 = _s0_18*_s0_27*_s0_28
+        _s0_52 = _s0_21*_s0_32
+        _s0_53 = _k56*_s0_45
+        _s0_54 = _k57*_s0_27
+        _s0_55 = _k3*(-betad + omega_s) + k*(-_s0_3 - beta)
+        _s0_56 = _k13*_s0_19 + betad*(_cam0[1]*_k59 + _k60*_s0_20) - zd
+        _s0_57 = _k9*(_s0_56 - xd) + c_x*(hr - x)
+        _dy[4] = (_cam0[2]*_cam0[2])*_s0_38*betad*(y*y)/(_k29*_s0_27 + _k30) + _k17*_s0_30*x + _k17*_s0_33*hr + _k18*_s0_30*hr + _k18*_s0_33*x + _k19*_s0_11*betad + _k20*_s0_11 + _k25*_s0_36/(_k23*_s0_27 + _k24) + _k27*_s0_32*_s0_37 + _k35*_s0_39*_s0_41/(_k33*_s0_27 + _k34) + _k4*_s0_11*phir + _k5*_s0_11*beta + _s0_31*xd + _s0_31*zd + _s0_34*xd + _s0_34*zd + _s0_38*_s0_40*yd
+        _dy[5] = _k36*y + _k37*yd + _k40*_s0_43*hr + _k41*_s0_43*x + _k45*_s0_37/(_k43*_s0_27 + _k44) + _k45*_s0_40*_s0_41 + _k46*_s0_32*_s0_36 + _s0_44*xd + _s0_44*zd
+        _dy[6] = _k47*z + _k48*zd + _k49*_s0_46 + _k50*_s0_47 + _k53*_s0_51 + _s0_48*xd + _s0_48*zd + _s0_49*_s0_50 + _s0_49*_s0_52
+        _dy[7] = _k54*_s0_46 + _k55*_s0_47 + _k58*_s0_51 + _s0_50*_s0_54 + _s0_52*_s0_54 + _s0_53*xd + _s0_53*zd
+        _dy[8] = -_s0_55/(V_T*((((pow(_s0_1, -3.0/2.0)) if (_s0_6) else (1e+18))) if ((_s0_55 > 0.0)) else (((pow(_s0_7, -3.0/2.0)) if (_s0_9) else (1e+18)))) + _k3) + omega_s
+        _dy[9] = _s0_56 - _s0_57/(V_R*((((pow(_s0_15, -3.0/2.0)) if (_s0_17) else (1e+18))) if ((_s0_57 > 0.0)) else (((pow(_s0_24, -3.0/2.0)) if (_s0_26) else (1e+18)))) + _k9)
     elif _v == 1:  # in a dwell: 0
-        _s1_0 = -phir
-        _s1_1 = omega_s*t
-        _s1_2 = _s1_0 + _s1_1
-        _s1_3 = sqrt(_s1_2)
-        _s1_4 = (_s1_2 > 1.0/1000000000000.0)
-        _s1_5 = _k3*t
-        _s1_6 = _s1_5 + phir + s_g
-        _s1_7 = sqrt(_s1_6)
-        _s1_8 = (_s1_6 > 1.0/1000000000000.0)
-        _s1_9 = (((((1.0/(_s1_1*_s1_3 - _s1_3*phir))) if (_s1_4) else (1e+18))) if ((_k0*phir + _k1 + _k2*betad + beta*k < 0.0)) else ((((1.0/(_s1_5*_s1_7 + _s1_7*phir + _s1_7*s_g))) if (_s1_8) else (1e+18))))
-        _s1_10 = _s1_9/(V_T*_s1_9 + _k2)
-        _s1_11 = _cam0[0]*_k6
-        _s1_12 = _s1_11 + hr + z
-        _s1_13 = sqrt(_s1_12)
-        _s1_14 = (_s1_12 > 1.0/1000000000000.0)
-        _s1_15 = _cam0[0]*h_m
-        _s1_16 = _s1_15 - hr + s_r - z
-        _s1_17 = sqrt(_s1_16)
-        _s1_18 = (_s1_16 > 1.0/1000000000000.0)
-        _s1_19 = (((((1.0/(_s1_11*_s1_13 + _s1_13*hr + _s1_13*z))) if (_s1_14) else (1e+18))) if ((_k8*hr + _k9*xd + _k9*zd + c_x*x < 0.0)) else ((((1.0/(_s1_15*_s1_17 - _s1_17*hr + _s1_17*s_r - _s1_17*z))) if (_s1_18) else (1e+18))))
-        _s1_20 = _s1_19/(V_R*_s1_19 + _k9)
-        _s1_21 = _s1_20*hr
-        _s1_22 = _s1_20*x
-        _s1_23 = _k51*_s1_20
-        _s1_24 = _k56*_s1_20
-        _s1_25 = _k2*(-betad + omega_s) + k*(-_s1_0 - beta)
-        _s1_26 = _k61*xd + _k61*zd + c_x*(hr - x)
-        _dy[4] = _k19*_s1_10*betad + _k20*_s1_10 + _k4*_s1_10*phir + _k5*_s1_10*beta
+        _s1_0 = _k0*t
+        _s1_1 = _s1_0 + phir
+        _s1_2 = sqrt(_s1_1)
+        _s1_3 = -phir
+        _s1_4 = omega_s*t
+        _s1_5 = _s1_3 + _s1_4
+        _s1_6 = (_s1_5 < -1.0/1000000000000.0)
+        _s1_7 = _s1_5 + s_g
+        _s1_8 = sqrt(_s1_7)
+        _s1_9 = (_s1_7 > 1.0/1000000000000.0)
+        _s1_10 = (((((1.0/(_s1_0*_s1_2 + _s1_2*phir))) if (_s1_6) else (1e+18))) if ((_k1*phir + _k2 + _k3*betad + beta*k < 0.0)) else ((((1.0/(_s1_4*_s1_8 - _s1_8*phir + _s1_8*s_g))) if (_s1_9) else (1e+18))))
+        _s1_11 = _s1_10/(V_T*_s1_10 + _k3)
+        _s1_12 = _cam0[0]*_k6
+        _s1_13 = _s1_12 + hr + z
+        _s1_14 = sqrt(_s1_13)
+        _s1_15 = (_s1_13 > 1.0/1000000000000.0)
+        _s1_16 = _cam0[0]*h_m
+        _s1_17 = _s1_16 - hr + s_r - z
+        _s1_18 = sqrt(_s1_17)
+        _s1_19 = (_s1_17 > 1.0/1000000000000.0)
+        _s1_20 = (((((1.0/(_s1_12*_s1_14 + _s1_14*hr + _s1_14*z))) if (_s1_15) else (1e+18))) if ((_k8*hr + _k9*xd + _k9*zd + c_x*x < 0.0)) else ((((1.0/(_s1_16*_s1_18 - _s1_18*hr + _s1_18*s_r - _s1_18*z))) if (_s1_19) else (1e+18))))
+        _s1_21 = _s1_20/(V_R*_s1_20 + _k9)
+        _s1_22 = _s1_21*hr
+        _s1_23 = _s1_21*x
+        _s1_24 = _k51*_s1_21
+        _s1_25 = _k56*_s1_21
+        _s1_26 = _k3*(-betad + omega_s) + k*(-_s1_3 - beta)
+        _s1_27 = _k61*xd + _k61*zd + c_x*(hr - x)
+        _dy[4] = _k19*_s1_11*betad + _k20*_s1_11 + _k4*_s1_11*phir + _k5*_s1_11*beta
         _dy[5] = _k36*y + _k37*yd
-        _dy[6] = _k47*z + _k48*zd + _k49*_s1_21 + _k50*_s1_22 + _s1_23*xd + _s1_23*zd
-        _dy[7] = _k54*_s1_21 + _k55*_s1_22 + _s1_24*xd + _s1_24*zd
-        _dy[8] = -_s1_25/(V_T*((((pow(_s1_2, -3.0/2.0)) if (_s1_4) else (1e+18))) if ((_s1_25 > 0.0)) else (((pow(_s1_6, -3.0/2.0)) if (_s1_8) else (1e+18)))) + _k2) + omega_s
-        _dy[9] = -_s1_26/(V_R*((((pow(_s1_12, -3.0/2.0)) if (_s1_14) else (1e+18))) if ((_s1_26 > 0.0)) else (((pow(_s1_16, -3.0/2.0)) if (_s1_18) else (1e+18)))) + _k9) - zd
+        _dy[6] = _k47*z + _k48*zd + _k49*_s1_22 + _k50*_s1_23 + _s1_24*xd + _s1_24*zd
+        _dy[7] = _k54*_s1_22 + _k55*_s1_23 + _s1_25*xd + _s1_25*zd
+        _dy[8] = -_s1_26/(V_T*((((pow(_s1_1, -3.0/2.0)) if (_s1_6) else (1e+18))) if ((_s1_26 > 0.0)) else (((pow(_s1_7, -3.0/2.0)) if (_s1_9) else (1e+18)))) + _k3) + omega_s
+        _dy[9] = -_s1_27/(V_R*((((pow(_s1_13, -3.0/2.0)) if (_s1_15) else (1e+18))) if ((_s1_27 > 0.0)) else (((pow(_s1_17, -3.0/2.0)) if (_s1_19) else (1e+18)))) + _k9) - zd
 
 
 cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept nogil:
@@ -551,9 +553,9 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _o0 = _cam0[0]*_k6
     cdef double _o1 = -phir
     cdef double _o2 = _o1 + omega_s*t
-    cdef double _o3 = _k2*(betad - omega_s) + k*(_o1 + beta)
-    cdef double _o4 = _k3*t + phir + s_g
-    cdef double _o5 = V_T*((((pow(_o2, -3.0/2.0)) if ((_o2 > 1.0/1000000000000.0)) else (1e+18))) if ((_o3 < 0.0)) else (((pow(_o4, -3.0/2.0)) if ((_o4 > 1.0/1000000000000.0)) else (1e+18))))
+    cdef double _o3 = _k3*(betad - omega_s) + k*(_o1 + beta)
+    cdef double _o4 = _o2 + s_g
+    cdef double _o5 = V_T*((((pow(_k0*t + phir, -3.0/2.0)) if ((_o2 < -1.0/1000000000000.0)) else (1e+18))) if ((_o3 < 0.0)) else (((pow(_o4, -3.0/2.0)) if ((_o4 > 1.0/1000000000000.0)) else (1e+18))))
     cdef double _o6 = _cam0[1]*_k7
     cdef double _o7 = _o0 + _o6*y + hr + z
     cdef double _o8 = _cam0[1]*_k13
@@ -564,7 +566,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     _out[2] = _k65*_dy[4]  # Bdd
     _out[3] = _k66*(_o0 + x)  # U
     _out[4] = _dy[7]  # xdd
-    _out[5] = -_o3*_o5/(_k2 + _o5)  # torque
+    _out[5] = -_o3*_o5/(_k3 + _o5)  # torque
     _out[6] = _o10*_o9/(_k9 + _o10)  # Fx
     _out[7] = _k68*(_k67*yd + betad) - 1.0  # speed_var
     _out[8] = _o6  # tan_alpha
@@ -680,10 +682,10 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m0 = 2.0*sqrt(J)*sqrt(k)*q_b
     cdef double _m1 = omega_s*t
     cdef double _m2 = _m1 - phir
-    cdef double _m3 = sqrt(_m2)
-    cdef double _m4 = -_m1 + phir + s_g
+    cdef double _m3 = sqrt(-_m2)
+    cdef double _m4 = _m2 + s_g
     cdef double _m5 = sqrt(_m4)
-    cdef double _m6 = V_T*(((((1.0/(_m1*_m3 - _m3*phir))) if ((_m2 > 1.0/1000000000000.0)) else (1e+18))) if ((_m0*betad - _m0*omega_s + beta*k - k*phir < 0.0)) else ((((1.0/(-_m1*_m5 + _m5*phir + _m5*s_g))) if ((_m4 > 1.0/1000000000000.0)) else (1e+18))))
+    cdef double _m6 = V_T*(((((1.0/(-_m1*_m3 + _m3*phir))) if ((_m2 < -1.0/1000000000000.0)) else (1e+18))) if ((_m0*betad - _m0*omega_s + beta*k - k*phir < 0.0)) else ((((1.0/(_m1*_m5 - _m5*phir + _m5*s_g))) if ((_m4 > 1.0/1000000000000.0)) else (1e+18))))
     cdef double _m7 = c_x*hr
     cdef double _m8 = sqrt(c_x)
     cdef double _m9 = sqrt(m_x)
@@ -1493,7 +1495,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "input minus gear output angle (6.1)",
+   "doc": "input minus gear output angle (6.1): 0 on the driving flank, -s_g on the other",
    "name": "gear_gap",
    "unit": "rad"
   },
@@ -1711,7 +1713,7 @@ _MANIFEST_JSON = """
    "open_high": false,
    "open_low": true,
    "range": "0 < V_T",
-   "unit": "N m s/rad^(3/2)"
+   "unit": "N m s rad^(1/2)"
   },
   {
    "default": 0.00013,
@@ -1733,7 +1735,7 @@ _MANIFEST_JSON = """
    "open_high": false,
    "open_low": true,
    "range": "0 < V_R",
-   "unit": "N s/m^(3/2)"
+   "unit": "N s m^(1/2)"
   }
  ],
  "reference": "thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18",
@@ -1743,7 +1745,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:16de92354fda75baf0bf378b2ef49100b947c88af4ce125575ed9905ded68e67",
+ "source_hash": "sha256:38dc387b316e062cdefa30ad3ba79e35b33ea1730e89a4b484fe60f461f3142e",
  "states": [
   {
    "doc": "cam angle",

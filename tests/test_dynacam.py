@@ -199,3 +199,71 @@ def test_one_dof_model_close_to_two_dof_at_high_Fv_sec_8_2_5(comparison, case):
     (2.42, 2.68): CAMSHAFT-1 and CAMSHAFT-2 U0dd within 10 % (ours: 3 % and 8 %)."""
     _, u = comparison[case]
     assert u["1dof"] / u["2dof"] == pytest.approx(1.0, abs=0.10)
+
+
+# -- item 5: squeeze, sec. 7.4.6 (fig. 7.11b against fig. 7.20) --------------------------------------
+@pytest.fixture(scope="module")
+def squeeze():
+    """indexing_squeeze.toml (squeeze films in gear and groove, fig. 7.19b damping) and the same
+    scene at zero viscosity (dry backlash), each sampled at 2e5 points over the run."""
+    wet = scenes.load("indexing_squeeze")
+    dry = scenes.replace(wet, {"gear": "backlash", "roller": "groove"}, drop=("V_T", "V_R"))
+    out = {}
+    for name, sc in (("wet", wet), ("dry", dry)):
+        s, res = dynacam.run(sc)
+        t = np.linspace(0.0, res.t[-1], 200_001)
+        out[name] = (sc, s, res, t, res.sample(t))
+    return out
+
+
+def test_squeeze_coefficients_of_the_scene_are_the_derived_ones():
+    """The scene file's V_T, V_R are camdyn.derive.examples.indexing_squeeze's (6.6), (6.38), to
+    the six digits written."""
+    from camdyn.derive import examples
+
+    p = scenes.load("indexing_squeeze").parameters
+    sq = examples.indexing_squeeze()
+    assert (p["V_T"], p["V_R"]) == pytest.approx((sq["V_T"], sq["V_R"]), rel=1e-5)
+
+
+def test_squeeze_hardly_changes_the_follower_response_sec_7_4_6(squeeze):
+    """Sec. 7.4.6: 'the squeeze effect has hardly any effect on the follower vibration (X)'.
+    With and without viscosity, X'' at T = 0.68, the largest deceleration in the rise and the
+    residual amplitude U0'' agree within 5 % (ours: 0.6 %, 2.5 %, 1 %)."""
+    wet, dry = squeeze["wet"], squeeze["dry"]
+    for key in ("Xdd_min_rise", "U0dd"):
+        assert wet[1][key] == pytest.approx(dry[1][key], rel=0.05)
+    x_wet, x_dry = (dynacam.sample_at(c[0], c[2], 0.68) for c in (wet, dry))
+    assert x_wet == pytest.approx(x_dry, rel=0.05)
+
+
+def test_squeeze_run_against_fig_7_11b():
+    """Fig. 7.11b, sec. 7.4.4: X'' = -14 at T = 0.68 with backlash, damping and squeeze.  The
+    scene damps as fig. 7.19b (constant q) where fig. 7.11b used a velocity-dependent q, so
+    the tolerance is the thesis's own 20 % (sec. 7.4.7); ours -15.1."""
+    sc = scenes.load("indexing_squeeze")
+    _, res = dynacam.run(sc)
+    assert dynacam.sample_at(sc, res, 0.68) == pytest.approx(-14.0, rel=0.20)
+
+
+def test_squeeze_damps_the_impact_spikes_sec_7_4_6(squeeze):
+    """Sec. 7.4.6: squeeze 'reduces considerably the high-frequency impact phenomena', seen in
+    the cam's angular acceleration B'' and the traversals of backlash.  Measured on dense
+    samples: the total variation of B'' over the run falls by more than a third (ours: to
+    0.49), the B'' peak as the gear teeth first traverse their backlash (0.5 < T < 0.62) by
+    more than a third (ours: 26.5 -> 11.8), and the jumps of X'' where a dry contact
+    engages its damper vanish (ours: 4.0 -> 0.02 between samples 8e-6 t_m apart)."""
+    wet, dry = squeeze["wet"], squeeze["dry"]
+
+    def figures(case):
+        sc, _, res, t, smp = case
+        T = t / (res.params["beta_m"] / res.params["omega_s"]) + sc.T_start
+        B, X = smp["Bdd"], smp["Xdd"]
+        first = (T > 0.5) & (T < 0.62)
+        return np.abs(np.diff(B)).sum(), np.abs(B[first]).max(), np.abs(np.diff(X)).max()
+
+    tv_w, peak_w, jump_w = figures(wet)
+    tv_d, peak_d, jump_d = figures(dry)
+    assert tv_w < tv_d * 2 / 3
+    assert peak_w < peak_d * 2 / 3
+    assert jump_w < 0.1 * jump_d

@@ -176,3 +176,48 @@ def test_tangential_mass_5_51_weights():
     c = 2.0e5
     assert ex.tangential_mass([(0.3, c), (0.5, c)], ex.series(c, c)) == pytest.approx(0.2, rel=1e-14)
     assert ex.tangential_mass([(0.3, c), (0.5, 1e30)], ex.series(c, 1e30)) == pytest.approx(0.3, rel=1e-12)
+
+
+# -- squeeze coefficients of the indexing mechanism (sec. 6.5.2, 6.5.12; App. 4, 6) -----------------
+def test_contact_ratio_is_the_listing_expression():
+    """The App. 6 listing forms the contact ratio as EPS = 0.99 + ZT (sqrt(0.0034 + 0.114/ZT)
+    - 0.058) (scan read): our path of contact over the base pitch is that expression with its
+    constants unrounded, 1/(pi sin a cos a), sin^2 a/(4 (pi cos a)^2), 1/(pi cos a)^2 (and the
+    same over ZT^2) and sin a/(2 pi cos a), to 1e-12; with the listing's rounded constants it
+    is within 0.5 % at the mechanism's ZT = 54."""
+    a = math.radians(20)
+    pc = math.pi * math.cos(a)
+    for z in (20, 54, 100):
+        exact = 1 / (math.pi * math.sin(a) * math.cos(a)) + z * (
+            math.sqrt(math.sin(a) ** 2 / (4 * pc**2) + 1 / (z * pc**2) + 1 / (z * pc) ** 2)
+            - math.sin(a) / (2 * pc))
+        assert ex.contact_ratio_rack(z, a) == pytest.approx(exact, rel=1e-12)
+    listing = 0.99 + 54 * (math.sqrt(0.0034 + 0.114 / 54) - 0.058)
+    assert ex.contact_ratio_rack(54, a) == pytest.approx(listing, rel=5e-3)
+
+
+def test_squeeze_coefficients_by_the_thesis_reduction():
+    """V_T and V_R against (A.4.11) itself (camdyn.derive.reduction.squeeze_force): the film
+    force at a gap and approach velocity, (a) at the worm wheel, turned into a camshaft torque,
+    equals V_T dphi' dphi^(-3/2); (b) at the roller reduced by (2.55), (2.59), equals
+    V_R w' s'^(-3/2).  To 1e-12."""
+    import sympy as sp
+
+    from camdyn.derive import reduction as R
+
+    sq = ex.indexing_squeeze()
+    m = INDEXING
+    R_w = m.gear_radius.value
+    gap, rate = 3e-4, 0.2                     # rad, rad/s at the camshaft
+    b_eff = sq["eps"] * m.gear_width.value     # (6.3)
+    F = float(R.squeeze_force(m.eta_gear.value, R_w * rate, b_eff, sq["R_e"], R_w * gap))
+    assert F * R_w == pytest.approx(sq["V_T"] * rate * gap**-1.5, rel=1e-12)
+    i = m.i.value
+    s, w = 2e-5, 0.01                          # reduced gap and approach velocity
+    F_red = float(R.squeeze_force(R.viscosity(sp.Float(m.eta_roller.value), i), w,
+                                  i * m.roller_width.value, i * m.roller_radius.value, s))
+    assert F_red == pytest.approx(sq["V_R"] * w * s**-1.5, rel=1e-12)
+    # the reduced film passes the force of the real one, F/i at i times the velocity (2.59)
+    F_real = float(R.squeeze_force(m.eta_roller.value, w / i, m.roller_width.value,
+                                   m.roller_radius.value, s / i))
+    assert F_red == pytest.approx(F_real / i, rel=1e-12)

@@ -35,6 +35,37 @@ def test_squeeze_film_approach_velocity_A_4_11():
         assert f[names.index("hr")] == pytest.approx(expected, rel=1e-12)
 
 
+@pytest.mark.parametrize("flank", ["driving", "back"])
+def test_gear_squeeze_film_closes_on_the_loaded_flank_6_9(flank):
+    """(6.5)-(6.9): the output wheel phi_r lies between the driving flank phi (film AA =
+    (phi_r - phi)^(-3/2), (6.7)) and the back flank phi + s_g (BB, (6.8)); with no shaft
+    damping (q_b = 0) the massless wheel moves at phi_r' = phi' - N gap^(3/2)/V_T, N = k (phi_r -
+    beta) the torque it passes on, so the loaded film closes: driving torque (N > 0) on the
+    driving flank, reversed torque on the back flank.  Generated acss_yz at t = 0 (phi = 0),
+    to 1e-12."""
+    m = load("dynacam_acss_yz")
+    V_T, k, s_g, w_s = 2e-4, 5e3, 1e-2, 3.0
+    p = _p(m, q_b=0.0, V_T=V_T, k=k, s_g=s_g, omega_s=w_s, beta_0=0.5)
+    choice = laws.choose("cycloidal")
+    codes, pars = np.array([choice.code], dtype=np.intc), np.array([choice.par])
+    names = m.state_names
+    for gap, torque in ((1e-5, 20.0), (3e-4, 5.0)):
+        y = np.zeros(len(names))
+        y[names.index("betad")] = w_s
+        if flank == "driving":
+            y[names.index("phir")] = gap
+            N = torque
+        else:
+            y[names.index("phir")] = s_g - gap
+            N = -torque
+        y[names.index("beta")] = y[names.index("phir")] - N / k
+        f = _integrate.eval_rhs(m.capsule, p, codes, pars, np.zeros(1), y[None, :])[0]
+        rate = f[names.index("phir")] - w_s       # d(phi_r - phi)/dt
+        assert rate == pytest.approx(-N * gap**1.5 / V_T, rel=1e-12)
+        closing = -rate if flank == "driving" else rate
+        assert closing > 0
+
+
 def test_follower_jump_where_the_spring_can_no_longer_hold_the_follower():
     """Roller contact law (mode contact/free, sec. 7.5): a stiff mechanism (tau = 0.0063) at
     constant cam speed follows the nominal cycloid, so the roller lifts off where the nominal

@@ -119,9 +119,9 @@ T_el = _p("T_el", 8.6e-3, "s", "electrical time constant of the motor (A.5.3)")
 alpha_w = _p("alpha_w", 0.36, "rad", "lead angle of the worm (6.71)", high=1.5)
 mu_w = _p("mu_w", 0.05, "1", "friction coefficient of the worm gear (6.71)", open_low=False, high=1.0)
 s_g = _p("s_g", 1.0e-2, "rad", "backlash of the reduction gear, reduced to the camshaft (6.1)")
-V_T = _p("V_T", 1.0e-3, "N m s/rad^(3/2)", "squeeze coefficient of the gear teeth (6.6), with R_b^(1/2)")
+V_T = _p("V_T", 1.0e-3, "N m s rad^(1/2)", "squeeze coefficient of the gear teeth (6.6), with R_b^(1/2)")
 s_r = _p("s_r", 1.3e-4, "m", "backlash of the roller in its groove (6.27)")
-V_R = _p("V_R", 1.0e-5, "N s/m^(3/2)", "squeeze coefficient of the roller (6.38)")
+V_R = _p("V_R", 1.0e-5, "N s m^(1/2)", "squeeze coefficient of the roller (6.38)")
 nu_b = _p("nu_b", 0.01, "1", "friction coefficient on the cam (6.13)", open_low=False, high=1.0)
 nu_x = _p("nu_x", 0.01, "1", "friction coefficient of the follower linkage (6.43)", open_low=False, high=1.0)
 F_0 = _p("F_0", 100.0, "N", "follower spring preload at x = 0 (6.45)", open_low=False)
@@ -226,21 +226,25 @@ def build(opts: Options = Options()) -> Model:
             Event("gear_hit_back", phi + P["s_g"] - beta, -1, {"gear": ("free",)}, (Branch({"gear": "back"}),)),
             Event("gear_lift_back", phi + P["s_g"] - beta, 1, {"gear": ("back",)}, (Branch({"gear": "free"}),)),
         ]
-        outputs.append(Output("gear_gap", phi - beta, "rad",
-                              "input minus cam angle: 0 on the driving flank, -s_g on the other"))
+        # the massless wheel sits on a flank, or where the unloaded shaft leaves it (at beta)
+        outputs.append(Output("gear_gap", gear.select(drive=0, free=phi - beta, back=-P["s_g"]), "rad",
+                              "input minus gear output angle (6.1): 0 on the driving flank, -s_g on the other"))
     else:  # squeeze film between the teeth (6.5)-(6.9)
         params += [s_g, V_T]
         P.update({"s_g": s_g.symbol, "V_T": V_T.symbol})
         phir_s = FirstOrder("phir", "rad", "angle of the gear output wheel (6.1)", 0, scale=1.0)
         phir = phir_s(t)
         N = P["k"] * (phir - beta) + d_b * (phi_rate - beta.diff(t))
-        gap_d = _clipped(phi - phir)
-        gap_b = _clipped(phir - (phi - P["s_g"]))
+        # as with the dry gear, the wheel lies in [phi, phi + s_g]: the film on the driving
+        # flank is phir - phi (AA, (6.7)), on the back flank phi + s_g - phir (BB, (6.8)),
+        # and either closes while it carries the torque N
+        gap_d = _clipped(phir - phi)
+        gap_b = _clipped(phi + P["s_g"] - phir)
         W = P["V_T"] * sp.Piecewise((gap_d ** sp.Rational(-3, 2), N > 0), (gap_b ** sp.Rational(-3, 2), True))
         M = N * W / (W + d_b)
         first_order.append(FirstOrder("phir", phir_s.unit, phir_s.doc, phi_rate - N / (W + d_b),
                                       scale=1.0))
-        outputs.append(Output("gear_gap", phi - phir, "rad", "input minus gear output angle (6.1)"))
+        outputs.append(Output("gear_gap", phi - phir, "rad", "input minus gear output angle (6.1): 0 on the driving flank, -s_g on the other"))
 
     # roller, linkage and cam contact: the force F_x between cam and follower
     d_x = 2 * P["q_x"] * sp.sqrt(P["m_x"] * P["c_x"])
@@ -273,7 +277,8 @@ def build(opts: Options = Options()) -> Model:
             Event("roller_hit_upper", delta_u, 1, {"roller": ("free",)}, (Branch({"roller": "upper"}),)),
             Event("roller_leave_upper", delta_u, -1, {"roller": ("upper",)}, (Branch({"roller": "free"}),)),
         ]
-        outputs.append(Output("roller_gap", -delta, "m",
+        # the massless roller sits on a wall, or where the unloaded linkage leaves it (at x)
+        outputs.append(Output("roller_gap", roller.select(lower=0, free=-delta, upper=P["s_r"]), "m",
                               "roller position in the groove over the cam wall: 0 lower wall, s_r upper"))
     else:  # groove with the squeeze film (6.37)-(6.41)
         params += [s_r, V_R]
