@@ -98,8 +98,8 @@ cdef inline void _dense(double s, double h, const double* y0, const double* y1, 
 cdef double _locate(Ctx* ctx, int k, double t, double h, const double* y0, const double* y1,
                     const double* f0, const double* f1, const double* r4, double ga,
                     double gb) noexcept nogil:
-    """Step fraction where event k crosses (Illinois method on the continuous extension);
-    the returned end is on the crossed side."""
+    """Step fraction where event k crosses (Illinois method on the continuous extension):
+    an iterate where g is exactly zero, else the bracket's end on the crossed side."""
     cdef double a = 0.0, b = 1.0, s, gs
     cdef int it, side = 0, d = _EDIR[k]
     cdef double ys[_NS]
@@ -111,6 +111,11 @@ cdef double _locate(Ctx* ctx, int k, double t, double h, const double* y0, const
         _dense(s, h, y0, y1, f0, f1, r4, ys)
         events(t + s * h, ys, gtmp, ctx)
         gs = gtmp[k]
+        if gs == 0.0:
+            # on the switching surface itself.  The strict test calls g = 0 not crossed, so b
+            # may still be the step end: the first secant hits a g linear in t exactly (the
+            # cam argument in a dwell), and b would put the rise start at the end of the step
+            return s
         if _crossed(d, gs):
             b, gb = s, gs
             if side == -1:
@@ -121,7 +126,7 @@ cdef double _locate(Ctx* ctx, int k, double t, double h, const double* y0, const
             if side == 1:
                 gb *= 0.5
             side = 1
-        if b - a <= 1e-14 or gs == 0.0:
+        if b - a <= 1e-14:
             break
     return b
 

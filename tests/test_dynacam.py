@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from camdyn.runtime import dynacam, scene as scenes
+from camdyn.runtime.methods import DP54
 
 NOMINAL_MAX = 2 * math.pi      # cycloid: max |H''| = 2 pi (A.2.10)
 
@@ -267,3 +268,27 @@ def test_squeeze_damps_the_impact_spikes_sec_7_4_6(squeeze):
     assert tv_w < tv_d * 2 / 3
     assert peak_w < peak_d * 2 / 3
     assert jump_w < 0.1 * jump_d
+
+
+# -- the rise start is an event on the cam angle: found however long the dwell step ---------------
+@pytest.mark.parametrize("name", ["indexing", "spring_loaded"])
+def test_rise_starts_on_its_breakpoint_without_a_step_limit(name, request):
+    """The scenes run with no step limit.  The cam law's breakpoint T = 0 is a condition on the
+    cam angle (a state), so an event: the first recorded point of the rise must lie on it, cam
+    argument (beta - beta_0)/beta_m = 0 to 1e-12; and X'' over the whole run must agree with a
+    run whose steps are no longer than t_m/20000 (where even an event put at its step's end
+    would cost little) to 2e-6 of the peak |X''|.  Measured: 6e-7 (indexing: undamped contacts
+    located at rtol 1e-8) and 4e-11 (spring-loaded).  When the event search returned the far
+    end of its bracket after landing on g = 0, the indexing mechanism never left the dwell
+    (X'' = 0, error 1.0) and the spring-loaded rise began at T = 0.0044 (error 1e-4)."""
+    sc, s, res = request.getfixturevalue(name)
+    p = res.params
+    seg = res.mode[:, 0]                       # segment of the cam law (the only cam input)
+    first = np.flatnonzero(seg == 1)
+    assert first.size
+    assert abs((res["beta"][first[0]] - p["beta_0"]) / p["beta_m"]) < 1e-12
+    t_m = s["characteristics"]["t_m"]
+    _, ref = dynacam.run(sc, method=DP54(rtol=sc.rtol, max_step=t_m / 20000))
+    t = np.linspace(0.0, ref.t[-1], 801)
+    a, b = res.sample(t)["Xdd"], ref.sample(t)["Xdd"]
+    assert np.max(np.abs(a - b)) < 2e-6 * np.max(np.abs(b))

@@ -47,6 +47,24 @@ def test_dp54_dense_output_is_fourth_order():
     assert errs[1] < 1e-8
 
 
+@pytest.mark.parametrize("beta_0", [0.1, 0.3, 0.7, 1.3, 2.9])
+def test_rise_start_after_a_long_dwell_step(beta_0):
+    """A cam turning at constant speed, everything else at rest in the dwell: the steps grow to
+    a large part of the dwell, and the cam argument, linear in t there, is what the event
+    search's first secant hits exactly (g = 0).  The rise starts where the cam reaches
+    beta_0, to 1e-12 rad.  (Returning the far end of the bracket after such a hit started it
+    at beta = 1.11 for beta_0 = 0.3, the end of the dwell step, and 1.4e-9 late for 1.3.)"""
+    m = load("dynacam_rcrc_yzs")
+    p = dict(h_m=0.01, beta_m=1.0, beta_0=beta_0, R_b=1.0, omega_s=1.0, J=1e6, k=1e9, q_b=0.05,
+             m_x=1.0, c_x=1e6, q_x=0.05, m_y=1.0, c_y=1e9, q_y=0.05, m_z=1.0, c_z=1e9, q_z=0.05,
+             F_0=0.0, c_s=0.0)
+    y0 = np.zeros(len(m.state_names))
+    y0[m.state_names.index("betad")] = 1.0
+    res = simulate("dynacam_rcrc_yzs", p, beta_0 + 1.5, "dp54", rtol=1e-8, y0=y0)
+    first = np.flatnonzero(res.mode[:, 0] == 1)[0]    # the cam law's first rise segment
+    assert res["beta"][first] == pytest.approx(beta_0, abs=1e-12)
+
+
 def test_result_access_and_outputs():
     res = simulate("camshaft1", {"tau": 0.2, "Fa": 1.0}, 3.0, "rk4", step=0.01)
     assert res.state_names == ["X", "Xd"]
