@@ -99,7 +99,9 @@ cdef double _locate(Ctx* ctx, int k, double t, double h, const double* y0, const
                     const double* f0, const double* f1, const double* r4, double ga,
                     double gb) noexcept nogil:
     """Step fraction where event k crosses (Illinois method on the continuous extension);
-    the returned end is on the crossed side."""
+    the returned end is on the crossed side, or is the root itself where the function is
+    exactly zero (a linear event function, as in free flight across a backlash, is often
+    hit exactly by the first secant)."""
     cdef double a = 0.0, b = 1.0, s, gs
     cdef int it, side = 0, d = _EDIR[k]
     cdef double ys[_NS]
@@ -111,6 +113,10 @@ cdef double _locate(Ctx* ctx, int k, double t, double h, const double* y0, const
         _dense(s, h, y0, y1, f0, f1, r4, ys)
         events(t + s * h, ys, gtmp, ctx)
         gs = gtmp[k]
+        if gs == 0.0:
+            # at the root: returning b here would put the event at the far end of the bracket,
+            # up to the end of the step (so a long free-flight step overshot the contact)
+            return s
         if _crossed(d, gs):
             b, gb = s, gs
             if side == -1:
@@ -121,7 +127,7 @@ cdef double _locate(Ctx* ctx, int k, double t, double h, const double* y0, const
             if side == 1:
                 gb *= 0.5
             side = 1
-        if b - a <= 1e-14 or gs == 0.0:
+        if b - a <= 1e-14:
             break
     return b
 
