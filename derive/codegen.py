@@ -327,6 +327,10 @@ def _state_index(m: Model, name: str) -> int:
 
 
 def render_model(model: Model) -> str:
+    if model.constraints:
+        from .dae import render_constrained
+
+        return render_constrained(model)
     return _env().get_template("model.pyx.j2").render(**model_context(derive(model)))
 
 

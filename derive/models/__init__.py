@@ -3,7 +3,7 @@
 Each entry maps the generated module name to a function returning the
 :class:`~camdyn.derive.model.Model` declaration.
 """
-from . import camshaft1, camshaft2, chain3, dynacam, motor, one_dof
+from . import beam, camshaft1, camshaft2, chain3, dynacam, motor, one_dof
 
 REGISTRY = {
     "one_dof": one_dof.build,
@@ -36,3 +36,8 @@ compare them with.  A scene whose options are not here is refused with the list.
 
 for _opts in DYNACAM_VARIANTS:
     REGISTRY[_opts.name] = (lambda o: lambda: dynacam.build(o))(_opts)
+
+for _n in range(1, beam.N_MAX + 1):
+    REGISTRY[f"beam{_n}"] = (lambda n: lambda: beam.build(n))(_n)
+"""The Rayleigh-beam follower with N = 1..6 assumed modes (issue 5: the user picks N)."""
+
