@@ -162,6 +162,11 @@ cdef int _apply_event(Run* run, int k, double t, double* y, double* f, double* g
     if _rec_point(run, t, y, f) != 0:
         return STATUS_NO_MEMORY
     events(t, y, g0, run.ctx)
+    if g0[k] == 0.0:
+        # the event was located on its surface exactly: if it stays armed (a breakpoint that
+        # switches nothing), g = 0 would count as not yet crossed and it would fire again at
+        # once; it has crossed, so say so
+        g0[k] = 5e-324 if _EDIR[k] > 0 else -5e-324
     return STATUS_OK
 
 

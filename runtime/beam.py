@@ -1,0 +1,281 @@
+"""Running the Rayleigh-beam follower (issue 5): the case, its checks, one compiled run, the
+frozen natural frequency at the outer dwell, and the paper's figures 4-9.
+
+A :class:`Case` holds what a user varies (SI units, defaults from the paper, sec. 4);
+:func:`run` integrates the generated ``beam<N>`` module for whole cam revolutions from the
+rigid follower's state at theta = 0 (zero deflection, the constraints (6), (7) and their
+rates satisfied), and :func:`summarize` reports the tip response and the constraint residual.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import asdict, dataclass, replace
+
+import numpy as np
+
+from .errors import CamdynInputError
+from .laws import choose
+from .models import load
+from .residual import extreme
+from .simulate import Simulator
+
+FORMULATIONS = {"augmented": 0.0, "partitioned": 1.0}
+N_MAX = 6
+
+# summary keys, in the order printed
+KEYS = ("model", "formulation", "omega", "modes", "revolutions", "max_abs_tip_deflection",
+        "max_constraint_residual", "dwell_frequency_hz", "n_steps", "cpu_seconds")
+
+
+@dataclass(frozen=True)
+class Case:
+    """One Rayleigh-beam follower run.  Paper data (sec. 4) by default."""
+
+    omega: float = 240.0            # rad/s, cam speed (paper: 120, 240, 360)
+    modes: int = 3                  # N assumed modes (paper: 2, 3, 4; converged at 3)
+    rod_radius: float = 0.005       # m (paper: 3, 5, 7 mm)
+    distance: float = 0.112         # m, cam centre to guide exit, d (paper: 102, 112, 122 mm)
+    base_radius: float = 0.026      # m, r_b
+    rise: float = 0.015             # m, S_T (paper: 8, 15, 22 mm)
+    revolutions: float = 1.0
+    rayleigh: bool = True           # rotary inertia of the rod
+    roller_inertia: float | None = None   # kg m^2; None: uniform disc m_r r_r^2/2
+    formulation: str = "augmented"
+    law: str = "cycloidal"
+    roller_radius: float = 0.005    # m, r_r
+    roller_mass: float = 0.05       # kg, m_r
+    E: float = 2.1e11               # Pa
+    rho: float = 7800.0             # kg/m^3
+    rtol: float = 1e-9
+    w_B: float = 2.0e3              # rad/s, Baumgarte rate (augmented form)
+
+    @property
+    def model(self) -> str:
+        return f"beam{self.modes}"
+
+    @property
+    def J_r(self) -> float:
+        if self.roller_inertia is None:
+            return self.roller_mass * self.roller_radius**2 / 2
+        return self.roller_inertia
+
+    @property
+    def period(self) -> float:
+        return 2 * math.pi / self.omega
+
+    @property
+    def free_length_raised(self) -> float:
+        """x_E at the outer dwell, the follower fully raised: d - r_b - r_r - S_T."""
+        return self.distance - self.base_radius - self.roller_radius - self.rise
+
+
+def check(case: Case) -> Case:
+    """Refuse a case that cannot run, naming the parameter and its range."""
+    positive = ("omega", "rod_radius", "distance", "base_radius", "rise", "revolutions",
+                "roller_radius", "roller_mass", "E", "rho", "rtol")
+    for name in positive:
+        v = getattr(case, name)
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v <= 0:
+            raise CamdynInputError(f"{name}={v!r}: must be a positive number")
+    if isinstance(case.modes, bool) or not isinstance(case.modes, int) or not 1 <= case.modes <= N_MAX:
+        raise CamdynInputError(f"modes={case.modes!r}: choose an integer from 1 to {N_MAX}")
+    if case.formulation not in FORMULATIONS:
+        raise CamdynInputError(f"formulation={case.formulation!r}: choose one of "
+                               f"{', '.join(FORMULATIONS)}")
+    if case.roller_inertia is not None and not (math.isfinite(case.roller_inertia)
+                                                 and case.roller_inertia >= 0):
+        raise CamdynInputError(f"roller_inertia={case.roller_inertia!r}: must be >= 0")
+    if not (math.isfinite(case.w_B) and case.w_B >= 0):
+        raise CamdynInputError(f"w_B={case.w_B!r}: must be >= 0")
+    # the roller (radius r_r about E) must stay clear of the guide when fully raised
+    if case.free_length_raised <= case.roller_radius:
+        limit = case.distance - 2 * case.roller_radius - case.rise
+        raise CamdynInputError(
+            f"base_radius={case.base_radius:g} m puts the roller into the guide at the top of the "
+            f"stroke (free rod {case.free_length_raised * 1e3:.3g} mm, roller radius "
+            f"{case.roller_radius * 1e3:g} mm): with distance={case.distance:g} m and "
+            f"rise={case.rise:g} m, base_radius must be below {limit:g} m")
+    choose(case.law)
+    return case
+
+
+def parameters(case: Case) -> dict:
+    """The generated model's parameter values (manifest names) for a case."""
+    return {"Omega": case.omega, "d": case.distance, "r_b": case.base_radius,
+            "r_r": case.roller_radius, "S_T": case.rise, "a_rod": case.rod_radius, "E": case.E,
+            "rho": case.rho, "m_r": case.roller_mass, "J_r": case.J_r,
+            "rayleigh": 1.0 if case.rayleigh else 0.0, "w_B": case.w_B,
+            "formulation": FORMULATIONS[case.formulation]}
+
+
+def _profile(case: Case, theta: float) -> tuple[float, float]:
+    """S and dS/dtheta of the RDFD motion at a cam angle in the rise (paper (1))."""
+    beta = math.pi / 2
+    h = choose(case.law).evaluate(np.array([theta / beta]))[0]
+    return case.rise * h[0], case.rise * h[1] / beta
+
+
+def initial_state(case: Case, model) -> np.ndarray:
+    """At t = 0, theta = 0: the rod straight and at rest transversally; x_E and the rates
+    from the constraints (6), (7): x_E = d - r(0), theta' = Omega, x_E' = -S'(0) Omega."""
+    S0, S1 = _profile(case, 0.0)
+    names = model.state_names
+    y = np.zeros(len(names))
+    y[names.index("xE")] = case.distance - case.base_radius - case.roller_radius - S0
+    y[names.index("thetad")] = case.omega
+    y[names.index("xEd")] = -S1 * case.omega
+    return y
+
+
+def simulator(case: Case, t_end: float | None = None) -> tuple[Simulator, object]:
+    check(case)
+    model = load(case.model)
+    t_end = case.revolutions * case.period if t_end is None else t_end
+    sim = Simulator(model, t_end, "dp54", rtol=case.rtol, law=case.law,
+                    y0=initial_state(case, model), max_steps=20_000_000)
+    return sim, model
+
+
+def run(case: Case, progress=None) -> tuple[dict, object]:
+    """Integrate ``case``; returns (summary, result)."""
+    sim, model = simulator(case)
+    if progress:
+        progress(f"beam follower: N = {case.modes}, Omega = {case.omega:g} rad/s, "
+                 f"{case.revolutions:g} revolution(s), {case.formulation}")
+    start = time.process_time()
+    res = sim.run(parameters(case))
+    cpu = time.process_time() - start
+    return summarize(case, res, cpu), res
+
+
+def summarize(case: Case, res, cpu: float) -> dict:
+    t0, t1 = float(res.t[0]), float(res.t[-1])
+    vmax, _ = extreme(res, "vE", t0, t1, absolute=True, minimum=False)
+    phi = max(extreme(res, name, t0, t1, absolute=True, minimum=False)[0] for name in ("Phi1", "Phi2"))
+    return {"model": case.model, "formulation": case.formulation, "omega": case.omega,
+            "modes": case.modes, "revolutions": case.revolutions,
+            "max_abs_tip_deflection": vmax, "max_constraint_residual": phi,
+            "dwell_frequency_hz": dwell_frequency(case), "n_steps": int(res.stats["n_steps"]),
+            "cpu_seconds": cpu, "case": asdict(case)}
+
+
+def linearized(case: Case) -> np.ndarray:
+    """State matrix A of the transverse motion d[b, b']/dt = A [b, b'] at the outer dwell with
+    the length frozen there: numerical derivatives of the generated right-hand side in its
+    partitioned form (x_E, theta recovered from b by the constraints), at mid-dwell.  In the
+    dwell the pitch curve is a circle, so the linearization does not depend on the time."""
+    from . import _integrate
+
+    c = replace(case, formulation="partitioned")
+    check(c)
+    model = load(c.model)
+    p = model.parameter_vector(parameters(c))
+    law = choose(c.law)
+    codes, pars = np.array([law.code], dtype=np.intc), np.array([law.par])
+    names = model.state_names
+    n = c.modes
+    theta0 = 3 * math.pi / 4
+    t0 = theta0 / c.omega
+    y0 = np.zeros(len(names))
+    y0[names.index("theta")] = theta0
+    y0[names.index("thetad")] = c.omega
+    y0[names.index("xE")] = c.free_length_raised
+    idx = [names.index(f"b{i}") for i in range(1, n + 1)]
+    idx += [names.index(f"b{i}d") for i in range(1, n + 1)]
+    acc = [names.index(f"b{i}d") for i in range(1, n + 1)]
+    A = np.zeros((2 * n, 2 * n))
+    A[:n, n:] = np.eye(n)
+    for j, k in enumerate(idx):
+        h = 1e-9 if j < n else 1e-9 * c.omega
+        ys = np.repeat(y0[None, :], 2, axis=0)
+        ys[0, k] += h
+        ys[1, k] -= h
+        f = _integrate.eval_rhs(model.capsule, p, codes, pars, np.full(2, t0), ys)
+        A[n:, j] = (f[0, acc] - f[1, acc]) / (2 * h)
+    return A
+
+
+def dwell_frequencies(case: Case) -> np.ndarray:
+    """Transverse natural frequencies [Hz], ascending, at the outer dwell (length frozen)."""
+    lam = np.linalg.eigvals(linearized(case))
+    w = np.sort(np.abs(lam.imag[lam.imag > 0]))
+    return w / (2 * math.pi)
+
+
+def dwell_frequency(case: Case) -> float:
+    """The lowest transverse natural frequency [Hz] at the outer dwell (follower raised)."""
+    return float(dwell_frequencies(case)[0])
+
+
+def cantilever_tip_mass_frequency(E: float, I: float, rho_A: float, L: float, m_tip: float) -> float:
+    """Lowest natural frequency [Hz] of an Euler-Bernoulli cantilever with a tip point mass:
+    the first root of 1 + cos(bL) cosh(bL) + r bL (cos(bL) sinh(bL) - sin(bL) cosh(bL)) = 0,
+    r = m_tip/(rho A L), and w = b^2 (E I/(rho A))^(1/2)."""
+    from scipy.optimize import brentq
+
+    r = m_tip / (rho_A * L)
+
+    def g(z):
+        return 1 + math.cos(z) * math.cosh(z) + r * z * (math.cos(z) * math.sinh(z) - math.sin(z) * math.cosh(z))
+
+    grid = np.linspace(1e-3, 2.0, 2001)
+    vals = [g(z) for z in grid]
+    k = next(i for i in range(len(grid) - 1) if vals[i] * vals[i + 1] < 0)
+    z = brentq(g, grid[k], grid[k + 1], xtol=1e-15)
+    return (z / L) ** 2 * math.sqrt(E * I / rho_A) / (2 * math.pi)
+
+
+# -- the paper's figures 4-9: the tip response against the cam angle, one parameter varied ---------
+
+FIGURES = {
+    "fig4_modes": ("modes", (2, 3, 4), "N"),
+    "fig5_omega": ("omega", (120.0, 240.0, 360.0), "Omega [rad/s]"),
+    "fig6_distance": ("distance", (0.102, 0.112, 0.122), "d [m]"),
+    "fig7_rod_radius": ("rod_radius", (0.007, 0.005, 0.003), "rod radius [m]"),
+    # the paper does not print its three base radii: 22, 26 and 30 mm taken
+    "fig8_base_radius": ("base_radius", (0.030, 0.026, 0.022), "r_b [m]"),
+    "fig9_rise": ("rise", (0.008, 0.015, 0.022), "S_T [m]"),
+}
+
+
+def sweep(case: Case, field: str, values, progress=None) -> list:
+    """(value, summary, result) for each value of one field of the case."""
+    out = []
+    for v in values:
+        c = replace(case, **{field: v})
+        s, res = run(c, progress)
+        out.append((v, s, res))
+    return out
+
+
+def plot_figures(case: Case, out_dir, progress=None, which=None) -> list:
+    """PNG files of figs 4-9 (tip deflection v_E against the cam angle Omega t in degrees)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from pathlib import Path
+
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    for name, (field, values, label) in FIGURES.items():
+        if which is not None and name not in which:
+            continue
+        fig, ax = plt.subplots(figsize=(8, 4))
+        for v, s, res in sweep(case, field, values, progress):
+            t = np.linspace(0.0, res.t[-1], 4000)
+            ax.plot(np.degrees(case.omega * t) if field != "omega" else np.degrees(v * t),
+                    res.sample(t)["vE"] * 1e3, lw=0.8, label=f"{label} = {v:g}")
+        ax.set_xlabel("cam angle [deg]")
+        ax.set_ylabel("tip deflection v_E [mm]")
+        ax.set_title(f"{name.replace('_', ' ')}: transverse response at the roller pin E")
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        path = out / f"{name}.png"
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        written.append(str(path))
+    return written
