@@ -121,3 +121,34 @@ def test_stick_slip_threshold_of_linkage_friction():
     s = 1.001 * nu
     assert c * h_m * H == pytest.approx(s * F_0 / (1 - s), rel=1e-3)
     assert fric[k] == "forward"
+
+
+@pytest.mark.parametrize("mode, sign", [("forward", -1.0), ("backward", 1.0)])
+def test_cam_friction_torque_6_13(mode, sign):
+    """(6.13): slipping, the friction on the cam opposes its rotation with the torque
+    nu_b |F_x| R (1 + tan^2 alpha)^(1/2).  In the dwell before the rise tan alpha = 0 and
+    R = R_b (+ h = 0), so turning the friction on changes the cam's angular acceleration by
+    -/+ nu_b |F_x| R_b/J.  F_x is read from the generated outputs, the rest by hand; generated
+    rcrc_yzfls at a state with the linkage compressed, to 1e-12 relative."""
+    m = load("dynacam_rcrc_yzfls")
+    nu, R_b, J = 0.2, 0.08, 0.003
+    base = dict(R_b=R_b, J=J, beta_0=0.5, F_0=20.0, c_s=100.0, nu_x=0.0, q_x=0.0)
+    choice = laws.choose("cycloidal")
+    codes, pars = np.array([choice.code], dtype=np.intc), np.array([choice.par])
+    names = m.state_names
+    y = np.zeros(len(names))
+    y[names.index("betad")] = 4.0
+    y[names.index("x")] = -3e-5                 # roller pressed onto the cam
+    modes = np.array([m.manifest["modes"][j]["values"].index(v) for j, v in
+                      enumerate(("contact", mode, "forward"))], dtype=np.intc)
+    assert [s["name"] for s in m.manifest["modes"]] == ["roller", "camfric", "linkfric"]
+    acc = {}
+    for key, nu_b in (("with", nu), ("without", 0.0)):
+        p = _p(m, **base, nu_b=nu_b)
+        f = _integrate.eval_rhs(m.capsule, p, codes, pars, np.zeros(1), y[None, :], element_modes=modes)[0]
+        out = _integrate.eval_outputs(m.capsule, p, codes, pars, np.zeros(1), y[None, :],
+                                      element_modes=modes)[0]
+        acc[key] = f[names.index("betad")]
+        Fx = out[m.output_names.index("Fx")]
+    assert abs(Fx) > 1.0
+    assert acc["with"] - acc["without"] == pytest.approx(sign * nu * abs(Fx) * R_b / J, rel=1e-12)
