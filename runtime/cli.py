@@ -6,6 +6,7 @@
     camdyn laws [--json]                    cam-law characteristics (App. 2)
     camdyn run [SCENE.toml] [--out DIR]     the main job: report and charts
     camdyn simulate SCENE.toml [--json]     a DYNACAM scene (thesis ch. 6, 7): summary and diagrams
+    camdyn beam-follower [--omega W] ...    the Rayleigh-beam follower (paper; issue 5)
 
 Bad arguments end in one line on stderr naming the argument, and status 2.
 """
@@ -316,6 +317,125 @@ def _cmd_simulate(args) -> int:
     return 0
 
 
+# -- camdyn beam-follower ----------------------------------------------------------
+
+# Case field -> command-line spelling, in the order of the usage line
+_BEAM_FLAGS = {"omega": "--omega", "modes": "--modes", "rod_radius": "--rod-radius",
+               "distance": "--distance", "base_radius": "--base-radius", "rise": "--rise",
+               "revolutions": "--revolutions", "rayleigh": "--rayleigh",
+               "roller_inertia": "--roller-inertia", "formulation": "--formulation"}
+# summary key -> unit, for the table
+_BEAM_UNITS = {"omega": "rad/s", "rod_radius": "m", "distance": "m", "base_radius": "m",
+               "rise": "m", "roller_inertia": "kg m^2", "roller_radius": "m", "roller_mass": "kg",
+               "E": "Pa", "rho": "kg/m^3", "w_B": "rad/s", "max_abs_tip_deflection": "m",
+               "max_constraint_residual": "m", "dwell_frequency_hz": "Hz", "cpu_seconds": "s",
+               "figures_cpu_seconds": "s"}
+
+
+def _beam_argument(message: str) -> str:
+    """Prefix the flag a :func:`camdyn.runtime.beam.check` message is about (``name=value ...``)."""
+    head = message.split("=", 1)[0].split(" ", 1)[0]
+    if head in _BEAM_FLAGS and not message.startswith("argument "):
+        return f"argument {_BEAM_FLAGS[head]}: {message}"
+    return message
+
+
+def beam_follower_run(case, out_dir=None, progress=None, announce_run=True) -> dict:
+    """Check ``case``, run it, report the undercut of its cam profile and, with ``out_dir``,
+    write figs 4-9; returns one flat dict: the inputs used, then the results.  ``progress``
+    gets one line per run (the main run's only with ``announce_run``).
+
+    An undercut profile is reported (``"undercut"``: the message, else None), not refused:
+    the model holds the roller centre on the pitch curve, which stays smooth, so the run is
+    that of the designed motion, which a cam cut for this roller could not give."""
+    from dataclasses import replace
+
+    from camdyn.derive.beam import geometry
+    from . import beam
+
+    beam.check(case)
+    planned = []
+    if out_dir is not None:
+        # every figure run varies one field of this case: refuse before anything runs
+        for name, (field, values, _) in beam.FIGURES.items():
+            for v in values:
+                try:
+                    beam.check(replace(case, **{field: v}))
+                except CamdynInputError as exc:
+                    raise CamdynInputError(
+                        f"argument --out: {name} sets {field}={v:g}, which this case does not "
+                        f"allow: {exc}") from None
+                planned.append(f"{name}, {field} = {v:g}")
+        try:
+            Path(out_dir).mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise CamdynInputError(f"argument --out: cannot create {out_dir}: {exc}") from None
+    cut = geometry.undercut(geometry.CamGeometry(S_T=case.rise, r_b=case.base_radius,
+                                                 r_r=case.roller_radius, rise_law=case.law))
+    summary, _ = beam.run(case, progress if announce_run else None)
+    out = {key: getattr(case, key) for key in _BEAM_FLAGS}
+    out["roller_inertia"] = case.J_r
+    out["roller_inertia_default"] = case.roller_inertia is None
+    for key in ("law", "roller_radius", "roller_mass", "E", "rho", "rtol", "w_B"):
+        out[key] = getattr(case, key)
+    out["model"] = summary["model"]
+    for key in ("max_abs_tip_deflection", "max_constraint_residual", "dwell_frequency_hz"):
+        out[key] = summary[key]
+    out["undercut"] = cut.message if cut else None
+    out["n_steps"] = summary["n_steps"]
+    out["cpu_seconds"] = summary["cpu_seconds"]
+    if out_dir is not None:
+        done = iter(range(1, len(planned) + 1))
+
+        def figure_progress(msg):
+            k = next(done, None)
+            if progress and k is not None:
+                progress(f"  [{k}/{len(planned)}] {planned[k - 1]}: {msg}")
+            elif progress:
+                progress(f"  {msg}")
+
+        c0 = time.process_time()
+        out["figures"] = beam.plot_figures(case, out_dir, progress=figure_progress)
+        out["figures_cpu_seconds"] = time.process_time() - c0
+    return out
+
+
+def _cmd_beam_follower(args) -> int:
+    from . import beam
+
+    prog = "camdyn beam-follower"
+
+    def progress(msg):
+        print(msg, file=sys.stderr, flush=True)
+
+    given = {key: getattr(args, key) for key in _BEAM_FLAGS}
+    case = beam.Case(**{key: v for key, v in given.items() if v is not None})
+    try:
+        # the main run's line only without --json; the 18 figure runs report in any case
+        out = beam_follower_run(case, args.out, progress, announce_run=not args.json)
+    except CamdynInputError as exc:
+        return _fail(prog, _beam_argument(str(exc)))
+    except SimulationError as exc:
+        print(f"{prog}: run failed: {exc}", file=sys.stderr)
+        return 1
+    if out["undercut"]:
+        print(f"{prog}: warning: {out['undercut']} The run follows the pitch curve all the same.",
+              file=sys.stderr)
+    if args.json:
+        print(json.dumps(out, indent=1))
+        return 0
+    rows = [(k, v) for k, v in out.items() if k != "figures"]
+    rows = [(k, ("yes, see the warning" if v else "no") if k == "undercut" else v) for k, v in rows]
+    width = max(len(k) for k, _ in rows)
+    for k, v in rows:
+        text = f"{v:.6g}" if isinstance(v, float) else str(v)
+        unit = _BEAM_UNITS.get(k, "")
+        print(f"{k:<{width}}  {text} {unit}".rstrip())
+    for f in out.get("figures", []):
+        print(f"wrote {f}")
+    return 0
+
+
 # -- parser -------------------------------------------------------------------------
 
 def build_parser() -> argparse.ArgumentParser:
@@ -370,7 +490,66 @@ def build_parser() -> argparse.ArgumentParser:
     sm.add_argument("--json", action="store_true", help="one JSON object on stdout")
     sm.add_argument("--out", default=None, help="folder for the diagrams (PNG)")
     sm.set_defaults(func=_cmd_simulate)
+
+    _add_beam_follower(sub)
     return top
+
+
+# the paper's values, shown in the help; the run takes its defaults from beam.Case itself
+# (importing camdyn.runtime.beam here would load SciPy for every command; a test keeps the two equal)
+BEAM_DEFAULTS = {"omega": 240.0, "modes": 3, "rod_radius": 0.005, "distance": 0.112,
+                 "base_radius": 0.026, "rise": 0.015, "revolutions": 1.0, "rayleigh": True,
+                 "roller_inertia": None, "formulation": "augmented"}
+BEAM_ROLLER = {"roller_radius": 0.005, "roller_mass": 0.05}   # for the disc inertia in the help
+BEAM_N_MAX = 6
+BEAM_FORMULATIONS = ("augmented", "partitioned")
+
+
+def _add_beam_follower(sub) -> None:
+    dflt = BEAM_DEFAULTS
+    disc = BEAM_ROLLER["roller_mass"] * BEAM_ROLLER["roller_radius"] ** 2 / 2
+    b = sub.add_parser(
+        "beam-follower", help="the Rayleigh-beam follower of the paper (issue 5): tip response",
+        description="Translating roller follower in the groove of a rigid disk cam (RDFD motion, "
+                    "cycloidal rise and fall over 90 deg each), its rod a Rayleigh beam clamped in "
+                    "the guide whose free length changes as the cam turns. Integrates whole cam "
+                    "revolutions from the rigid follower's state at theta = 0 and reports the "
+                    "largest tip deflection |v_E|, the largest constraint residual and the lowest "
+                    "transverse natural frequency with the rod frozen at the outer dwell. SI "
+                    "units; defaults are the paper's data (sec. 4). A cam profile whose groove "
+                    "wall is undercut for this roller is reported with a warning (and in the JSON "
+                    "as \"undercut\") but not refused: the model follows the pitch curve, so the "
+                    "run shows the designed motion, which a cam cut for this roller could not "
+                    "give. Progress lines go to stderr.")
+    b.add_argument("--omega", type=float, metavar="RAD_S",
+                   help=f"cam speed Omega, rad/s (default {dflt['omega']:g}; paper: 120, 240, 360)")
+    b.add_argument("--modes", type=int, metavar="N",
+                   help=f"assumed modes N, 1 to {BEAM_N_MAX} (default {dflt['modes']})")
+    b.add_argument("--rod-radius", type=float, metavar="M",
+                   help=f"radius of the follower rod, m (default {dflt['rod_radius']:g})")
+    b.add_argument("--distance", type=float, metavar="M",
+                   help=f"cam centre to guide exit d, m (default {dflt['distance']:g})")
+    b.add_argument("--base-radius", type=float, metavar="M",
+                   help=f"base-circle radius r_b, m (default {dflt['base_radius']:g}); the "
+                        f"roller must stay clear of the guide at the top of the stroke")
+    b.add_argument("--rise", type=float, metavar="M",
+                   help=f"total rise S_T, m (default {dflt['rise']:g})")
+    b.add_argument("--revolutions", type=float, metavar="K",
+                   help=f"cam revolutions to integrate, > 0 (default {dflt['revolutions']:g})")
+    b.add_argument("--rayleigh", action=argparse.BooleanOptionalAction,
+                   help="keep the rotary inertia of the rod (default); --no-rayleigh gives the "
+                        "Euler-Bernoulli rod")
+    b.add_argument("--roller-inertia", type=float, metavar="KG_M2",
+                   help=f"roller moment of inertia J_r, kg m^2, >= 0 (default: uniform disc "
+                        f"m_r r_r^2/2 = {disc:g}); 0 ignores the roller's rotation")
+    b.add_argument("--formulation", choices=BEAM_FORMULATIONS,
+                   help=f"augmented (multipliers, Baumgarte) or partitioned (coordinate "
+                        f"partitioning, paper (21)-(27)); default {dflt['formulation']}")
+    b.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    b.add_argument("--out", default=None, metavar="DIR",
+                   help="also write the paper's figs 4-9 (tip deflection against cam angle, one "
+                        "parameter varied; 18 runs) as PNG into DIR")
+    b.set_defaults(func=_cmd_beam_follower)
 
 
 def main(argv=None) -> int:

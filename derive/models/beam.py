@@ -138,8 +138,12 @@ def build(n: int) -> Model:
     vE = v.subs(x, xE)
     r = P["r_b"] + P["r_r"] + P["S_T"] * R(th)
     S1 = P["S_T"] * cam_input("R", 1)(th)
+    S2 = P["S_T"] * cam_input("R", 2)(th)
     phi = sp.atan(S1 / r)                                      # pressure angle
-    w_n = P["Omega"] - th.diff(t) * (1 - phi.diff(th))         # rate of the common normal
+    # d(phi)/d(theta) written out (r' = S'): the same as phi.diff(theta), but Lagrange's
+    # equations come out several times smaller than through the derivative of atan
+    phi_theta = (S2 * r - S1**2) / (r**2 + S1**2)
+    w_n = P["Omega"] - th.diff(t) * (1 - phi_theta)            # rate of the common normal
     T_roller = P["m_r"] * (vE.diff(t) ** 2 + xEd**2) / 2 + P["J_r"] * w_n**2 / 2
     T_guide = P["rho"] * A * P["L_g"] * xEd**2 / 2
 
