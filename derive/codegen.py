@@ -42,6 +42,30 @@ def _num(value):
     return float(value) if value.is_number else str(value)
 
 
+def _state_entries(m: Model) -> list:
+    """Manifest entries of q and q'."""
+    return ([{"name": c.name, "unit": c.unit, "scale": c.scale, "doc": c.doc,
+              "initial": _num(c.initial)} for c in m.coordinates]
+            + [{"name": c.name + "d", "unit": f"{c.unit}/{m.time_unit}", "scale": c.scale,
+                "doc": f"rate of {c.name}", "initial": _num(c.initial_rate)} for c in m.coordinates])
+
+
+def manifest_common(m: Model) -> dict:
+    """The manifest entries every generated model has: names, time, coordinates, parameters."""
+    return {
+        "name": m.name,
+        "title": m.title,
+        "reference": m.reference,
+        "time": {"name": m.time.name, "unit": m.time_unit},
+        "n_q": len(m.coordinates),
+        "parameters": [{"name": p.name, "default": p.default, "unit": p.unit, "doc": p.doc,
+                        "low": p.low if p.low != -float("inf") else None,
+                        "high": p.high if p.high != float("inf") else None,
+                        "open_low": p.open_low, "open_high": p.open_high,
+                        "range": p.range_text()} for p in m.parameters],
+    }
+
+
 # -- model modules --------------------------------------------------------------
 
 
@@ -245,22 +269,9 @@ def model_context(eq: Equations) -> dict:
     families = sorted({fam for fam, _ in plain.instances})
 
     manifest = {
-        "name": m.name,
-        "title": m.title,
-        "reference": m.reference,
-        "time": {"name": t.name, "unit": m.time_unit},
-        "n_q": n,
-        "states": [{"name": c.name, "unit": c.unit, "scale": c.scale, "doc": c.doc,
-                    "initial": _num(c.initial)} for c in m.coordinates]
-        + [{"name": c.name + "d", "unit": f"{c.unit}/{m.time_unit}", "scale": c.scale,
-            "doc": f"rate of {c.name}", "initial": _num(c.initial_rate)} for c in m.coordinates]
-        + [{"name": z.name, "unit": z.unit, "scale": z.scale, "doc": z.doc,
-            "initial": _num(z.initial)} for z in m.first_order],
-        "parameters": [{"name": p.name, "default": p.default, "unit": p.unit, "doc": p.doc,
-                        "low": p.low if p.low != -float("inf") else None,
-                        "high": p.high if p.high != float("inf") else None,
-                        "open_low": p.open_low, "open_high": p.open_high,
-                        "range": p.range_text()} for p in m.parameters],
+        **manifest_common(m),
+        "states": _state_entries(m) + [{"name": z.name, "unit": z.unit, "scale": z.scale, "doc": z.doc,
+                                        "initial": _num(z.initial)} for z in m.first_order],
         "outputs": [{"name": o.name, "unit": o.unit, "doc": o.doc} for o in m.outputs],
         "cam_families": families,
         "cam_instances": [{"family": d["family"], "argument": d["arg_text"],

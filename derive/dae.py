@@ -25,7 +25,7 @@ import json
 
 import sympy as sp
 
-from .codegen import _env, _num, _plainer
+from .codegen import _env, _num, _plainer, _state_entries, manifest_common
 from .lagrange import Equations, derive
 from .model import Model
 from .optimize import ConstantTable
@@ -92,22 +92,10 @@ def constrained_context(eq: Equations) -> dict:
     outputs = [{"name": o.name, "unit": o.unit, "doc": o.doc} for o in m.outputs]
     outputs += [{"name": nme, "unit": unit, "doc": doc} for nme, unit, doc in EXTRA_OUTPUTS[:nc]]
     manifest = {
-        "name": m.name,
-        "title": m.title,
-        "reference": m.reference,
-        "time": {"name": t.name, "unit": m.time_unit},
-        "n_q": n,
+        **manifest_common(m),
         "n_constraints": nc,
         "dependent": [c.name for c in m.coordinates[n - nc:]],
-        "states": [{"name": c.name, "unit": c.unit, "scale": c.scale, "doc": c.doc,
-                    "initial": _num(c.initial)} for c in m.coordinates]
-        + [{"name": c.name + "d", "unit": f"{c.unit}/{m.time_unit}", "scale": c.scale,
-            "doc": f"rate of {c.name}", "initial": _num(c.initial_rate)} for c in m.coordinates],
-        "parameters": [{"name": p.name, "default": p.default, "unit": p.unit, "doc": p.doc,
-                        "low": p.low if p.low != -float("inf") else None,
-                        "high": p.high if p.high != float("inf") else None,
-                        "open_low": p.open_low, "open_high": p.open_high,
-                        "range": p.range_text()} for p in m.parameters],
+        "states": _state_entries(m),
         "outputs": outputs,
         "cam_families": [family],
         "cam_instances": [],

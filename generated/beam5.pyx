@@ -55,8 +55,9 @@
 #   as the paper integrates; ``L_g`` > 0 adds a length of rod moving with x_E' only (axially).
 # * Hamilton's principle on the free part as if it were a closed system: the paper's form;
 #   the momentum carried across x = 0 by the sliding rod is not accounted for.  In the rigid
-#   limit the axial multiplier is then the inertia force of the rigid follower with that same
-#   Lagrangian, (rho A x_E + m_r + rho A L_g) x_E'' + rho A x_E'^2/2.
+#   limit the axial multiplier is then minus the inertia force of the rigid follower with that
+#   same Lagrangian, lambda_2 = -[(rho A x_E + m_r + rho A L_g) x_E'' + rho A x_E'^2/2] (the
+#   sign of M Q'' + Phi_Q^T lambda = f).
 # * RDFD motion (paper (1), fig. 2): rise over [0, beta_r], outer dwell to pi, fall over
 #   [pi, pi + beta_r], inner dwell to 2 pi, repeated every revolution; S = S_T R(theta) with R
 #   the normalized RDFD profile of the chosen cam law (cycloidal by default, any law of the
