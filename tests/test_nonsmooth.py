@@ -152,3 +152,34 @@ def test_cam_friction_torque_6_13(mode, sign):
         Fx = out[m.output_names.index("Fx")]
     assert abs(Fx) > 1.0
     assert acc["with"] - acc["without"] == pytest.approx(sign * nu * abs(Fx) * R_b / J, rel=1e-12)
+
+
+@pytest.mark.parametrize("mode", ["drive", "driven"])
+def test_worm_gear_passes_the_shaft_torque_with_its_efficiency_6_71(mode):
+    """(6.71), (6.72): driving, the motor supplies the shaft torque M over the worm gear's
+    efficiency eta = tan(a)/tan(a + mu) (0.87 at a = 0.36 rad, mu = 0.05, App. 5); driven back,
+    it receives M eta' with eta' = tan(a - mu)/tan(a).  On the generated r2rc_yzs the motor's
+    speed deviation then changes at (M_ea - M_ma)/J_ma (A.5.8): checked with M and M_ea read
+    from the outputs, to 1e-12 relative."""
+    m = load("dynacam_r2rc_yzs")
+    a, mu, J_ma = 0.36, 0.05, 2.0
+    p = _p(m, alpha_w=a, mu_w=mu, J_ma=J_ma, beta_0=0.5)
+    choice = laws.choose("cycloidal")
+    codes, pars = np.array([choice.code], dtype=np.intc), np.array([choice.par])
+    names = m.state_names
+    y = np.zeros(len(names))
+    y[names.index("betad")] = 4.0
+    y[names.index("phi")] = 0.02                 # shaft wound up: M = k (phi - beta) > 0
+    y[names.index("Mea")] = 3.0
+    modes = np.zeros(len(m.manifest["modes"]), dtype=np.intc)
+    specs = m.manifest["modes"]
+    w = [s["name"] for s in specs].index("worm")
+    modes[w] = specs[w]["values"].index(mode)
+    f = _integrate.eval_rhs(m.capsule, p, codes, pars, np.zeros(1), y[None, :], element_modes=modes)[0]
+    out = _integrate.eval_outputs(m.capsule, p, codes, pars, np.zeros(1), y[None, :], element_modes=modes)[0]
+    M = out[m.output_names.index("torque")]
+    assert M > 1.0
+    eta = math.tan(a) / math.tan(a + mu)
+    assert eta == pytest.approx(0.87, abs=0.005)
+    M_ma = M / eta if mode == "drive" else M * math.tan(a - mu) / math.tan(a)
+    assert f[names.index("dw")] == pytest.approx((3.0 - M_ma) / J_ma, rel=1e-12)
