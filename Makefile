@@ -30,6 +30,7 @@ test: build
 
 bench: build
 	$(BIN)/python bench/run.py
+	$(BIN)/python bench/beam.py
 
 figures: build
 	$(BIN)/camdyn run --out out

@@ -1,0 +1,141 @@
+"""`make bench` (second part): the Rayleigh-beam follower's two formulations, speed against
+accuracy (issue 5).
+
+Problem: the paper's case (N assumed modes, Omega = 240 rad/s, one cam revolution from the
+rigid state at theta = 0).  Error measure: max |v_E| over the revolution against a reference
+run at rtol = 1e-12 of the same formulation and N (the two formulations' references agree to
+the digits printed).  Times: median of repeated runs, CPU of the compiled integration only,
+both formulations timed alternately in the same process; the ratio partitioned/augmented is
+the figure to read, absolute times drift with the machine.
+
+    python bench/beam.py            writes BENCHMARKS-beam.md and bench/out/beam_error_vs_time.png
+    python bench/beam.py --quick    3 repeats, two N, nothing written
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import statistics
+import sys
+import time
+from dataclasses import replace
+from pathlib import Path
+
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+HERE = Path(__file__).parent.resolve()
+ROOT = HERE.parent
+RTOLS = (1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10)
+FORMS = ("augmented", "partitioned")
+
+
+def _progress(msg: str) -> None:
+    print(f"  [{time.strftime('%H:%M:%S')}] {msg}", file=sys.stderr, flush=True)
+
+
+def tip_max(case) -> tuple[float, float, int, float]:
+    """(max |v_E|, CPU seconds of the integration, steps, max |Phi|) of one run."""
+    from camdyn.runtime import beam
+
+    sim, _ = beam.simulator(case)
+    c0 = time.process_time()
+    res = sim.run(beam.parameters(case))
+    cpu = time.process_time() - c0
+    s = beam.summarize(case, res, cpu)
+    return s["max_abs_tip_deflection"], cpu, s["n_steps"], s["max_constraint_residual"]
+
+
+def measure(modes_list, repeat: int) -> list:
+    from camdyn.runtime import beam
+
+    rows = []
+    for n in modes_list:
+        base = replace(beam.Case(), modes=n)
+        refs = {f: tip_max(replace(base, formulation=f, rtol=1e-12))[0] for f in FORMS}
+        _progress(f"N = {n}: references {refs['augmented']:.12e} / {refs['partitioned']:.12e}")
+        for rtol in RTOLS:
+            times = {f: [] for f in FORMS}
+            info = {}
+            for _ in range(repeat):
+                for f in FORMS:       # alternate, so that a drift of the machine hits both
+                    v, cpu, steps, phi = tip_max(replace(base, formulation=f, rtol=rtol))
+                    times[f].append(cpu)
+                    info[f] = (abs(v - refs[f]) / refs[f], steps, phi)
+            row = {"modes": n, "rtol": rtol, "ref_diff": abs(refs["augmented"] - refs["partitioned"]) / refs["augmented"]}
+            for f in FORMS:
+                row[f] = {"cpu": statistics.median(times[f]), "error": info[f][0], "steps": info[f][1],
+                          "phi": info[f][2]}
+            row["ratio"] = row["partitioned"]["cpu"] / row["augmented"]["cpu"]
+            rows.append(row)
+            _progress(f"N = {n}, rtol = {rtol:g}: ratio partitioned/augmented {row['ratio']:.2f}")
+    return rows
+
+
+def chart(rows, path: Path) -> None:
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for n in sorted({r["modes"] for r in rows}):
+        for f, mark in zip(FORMS, ("o-", "s--")):
+            pts = [(r[f]["cpu"], max(r[f]["error"], 1e-16)) for r in rows if r["modes"] == n]
+            ax.loglog(*zip(*pts), mark, label=f"N = {n}, {f}")
+    ax.set_xlabel("CPU time of one revolution [s] (median)")
+    ax.set_ylabel("relative error of max |v_E|")
+    ax.set_title("Rayleigh-beam follower: error against CPU time (DP54, rtol 1e-5 .. 1e-10)")
+    ax.grid(True, which="both", lw=0.3)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def report(rows, repeat: int) -> str:
+    import numpy as np
+    import scipy
+
+    lines = ["# Benchmarks: the Rayleigh-beam follower (issue 5)", "",
+             "Written by `make bench` (`bench/beam.py`); rerun it to refresh every figure below.", "",
+             "Problem: the paper's case, Omega = 240 rad/s, one cam revolution, DP54 at the rtol given. "
+             "Error: max |v_E| against a run at rtol = 1e-12 of the same formulation and N, relative. "
+             f"Times: median of {repeat} runs, CPU of the compiled integration, the two formulations "
+             "alternated in the same process; ratio = partitioned/augmented.", "",
+             f"Machine: {platform.processor() or platform.machine()}, {os.cpu_count()} logical CPUs, "
+             f"Python {platform.python_version()}, NumPy {np.__version__}, SciPy {scipy.__version__}; "
+             f"{time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())}.", "",
+             "| N | rtol | augmented CPU [s] | error | steps | max abs Phi [m] | partitioned CPU [s] | error | steps | max abs Phi [m] | ratio |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        a, p = r["augmented"], r["partitioned"]
+        lines.append(f"| {r['modes']} | {r['rtol']:.0e} | {a['cpu']:.3f} | {a['error']:.1e} | {a['steps']} | "
+                     f"{a['phi']:.1e} | {p['cpu']:.3f} | {p['error']:.1e} | {p['steps']} | {p['phi']:.1e} | "
+                     f"{r['ratio']:.2f} |")
+    ratios = [r["ratio"] for r in rows]
+    lines += ["", f"Ratio partitioned/augmented over all rows: median {statistics.median(ratios):.2f}, "
+              f"range {min(ratios):.2f}-{max(ratios):.2f}.  The references of the two formulations "
+              f"differ by at most {max(r['ref_diff'] for r in rows):.1e} (relative).", "",
+              "Chart: `bench/out/beam_error_vs_time.png` (not committed).", ""]
+    return "\n".join(lines)
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="3 repeats, N = 2 and 3, nothing written")
+    args = ap.parse_args(argv)
+    repeat = 3 if args.quick else 5
+    modes = (2, 3) if args.quick else (2, 3, 4)
+    rows = measure(modes, repeat)
+    text = report(rows, repeat)
+    print(text)
+    if not args.quick:
+        chart(rows, HERE / "out" / "beam_error_vs_time.png")
+        (ROOT / "BENCHMARKS-beam.md").write_text(text)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
