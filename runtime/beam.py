@@ -116,15 +116,55 @@ def _profile(case: Case, theta: float) -> tuple[float, float]:
     return case.rise * h[0], case.rise * h[1] / beta
 
 
-def initial_state(case: Case, model) -> np.ndarray:
-    """At t = 0, theta = 0: the rod straight and at rest transversally; x_E and the rates
-    from the constraints (6), (7): x_E = d - r(0), theta' = Omega, x_E' = -S'(0) Omega."""
-    S0, S1 = _profile(case, 0.0)
+def initial_state(case: Case, model, b=None, b_rate=None) -> np.ndarray:
+    """A consistent state at t = 0 for the mode amplitudes ``b`` and their rates ``b_rate``
+    (default: the rod straight and at rest transversally, as the paper starts).
+
+    The dependent coordinates come from the generated constraints themselves: x_E and theta
+    by Newton's method on Phi(Q, 0) = 0 (6), (7), started from the rigid follower at theta = 0;
+    their rates from the partitioned right-hand side, which solves Phi_Q Q' = -dPhi/dt for
+    them.  For b = 0 this is x_E = d - r(0), theta = 0, theta' = Omega, x_E' = -S'(0) Omega."""
+    from . import _integrate
+
+    n = case.modes
     names = model.state_names
+    S0, S1 = _profile(case, 0.0)
+    # the rigid follower's start: exact for b = 0, the first guess otherwise
     y = np.zeros(len(names))
     y[names.index("xE")] = case.distance - case.base_radius - case.roller_radius - S0
     y[names.index("thetad")] = case.omega
     y[names.index("xEd")] = -S1 * case.omega
+    if b is not None:
+        y[[names.index(f"b{i}") for i in range(1, n + 1)]] = np.asarray(b, dtype=float)
+    if b_rate is not None:
+        y[[names.index(f"b{i}d") for i in range(1, n + 1)]] = np.asarray(b_rate, dtype=float)
+    law = choose(case.law)
+    codes, pars = np.array([law.code], dtype=np.intc), np.array([law.par])
+    t0 = np.zeros(1)
+    dep = [names.index("xE"), names.index("theta")]
+    phis = [model.output_names.index("Phi1"), model.output_names.index("Phi2")]
+
+    def residual(p, yy):
+        return _integrate.eval_outputs(model.capsule, p, codes, pars, t0, yy[None, :])[0][phis]
+
+    p_aug = model.parameter_vector({**parameters(case), "formulation": 0.0})
+    for _ in range(30):
+        g = residual(p_aug, y)
+        if np.abs(g).max() < 1e-15:
+            break
+        J = np.empty((2, 2))
+        for j, k in enumerate(dep):
+            h = 1e-7 * (1.0 + abs(y[k]))
+            yp = y.copy()
+            yp[k] += h
+            J[:, j] = (residual(p_aug, yp) - g) / h
+        y[dep] -= np.linalg.solve(J, g)
+    else:
+        raise CamdynInputError(f"no consistent initial state: the constraints (6), (7) keep a "
+                               f"residual of {np.abs(g).max():.3g} m")
+    p_part = model.parameter_vector({**parameters(case), "formulation": 1.0})
+    f = _integrate.eval_rhs(model.capsule, p_part, codes, pars, t0, y[None, :])[0]
+    y[[names.index("xEd"), names.index("thetad")]] = f[dep]
     return y
 
 

@@ -587,3 +587,35 @@ def test_check_refuses_bad_input(change, pattern):
     87 mm), an unknown formulation; each message names the parameter and what is allowed."""
     with pytest.raises(CamdynInputError, match=pattern):
         beam.check(replace(DEFAULT, **change))
+
+
+def test_initial_state_is_consistent_with_the_constraints():
+    """beam.initial_state solves the generated constraints (6), (7) for x_E, theta at t = 0 and
+    their rates from Phi_Q Q' = -dPhi/dt.  For b = 0 it is the rigid start x_E = d - r(0),
+    theta = 0, theta' = Omega, x_E' = -S'(0) Omega = 0 (cycloid), to rounding; for a deflected,
+    moving rod Phi = 0 to 1e-15 m, and Phi' = 0 checked by a central difference of Phi along
+    the state's rates (step 1e-7 s), to 1e-9 m/s against rates of ~0.1 m/s."""
+    c = DEFAULT
+    m = load(c.model)
+    y = beam.initial_state(c, m)
+    names = m.state_names
+    assert y[names.index("xE")] == c.distance - c.base_radius - c.roller_radius
+    assert y[names.index("theta")] == 0.0
+    assert y[names.index("thetad")] == pytest.approx(c.omega, rel=1e-14)
+    assert abs(y[names.index("xEd")]) < 1e-14
+    y = beam.initial_state(c, m, b=[1e-4, -2e-5, 5e-6], b_rate=[0.1, -0.02, 0.0])
+    law = choose(c.law)
+    codes, pars = np.array([law.code], dtype=np.intc), np.array([law.par])
+    p = m.parameter_vector({**beam.parameters(c), "formulation": 0.0})
+    phis = [m.output_names.index("Phi1"), m.output_names.index("Phi2")]
+    n = len(y) // 2
+    h = 1e-7
+
+    def phi(t, yy):
+        return _integrate.eval_outputs(m.capsule, p, codes, pars, np.array([t]), yy[None, :])[0][phis]
+
+    assert np.abs(phi(0.0, y)).max() < 1e-15
+    yp, ym = y.copy(), y.copy()
+    yp[:n] += h * y[n:]
+    ym[:n] -= h * y[n:]
+    assert np.abs((phi(h, yp) - phi(-h, ym)) / (2 * h)).max() < 1e-9
