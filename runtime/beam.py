@@ -116,6 +116,12 @@ def _profile(case: Case, theta: float) -> tuple[float, float]:
     return case.rise * h[0], case.rise * h[1] / beta
 
 
+def _law_arrays(case: Case) -> tuple[np.ndarray, np.ndarray]:
+    """The cam law as the compiled one-off evaluations (eval_rhs, eval_outputs) take it."""
+    law = choose(case.law)
+    return np.array([law.code], dtype=np.intc), np.array([law.par])
+
+
 def initial_state(case: Case, model, b=None, b_rate=None) -> np.ndarray:
     """A consistent state at t = 0 for the mode amplitudes ``b`` and their rates ``b_rate``
     (default: the rod straight and at rest transversally, as the paper starts).
@@ -138,8 +144,7 @@ def initial_state(case: Case, model, b=None, b_rate=None) -> np.ndarray:
         y[[names.index(f"b{i}") for i in range(1, n + 1)]] = np.asarray(b, dtype=float)
     if b_rate is not None:
         y[[names.index(f"b{i}d") for i in range(1, n + 1)]] = np.asarray(b_rate, dtype=float)
-    law = choose(case.law)
-    codes, pars = np.array([law.code], dtype=np.intc), np.array([law.par])
+    codes, pars = _law_arrays(case)
     t0 = np.zeros(1)
     dep = [names.index("xE"), names.index("theta")]
     phis = [model.output_names.index("Phi1"), model.output_names.index("Phi2")]
@@ -217,8 +222,7 @@ def linearized(case: Case) -> np.ndarray:
     check(c)
     model = load(c.model)
     p = model.parameter_vector(parameters(c))
-    law = choose(c.law)
-    codes, pars = np.array([law.code], dtype=np.intc), np.array([law.par])
+    codes, pars = _law_arrays(c)
     names = model.state_names
     n = c.modes
     theta0 = 3 * math.pi / 4
