@@ -109,13 +109,6 @@ def parameters(case: Case) -> dict:
             "formulation": FORMULATIONS[case.formulation]}
 
 
-def _profile(case: Case, theta: float) -> tuple[float, float]:
-    """S and dS/dtheta of the RDFD motion at a cam angle in the rise (paper (1))."""
-    beta = math.pi / 2
-    h = choose(case.law).evaluate(np.array([theta / beta]))[0]
-    return case.rise * h[0], case.rise * h[1] / beta
-
-
 def _law_arrays(case: Case) -> tuple[np.ndarray, np.ndarray]:
     """The cam law as the compiled one-off evaluations (eval_rhs, eval_outputs) take it."""
     law = choose(case.law)
@@ -134,12 +127,10 @@ def initial_state(case: Case, model, b=None, b_rate=None) -> np.ndarray:
 
     n = case.modes
     names = model.state_names
-    S0, S1 = _profile(case, 0.0)
-    # the rigid follower's start: exact for b = 0, the first guess otherwise
-    y = np.zeros(len(names))
-    y[names.index("xE")] = case.distance - case.base_radius - case.roller_radius - S0
-    y[names.index("thetad")] = case.omega
-    y[names.index("xEd")] = -S1 * case.omega
+    # the model's declared start (x_E = d - r_b - r_r, theta' = Omega): the rigid follower at
+    # theta = 0 (every law starts its rise at S = 0), the first guess for the solve below
+    p_aug = model.parameter_vector({**parameters(case), "formulation": 0.0})
+    y = model.initial_state(p_aug)
     if b is not None:
         y[[names.index(f"b{i}") for i in range(1, n + 1)]] = np.asarray(b, dtype=float)
     if b_rate is not None:
@@ -152,7 +143,6 @@ def initial_state(case: Case, model, b=None, b_rate=None) -> np.ndarray:
     def residual(p, yy):
         return _integrate.eval_outputs(model.capsule, p, codes, pars, t0, yy[None, :])[0][phis]
 
-    p_aug = model.parameter_vector({**parameters(case), "formulation": 0.0})
     for _ in range(30):
         g = residual(p_aug, y)
         if np.abs(g).max() < 1e-15:
