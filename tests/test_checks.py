@@ -36,11 +36,44 @@ def test_rules():
     assert checks.run(c).passed
     c = checks.Check("x", "x", "x", "2", lambda: 4.5, rule="factor:2")
     assert not checks.run(c).passed
-    c = checks.Check("x", "x", "x", "2", lambda: 3.0, errata=True)
-    assert checks.run(c).passed          # a misprint that stays unreproduced
+    c = checks.Check("x", "x", "x", "2", lambda: float("nan"), rule="rel:0.1")
+    assert not checks.run(c).passed
     c = checks.Check("x", "x", "x", "2", lambda: 1 / 0)
     out = checks.run(c)
     assert not out.passed and "ZeroDivisionError" in out.error
+
+
+ERRATA = [c for c in REGISTRY if c.errata]
+
+
+def test_errata_state_their_derived_value():
+    """Every errata check carries the value the thesis's own formulas give and a tolerance; a
+    check without them, or whose derived value would itself reproduce the misprint, is refused."""
+    assert len(ERRATA) == 7
+    for c in ERRATA:
+        assert c.expected is not None and c.expected_rule.startswith("rel:")
+        assert float(c.expected_rule.partition(":")[2]) <= 1e-5
+    with pytest.raises(ValueError, match="expected"):
+        checks.Check("x", "x", "x", "2", lambda: 3.0, errata=True)
+    with pytest.raises(ValueError, match="reproduce the misprint"):
+        checks.Check("x", "x", "x", "2", lambda: 3.0, errata=True, expected="2.04",
+                     expected_rule="rel:1e-6", rule="rel:0.05")
+
+
+@pytest.mark.parametrize("check", ERRATA, ids=[c.key for c in ERRATA])
+def test_errata_cannot_pass_by_accident(check):
+    """An errata check passes for its derived value only: NaN, infinity, zero, a value ten times
+    off, one just outside the derived value's tolerance and the misprint itself all fail."""
+    from dataclasses import replace
+
+    expected = float(check.expected)
+    tol = float(check.expected_rule.partition(":")[2])
+    assert checks.run(replace(check, compute=lambda: expected)).passed
+    for wrong in (float("nan"), float("inf"), 0.0, 10 * expected, expected * (1 + 3 * tol),
+                  float(check.printed)):
+        out = checks.run(replace(check, compute=lambda w=wrong: w))
+        assert not out.passed, (check.key, wrong)
+        assert out.status.startswith("FAIL")
 
 
 def test_camdyn_check_command_json_and_exit_code():

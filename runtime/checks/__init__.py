@@ -16,9 +16,12 @@ Comparison rules
     "identity"   a symbolic identity: compute() returns True when
                  sympy.simplify(derived - printed) == 0
 Printed values the thesis gets wrong (misprints, scan errors that cannot be
-read another way) are kept with ``errata=True`` and an explanation: such a
-check passes when the printed value is *not* reproduced, so a change that
-suddenly "reproduces" a misprint is flagged.
+read another way) are kept with ``errata=True``, an explanation, and the
+value the thesis's own formulas give instead (``expected``, worked out from
+the cited equations and stated in the note, with its tolerance
+``expected_rule``).  Such a check passes only when camdyn's value agrees with
+that derived value *and* does not reproduce the misprint under ``rule``: a
+NaN, a zero, a wild value or the misprint itself all fail.
 
 Topic modules (ch3.py, app2.py, ...) each define ``checks() -> list[Check]``.
 """
@@ -46,6 +49,16 @@ class Check:
     rule: str = "digits"
     note: str = ""
     errata: bool = False
+    expected: str | None = None
+    expected_rule: str = ""
+
+    def __post_init__(self):
+        if self.errata and (self.expected is None or not self.expected_rule):
+            raise ValueError(f"{self.key}: an errata check states the value the thesis's own "
+                             "formulas give (expected) and its tolerance (expected_rule)")
+        if self.errata and _agrees(self.rule, float(self.expected), self.printed)[0]:
+            raise ValueError(f"{self.key}: the derived value {self.expected} would reproduce the "
+                             f"misprint {self.printed} under rule {self.rule}")
 
 
 @dataclass(frozen=True)
@@ -56,19 +69,25 @@ class Outcome:
     agrees: bool
     seconds: float
     error: str = ""
+    expected_agrees: bool = True
 
     @property
     def passed(self) -> bool:
         if self.error:
             return False
-        return (not self.agrees) if self.check.errata else self.agrees
+        if self.check.errata:
+            return self.expected_agrees and not self.agrees
+        return self.agrees
 
     @property
     def status(self) -> str:
         if self.error:
             return "ERROR"
         if self.check.errata:
-            return "errata" if self.passed else "FAIL (errata reproduced?)"
+            if self.passed:
+                return "errata"
+            return ("FAIL (misprint reproduced)" if self.agrees
+                    else f"FAIL (not the derived {self.check.expected})")
         return "pass" if self.passed else "FAIL"
 
     def as_dict(self) -> dict:
@@ -76,7 +95,8 @@ class Outcome:
         return {"key": c.key, "item": c.item, "reference": c.reference, "printed": c.printed,
                 "derived": _plain(self.derived), "rel_diff": self.rel_diff, "rule": c.rule,
                 "status": self.status, "passed": self.passed, "note": c.note,
-                "errata": c.errata, "error": self.error, "seconds": self.seconds}
+                "errata": c.errata, "expected": c.expected, "expected_rule": c.expected_rule or None,
+                "error": self.error, "seconds": self.seconds}
 
 
 def _plain(value):
@@ -104,26 +124,36 @@ def matches_printed(value: float, printed: str) -> bool:
     return bool(rounded or truncated)
 
 
+def _agrees(rule: str, value: float, reference: str | None) -> tuple[bool, float]:
+    """(agrees, relative difference) of ``value`` with the number ``reference`` under ``rule``;
+    a value that is not finite never agrees."""
+    if reference is None:
+        raise ValueError(f"rule {rule} needs a printed value")
+    ref = float(reference)
+    rel = abs(value - ref) / abs(ref) if ref != 0 else abs(value)
+    if not math.isfinite(value):
+        return False, rel
+    if rule == "digits":
+        return matches_printed(value, reference), rel
+    kind, _, tol = rule.partition(":")
+    if kind == "rel":
+        return rel <= float(tol), rel
+    if kind == "abs":
+        return abs(value - ref) <= float(tol), rel
+    if kind == "factor":
+        ratio = value / ref
+        return 1 / float(tol) <= ratio <= float(tol), rel
+    raise ValueError(f"unknown rule {rule!r}")
+
+
 def compare(check: Check, derived) -> tuple[bool, float | None]:
     """(agrees, relative difference) of a derived value with the printed one."""
     if check.rule == "identity":
         return bool(derived), None
-    value = float(derived)
-    if check.printed is None:
-        raise ValueError(f"{check.key}: rule {check.rule} needs a printed value")
-    printed = float(check.printed)
-    rel = abs(value - printed) / abs(printed) if printed != 0 else abs(value)
-    if check.rule == "digits":
-        return matches_printed(value, check.printed), rel
-    kind, _, tol = check.rule.partition(":")
-    if kind == "rel":
-        return rel <= float(tol), rel
-    if kind == "abs":
-        return abs(value - printed) <= float(tol), rel
-    if kind == "factor":
-        ratio = value / printed
-        return 1 / float(tol) <= ratio <= float(tol), rel
-    raise ValueError(f"{check.key}: unknown rule {check.rule!r}")
+    try:
+        return _agrees(check.rule, float(derived), check.printed)
+    except ValueError as exc:
+        raise ValueError(f"{check.key}: {exc}") from None
 
 
 def run(check: Check) -> Outcome:
@@ -131,9 +161,11 @@ def run(check: Check) -> Outcome:
     try:
         derived = check.compute()
         agrees, rel = compare(check, derived)
-        if isinstance(rel, float) and math.isnan(rel):
-            agrees = False
-        return Outcome(check, derived, rel, agrees, time.perf_counter() - t0)
+        expected_agrees = True
+        if check.errata:
+            expected_agrees = _agrees(check.expected_rule, float(derived), check.expected)[0]
+        return Outcome(check, derived, rel, agrees, time.perf_counter() - t0,
+                       expected_agrees=expected_agrees)
     except Exception as exc:  # a check that cannot run is a failure, reported, not a crash
         return Outcome(check, None, None, False, time.perf_counter() - t0,
                        error=f"{type(exc).__name__}: {exc}")
