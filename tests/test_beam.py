@@ -26,8 +26,18 @@ from camdyn.runtime.errors import CamdynInputError
 from camdyn.runtime.laws import choose
 from camdyn.runtime.models import load
 
+from . import beam_reference
+
 BETA = math.pi / 2                 # rise and fall period of paper (1) ("set to pi/2")
 DEFAULT = beam.Case()              # paper data, sec. 4
+# A REGRESSION VALUE, not an independent reference (no closed form or second solver gives
+# it): max |v_E| over the first revolution of DEFAULT (N = 3, Omega = 240 rad/s, augmented,
+# rtol 1e-9) at the recorded points, 0.2192869 mm, as camdyn computed it.  Last checked
+# 2026-11-23 against the energy balance of tests/test_beam_energy.py (E - E(0) = cam work
+# to 1.4e-12 of the energy scale over half a revolution of this case), the dwell
+# frequencies and free vibration against finite elements there, and the convergence in N
+# (test_convergence_in_modes: N = 3, 4, 5 within 1e-4).
+PEAK_TIP_REGRESSION = 2.192869e-4
 
 
 # -- independent helpers --------------------------------------------------------------------
@@ -261,10 +271,11 @@ def test_constraint_residual_below_1e_8_m(default_runs):
 def test_formulations_give_the_same_tip_response(default_runs):
     """Augmented and partitioned forms, one revolution at Omega = 240 rad/s: max |v_E| (outputs
     at the recorded points) 0.21928692 mm both, relative difference 1.7e-8; asserted 1e-6
-    (the runs have rtol = 1e-9 and different step sequences)."""
+    (the runs have rtol = 1e-9 and different step sequences).  The augmented peak is also held
+    to PEAK_TIP_REGRESSION, a regression value (see there), to 1e-4."""
     a = np.abs(default_runs["augmented"]["vE"]).max()
     p = np.abs(default_runs["partitioned"]["vE"]).max()
-    assert a == pytest.approx(2.1929e-4, rel=1e-4)
+    assert a == pytest.approx(PEAK_TIP_REGRESSION, rel=1e-4)
     assert p == pytest.approx(a, rel=1e-6)
 
 
@@ -411,9 +422,11 @@ def test_convergence_in_modes():
         5   0.2192667         8.0e-7
 
     N = 3 and 4 differ by 8.9e-5 relative (asserted < 0.1 %); the changes shrink
-    monotonically from N = 2 on (each by a factor > 10 measured, asserted > 3)."""
+    monotonically from N = 2 on (each by a factor > 10 measured, asserted > 3).  The N = 3
+    peak is held to PEAK_TIP_REGRESSION to 1e-5: a regression value (see there), not an
+    independent reference."""
     peaks = [peak(replace(DEFAULT, modes=n)) for n in range(1, 6)]
-    assert peaks[2] == pytest.approx(2.192869e-4, rel=1e-5)
+    assert peaks[2] == pytest.approx(PEAK_TIP_REGRESSION, rel=1e-5)
     assert abs(peaks[2] - peaks[3]) < 1e-3 * peaks[3]
     changes = np.abs(np.diff(peaks))
     assert all(changes[k + 1] < changes[k] / 3 for k in range(len(changes) - 1))
@@ -497,11 +510,17 @@ def test_spectrum_harmonics_and_natural_band(spectrum_run, dwell_band):
     non-harmonic bin, 483.8 Hz (3.8e-5 m), lies in the band of the frozen frequency between
     the inner (485.8 Hz) and outer (674.2 Hz) dwell +- one bin (the length varies: its FM
     sidebands are 38.2 Hz apart: 445.6, 483.8, 522.0, ..., 674.8 Hz), and the band holds 86 %
-    of the non-harmonic energy (asserted > 70 %)."""
+    of the non-harmonic energy (asserted > 70 %).  The band's ends themselves against the rod
+    frozen in each dwell in NumPy (tests/beam_reference.py): a Rayleigh cantilever of 40
+    Hermite elements, length d - r, tip mass m_r + J_r/r^2, 485.7607 Hz (inner, r = r_b + r_r)
+    and 674.2238 Hz (outer, r = r_b + r_r + S_T), good to ~1e-8 (test_beam_energy.py); the
+    model's N = 3 Ritz values lie above them by 1.12e-5 and 8.1e-6, asserted between -2e-8
+    and 2.5e-5 (2x the measured Ritz error)."""
     c = SPECTRUM
     f_in, f_out = dwell_band
-    assert f_in == pytest.approx(485.766, rel=1e-5)
-    assert f_out == pytest.approx(674.229, rel=1e-5)
+    p = beam.parameters(c)
+    for f, inner in ((f_in, True), (f_out, False)):
+        assert -2e-8 < f / beam_reference.dwell_frequencies_fe(p, inner=inner)[0] - 1 < 2.5e-5
     f_cam = c.omega / (2 * math.pi)
     n_rev, n = 3, 3 * 1024
     ts = c.period + np.arange(n) * (n_rev * c.period / n)
