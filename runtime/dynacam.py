@@ -19,6 +19,7 @@ from scipy.optimize import least_squares
 from . import _integrate
 from .errors import CamdynInputError, SimulationError
 from .models import load
+from .residual import extreme
 from .scene import Scene
 from .methods import DP54
 from .simulate import Simulator
@@ -160,15 +161,17 @@ def mode_changes(scene: Scene, res, mode: str) -> list:
 
 def summarize(scene: Scene, model, res, ch: dict, cpu: float) -> dict:
     T = nominal_T(scene, res)
-    Xdd = res["Xdd"]
-    rise = (T >= 0) & (T <= 1)
-    k = np.flatnonzero(rise)[np.argmin(Xdd[rise])]
-    dwell = T > 1
+    t_m = res.params["beta_m"] / res.params["omega_s"]
+    # the extremes are refined on the dense output, not read at the recorded steps
+    rise0, rise1, t_end = -scene.T_start * t_m, (1 - scene.T_start) * t_m, float(res.t[-1])
+    xmin, t_xmin = extreme(res, "Xdd", rise0, rise1, absolute=False, minimum=True)
+    xmax, _ = extreme(res, "Xdd", rise0, rise1, absolute=False, minimum=False)
+    dwell = t_end > rise1
     out = {"title": scene.title, "variant": scene.variant, "tau": ch["tau"], "Fa": ch["Fa"],
-           "Fv": ch["Fv"], "Xdd_min_rise": float(Xdd[k]), "T_at_Xdd_min": float(T[k]),
-           "Xdd_max_rise": float(Xdd[rise].max()),
-           "U0dd": float(np.abs(Xdd[dwell]).max()) if dwell.any() else None,
-           "U0": float(np.abs(res["U"][dwell]).max()) if dwell.any() else None}
+           "Fv": ch["Fv"], "Xdd_min_rise": xmin, "T_at_Xdd_min": t_xmin / t_m + scene.T_start,
+           "Xdd_max_rise": xmax,
+           "U0dd": extreme(res, "Xdd", rise1, t_end, absolute=True, minimum=False)[0] if dwell else None,
+           "U0": extreme(res, "U", rise1, t_end, absolute=True, minimum=False)[0] if dwell else None}
     jump = {"occurs": False, "T": None}
     if scene.options.roller == "contact":
         free = res.element_mode("roller") == "free"
