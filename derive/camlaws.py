@@ -111,10 +111,19 @@ class CamLaw:
         return len(self.rise) + 2
 
     def segment_exprs(self, order: int) -> tuple:
-        """d^order H / dT^order on every segment, dwells included."""
+        """d^order H / dT^order on every segment, dwells included.
+
+        The acceleration and the jerk come from the declared acceleration itself, not from
+        differentiating the simplified H: simplify() expands factors such as (1 - 2 theta)^2
+        of the modified sine, which then cancel against the denominator and lose every digit
+        as theta -> 1/2."""
         before = sp.Integer(0)
         after = sp.Integer(1) if order == 0 else sp.Integer(0)
-        inner = tuple(sp.diff(h, T, order) for h in self.rise)
+        if order >= 2 and self.acceleration:
+            acc = [a.subs(_A, self.amplitude) for a in self.acceleration]
+            inner = tuple(sp.diff(a, T, order - 2) for a in acc)
+        else:
+            inner = tuple(sp.diff(h, T, order) for h in self.rise)
         return (before,) + inner + (after,)
 
     def piecewise(self, order: int = 0, arg: sp.Expr = T) -> sp.Piecewise:

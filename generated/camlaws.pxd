@@ -188,7 +188,7 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
     The segment is given, not looked up, so that an integration step that ends
     on a breakpoint keeps using the formula of the segment it started in.
     """
-    cdef double c0, c1, c2, c3, c4, c5, c6, c7, c8, c9, c10, c11, c12
+    cdef double c0, c1, c2, c3, c4, c5, c6, c7, c8, c9
     if law == 0:  # cycloidal
         if seg == 0:
             out[0] = 0.0
@@ -231,34 +231,32 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
             out[3] = 7.751569170074955*c1*c3*c6
         elif seg == 2:
             c0 = 2.0*par
-            c1 = c0 - 1.0
-            c2 = (1.0/c1)
-            c3 = 3.141592653589793*c2*(T - par)
-            c4 = cos(c3)
-            c5 = 4.0*(par*par)
-            c6 = 4.0*par
-            c7 = 3.141592653589793*par
-            c8 = 1.0 - c6
-            c9 = 0.5*(1.0/(c7 + c8))
-            c10 = sin(c3)
-            c11 = c10*c2
-            c12 = c9*(c5 + c8)
-            out[0] = c9*(2.0*T*c7 - c4*c5 + c4*c6 - c4 + c8)
-            out[1] = 3.141592653589793*c9*(c0 + c11*c5 - c11*c6 + c11)
-            out[2] = 9.869604401089358*c12*c4/(c1*c1)
-            out[3] = -31.00627668029982*c10*c12/(c1*c1*c1)
+            c1 = (1.0/(c0 - 1.0))
+            c2 = 3.141592653589793*c1*(T - par)
+            c3 = cos(c2)
+            c4 = 4.0*(par*par)
+            c5 = 4.0*par
+            c6 = 3.141592653589793*par
+            c7 = 1.0 - c5
+            c8 = 0.5*(1.0/(c6 + c7))
+            c9 = c1*sin(c2)
+            out[0] = c8*(2.0*T*c6 - c3*c4 + c3*c5 - c3 + c7)
+            out[1] = 3.141592653589793*c8*(c0 + c4*c9 - c5*c9 + c9)
+            out[2] = 9.869604401089358*c3*c8
+            out[3] = -31.00627668029982*c8*c9
         elif seg == 3:
             c0 = 3.141592653589793*par
             c1 = 1.0 - 4.0*par
             c2 = (1.0/(c0 + c1))
-            c3 = (1.0/par)
-            c4 = 1.5707963267948966*c3*(T - 1.0)
-            c5 = sin(c4)
-            c6 = cos(c4)
-            out[0] = c2*(T*c0 + c1 - 2.0*c5*(par*par))
-            out[1] = -c0*c2*(c6 - 1.0)
-            out[2] = 4.934802200544679*c2*c5
-            out[3] = 7.751569170074955*c2*c3*c6
+            c3 = T - 1.0
+            c4 = (1.0/par)
+            c5 = 1.5707963267948966*c4
+            c6 = c3*c5
+            c7 = c5*(c3 + 2.0*par)
+            out[0] = c2*(T*c0 + c1 - 2.0*(par*par)*sin(c6))
+            out[1] = -c0*c2*(cos(c6) - 1.0)
+            out[2] = -4.934802200544679*c2*sin(c7)
+            out[3] = -7.751569170074955*c2*c4*cos(c7)
         elif seg == 4:
             out[0] = 1.0
             out[1] = 0.0
@@ -274,13 +272,12 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
             out[3] = 0.0
         elif seg == 1:
             c0 = (T*T)
-            c1 = 10.0 - 15.0*T
-            c2 = 6.0*c0 + c1
-            c3 = T*(4.0*T - 5.0)
+            c1 = 6.0*c0
+            c2 = -15.0*T + c1 + 10.0
             out[0] = (T*T*T)*c2
-            out[1] = 3.0*c0*(c2 + c3)
-            out[2] = 6.0*T*(8.0*c0 + c1 + 3.0*c3)
-            out[3] = 144.0*c0 + 6.0*c1 + 54.0*c3
+            out[1] = 3.0*c0*(T*(4.0*T - 5.0) + c2)
+            out[2] = 60.0*T*(-3.0*T + 2.0*c0 + 1.0)
+            out[3] = -360.0*T + 60.0*c1 + 60.0
         elif seg == 2:
             out[0] = 1.0
             out[1] = 0.0
@@ -339,16 +336,13 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
             out[2] = 0.0
             out[3] = 0.0
         elif seg == 1:
-            c0 = (T*T*T)
-            c1 = (T*T)
-            c2 = 84.0*T - 70.0*c1 - 35.0
-            c3 = 20.0*c0 + c2
-            c4 = T*(-35.0*T + 15.0*c1 + 21.0)
-            c5 = c1*(6.0*T - 7.0)
-            out[0] = -(T*T*T*T)*c3
-            out[1] = -4.0*c0*(c3 + c4)
-            out[2] = -4.0*c1*(252.0*T + 60.0*c0 - 210.0*c1 + 8.0*c4 + 5.0*c5 - 105.0)
-            out[3] = -24.0*T*(25.0*c0 + c2 + 6.0*c4 + 10.0*c5)
+            c0 = (T*T)
+            c1 = (T*T*T)
+            c2 = 84.0*T - 70.0*c0 + 20.0*c1 - 35.0
+            out[0] = -(T*T*T*T)*c2
+            out[1] = -4.0*c1*(T*(-35.0*T + 15.0*c0 + 21.0) + c2)
+            out[2] = 420.0*c0*(-4.0*T + 5.0*c0 - 2.0*c1 + 1.0)
+            out[3] = 840.0*T*(-6.0*T + 10.0*c0 - 5.0*c1 + 1.0)
         elif seg == 2:
             out[0] = 1.0
             out[1] = 0.0
@@ -384,12 +378,11 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
             c1 = 4.0*T
             c2 = 3.141592653589793*c1
             c3 = (M_PI*M_PI)
-            c4 = sin(c2)
-            c5 = cos(c2)
-            out[0] = 0.15915494309189535*c0*(c1*c3 + c2 - c3 + c4)
-            out[1] = 2.0*c0*(c5 + 1.0 + M_PI)
-            out[2] = -25.132741228718345*c0*c4
-            out[3] = -32.0*c0*c3*c5
+            c4 = 3.141592653589793*(c1 - 3.0/2.0)
+            out[0] = 0.15915494309189535*c0*(c1*c3 + c2 - c3 + sin(c2))
+            out[1] = 2.0*c0*(cos(c2) + 1.0 + M_PI)
+            out[2] = 25.132741228718345*c0*cos(c4)
+            out[3] = -32.0*c0*c3*sin(c4)
         elif seg == 4:
             c0 = (1.0/(2.0 + M_PI))
             c1 = (M_PI*M_PI)
@@ -401,14 +394,13 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
         elif seg == 5:
             c0 = (1.0/(2.0 + M_PI))
             c1 = (M_PI*M_PI)
-            c2 = 3.141592653589793*T
-            c3 = 4.0*c2
-            c4 = sin(c3)
-            c5 = cos(c3)
-            out[0] = 0.3183098861837907*c0*(c1 + 2.0*c2 - 0.5*c4)
-            out[1] = -2.0*c0*(c5 - 1.0)
-            out[2] = 25.132741228718345*c0*c4
-            out[3] = 32.0*c0*c1*c5
+            c2 = 4.0*T
+            c3 = 3.141592653589793*c2
+            c4 = 3.141592653589793*(c2 - 7.0/2.0)
+            out[0] = 0.3183098861837907*c0*(6.283185307179586*T + c1 - 0.5*sin(c3))
+            out[1] = -2.0*c0*(cos(c3) - 1.0)
+            out[2] = -25.132741228718345*c0*cos(c4)
+            out[3] = 32.0*c0*c1*sin(c4)
         elif seg == 6:
             out[0] = 1.0
             out[1] = 0.0
