@@ -46,7 +46,7 @@ def choose(key: str, theta: float | None = None) -> LawChoice:
     value = spec["default"] if theta is None else theta
     try:
         value = float(value)
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, OverflowError):
         raise CamdynInputError(f"{spec['name']} must be a number, got {value!r}") from None
     if not spec["low"] < value < spec["high"]:
         raise CamdynInputError(

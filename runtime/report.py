@@ -45,8 +45,19 @@ def load_scene(path: str | None) -> dict:
         raise CamdynInputError(f"scene file {path} not found") from None
     except tomllib.TOMLDecodeError as exc:
         raise CamdynInputError(f"scene {path}: not valid TOML ({exc})") from None
+    except OSError as exc:      # a folder, no permission
+        raise CamdynInputError(f"scene file {path}: {exc.strerror}") from None
+    except ValueError as exc:   # not UTF-8, an integer of more than 4300 digits
+        raise CamdynInputError(f"scene file {path}: {exc}") from None
     _check(scene, _SCHEMA, where)
     return scene
+
+
+def _finite(v) -> bool:
+    try:
+        return math.isfinite(v)
+    except OverflowError:   # a TOML integer beyond any double
+        return False
 
 
 def _check(d: dict, schema: dict, where: str, prefix: str = ""):
@@ -60,15 +71,15 @@ def _check(d: dict, schema: dict, where: str, prefix: str = ""):
                 raise CamdynInputError(f"{where}: [{name}] must be a table")
             _check(v, kind, where, name + ".")
         elif kind is float:
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
-                raise CamdynInputError(f"{where}: {name} must be a number, got {v!r}")
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not _finite(v):
+                raise CamdynInputError(f"{where}: {name} must be a finite number, got {v!r}")
         elif kind is int:
             if isinstance(v, bool) or not isinstance(v, int) or v < 1:
                 raise CamdynInputError(f"{where}: {name} must be a positive integer, got {v!r}")
         elif kind is list:
             if not isinstance(v, list) or not v or not all(
-                    isinstance(x, (int, float)) and not isinstance(x, bool) for x in v):
-                raise CamdynInputError(f"{where}: {name} must be a non-empty list of numbers")
+                    isinstance(x, (int, float)) and not isinstance(x, bool) and _finite(x) for x in v):
+                raise CamdynInputError(f"{where}: {name} must be a non-empty list of finite numbers")
         elif not isinstance(v, kind):
             raise CamdynInputError(f"{where}: {name} must be a {kind.__name__}, got {v!r}")
     extra = sorted(set(d) - set(schema))

@@ -58,10 +58,17 @@ def builtin(name: str) -> Path:
     return path
 
 
+def _float(where: str, value) -> float:
+    try:
+        return float(value)
+    except OverflowError:   # an integer beyond any double (TOML integers have no size limit here)
+        raise CamdynInputError(f"{where} must be finite, got an integer too large for a double") from None
+
+
 def _number(where: str, value, low=None, high=None) -> float:
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         raise CamdynInputError(f"{where} must be a number, got {value!r}")
-    value = float(value)
+    value = _float(where, value)
     if not math.isfinite(value):
         raise CamdynInputError(f"{where} must be finite, got {value!r}")
     if low is not None and not (low <= value <= high):
@@ -115,7 +122,7 @@ def check_parameters(options, table) -> dict:
         value = table[name]
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise CamdynInputError(f"parameters.{name} must be a number in {spec.unit}, got {value!r}")
-        value = float(value)
+        value = _float(f"parameters.{name}", value)
         if not spec.admits(value):
             lo = "(" if spec.open_low else "["
             hi = ")" if spec.open_high or spec.high == math.inf else "]"
@@ -135,7 +142,9 @@ def load(path) -> Scene:
         data = tomllib.loads(path.read_text())
     except FileNotFoundError:
         raise CamdynInputError(f"scene file {path} not found") from None
-    except tomllib.TOMLDecodeError as exc:
+    except OSError as exc:      # a folder, no permission
+        raise CamdynInputError(f"scene file {path}: {exc.strerror}") from None
+    except ValueError as exc:   # not TOML, not UTF-8, an integer of more than 4300 digits
         raise CamdynInputError(f"scene file {path}: {exc}") from None
     return from_dict(data, str(path))
 
