@@ -7,7 +7,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.camdyn-built
 SOURCES := pyproject.toml setup.py $(wildcard generated/*.pyx generated/*.pxd runtime/*.pyx runtime/*.pxd runtime/*.pxi)
 
-.PHONY: all build run test test-slow mutation bench figures derive check-generated clean
+.PHONY: all build run test test-slow mutation mutation-findings bench figures derive check-generated clean
 
 all: build
 
@@ -34,9 +34,18 @@ test-slow: build
 
 # mutation testing of the pure-Python physics in scratch copies of the tree; report in
 # out/mutation/report.md (targets, sample and time budget: tests/mutation/targets.toml)
+# (the mutation extra is installed once: a reinstall of the package would recompile everything)
+MUTATION_TOOLS = $(BIN)/python -c 'import cosmic_ray, Cython' 2>/dev/null || \
+	$(BIN)/python -m pip install --quiet -e '.[test,mutation]'
+
 mutation: build
-	$(BIN)/python -m pip install --quiet 'cosmic-ray>=8.4'
+	$(MUTATION_TOOLS)
 	$(BIN)/python tests/mutation/run.py
+
+# the five findings of issue 11 as mutants, each with the test that kills it now
+mutation-findings: build
+	$(MUTATION_TOOLS)
+	$(BIN)/python tests/mutation/findings.py
 
 bench: build
 	$(BIN)/python bench/run.py

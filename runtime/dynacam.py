@@ -69,7 +69,9 @@ def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
     n_q = model.manifest["n_q"]
     y = model.initial_state(p)
     w_s = p[model.parameter_names.index("omega_s")]
-    free = [k for k, s in enumerate(names) if k < n_q or (k >= 2 * n_q and s != "phi")]
+    # phi turns with the input; so does the squeeze-film gear wheel phir, which in steady dwell
+    # sits on its flank (a film carries load only while it closes): phir = phi, as declared
+    free = [k for k, s in enumerate(names) if k < n_q or (k >= 2 * n_q and s not in ("phi", "phir"))]
     scale = model.state_scales()[free]
     modes = np.array(sim.modes0, dtype=np.intc)
     # sticking linkage friction leaves x undetermined: solve without it (the frictionless

@@ -506,7 +506,7 @@ def _invalid_option(key):
     return st.text(max_size=6) | others
 
 
-RUN_RANGES = {"T_start": (-5.0, 0.0), "T_end": (0.0, 50.0), "rtol": (1e-13, 1e-2)}
+RUN_RANGES = {"T_start": (-5.0, 0.0), "T_end": (1.0, 50.0), "rtol": (1e-13, 1e-2)}
 """The run settings' ranges, restated from runtime/scene.py (_RUN; T in units of the rise)."""
 
 

@@ -34,6 +34,8 @@ def test_builtin_scenes_load(name):
     (lambda d: d["options"].__setitem__("spring", 1), "options.spring must be true or false"),
     (lambda d: d["options"].__setitem__("flywheel", True), "options.flywheel is not an option"),
     (lambda d: d["run"].__setitem__("T_end", -1.0), "run.T_end=-1 is out of range"),
+    # a run that stops inside the rise has no largest rise deceleration to report
+    (lambda d: d["run"].__setitem__("T_end", 0.9), r"run.T_end=0.9 is out of range [1, 50]"),
     (lambda d: d.__setitem__("colour", "red"), "colour is not a scene key"),
     (lambda d: d.__setitem__("law", "spline"), "unknown cam law 'spline'"),
 ])

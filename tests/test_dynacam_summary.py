@@ -1,0 +1,315 @@
+"""What runtime/dynacam.py makes of a run: initial state, time axis, mode switches, summary, figures.
+
+Each quantity is checked against a hand computation on a scene small enough to have one:
+
+* a one-DOF scene: the DYNACAM variant without shaft deflections (rcrb_n) with a cam of huge
+  inertia on a stiff shaft and a huge base radius, so that it is the thesis's one-DOF model at
+  constant fictitious speed (sec. 3.3) with its closed forms (3.4a), (3.4b), (3.5), (3.6);
+* a stiff spring-loaded follower at constant speed (rcrc_yzs) whose roller lifts off where the
+  nominal inertia force first overcomes the spring preload (sec. 7.5);
+* the static equilibrium (6.49)-(6.68) of preloaded springs in series, with cam friction
+  (6.13) and linkage friction (6.43), and with the second-order motor (App. 5);
+* the indexing mechanism, whose roller crosses its groove backlash (fig. 7.16) without a jump.
+
+Units SI, reduced to the output member (sec. 2.4); T = t/t_m + T_start, t_m = beta_m/w_s.
+"""
+import math
+import time
+from functools import lru_cache
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy.optimize import minimize_scalar
+
+from camdyn.runtime import dynacam, scene as scenes
+
+T_START = -0.1
+# t_m = beta_m/w_s = 0.25 s, and beta_m w_s = 4: a time axis built with the product, or
+# without t_m, is off by a factor 16 or 4
+BETA_M, OMEGA_S = 1.0, 4.0
+T_M = BETA_M / OMEGA_S
+
+
+def _scene(name, options, parameters, T_end, rtol=1e-8):
+    # the path only names the figure files (<stem>_<key>.png)
+    data = {"title": name, "law": "cycloidal", "options": options, "parameters": parameters,
+            "run": {"T_start": T_START, "T_end": T_end, "rtol": rtol}}
+    return scenes.from_dict(data, f"/nonexistent/{name}.toml")
+
+
+# -- one DOF: rcrb_n as the model of sec. 3.3 --------------------------------------------------
+TAU = 0.15          # sin(pi/tau) = 0.87: U0 well away from a zero of (3.5)
+H_M, M_X = 0.01, 1.0
+C_X = M_X * (2 * math.pi / (TAU * T_M)) ** 2      # tau = 2 pi (m/c)^(1/2)/t_m (4.11), (4.12)
+
+
+def _one_dof(T_end):
+    # J = 1e6 kg m^2 keeps the cam at w_s (speed variation 3e-10), R_b = 10 m makes
+    # tan alpha_me = 1e-3 (Fa = 3e-9, Fv = 1e-10): the coupling to the cam is negligible
+    return _scene("one_dof", {"shaft_y": False, "shaft_z": False},
+                  {"h_m": H_M, "beta_m": BETA_M, "R_b": 10.0, "omega_s": OMEGA_S, "J": 1e6,
+                   "k": 1e9, "q_b": 0.0, "m_x": M_X, "c_x": C_X, "q_x": 0.0}, T_end, rtol=1e-10)
+
+
+@lru_cache(maxsize=None)
+def one_dof_run():
+    """(scene, summary, result, process time spent in dynacam.run)."""
+    sc = _one_dof(1.6)
+    before = time.process_time()
+    s, res = dynacam.run(sc)
+    return sc, s, res, time.process_time() - before
+
+
+def xdd_closed_form(T):
+    """X'' of the one-DOF follower, undamped, cycloid (3.2), from rest: the second derivative of
+    (3.4a) for 0 <= T <= 1 and of (3.4b) for T >= 1; zero in the dwell before the rise."""
+    T = np.asarray(T, dtype=float)
+    w = 2 * math.pi / TAU
+    rise = 2 * math.pi * (np.sin(2 * math.pi * T) - TAU * np.sin(w * T)) / (1 - TAU**2)
+    dwell = (-4 * math.pi * TAU / (1 - TAU**2) * math.sin(math.pi / TAU)
+             * np.cos(math.pi / TAU * (2 * T - 1)))
+    return np.where(T < 0, 0.0, np.where(T <= 1, rise, dwell))
+
+
+def u_closed_form(T):
+    """U = (x - h)/h_m: 0 at rest before the rise, (3.4a) during it, (3.4b) after it."""
+    if T < 0:
+        return 0.0
+    rise = (-TAU**2 / (1 - TAU**2) * math.sin(2 * math.pi * T) / (2 * math.pi)
+            + TAU**3 / (1 - TAU**2) * math.sin(2 * math.pi * T / TAU) / (2 * math.pi))
+    dwell = TAU**3 / (1 - TAU**2) / math.pi * math.sin(math.pi / TAU) * math.cos(math.pi / TAU * (2 * T - 1))
+    return rise if T <= 1 else dwell
+
+
+def test_time_axis_runs_from_T_start_to_T_end():
+    """nominal_T = t/t_m + T_start with t_m = beta_m/w_s = 0.25 s from the scene data: the
+    first recorded point is at T_start = -0.1, the last at T_end = 1.6, and every recorded t
+    maps so (1e-12 relative; measured: rounding)."""
+    sc, _, res, _ = one_dof_run()
+    T = dynacam.nominal_T(sc, res)
+    assert T[0] == pytest.approx(T_START, abs=1e-12)
+    assert T[-1] == pytest.approx(1.6, rel=1e-12)
+    assert np.allclose(T, res.t / T_M + T_START, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("T", [-0.05, 0.25, 0.7, 0.9, 1.3])
+def test_sample_at_nominal_time_against_3_4(T):
+    """sample_at(T) of X'' and U against the one-DOF closed forms (3.4a), (3.4b) and their
+    second derivatives at the same T (before the rise: at rest, X'' = U = 0).  Tolerance
+    1e-6 absolute on X'' (amplitude 2 pi), 1e-9 on U (amplitude 4e-3); measured 1.7e-8 and 1e-11.
+    A time axis off by 2 T_start samples 0.2 earlier (X'' differs by ~5 at T = 0.25)."""
+    sc, _, res, _ = one_dof_run()
+    assert dynacam.sample_at(sc, res, T) == pytest.approx(float(xdd_closed_form(T)), abs=1e-6)
+    assert dynacam.sample_at(sc, res, T, "U") == pytest.approx(u_closed_form(T), abs=1e-9)
+
+
+def test_summary_residual_amplitudes_3_5_3_6():
+    """Summary U0 (largest |U| in the dwell after the rise) and U0dd against (3.5)
+    U0 = tau^3 |sin(pi/tau)|/(pi (1 - tau^2)) and (3.6) U0dd = 4 pi tau |sin(pi/tau)|/(1 - tau^2),
+    tau = 0.15 from the scene's c_x, m_x, beta_m, w_s; relative tolerance 1e-6, measured 1.1e-8.
+    The largest X'' deceleration of the rise and its T against the minimum of the closed form
+    (second derivative of (3.4a)), found here by bounded Brent on the closed form: 1e-6 in X''
+    and 1e-6 in T (measured 2e-9, 1.1e-8).  tau is App. 7's (4.11), (4.12) to 1e-12."""
+    _, s, _, _ = one_dof_run()
+    assert s["tau"] == pytest.approx(TAU, rel=1e-12)
+    U0 = TAU**3 * abs(math.sin(math.pi / TAU)) / (math.pi * (1 - TAU**2))
+    assert s["U0"] == pytest.approx(U0, rel=1e-6)
+    assert s["U0dd"] == pytest.approx(4 * math.pi * TAU * abs(math.sin(math.pi / TAU)) / (1 - TAU**2), rel=1e-6)
+    grid = np.linspace(0.0, 1.0, 20001)
+    k = int(np.argmin(xdd_closed_form(grid)))
+    opt = minimize_scalar(lambda T: float(xdd_closed_form(T)), bounds=(grid[k - 1], grid[k + 1]),
+                          method="bounded", options={"xatol": 1e-12})
+    assert s["Xdd_min_rise"] == pytest.approx(opt.fun, abs=1e-6)
+    assert s["T_at_Xdd_min"] == pytest.approx(opt.x, abs=1e-6)
+    assert not s["jump"]["occurs"] and s["jump"]["T"] is None
+
+
+def test_run_ending_at_the_rise_end_has_no_dwell():
+    """T_end = 1: the run stops where the rise ends, there is no dwell to take U0, U0dd from
+    (None), while the rise's deceleration is still the closed form's (1e-6; the 20001-point
+    grid's minimum is 7e-8 above the true one)."""
+    s, _ = dynacam.run(_one_dof(1.0))
+    assert s["U0"] is None and s["U0dd"] is None
+    grid = np.linspace(0.0, 1.0, 20001)
+    assert s["Xdd_min_rise"] == pytest.approx(xdd_closed_form(grid).min(), abs=1e-6)
+
+
+def test_cpu_time_is_that_of_the_integration():
+    """cpu_seconds is process time spent inside the run: positive and at most the process
+    time the whole dynacam.run call took (its setup, equilibrium and summary included)."""
+    _, s, _, spent = one_dof_run()
+    assert 0.0 < s["cpu_seconds"] <= spent
+
+
+# -- figures -----------------------------------------------------------------------------------
+@pytest.fixture(scope="module")
+def figures(tmp_path_factory):
+    """plot() of the one-DOF run, its figures kept open (plot closes them) for inspection."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    sc, s, res, _ = one_dof_run()
+    out = tmp_path_factory.mktemp("figures")
+    kept, close = [], plt.close
+    mp = pytest.MonkeyPatch()
+    mp.setattr(plt, "close", lambda fig=None: kept.append(fig))
+    try:
+        written = dynacam.plot(sc, res, s, out)
+    finally:
+        mp.undo()
+    yield out, written, dict(zip((Path(p).stem.split("one_dof_", 1)[1] for p in written), kept)), res
+    for fig in kept:
+        close(fig)
+
+
+def test_plot_writes_one_png_per_diagram_of_the_variant(figures):
+    """rcrb_n (rigid gear, bilateral roller, constant speed) has the diagrams X'', B'', the
+    shaft torque and the fictitious speed variation (figs 7.11, 7.12), no gap or motor one:
+    exactly those four files, named <scene stem>_<key>.png in the output folder, PNG each."""
+    out, written, _, _ = figures
+    want = {out / f"one_dof_{key}.png" for key in ("Xdd", "Bdd", "torque", "speed_var")}
+    assert {Path(p) for p in written} == want
+    assert set(out.iterdir()) == want
+    for p in want:
+        assert p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_acceleration_figure_shows_X_and_the_nominal_H_dd(figures):
+    """The X'' diagram (fig. 7.12): its solid curve is X'' against T, equal to the closed form
+    (3.4a), (3.4b) differentiated twice (1e-6, measured 2.5e-8); the dashed curve labelled
+    "nominal H''" is the cycloid's H''(T) = 2 pi sin 2 pi T inside the rise and 0 outside
+    (A.2.10; 1e-12); the marker sits at the summary's deceleration extreme; the bottom axes
+    carries the T label.  No other diagram carries the nominal curve."""
+    _, _, figs, res = figures
+    fig = figs["Xdd"]
+    ax = fig.axes[0]
+    T = res.t / T_M + T_START
+    curve = ax.lines[0]
+    assert np.allclose(curve.get_xdata(), T, rtol=0, atol=1e-12)
+    assert np.allclose(curve.get_ydata(), xdd_closed_form(T), rtol=0, atol=1e-6)
+    nominal = [ln for ln in ax.lines if ln.get_label() == "nominal H''"]
+    assert len(nominal) == 1
+    Tn = np.asarray(nominal[0].get_xdata())
+    assert np.allclose(Tn, T, rtol=0, atol=1e-12)
+    want = np.where((Tn > 0) & (Tn < 1), 2 * math.pi * np.sin(2 * math.pi * Tn), 0.0)
+    assert np.allclose(nominal[0].get_ydata(), want, rtol=0, atol=1e-12)
+    assert ax.get_legend() is not None
+    grid = np.linspace(0.0, 1.0, 20001)
+    marker = [ln for ln in ax.lines if ln.get_marker() == "v"]
+    assert len(marker) == 1
+    assert marker[0].get_ydata()[0] == pytest.approx(xdd_closed_form(grid).min(), abs=1e-6)
+    for key, f in figs.items():
+        assert f.axes[-1].get_xlabel() == "T = t/t_m", key
+        if key != "Xdd":
+            assert not [ln for a in f.axes for ln in a.lines if ln.get_label() == "nominal H''"], key
+
+
+# -- roller lift-off (sec. 7.5) ----------------------------------------------------------------
+LIFT = {"h_m": 0.01, "F_0": 0.5, "m_x": 1.0, "c_x": 1e6, "c_z": 1e8}
+
+
+@lru_cache(maxsize=None)
+def lift_run():
+    # stiff (tau = 0.025), damped, at constant speed; c_s = 0 so the preload is F_0 throughout
+    sc = _scene("lift", {"roller": "contact", "spring": True},
+                {"h_m": LIFT["h_m"], "beta_m": BETA_M, "R_b": 10.0, "omega_s": OMEGA_S, "J": 1e6,
+                 "k": 1e9, "q_b": 0.05, "m_x": LIFT["m_x"], "c_x": LIFT["c_x"], "q_x": 0.05,
+                 "m_y": 100.0, "c_y": 1e8, "q_y": 0.05, "m_z": 100.0, "c_z": LIFT["c_z"], "q_z": 0.05,
+                 "F_0": LIFT["F_0"], "c_s": 0.0}, 1.0)
+    return sc, *dynacam.run(sc)
+
+
+def test_roller_lifts_off_where_the_preload_no_longer_holds_the_follower():
+    """Sec. 7.5: following the nominal cycloid, the roller leaves the cam where the inertia
+    force m_x x'' first reaches -F_0: 2 pi (h_m/t_m^2) m_x sin 2 pi T = -F_0, i.e.
+    T = 1/2 + asin(F_0 t_m^2/(2 pi m_x h_m))/(2 pi) = 0.5828.  mode_changes lists that switch
+    to "free" first, each entry a real change of value; the summary reports the jump there.
+    Tolerance 1e-3 in T: the dynamic deviation of order tau^2 and the linkage damper
+    (2 q tau) the hand formula leaves out; measured 3.4e-4."""
+    sc, s, res = lift_run()
+    ratio = LIFT["F_0"] * T_M**2 / (2 * math.pi * LIFT["m_x"] * LIFT["h_m"])
+    T_lift = 0.5 + math.asin(ratio) / (2 * math.pi)
+    changes = dynacam.mode_changes(sc, res, "roller")
+    assert changes, "the roller never left the cam"
+    assert changes[0][1] == "free"
+    assert changes[0][0] == pytest.approx(T_lift, abs=1e-3)
+    values = ["contact"] + [v for _, v in changes]
+    assert all(a != b for a, b in zip(values, values[1:]))
+    assert all(a[0] < b[0] for a, b in zip(changes, changes[1:]))
+    assert s["jump"]["occurs"]
+    assert s["jump"]["T"] == pytest.approx(T_lift, abs=1e-3)
+
+
+def test_lift_scene_starts_in_the_preload_equilibrium():
+    """(6.49)-(6.68): at rest in the dwell, the preload F_0 compresses the linkage c_x and the
+    shaft c_z in series: z = F_0/c_z, x = -F_0 (1/c_x + 1/c_z), beta = y = 0 (no torque in the
+    dwell, tan alpha = 0), cam at w_s.  1e-9 relative (measured 2e-16)."""
+    _, _, res = lift_run()
+    y0 = dict(zip(res.state_names, res.y[0]))
+    F_0, c_x, c_z = LIFT["F_0"], LIFT["c_x"], LIFT["c_z"]
+    assert y0["z"] == pytest.approx(F_0 / c_z, rel=1e-9)
+    assert y0["x"] == pytest.approx(-F_0 * (1 / c_x + 1 / c_z), rel=1e-9)
+    assert abs(y0["beta"]) < 1e-15 and abs(y0["y"]) < 1e-15
+    assert y0["betad"] == OMEGA_S
+
+
+def test_groove_backlash_traverse_is_not_a_jump():
+    """The indexing mechanism (positive drive, roller in a groove with backlash s_r, fig. 7.16):
+    the roller leaves the lower wall in the rise and crosses the groove ("free"), but a
+    positive-drive follower cannot jump (sec. 7.5 concerns force closure): the summary reports
+    no jump."""
+    sc = scenes.load("indexing")
+    s, res = dynacam.run(sc)
+    assert "free" in [v for _, v in dynacam.mode_changes(sc, res, "roller")]
+    assert s["jump"] == {"occurs": False, "T": None}
+
+
+# -- static equilibrium with friction and with the motor ---------------------------------------
+def _series_force(p):
+    """Contact force of the preload F_0 through the follower spring c_s in series with the
+    linkage c_x and the shaft c_z: F = F_0 + c_s x, x = -F (1/c_x + 1/c_z) (4.3), (6.45)."""
+    return p["F_0"] / (1 + p["c_s"] * (1 / p["c_x"] + 1 / p["c_z"]))
+
+
+def test_equilibrium_with_cam_and_linkage_friction_6_13_6_43():
+    """rcrc_yzfls at rest in the dwell, cam slipping forward under it: the contact force is the
+    series-spring one, F = F_0/(1 + c_s/c_c); the linkage friction (sticking, nu_x) holds no
+    force there; the cam friction torque nu_b F R_b (6.13) (tan alpha = 0, R = R_b) winds the
+    shaft back, beta = -nu_b F R_b/k; z = F/c_z, x = -F/c_c, y = 0.  1e-9 relative (measured
+    2e-16).  The first recorded slopes are the rest ones: accelerations zero (1e-9 m/s^2)."""
+    p = {"h_m": 0.01, "beta_m": BETA_M, "R_b": 0.08, "omega_s": OMEGA_S, "J": 0.01, "k": 1000.0,
+         "q_b": 0.05, "m_x": 1.0, "c_x": 1e6, "q_x": 0.05, "m_y": 1.0, "c_y": 1e7, "q_y": 0.05,
+         "m_z": 1.0, "c_z": 2e6, "q_z": 0.05, "F_0": 50.0, "c_s": 2e4, "nu_b": 0.1, "nu_x": 0.1}
+    sc = _scene("friction", {"roller": "contact", "spring": True, "cam_friction": True,
+                             "linkage_friction": True}, p, 1.0)
+    _, res = dynacam.run(sc)
+    y0 = dict(zip(res.state_names, res.y[0]))
+    F = _series_force(p)
+    assert y0["beta"] == pytest.approx(-p["nu_b"] * F * p["R_b"] / p["k"], rel=1e-9)
+    assert y0["z"] == pytest.approx(F / p["c_z"], rel=1e-9)
+    assert y0["x"] == pytest.approx(-F * (1 / p["c_x"] + 1 / p["c_z"]), rel=1e-9)
+    assert abs(y0["y"]) < 1e-15
+    assert y0["betad"] == OMEGA_S
+    f0 = dict(zip(res.state_names, res.f[0]))
+    assert max(abs(f0[n]) for n in ("betad", "yd", "zd", "xd")) < 1e-9
+
+
+def test_spring_loaded_scene_starts_in_equilibrium_with_the_motor_at_rest():
+    """The spring-loaded follower of fig. 7.2 (motor of App. 5, second order): in the dwell the
+    cam needs no torque, so the motor runs at w_s (dw = 0) with zero electromagnetic torque
+    (Mea = 0, (A.5.6)), phi = beta = y = 0, and the preload sits in the series springs:
+    F = F_0/(1 + c_s/c_c) = 59.84 N, z = F/c_z, x = -F/c_c.  1e-9 relative on x, z, 1e-12
+    absolute on dw [rad/s] and Mea [N m] (measured 2e-16 relative; 4e-29, 6e-26)."""
+    sc = scenes.load("spring_loaded")
+    _, res = dynacam.run(sc)
+    y0 = dict(zip(res.state_names, res.y[0]))
+    p = sc.parameters
+    F = _series_force(p)
+    assert y0["z"] == pytest.approx(F / p["c_z"], rel=1e-9)
+    assert y0["x"] == pytest.approx(-F * (1 / p["c_x"] + 1 / p["c_z"]), rel=1e-9)
+    for name in ("dw", "Mea", "phi", "beta", "y"):
+        assert abs(y0[name]) < 1e-12, name
+    assert y0["betad"] == p["omega_s"]
