@@ -142,3 +142,15 @@ def test_breakpoints_and_runtime_errors():
         rt_laws.choose("sine")
     with pytest.raises(ValueError, match="unknown cam law"):
         camlaws.get("sine")
+
+
+def test_law_codes_are_unique_and_those_of_the_compiled_library():
+    """A code selects a law in the generated if/elif chains (camdyn/generated/camlaws.pyx) and is
+    "stable, never reused": no two laws share one, LAW_BY_CODE maps each back to its law, and each
+    is the code under which the checked-in compiled library evaluates the law of that name."""
+    codes = {key: law.code for key, law in LAWS.items()}
+    assert len(set(codes.values())) == len(codes)
+    assert {c: law.key for c, law in camlaws.LAW_BY_CODE.items()} == {c: k for k, c in codes.items()}
+    from camdyn.generated import camlaws as lib
+
+    assert {law["key"]: law["code"] for law in lib.LAWS} == codes

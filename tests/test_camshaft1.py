@@ -70,3 +70,20 @@ def test_thesis_scheme_agrees_with_dp54_at_fine_step():
     for tau, Fa in ((0.15, 2.0), (0.2, 1.5)):
         fine = residual(simulate("camshaft1", {"tau": tau, "Fa": Fa}, 3.0, "koster", step=0.01 * tau)).U0
         assert fine == pytest.approx(residual_of("camshaft1", tau, Fa).U0, rel=1e-3)
+
+
+def test_approximation_4_22_is_3_5_with_tau_stretched():
+    """(4.22) is (3.5) with tau multiplied by (1 + xi Fa)^(1/2) (sec. 4.4.1: the constant stiffness
+    c_c/(1 + xi Fa) lengthens the natural period by that factor), so at Fa = 0 it is (3.5) itself.
+    Checked symbolically (SymPy difference 0) and through the lambdified closed forms at tau up to
+    0.7, where the factor 1/(1 - tau^2 (1 + xi Fa)) matters most (measured 4e-16)."""
+    import sympy as sp
+
+    from camdyn.derive import theory as th
+
+    stretched = th.U0.subs(th.tau, th.tau * sp.sqrt(1 + th.xi * th.Fa))
+    assert sp.simplify(th.U0_approx - stretched) == 0
+    assert sp.simplify(th.U0_approx.subs(th.Fa, 0) - th.U0) == 0
+    for tau, Fa, xi in ((0.45, 0.3, 2.0), (0.7, 0.1, 1.5), (0.3, 2.0, 1.5), (0.15, 0.5, 2.0)):
+        approx = float(cf.evaluate("U0_approx", tau=tau, Fa=Fa, xi=xi))
+        assert approx == pytest.approx(cf.U0(tau * np.sqrt(1 + xi * Fa)), rel=1e-12)

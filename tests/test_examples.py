@@ -221,3 +221,52 @@ def test_squeeze_coefficients_by_the_thesis_reduction():
     F_real = float(R.squeeze_force(m.eta_roller.value, w / i, m.roller_width.value,
                                    m.roller_radius.value, s / i))
     assert F_red == pytest.approx(F_real / i, rel=1e-12)
+
+
+def test_listing_readings_agree_with_the_scan_they_cite():
+    """The App. 6 listing numbers that App. 7 does not print carry the scan text and the reading
+    taken in their note ("scan 'BR0LSe14.E.3': 14 mm", "read 2.7E-2", "read ZT=54"); the value
+    must be that reading (the listing is in SI units, lengths in m).  Eight such readings."""
+    import re
+
+    readings = 0
+    for name, q in quantities(INDEXING).items():
+        if q.printed is not None or "App. 6" not in q.source:
+            continue
+        m = re.search(r"read (?:[A-Z]+=)?(\d+\.?\d*(?:E[-+]?\d+)?)", q.note)
+        mm = re.search(r"': (\d+\.?\d*) mm", q.note)
+        if m:
+            expected = float(m.group(1))
+        elif mm:
+            expected = float(mm.group(1)) * 1e-3
+        else:
+            continue
+        readings += 1
+        assert q.value == pytest.approx(expected, rel=1e-12), name
+    assert readings == 8
+
+
+def test_worm_gear_radius_6_4_and_the_listing_constant():
+    """(6.4): R_e' = 1/2 m z sin alpha = 1/2 4 mm 54 sin 20 deg = 36.94 mm for the worm wheel
+    of the indexing mechanism; the App. 6 listing writes R_e'/2 as 0.085 m z (VT line), which is
+    sin 20 deg/4 = 0.0855 truncated to its printed digits."""
+    m = INDEXING
+    sq = ex.indexing_squeeze()
+    mz = m.gear_module.value * m.gear_teeth.value
+    assert sq["R_e"] == pytest.approx(0.5 * mz * math.sin(math.radians(20)), rel=1e-14)
+    assert matches_printed(sq["R_e"] / 2 / mz, "0.085")
+
+
+def test_indexing_mass_closed_form_with_and_without_the_cam_mass():
+    """(4.39) with the static deflection: the rollers and the cam move with the shaft deflection
+    along the follower, a fraction (1/c_4z')/(1/c_c) = 1 - c_c/c1 of the output's (4.3), so
+    m = m1 + (m2 + m_z)/i^2 (1 - c_c/c1)^2, and without the cam mass m = m1 + m2/i^2 (1 - c_c/c1)^2
+    (44.7 kg against 45.0 kg).  m2/i^2 is the printed 5 kg of fig. A.7.3.  To 1e-12."""
+    m = INDEXING
+    i, c_c, c1 = m.i.value, float(m.printed["c_c"].text), m.c1.value
+    share = (1 - c_c / c1) ** 2
+    assert matches_printed(m.m2.value / i**2, m.printed["m2_red"].text)
+    assert ex.indexing_mass(m, with_cam_mass=False) == pytest.approx(
+        m.m1.value + m.m2.value / i**2 * share, rel=1e-12)
+    assert ex.indexing_mass(m) == pytest.approx(
+        m.m1.value + (m.m2.value + m.m_z.value) / i**2 * share, rel=1e-12)

@@ -115,6 +115,41 @@ def test_small_tau_reading_reproduces_both_printed_ratios():
     assert not matches_printed(c.ratios[0], "3.5e-2") and not matches_printed(c.ratios[1], "0.99")
 
 
+def test_printed_tau_follows_from_the_printed_w_ex2():
+    """Sec. 7.2 prints tau = 0.1605 and 71 Hz next to w_ex^2 = 19.8e4 s^-2 and t_m = 0.088 s:
+    tau = 2 pi/(w_ex t_m) (3.3) gives 0.16046 (4.1e-5 from the datum, within half a unit of its
+    last digit) and w_ex/(2 pi) = 70.8 Hz.  c_c/m_x of the rounded c_c would give 0.1607: the
+    thesis took tau from the printed w_ex^2."""
+    w_ex = math.sqrt(D["w_ex2"])
+    tau = 2 * math.pi / (w_ex * D["t_m"])
+    assert abs(tau - D["tau"]) <= 0.5e-4
+    assert matches_printed(w_ex / (2 * math.pi), f"{D['f_ex']:g}")
+    assert not matches_printed(2 * math.pi / (math.sqrt(D["c_c"] / D["m_x"]) * D["t_m"]), "0.1605")
+
+
+def test_amplitude_ratios_by_modal_decomposition():
+    """(7.6) by default (exact roots, envelope as printed) against a modal decomposition of fig. 7.3
+    by scipy: with M-normalised eigenvectors phi_i of K v = lambda M v (m_x = 1, so c_c = w_ex^2,
+    m_f = w_ex^2/(c_c/m_f), c_f = m_f w_ef^2), x/h' = sum_i phi_i,x (phi_i . b)/lambda_i
+    1/(1 + D^2/lambda_i), b = (c_c, -c_c); each mode then contributes |A_i| 4 pi tau_i/|1 - tau_i^2|
+    (3.6 on its envelope), over the rigidly supported 4 pi tau/(1 - tau^2).  Agreement 3e-14;
+    the (7.3) root would give 0.050 instead of 0.0341."""
+    w_ex2, w_ef2, cc_mf, t_m = D["w_ex2"], D["w_ef2"], D["cc_mf"], D["t_m"]
+    m_f = w_ex2 / cc_mf
+    K = np.array([[w_ex2, -w_ex2], [-w_ex2, w_ex2 + m_f * w_ef2]])
+    lam, phi = scipy.linalg.eigh(K, np.diag([1.0, m_f]))
+    A = phi[0] * (phi.T @ np.array([w_ex2, -w_ex2])) / lam
+
+    def envelope(tau):
+        return 4 * math.pi * tau / abs(1 - tau**2)
+
+    tau = 2 * math.pi / (np.sqrt(np.append(lam, w_ex2)) * t_m)
+    expected = [abs(A[i]) * envelope(tau[i]) / envelope(tau[2]) for i in (0, 1)]
+    got = fd.amplitude_ratios(w_ex2, w_ef2, cc_mf, t_m)
+    np.testing.assert_allclose(got, [*expected, 1.0], rtol=1e-12)
+    assert got[0] == pytest.approx(0.035, rel=0.03)   # printed 3.5e-2, as check sec7_2.ratio.U01
+
+
 # ---------------------------------------------------------------- direct simulation
 
 

@@ -103,6 +103,42 @@ def test_kloss_slope_at_zero_torque():
     assert slope == pytest.approx(mt.slope_at_zero_torque(M_k, dk, p), rel=1e-5)
 
 
+def test_electromagnetic_torque_is_a_first_order_lag_A_5_2():
+    """(A.5.2) as an operator in D = d/dt: (1 + T_el D) M_e = -G_p dw, i.e. the static slope -G_p
+    (D = 0) reached through the lag T_el, and M_e -> 0 for fast changes (D -> oo).  SymPy identity."""
+    dw, G_p, T_el = sp.symbols("dw G_p T_el", positive=True)
+    M_e = mt.electromagnetic_torque(dw, G_p, T_el)
+    assert sp.simplify(M_e * (1 + T_el * mt.Dop) + G_p * dw) == 0
+    assert M_e.subs(mt.Dop, 0) == -G_p * dw
+    assert sp.limit(M_e, mt.Dop, sp.oo) == 0
+
+
+def test_A5_15_prefactor_is_the_cycloid_load_over_T_el_J_m():
+    """The bracket (sin 2 pi T - sin 4 pi T/2) of (A.5.15), (A.5.16) is multiplied by the load
+    amplitude over T_el J_m/i_r^2 ((A.5.13)): the cycloid's load Mc H' H'' is 2 pi Mc times the
+    bracket, and M_ena = P M_max with M_max = Mc H' H'' at T = 1/3 (A.2.14), both taken from
+    H' H'' by SymPy here.  So both printed prefactors equal 2 pi Mc i_r^2/(T_el J_m) (SymPy
+    identity, with M_en = i_r M_ena)."""
+    a5_15, a5_16 = mt.equation_A5_16_prefactor()
+    load = mt.load_nominal()
+    amplitude = sp.simplify(load / mt.forcing())
+    assert amplitude == 2 * sp.pi
+    M_max = load.subs(mt.T, sp.Rational(1, 3)) * mt.Mc
+    expected = amplitude * mt.Mc * mt.i_r**2 / (mt.T_el * mt.J_m)
+    for prefactor in (a5_15, a5_16):
+        assert sp.simplify(prefactor.subs(mt.M_en, mt.i_r * mt.P * M_max) - expected) == 0
+
+
+def test_derived_initial_constants_are_the_printed_A5_22():
+    """derive_second_order solves (A.5.21) for A', B' with the homogeneous solution
+    exp(-T/(2 tau_el)) (A exp(s T) + B exp(-s T)) of (A.5.18); the result must be the printed
+    A', B' of (A.5.25) (reading of their signs in motor_theory), identically in tau_el, tau_m
+    and s.  SymPy: the differences cancel to 0."""
+    derived = mt.derive_second_order()
+    for name in "AB":
+        assert sp.cancel(derived[name] - mt.A5_25[name]) == 0, name
+
+
 # ------------------------------------------------------------------ analytic solutions
 
 

@@ -220,6 +220,23 @@ def test_fig_A3_7_hardly_changes_with_the_number_of_dof():
         assert r.rayleigh_eigenvalue(*r.equal_contribution_chain(n)) == pytest.approx(0.4, rel=1e-13)
 
 
+def test_write_figures_draws_the_three_figures(tmp_path):
+    """write_figures creates the folder it is given and writes figs A.3.3, A.3.9 (two panels, 10 x 4 in)
+    and A.3.7 (5 x 4 in) there as PNG files at 100 dpi: the signature and the IHDR size of each
+    file (PNG specification) are 1000 x 400 and 500 x 400 pixels, and it returns their paths."""
+    import struct
+
+    out = tmp_path / "figures" / "app3"
+    paths = r.write_figures(out)
+    expected = {"fig_A3_3.png": (1000, 400), "fig_A3_9.png": (1000, 400), "fig_A3_7.png": (500, 400)}
+    assert sorted(p.name for p in paths) == sorted(expected)
+    for p in paths:
+        assert p.parent == out and p.is_file()
+        head = p.read_bytes()[:24]
+        assert head[:8] == b"\x89PNG\r\n\x1a\n" and head[12:16] == b"IHDR"
+        assert struct.unpack(">II", head[16:24]) == expected[p.name]
+
+
 def test_within_validity_rule_A3_5_A3_11():
     """(A.3.5) contribution <= m_n/4 and (A.3.11) sum of intermediate masses <= 3 m_n."""
     assert r.within_validity([2.0], [1.0])                  # one DOF: no intermediate mass
