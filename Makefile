@@ -7,7 +7,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.camdyn-built
 SOURCES := pyproject.toml setup.py $(wildcard generated/*.pyx generated/*.pxd runtime/*.pyx runtime/*.pxd runtime/*.pxi)
 
-.PHONY: all build run test test-slow mutation mutation-findings bench figures derive check-generated clean
+.PHONY: all build run test test-slow wheel-check mutation mutation-findings bench figures derive check-generated clean
 
 all: build
 
@@ -32,6 +32,20 @@ test: build
 test-slow: build
 	$(BIN)/python -m pytest -q -n auto -m slow
 
+# what a user gets from `pip install .`: a non-editable install into a fresh virtual environment
+# outside the checkout (so the source folders cannot stand in for missing packages), and the
+# commands run from there
+WHEEL_DIR := $(shell mktemp -d -u /tmp/camdyn-wheel-check.XXXXXX)
+wheel-check:
+	$(PYTHON) -m venv $(WHEEL_DIR)/venv
+	$(WHEEL_DIR)/venv/bin/python -m pip install --quiet --upgrade pip
+	$(WHEEL_DIR)/venv/bin/python -m pip install --quiet .
+	cd $(WHEEL_DIR) && venv/bin/camdyn check > check.txt && tail -1 check.txt
+	cd $(WHEEL_DIR) && venv/bin/camdyn simulate spring_loaded --json > simulate.json && \
+		venv/bin/python -c "import json; s = json.load(open('simulate.json')); print('simulate spring_loaded: Xdd_min_rise', s['Xdd_min_rise'])"
+	cd $(WHEEL_DIR) && venv/bin/camdyn residual --model camshaft1 --tau 0.15 --fa 2 --json
+	rm -rf $(WHEEL_DIR)
+
 # mutation testing of the pure-Python physics in scratch copies of the tree; report in
 # out/mutation/report.md (targets, sample and time budget: tests/mutation/targets.toml)
 # (the mutation extra is installed once: a reinstall of the package would recompile everything)
@@ -48,6 +62,7 @@ mutation-findings: build
 	$(BIN)/python tests/mutation/findings.py
 
 bench: build
+	$(BIN)/python -c 'import Cython' 2>/dev/null || $(BIN)/python -m pip install --quiet -e '.[test,bench]'
 	$(BIN)/python bench/run.py
 	$(BIN)/python bench/beam.py
 

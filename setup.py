@@ -1,4 +1,9 @@
-"""Build the Cython extensions: the integration driver and every generated model.
+"""Build the Cython extensions (the integration driver and every generated model) and list the
+packages.
+
+The packages are discovered, not listed by hand: every folder under a room (derive/, generated/,
+runtime/) is a package camdyn.<room>.<sub>..., so a new subpackage cannot be left out of the
+wheel (one was: camdyn.runtime.checks, while only the editable install was tested).
 
 Cython finds cimported .pxd and included .pxi files by package path
 (camdyn/runtime/abi.pxd, camdyn/runtime/loops.pxi),
@@ -17,6 +22,7 @@ from setuptools.command.build_ext import build_ext
 ROOT = Path(__file__).parent.resolve()
 INCLUDE = ROOT / "build" / "cython_include"
 FOLDERS = {"runtime": "runtime", "generated": "generated"}
+ROOMS = ("derive", "generated", "runtime")   # camdyn.<room> lives in the top-level folder <room>/
 # -fno-math-errno: sqrt becomes an instruction; nothing here reads errno
 COMPILE_ARGS = ["-O3", "-fno-math-errno"]
 
@@ -42,6 +48,15 @@ def _extensions():
     return exts
 
 
+def _packages():
+    packages = []
+    for room in ROOMS:
+        for folder in sorted(p for p in [ROOT / room, *(ROOT / room).rglob("*")]
+                             if p.is_dir() and p.name != "__pycache__"):
+            packages.append(".".join(("camdyn", room, *folder.relative_to(ROOT / room).parts)))
+    return packages
+
+
 class ParallelBuildExt(build_ext):
     """Compile the extensions on every core: the DYNACAM variants are large."""
 
@@ -53,6 +68,8 @@ class ParallelBuildExt(build_ext):
 
 _stage_headers()
 setup(
+    packages=_packages(),
+    package_dir={f"camdyn.{room}": room for room in ROOMS},
     cmdclass={"build_ext": ParallelBuildExt},
     ext_modules=cythonize(
         _extensions(),
