@@ -2,8 +2,8 @@
 packages.
 
 The packages are discovered, not listed by hand: every folder under a room (derive/, generated/,
-runtime/) is a package camdyn.<room>.<sub>..., so a new subpackage cannot be left out of the
-wheel (one was: camdyn.runtime.checks, while only the editable install was tested).
+runtime/, thesis/) is a package camdyn.<room>.<sub>..., so a new subpackage cannot be left out of the
+wheel (one was: camdyn.thesis.checks, while only the editable install was tested).
 
 Cython finds cimported .pxd and included .pxi files by package path
 (camdyn/runtime/abi.pxd, camdyn/runtime/loops.pxi),
@@ -22,7 +22,7 @@ from setuptools.command.build_ext import build_ext
 ROOT = Path(__file__).parent.resolve()
 INCLUDE = ROOT / "build" / "cython_include"
 FOLDERS = {"runtime": "runtime", "generated": "generated"}
-ROOMS = ("derive", "generated", "runtime")   # camdyn.<room> lives in the top-level folder <room>/
+ROOMS = ("derive", "generated", "runtime", "thesis")   # camdyn.<room>: the top-level folder <room>/
 # -fno-math-errno: sqrt becomes an instruction; nothing here reads errno
 COMPILE_ARGS = ["-O3", "-fno-math-errno"]
 

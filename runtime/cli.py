@@ -28,7 +28,8 @@ class _Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message}\n")
 
 
-def _fail(prog: str, message: str) -> int:
+def fail(prog: str, message: str) -> int:
+    """Print a one-line error naming the command and return exit status 2."""
     print(f"{prog}: error: {message}", file=sys.stderr)
     return 2
 
@@ -41,7 +42,7 @@ def _cmd_derive(args) -> int:
     try:
         out = Path(args.out) if args.out else generate.project_root() / "generated"
     except FileNotFoundError as exc:
-        return _fail("camdyn derive", str(exc))
+        return fail("camdyn derive", str(exc))
     only = args.only or None
     try:
         if args.check:
@@ -49,7 +50,7 @@ def _cmd_derive(args) -> int:
         else:
             changed = generate.write(out, only)
     except KeyError as exc:
-        return _fail("camdyn derive", f"argument --only: {exc.args[0]}")
+        return fail("camdyn derive", f"argument --only: {exc.args[0]}")
     if args.check:
         if problems:
             print("generated/ is stale; run `camdyn derive` and rebuild:", file=sys.stderr)
@@ -147,14 +148,14 @@ def residual_run(model: str, tau: float, fa: float | None, law: str, theta: floa
 def _cmd_residual(args) -> int:
     prog = "camdyn residual"
     if args.rtol is not None and args.step is not None:
-        return _fail(prog, "argument --step: not allowed with argument --rtol")
+        return fail(prog, "argument --step: not allowed with argument --rtol")
     try:
         out = residual_run(args.model, args.tau, args.fa, args.law, args.theta, args.method,
                            args.rtol, args.step, args.q, args.t_end, fv=args.fv)
     except CamdynInputError as exc:
-        return _fail(prog, _name_argument(str(exc)))
+        return fail(prog, name_argument(str(exc)))
     except SimulationError as exc:
-        return _fail(prog, str(exc))
+        return fail(prog, str(exc))
     if args.json:
         print(json.dumps(out))
     else:
@@ -164,7 +165,7 @@ def _cmd_residual(args) -> int:
     return 0
 
 
-def _name_argument(message: str) -> str:
+def name_argument(message: str) -> str:
     """Prefix the command-line spelling of the parameter a message is about."""
     flags = {"tau": "--tau", "Fa": "--fa", "Fv": "--fv", "q": "--q", "theta": "--theta", "rtol": "--rtol",
              "step": "--step", "t_end": "--t-end"}
@@ -174,99 +175,21 @@ def _name_argument(message: str) -> str:
     return message
 
 
-# -- camdyn check -------------------------------------------------------------------
+# -- camdyn check, camdyn laws: the thesis room's commands ----------------------------
+# The comparisons with the thesis and App. 2's law table live in camdyn.thesis, which may import
+# SymPy and both sides of the pipeline; the command line is the one place that reaches into it,
+# and only when one of these commands runs.
 
 def _cmd_check(args) -> int:
-    from . import checks
+    from camdyn.thesis import commands
 
-    try:
-        topics = checks.TOPICS if not args.topic else tuple(args.topic)
-        unknown = sorted(set(topics) - set(checks.TOPICS))
-        if unknown:
-            return _fail("camdyn check", f"argument --topic: unknown topic {unknown[0]!r}; "
-                                         f"choose from {', '.join(checks.TOPICS)}")
-        todo = [c for c in checks.registry(topics) if not args.k or args.k in c.key]
-    except Exception as exc:
-        return _fail("camdyn check", f"cannot load the checks: {exc}")
-    outcomes = []
-    for i, c in enumerate(todo, 1):
-        if not args.json and not args.quiet:
-            print(f"  [{i}/{len(todo)}] {c.key}", file=sys.stderr, flush=True)
-        outcomes.append(checks.run(c))
-    if args.json:
-        print(json.dumps({"passed": all(o.passed for o in outcomes),
-                          "checks": [o.as_dict() for o in outcomes]}, indent=1))
-    else:
-        _print_check_table(outcomes)
-    return 0 if all(o.passed for o in outcomes) else 1
+    return commands.check(args)
 
-
-def _fmt(value) -> str:
-    if isinstance(value, bool):
-        return "identical" if value else "differs"
-    if value is None:
-        return "-"
-    try:
-        return f"{float(value):.4g}"
-    except (TypeError, ValueError):
-        return str(value)
-
-
-def _print_check_table(outcomes) -> None:
-    rows = [("item", "reference", "printed", "derived", "rel. diff", "status")]
-    for o in outcomes:
-        c = o.check
-        rel = "-" if o.rel_diff is None else f"{o.rel_diff:.2g}"
-        derived = o.error if o.error else _fmt(o.derived)
-        rows.append((c.item, c.reference, c.printed or "(symbolic)", derived, rel, o.status))
-    widths = [min(max(len(r[i]) for r in rows), 60) for i in range(len(rows[0]))]
-    for k, r in enumerate(rows):
-        print("  ".join(cell[:60].ljust(widths[i]) for i, cell in enumerate(r)).rstrip())
-        if k == 0:
-            print("  ".join("-" * w for w in widths))
-    n_fail = sum(not o.passed for o in outcomes)
-    n_err = sum(o.check.errata for o in outcomes)
-    print(f"\n{len(outcomes)} checks: {len(outcomes) - n_fail} passed ({n_err} of them printed "
-          f"values shown to be misprints), {n_fail} failed, "
-          f"{sum(o.seconds for o in outcomes):.1f} s")
-    for o in outcomes:
-        if o.check.errata and o.check.note:
-            print(f"  errata {o.check.key}: {o.check.note}")
-
-
-# -- camdyn laws --------------------------------------------------------------------
 
 def _cmd_laws(args) -> int:
-    from camdyn.derive import lawtable
+    from camdyn.thesis import commands
 
-    try:
-        rows = [lawtable.properties(k, args.theta if k == "modified-sine" else None)
-                for k in lawtable.LAWS]
-    except ValueError as exc:
-        return _fail("camdyn laws", _name_argument(str(exc)))
-    if args.json:
-        print(json.dumps([r.as_dict() for r in rows], indent=1))
-        return 0
-    head = ("law", "H'max", "H''max", "H''min", "jerk T=0", "jerk T=1/2", "jerk T=1",
-            "max H'H''", "at T", "C", "p")
-    table = [head] + [(r.key, _num(r.H1_max), _num(r.H2_max), _num(r.H2_min), _num(r.jerk_0),
-                       _num(r.jerk_half), _num(r.jerk_1), _num(r.torque_max), _num(r.T_torque_max),
-                       _num(r.residual_coeff), str(r.residual_order)) for r in rows]
-    widths = [max(len(row[i]) for row in table) for i in range(len(head))]
-    for k, row in enumerate(table):
-        print("  ".join(c.rjust(w) if i else c.ljust(w) for i, (c, w) in enumerate(zip(row, widths))))
-        if k == 0:
-            print("  ".join("-" * w for w in widths))
-    print("\nNominal characteristics, thesis App. 2 (jerk = H''', 'impulse' where H'' jumps); "
-          "torque M = m h_m^2/(w_s t_m^3) H' H'' (A.2.7); one-DOF residual envelope "
-          "U0 <= C tau^p for tau << 1 (ch. 3).")
-    return 0
-
-
-def _num(v) -> str:
-    if v is None:
-        return "impulse"
-    return {float("inf"): "inf", float("-inf"): "-inf"}.get(v, f"{v:.4g}")
+    return commands.laws(args)
 
 
 # -- camdyn run ---------------------------------------------------------------------
@@ -278,7 +201,7 @@ def _cmd_run(args) -> int:
         scene = report.load_scene(args.scene)
         path = report.main_job(scene, Path(args.out), progress=not args.quiet)
     except CamdynInputError as exc:
-        return _fail("camdyn run", str(exc))
+        return fail("camdyn run", str(exc))
     print(f"report: {path}")
     return 0
 
@@ -298,7 +221,7 @@ def _cmd_simulate(args) -> int:
         if args.out:
             summary["figures"] = dynacam.plot(sc, res, summary, args.out)
     except CamdynInputError as exc:
-        return _fail("camdyn simulate", str(exc))
+        return fail("camdyn simulate", str(exc))
     except SimulationError as exc:
         print(f"camdyn simulate: run failed: {exc}", file=sys.stderr)
         return 1
@@ -414,7 +337,7 @@ def _cmd_beam_follower(args) -> int:
         # the main run's line only without --json; the 18 figure runs report in any case
         out = beam_follower_run(case, args.out, progress, announce_run=not args.json)
     except CamdynInputError as exc:
-        return _fail(prog, _beam_argument(str(exc)))
+        return fail(prog, _beam_argument(str(exc)))
     except SimulationError as exc:
         print(f"{prog}: run failed: {exc}", file=sys.stderr)
         return 1

@@ -1,34 +1,23 @@
-"""NumPy versions of the closed forms in :mod:`camdyn.derive.theory`."""
-from functools import lru_cache
+"""The one-DOF residual-vibration amplitudes in closed form, in NumPy (no SymPy at run time).
 
+U0   = tau^3 |sin(pi/tau)| / (pi (1 - tau^2))          positional error after the rise (3.5)
+U0'' = 4 pi tau |sin(pi/tau)| / (1 - tau^2)            residual acceleration (3.6)
+
+for the cycloidal rise (3.2) on the one-DOF model (3.1).  The symbolic forms are
+:mod:`camdyn.thesis.theory`; tests/test_one_dof.py holds the two equal.
+"""
 import numpy as np
 
 
-@lru_cache(maxsize=None)
-def _fn(name: str):
-    import sympy as sp
-
-    from camdyn.derive import theory as th
-
-    expr = getattr(th, name)
-    args = sorted(expr.free_symbols, key=lambda s: s.name)
-    return sp.lambdify(args, expr, "numpy"), [a.name for a in args]
+def U0(tau):
+    """(3.5); a float for a float, an array for an array."""
+    t = np.asarray(tau, dtype=float)
+    out = t**3 * np.abs(np.sin(np.pi / t)) / (np.pi * (1 - t**2))
+    return float(out) if out.ndim == 0 else out
 
 
-def evaluate(name: str, **values):
-    """Closed form ``name`` of the theory module at the given symbol values."""
-    f, args = _fn(name)
-    missing = set(args) - set(values)
-    if missing:
-        raise TypeError(f"{name} needs {', '.join(sorted(missing))}")
-    return f(*(np.asarray(values[a], dtype=float) for a in args))
-
-
-def U0(tau: float) -> float:
-    """(3.5)"""
-    return float(evaluate("U0", tau=tau))
-
-
-def U0dd(tau: float) -> float:
-    """(3.6)"""
-    return float(evaluate("U0dd", tau=tau))
+def U0dd(tau):
+    """(3.6); a float for a float, an array for an array."""
+    t = np.asarray(tau, dtype=float)
+    out = 4 * np.pi * t * np.abs(np.sin(np.pi / t)) / (1 - t**2)
+    return float(out) if out.ndim == 0 else out

@@ -151,7 +151,7 @@ def main_job(scene: dict, out: Path, progress: bool = True) -> Path:
         ax[1, 1].plot(taus, [v["U0dd"] for v in vals], label=f"Fa = {Fa:g}")
     if scene["law"] == "cycloidal":
         fine = np.linspace(graphs["tau_min"], min(graphs["tau_max"], 0.99), 600)
-        ax[0, 0].semilogy(fine, closed_forms.evaluate("U0", tau=fine), "k:", lw=0.8, label="(3.5)")
+        ax[0, 0].semilogy(fine, closed_forms.U0(fine), "k:", lw=0.8, label="(3.5)")
     ax[0, 0].set_ylabel("U0")
     ax[0, 1].set_ylabel("-X''min during rise")
     ax[1, 0].set_ylabel("T at X''min")

@@ -8,7 +8,7 @@ from camdyn.derive.camlaws import LAWS, T, theta
 from camdyn.runtime import laws as rt_laws
 from camdyn.runtime.errors import CamdynInputError
 
-from camdyn.runtime.checks import matches_printed
+from camdyn.thesis.checks import matches_printed
 
 pi = sp.pi
 

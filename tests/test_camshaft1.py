@@ -2,7 +2,7 @@
 import numpy as np
 import pytest
 
-from camdyn.runtime import closed_forms as cf
+from camdyn.thesis import closed_forms as cf
 from camdyn.runtime.residual import extreme, residual
 from camdyn.runtime.simulate import simulate
 
@@ -79,7 +79,7 @@ def test_approximation_4_22_is_3_5_with_tau_stretched():
     0.7, where the factor 1/(1 - tau^2 (1 + xi Fa)) matters most (measured 4e-16)."""
     import sympy as sp
 
-    from camdyn.derive import theory as th
+    from camdyn.thesis import theory as th
 
     stretched = th.U0.subs(th.tau, th.tau * sp.sqrt(1 + th.xi * th.Fa))
     assert sp.simplify(th.U0_approx - stretched) == 0

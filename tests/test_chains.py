@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from camdyn.derive import chains
+from camdyn.thesis import chains
 
 
 @pytest.mark.parametrize("n", [1, 2, 3, 4, 5])

@@ -1,6 +1,6 @@
 """The registry behind `camdyn check`: every comparison with the thesis must pass.
 
-Each check carries its thesis reference and tolerance (camdyn/runtime/checks);
+Each check carries its thesis reference and tolerance (camdyn/thesis/checks);
 printed values shown to be misprints pass only while they are *not* reproduced.
 """
 import json
@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from camdyn.runtime import checks
+from camdyn.thesis import checks
 
 REGISTRY = checks.registry()
 

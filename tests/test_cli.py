@@ -7,7 +7,7 @@ import sys
 import pytest
 from scipy.integrate import solve_ivp
 
-from camdyn.runtime import closed_forms as cf
+from camdyn.thesis import closed_forms as cf
 
 
 def camdyn(*args):
@@ -111,7 +111,7 @@ def test_residual_json_camshaft2():
     """--model camshaft2 with --fa and --fv: the keys of the other models plus Bdot_dev_max and
     windup_max; at tau = 0.16, Fa = 1.5, Fv = 10 the cam's speed error is "a maximum of 30 %"
     (sec. 5.5.5), and the figures equal those of the API run (DP54, rtol 1e-10)."""
-    from camdyn.runtime.checks import camshaft2 as c2
+    from camdyn.thesis.checks import camshaft2 as c2
 
     p = camdyn("residual", "--model", "camshaft2", "--tau", "0.16", "--fa", "1.5", "--fv", "10", "--json")
     assert p.returncode == 0, p.stderr
@@ -144,7 +144,7 @@ def test_residual_camshaft2_koster_default_step_follows_the_shaft_period():
     assert p.returncode == 0, p.stderr
     out = json.loads(p.stdout)
     assert out["step"] == pytest.approx(0.01 * 0.16 * (0.15 / 10) ** 0.5, rel=1e-12)
-    from camdyn.runtime.checks import camshaft2 as c2
+    from camdyn.thesis.checks import camshaft2 as c2
     assert out["U0"] == pytest.approx(c2.residual2(0.16, 0.15, 10.0).U0, rel=5e-3)
 
 

@@ -21,7 +21,7 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from camdyn.runtime.checks import matches_printed
+from camdyn.thesis.checks import matches_printed
 from camdyn.runtime.residual import extreme, residual
 from camdyn.runtime.simulate import simulate
 

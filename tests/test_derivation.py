@@ -40,7 +40,8 @@ def test_camshaft1_is_4_15():
 def test_one_dof_closed_form_3_4a_solves_the_derived_equation():
     """(3.4a) with the cycloid satisfies the derived equation and starts from rest; (3.4b)
     continues it after T = 1 with matching position and velocity."""
-    from camdyn.derive import camlaws, theory
+    from camdyn.derive import camlaws
+    from camdyn.thesis import theory
 
     m = one_dof.build()
     T, tau = m.time, one_dof.tau.symbol
@@ -62,14 +63,15 @@ def test_one_dof_closed_form_3_4a_solves_the_derived_equation():
 
 def test_3_6_is_3_5_times_omega_squared():
     """The residual motion is harmonic: U0'' = (2 pi/tau)^2 U0, (3.5) and (3.6)."""
-    from camdyn.derive import theory
+    from camdyn.thesis import theory
 
     assert sp.simplify(theory.U0dd - (2 * pi / theory.tau) ** 2 * theory.U0) == 0
 
 
 def test_stiffness_dip_4_19_from_the_model():
     """c = c_c/(1 + H'^2 Fa) (4.18): max over min for the cycloid (H'max = 2) is 1 + 4 Fa."""
-    from camdyn.derive import camlaws, theory
+    from camdyn.derive import camlaws
+    from camdyn.thesis import theory
 
     m = camshaft1.build()
     T = m.time

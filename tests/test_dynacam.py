@@ -98,7 +98,7 @@ def test_indexing_without_backlash_fig_7_15_and_impact_estimate(indexing):
     """Fig. 7.15: without backlash X'' = -7.4 at T = 0.68 (tolerance 5 %); Van der Hoek's
     estimate X''_(s=0) - U_sn'' (3.12), (3.16), (4.32) from that simulated value agrees with
     the simulation with backlash to 10 %, as the thesis concludes (sec. 7.4.4)."""
-    from camdyn.derive import examples
+    from camdyn.thesis import examples
 
     sc, s, res = indexing
     sc0 = scenes.without_backlash(sc)
@@ -224,9 +224,9 @@ def squeeze():
 
 
 def test_squeeze_coefficients_of_the_scene_are_the_derived_ones():
-    """The scene file's V_T, V_R are camdyn.derive.examples.indexing_squeeze's (6.6), (6.38), to
+    """The scene file's V_T, V_R are camdyn.thesis.examples.indexing_squeeze's (6.6), (6.38), to
     the six digits written."""
-    from camdyn.derive import examples
+    from camdyn.thesis import examples
 
     p = scenes.load("indexing_squeeze").parameters
     sq = examples.indexing_squeeze()

@@ -1,5 +1,5 @@
 """The mechanisms of thesis ch. 7 / App. 7 and their worked examples, beyond the registry checks
-of camdyn/runtime/checks/examples.py: the data themselves, the readings taken, and where the
+of camdyn/thesis/checks/examples.py: the data themselves, the readings taken, and where the
 thesis's printed chain rounds."""
 import itertools
 import math
@@ -9,11 +9,11 @@ import numpy as np
 import pytest
 from scipy.linalg import eigh
 
-from camdyn.derive import examples as ex
-from camdyn.derive import impact as im
-from camdyn.derive.mechanisms import INDEXING, MECHANISMS, SPRING_LOADED, Quantity, quantities
-from camdyn.runtime.checks import matches_printed
-from camdyn.runtime.checks.examples import camshaft1_Xdd
+from camdyn.thesis import examples as ex
+from camdyn.thesis import impact as im
+from camdyn.thesis.mechanisms import INDEXING, MECHANISMS, SPRING_LOADED, Quantity, quantities
+from camdyn.thesis.checks import matches_printed
+from camdyn.thesis.checks.examples import camshaft1_Xdd
 
 # printed unit -> (SI unit of Quantity.value, factor)
 UNITS = {"mm": ("m", 1e-3), "m": ("m", 1.0), "kg": ("kg", 1.0), "N/m": ("N/m", 1.0),
@@ -197,13 +197,13 @@ def test_contact_ratio_is_the_listing_expression():
 
 
 def test_squeeze_coefficients_by_the_thesis_reduction():
-    """V_T and V_R against (A.4.11) itself (camdyn.derive.reduction.squeeze_force): the film
+    """V_T and V_R against (A.4.11) itself (camdyn.thesis.reduction.squeeze_force): the film
     force at a gap and approach velocity, (a) at the worm wheel, turned into a camshaft torque,
     equals V_T dphi' dphi^(-3/2); (b) at the roller reduced by (2.55), (2.59), equals
     V_R w' s'^(-3/2).  To 1e-12."""
     import sympy as sp
 
-    from camdyn.derive import reduction as R
+    from camdyn.thesis import reduction as R
 
     sq = ex.indexing_squeeze()
     m = INDEXING

@@ -1,5 +1,5 @@
 """Impact after backlash (thesis sec. 3.6, (3.8)-(3.16)) and damping over a dwell ((3.7), (7.10)),
-beyond the registry checks of camdyn/runtime/checks/impact.py."""
+beyond the registry checks of camdyn/thesis/checks/impact.py."""
 import math
 
 import numpy as np
@@ -7,8 +7,8 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from camdyn.derive import impact as im
-from camdyn.runtime.checks import matches_printed
+from camdyn.thesis import impact as im
+from camdyn.thesis.checks import matches_printed
 from camdyn.runtime.residual import extreme
 from camdyn.runtime.simulate import simulate
 

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 from camdyn.derive import camlaws
-from camdyn.derive.lawtable import properties
+from camdyn.thesis.lawtable import properties
 from camdyn.runtime.residual import residual
 from camdyn.runtime.simulate import simulate
 

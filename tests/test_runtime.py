@@ -40,7 +40,7 @@ def test_dp54_dense_output_is_fourth_order():
         res = simulate("one_dof", {"tau": 0.5}, 3.0, "dp54", rtol=rtol)
         T = np.linspace(1.0, 3.0, 2001)
         s = res.sample(T)
-        from camdyn.runtime import closed_forms as cf
+        from camdyn.thesis import closed_forms as cf
 
         errs.append(np.max(np.abs(s["U"] - cf.evaluate("u_dwell", T=T, tau=0.5))))
     assert errs[1] < errs[0] / 30

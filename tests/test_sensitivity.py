@@ -437,7 +437,7 @@ CASES = {   # case: (scene, parameter changes from its file)
 
 @pytest.fixture(scope="module")
 def ladder():
-    """Per case: camdyn's run and reduced_models (as runtime/checks/dynacam.py forms them),
+    """Per case: camdyn's run and reduced_models (as thesis/checks/dynacam.py forms them),
     the refined U0'' of its dense output, and the independent U0'' of the 4-, 2- and 1-DOF
     models at the hand-computed tau, Fa, Fv."""
     out = {}

@@ -35,7 +35,7 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
-PACKAGES = ("derive", "generated", "runtime")   # camdyn.<name> lives in the top-level <name>/
+PACKAGES = ("derive", "generated", "runtime", "thesis")   # camdyn.<name>: the top-level <name>/
 
 
 def log(msg: str) -> None:
@@ -59,7 +59,7 @@ class Target:
         (a -k expression would filter the other files' tests too)."""
         args = [t for t in self.tests if (tree / t).exists()]
         if self.checks:
-            p = subprocess.run([sys.executable, "-c", "from camdyn.runtime import checks; "
+            p = subprocess.run([sys.executable, "-c", "from camdyn.thesis import checks; "
                                 "print('\\n'.join(c.key for c in checks.registry()))"],
                                cwd=tree, env=tree_env(tree), capture_output=True, text=True, check=True)
             keys = [k for k in p.stdout.split() if k.startswith(tuple(self.checks))]

@@ -1,7 +1,7 @@
 """Checks of topic 'impact': impact after backlash, sec. 3.6 (3.8)-(3.16), and the decay of the
 residual vibration over a dwell, sec. 3.4 (3.7) with its inverse (7.10).
 
-Formulas and derivations: camdyn/derive/impact.py (its docstring gives the readings of the
+Formulas and derivations: camdyn/thesis/impact.py (its docstring gives the readings of the
 scanned-away (3.9), (3.10) and (3.16)).  The ramp of (3.8) is the cam law "uniform"
 (H = T on 0 <= T < 1), so the compiled one-DOF model run under it is the impact model with
 r_e = 1 up to T = 1.
@@ -19,7 +19,7 @@ RAMP_TAU = 0.13  # 7.7 free vibrations within the ramp 0 <= T < 1, so the extrem
 
 
 def _im():
-    from camdyn.derive import impact
+    from camdyn.thesis import impact
 
     return impact
 
@@ -89,7 +89,7 @@ def _ramp(tau: float):
 
 
 def _identity_3_7() -> bool:
-    from camdyn.derive import theory
+    from camdyn.thesis import theory
 
     im = _im()
     x, _ = im.damped_free_vibration()
@@ -118,7 +118,7 @@ def _dwell_decay(tau: float, q: float, td: float) -> float:
 
 
 def checks() -> list[Check]:
-    im_ref = "camdyn/derive/impact.py"
+    im_ref = "camdyn/thesis/impact.py"
     out = [
         Check("ch3_6.eq3_9_3_10.reading", "ramp response of (3.1): amplitudes v_b T_e/(2 pi) and "
               "2 pi v_b/T_e (derived by dsolve)", "(3.8)-(3.10)", None, _eq_3_9_3_10_reading,

@@ -2,7 +2,7 @@
 
 The printed formulas are typed in below as the thesis prints them, with the
 reading taken where the scan is garbled; camdyn's values come from
-camdyn.derive.elements / assembly / reduction, where every energy is
+camdyn.thesis.elements / assembly / reduction, where every energy is
 integrated from its displacement function.  Formulas lost in the scan
 ((2.8), (2.12), (2.14), (2.24), (2.31), (2.34)-(2.38)) are compared through
 the printed equations or matrices that show their coefficients ((2.32),
@@ -24,7 +24,7 @@ EA, EI, GIp, l, m, J, r2, i = sp.symbols("EA EI GIp l m J r2 i", positive=True)
 
 
 def _c4():
-    from camdyn.derive.assembly import EI4, a, i1
+    from camdyn.thesis.assembly import EI4, a, i1
     return 3 * EI4 / (a**3 * i1 * (i1 - 1) ** 2)                 # after (2.31), as printed
 
 
@@ -39,7 +39,7 @@ def printed_2_40():
     3(EI/l^3)8; right-hand side -(1/2 m4 a24 i1, 0, 0, 0, 0) h'' +
     (c4 i1, 0, 0, 0, 0) h.  a14, a24, a34 are returned as symbols.
     """
-    from camdyn.derive.assembly import EA5, EI6, EI8, GIp7, J7, i1, i2, l5, l6, l7, l8, m4, m5, m6, m8
+    from camdyn.thesis.assembly import EA5, EI6, EI8, GIp7, J7, i1, i2, l5, l6, l7, l8, m4, m5, m6, m8
     a14, a24, a34 = sp.symbols("a14 a24 a34")
     R = sp.Rational
     M = sp.Matrix([
@@ -67,21 +67,21 @@ def printed_2_45():
     the rigid lever of length b pivoting at its end ((2.41) with the sum
     a14 + a24 + a34 = 1/3 of the element), like 1/3 m6 and 1/3 m8 (2.44).
     """
-    from camdyn.derive.assembly import J7, l8, m4, m5, m6, m8
+    from camdyn.thesis.assembly import J7, l8, m4, m5, m6, m8
     _, C, _, K, _ = printed_2_40()
     M = sp.diag(m4 / 3, m5 + m6 / 3, 0, J7 / l8**2, m8 / 3)
     return M, C, K
 
 
 def printed_2_46():
-    """(M, C, K) of (2.46) in (x4, x5, x8); c678 as read in camdyn.derive.assembly.c678.
+    """(M, C, K) of (2.46) in (x4, x5, x8); c678 as read in camdyn.thesis.assembly.c678.
 
     Reading: the mass matrix is lost in the scan; it is (2.45) without the
     rows of psi6 l6 and psi7 l8 (J7 put to zero).  Stiffness as far as
     readable: c4 + (EA/l)5, -(EA/l)5, -i2 c678, c678; the x5 entry
     (EA/l)5 + i2^2 c678 follows from the spring c678 acting between i2 x5 and x8.
     """
-    from camdyn.derive.assembly import EA5, c678, i1, i2, l5, m4, m5, m6, m8
+    from camdyn.thesis.assembly import EA5, c678, i1, i2, l5, m4, m5, m6, m8
     c4, k5, k = _c4(), EA5 / l5, c678()
     M = sp.diag(m4 / 3, m5 + m6 / 3, m8 / 3)
     C = sp.Matrix([[c4 + k5, -k5, 0], [-k5, k5 + i2**2 * k, -i2 * k], [0, -i2 * k, k]])
@@ -92,7 +92,7 @@ def printed_2_46():
 def printed_2_47(n: int):
     """(M, C, K) of (2.47): diag(m_i); C_ii = c_i + c_{i+1} (c_n last), C_i,i+1 = -c_{i+1};
     K_ii = c_i, K_i,i+1 = -c_{i+1}."""
-    from camdyn.derive.assembly import chain_symbols
+    from camdyn.thesis.assembly import chain_symbols
     _, _, ms, cs = chain_symbols(n)
     M = sp.diag(*ms)
     C, K = sp.zeros(n, n), sp.zeros(n, n)
@@ -146,7 +146,7 @@ def _zero_matrix(A) -> bool:
 
 @lru_cache(maxsize=None)
 def _elements():
-    from camdyn.derive import elements as E
+    from camdyn.thesis import elements as E
     return {
         "bar": E.bar(x1, x2, EA, l, m), "shaft": E.shaft(x1, x2, GIp, l, J, r2, i),
         "beam": E.beam(x1, x2, EI, l, m),
@@ -158,8 +158,8 @@ def _elements():
 
 def _lever(kinetic="elastic"):
     # the symbols of fig. 2.4, so that the (cached) element is built once for all checks
-    from camdyn.derive.assembly import EI4, a, h, i1, m4, x4
-    from camdyn.derive.elements import overhung_lever
+    from camdyn.thesis.assembly import EI4, a, h, i1, m4, x4
+    from camdyn.thesis.elements import overhung_lever
     return overhung_lever(h, x4, EI4, a, i1, m4, kinetic)
 
 
@@ -169,8 +169,8 @@ def _bar_V():
 
 def _bar_eom():
     """(2.32)-(2.33) for component 5 between x4 and x5, left-hand sides (Q's aside)."""
-    from camdyn.derive import elements as E
-    from camdyn.derive.assembly import EA5, l5, m5, x4, x5
+    from camdyn.thesis import elements as E
+    from camdyn.thesis.assembly import EA5, l5, m5, x4, x5
     e = E.bar(x4, x5, EA5, l5, m5)
     lhs = E.lagrange_equations(e.T, e.V, e.nodes, "bar")
     R, k = sp.Rational, EA5 / l5
@@ -180,13 +180,13 @@ def _bar_eom():
 
 
 def _beam_F():
-    from camdyn.derive.elements import cantilever_deflection
+    from camdyn.thesis.elements import cantilever_deflection
     _, F = cantilever_deflection(x1, x2, EI, l)
     return _zero(F - 3 * EI * (x2 - x1) / l**3)                                   # (2.19)
 
 
 def _beam_xe():
-    from camdyn.derive.elements import cantilever_deflection, z
+    from camdyn.thesis.elements import cantilever_deflection, z
     xe, _ = cantilever_deflection(x1, x2, EI, l)
     return _zero(xe - 3 * (x2 - x1) / (2 * l**3) * (l * z**2 - z**3 / 3))         # (2.20)
 
@@ -197,8 +197,8 @@ def _beam_V():
 
 def _beam_eom_2_39():
     """x8 equation of component 8 with the follower spring c_g (2.39)."""
-    from camdyn.derive import elements as E
-    from camdyn.derive.assembly import EI8, c_g, l8, m8, psi7_l8, x8
+    from camdyn.thesis import elements as E
+    from camdyn.thesis.assembly import EI8, c_g, l8, m8, psi7_l8, x8
     e8, cg = E.beam(psi7_l8, x8, EI8, l8, m8), E.spring(sp.Integer(0), x8, c_g)
     lhs = E.lagrange_equations(e8.T + cg.T, e8.V + cg.V, (psi7_l8, x8), "beam8")
     R, k = sp.Rational, 3 * EI8 / l8**3
@@ -209,7 +209,7 @@ def _beam_eom_2_39():
 
 def _generic_eom():
     """(2.28)-(2.29) from (2.25)-(2.26) by Lagrange's equation (2.27)."""
-    from camdyn.derive import elements as E
+    from camdyn.thesis import elements as E
     g = E.generic()
     lhs = E.lagrange_equations(g.T, g.V, g.nodes, "generic")
     xjdd, xj1dd = E.accel(E.xj), E.accel(E.xj1)
@@ -220,15 +220,15 @@ def _generic_eom():
 
 
 def _lever_c4():
-    from camdyn.derive.assembly import m4
-    from camdyn.derive.elements import generic_form
+    from camdyn.thesis.assembly import m4
+    from camdyn.thesis.elements import generic_form
     c, *_ = generic_form(_lever(), m4)
     return _zero(c - _c4())
 
 
 def _lever_eom_2_30():
-    from camdyn.derive import elements as E
-    from camdyn.derive.assembly import h, i1, m4, x4
+    from camdyn.thesis import elements as E
+    from camdyn.thesis.assembly import h, i1, m4, x4
     e = _lever()
     a14, a24, _ = _lever_coeffs()
     lhs = E.lagrange_equations(e.T, e.V, e.nodes, "lever")
@@ -240,8 +240,8 @@ def _lever_eom_2_30():
 
 def _rigid_2_41():
     """Rigid T of every element = (2.26) with x_j = x_{j+1}: 1/2 m (a1 + a2 + a3) x_{j+1}'^2."""
-    from camdyn.derive.assembly import m4, x4
-    from camdyn.derive.elements import generic_form, rate
+    from camdyn.thesis.assembly import m4, x4
+    from camdyn.thesis.elements import generic_form, rate
     els = _elements()
     cases = [(els[n], els[n + ".rigid"], mass, x2)
              for n, mass in (("bar", m), ("shaft", J / r2**2), ("beam", m))]
@@ -254,19 +254,19 @@ def _rigid_2_41():
 
 
 def _rigid(name, printed):
-    from camdyn.derive.elements import rate
+    from camdyn.thesis.elements import rate
     return lambda: _zero(_elements()[name].T - printed(rate(x2)))
 
 
 def _fig24(kinetic="elastic"):
-    from camdyn.derive.assembly import fig_2_4
+    from camdyn.thesis.assembly import fig_2_4
     return fig_2_4(kinetic)
 
 
 @lru_cache(maxsize=None)
 def _lever_coeffs():
-    from camdyn.derive.assembly import m4
-    from camdyn.derive.elements import generic_form
+    from camdyn.thesis.assembly import m4
+    from camdyn.thesis.elements import generic_form
     _, a14, a24, a34 = generic_form(_lever(), m4)
     return a14, a24, a34
 
@@ -294,7 +294,7 @@ def _rhs_2_40():
 def _first_rows_2_40():
     """The rows of h in the first (unnumbered) display before (2.40), with Qh:
     a14 m4 i1^2, 1/2 m4 a24 i1 (mass); c4 i1^2, -c4 i1 (stiffness)."""
-    from camdyn.derive.assembly import COORDS_2_4, assemble, fig_2_4_elements, h, i1, m4
+    from camdyn.thesis.assembly import COORDS_2_4, assemble, fig_2_4_elements, h, i1, m4
     s = assemble(fig_2_4_elements(), (h,) + COORDS_2_4)
     a14, a24, _ = _lever_coeffs()
     c4 = _c4()
@@ -315,20 +315,20 @@ def _C_K_2_45():
 
 
 def _psi6_massless():
-    from camdyn.derive.assembly import COORDS_2_4, psi6_l6
+    from camdyn.thesis.assembly import COORDS_2_4, psi6_l6
     j = COORDS_2_4.index(psi6_l6)
     return all(e == 0 for e in _fig24("rigid").M.row(j))
 
 
 def _three_dof_2_46():
-    from camdyn.derive.assembly import three_dof
+    from camdyn.thesis.assembly import three_dof
     M, C, K = printed_2_46()
     s = three_dof()
     return _zero_matrix(s.M - M) and _zero_matrix(s.C - C) and _zero_matrix(s.K - K)
 
 
 def _chain_2_47():
-    from camdyn.derive.assembly import chain
+    from camdyn.thesis.assembly import chain
     for n in range(1, 6):
         s = chain(n)
         M, C, K = printed_2_47(n)
@@ -338,12 +338,12 @@ def _chain_2_47():
 
 
 def _omega_form():
-    from camdyn.derive.elements import clamped_beam_omega_squared
+    from camdyn.thesis.elements import clamped_beam_omega_squared
     return _zero(clamped_beam_omega_squared(0) - sp.Rational(140, 11))
 
 
 def _omega(kinetic):
-    from camdyn.derive.elements import clamped_beam_omega_squared
+    from camdyn.thesis.elements import clamped_beam_omega_squared
     return lambda: math.sqrt(float(clamped_beam_omega_squared(0, kinetic)))
 
 
@@ -353,13 +353,13 @@ def _rigid_error_percent():
 
 @lru_cache(maxsize=None)
 def _rules():
-    from camdyn.derive import reduction as R
+    from camdyn.thesis import reduction as R
     return R.derive_rules()
 
 
 def _reduction(name, printed):
     def compute():
-        from camdyn.derive import reduction as R
+        from camdyn.thesis import reduction as R
         s, m_, c_, d_, eta = sp.symbols("s m c d eta", positive=True)
         value = {"length": s, "mass": m_, "stiffness": c_, "damper": d_, "viscosity": eta,
                  "frame": c_}[name]
@@ -371,7 +371,7 @@ def _reduction(name, printed):
 
 
 def _lever_2_51():
-    from camdyn.derive.elements import Lever
+    from camdyn.thesis.elements import Lever
     arm_a, arm_b, theta = sp.symbols("a b theta", positive=True)
     lv = Lever(arm_a, arm_b)
     # both arms turn through the same small angle: strokes a theta and b theta
@@ -379,7 +379,7 @@ def _lever_2_51():
 
 
 def checks() -> list[Check]:
-    from camdyn.derive import reduction as R
+    from camdyn.thesis import reduction as R
 
     ident = lambda key, item, ref, fn, note="": Check(  # noqa: E731
         f"ch2.{key}", item, ref, None, fn, rule="identity", note=note)

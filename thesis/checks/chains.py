@@ -11,7 +11,7 @@ FIG = {"3.6": 1, "3.7": 2}   # output mass (0-based) of each figure, see derive/
 
 @lru_cache(maxsize=None)
 def _modes(fig: str):
-    from camdyn.derive import chains
+    from camdyn.thesis import chains
 
     return chains.modes(*UNIT, FIG[fig])
 
@@ -28,7 +28,7 @@ def _transfer_identity() -> bool:
     """(3.18): x2/h = c1 c2 (D^2 + c3/m3)/(m1 m2 Delta) for the chain of fig. 3.6."""
     import sympy as sp
 
-    from camdyn.derive import chains
+    from camdyn.thesis import chains
 
     m = sp.symbols("m1:4", positive=True)
     c = sp.symbols("c1:4", positive=True)
@@ -40,7 +40,7 @@ def _partial_fraction_identity() -> bool:
     """(3.20): N/prod(D^2 + lambda_i) = sum A_i/(D^2 + lambda_i) with A_i = N(-lambda_i)/prod(...)."""
     import sympy as sp
 
-    from camdyn.derive import chains
+    from camdyn.thesis import chains
 
     lam = sp.symbols("lambda1:4", positive=True)
     k, a = sp.symbols("k a", positive=True)
@@ -59,7 +59,7 @@ def _same_ratios() -> bool:
 
 
 def _lowest_mode_share() -> float:
-    from camdyn.derive.chains import simulated_modal_amplitudes
+    from camdyn.thesis.chains import simulated_modal_amplitudes
 
     amps = simulated_modal_amplitudes(tau1=2 / 7, output=1)
     return float(amps[0] / amps.sum())

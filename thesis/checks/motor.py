@@ -1,6 +1,6 @@
 """Checks of topic 'motor': the asynchronous motor of App. 5 and the worm gear of sec. 6.7.
 
-Formulas and the readings of the garbled ones: camdyn/derive/motor_theory.py.
+Formulas and the readings of the garbled ones: camdyn/thesis/motor_theory.py.
 The generated models motor2/motor1 are compared with the analytic solutions
 (A.5.25)/(A.5.33) as printed; the thesis's test motor is the 3000 r.p.m. motor of
 figs A.5.4-A.5.7 (T_m = 0.113 s, T_el = 8.6e-3 s, t_m = 0.088 s, P = 5.2,
@@ -15,7 +15,7 @@ from . import Check
 
 
 def _mt():
-    from camdyn.derive import motor_theory
+    from camdyn.thesis import motor_theory
 
     return motor_theory
 

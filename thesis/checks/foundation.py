@@ -1,6 +1,6 @@
 """Checks of topic 'foundation': the cam mechanism on a low-tuned foundation, sec. 7.2.
 
-Formulas and the readings of the garbled ones: camdyn/derive/foundation.py.
+Formulas and the readings of the garbled ones: camdyn/thesis/foundation.py.
 Numbers are derived from the frequencies as printed (w_ex^2 = 19.8e4 s^-2,
 w_ef^2 = 9.85e2 s^-2, c_c/m_f = 20.6e2 s^-2, t_m = 0.088 s) unless the item says
 otherwise.
@@ -13,7 +13,7 @@ from . import Check
 
 
 def _f():
-    from camdyn.derive import foundation
+    from camdyn.thesis import foundation
 
     return foundation
 
@@ -84,7 +84,7 @@ def checks() -> list[Check]:
               lambda: data("c_c") / data("m_f")),
         Check("sec7_2.eq7_1.identity", "(7.1) by partial fractions equals x/h' of the two equations of motion",
               "(7.1), fig. 7.3", None, _eq_7_1, rule="identity",
-              note="equations of motion read from fig. 7.3 (camdyn/derive/foundation.py)"),
+              note="equations of motion read from fig. 7.3 (camdyn/thesis/foundation.py)"),
         Check("sec7_2.roots.identity", "printed root pair w_e1,2^2 solves the frequency equation of x/h'",
               "sec. 7.2 (by analogy with (5.38))", None, _roots, rule="identity"),
         Check("sec7_2.eq7_3.identity", "(7.3) is the lower root to first order, sqrt(x + dx) ~ sqrt x + dx/(2 sqrt x)",

@@ -5,7 +5,7 @@ from . import Check
 
 
 def _props(key, theta=None):
-    from camdyn.derive.lawtable import properties
+    from camdyn.thesis.lawtable import properties
 
     return properties(key, theta)
 

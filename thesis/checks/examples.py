@@ -1,8 +1,8 @@
 """Checks of topic 'examples': the worked examples of App. 7 (indexing mechanism and
 spring-loaded cam follower) and the impact estimate of sec. 7.4.4.
 
-Data: camdyn/derive/mechanisms.py (every number with unit and source, and the results as
-printed); computations: camdyn/derive/examples.py.
+Data: camdyn/thesis/mechanisms.py (every number with unit and source, and the results as
+printed); computations: camdyn/thesis/examples.py.
 
 Where the thesis evidently carried a rounded intermediate result into the next step, the
 check does the same and says so in its note (e.g. the stiffness dip from the printed
@@ -17,13 +17,13 @@ from . import Check
 
 
 def _m():
-    from camdyn.derive import mechanisms
+    from camdyn.thesis import mechanisms
 
     return mechanisms
 
 
 def _ex():
-    from camdyn.derive import examples
+    from camdyn.thesis import examples
 
     return examples
 

@@ -43,7 +43,7 @@ Readings taken where the scan is garbled
         speaks of "errors in the lowest natural frequency".
 
 What the readings give against the printed numbers (checked in
-runtime/checks/rayleigh.py): fig. A.3.3 at m1 = 1 (contribution 25 %) 2.33 %
+thesis/checks/rayleigh.py): fig. A.3.3 at m1 = 1 (contribution 25 %) 2.33 %
 (printed 2.6 %, read from the graph); at m1 = 1.4: 4.0 % (printed 5 %; the 4 %
 crossing is at m1 = 1.399); fig. A.3.9 at m1 = 3: 7.2 % by (A.3.9) and (A.3.10)
 themselves (printed 4 %; the 4 % crossing is at m1 = 1.65).  So the rule

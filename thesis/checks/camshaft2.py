@@ -1,6 +1,6 @@
 """Checks of CAMSHAFT-2 (thesis ch. 5) against what the thesis prints.
 
-Readings taken (besides those of derive/models/camshaft2.py and derive/equivalent.py)
+Readings taken (besides those of derive/models/camshaft2.py and thesis/equivalent.py)
     sec. 5.4  "dT should not be less than 0.1 times the smallest value of tau": read as
         dT <= 0.1 min(tau, tau_b), the smaller of the two uncoupled periods (5.9), (5.19);
         with dT = 0.1 tau alone the thesis scheme does not converge where tau_b << tau
@@ -78,7 +78,7 @@ EIGEN_GRID = [(B0, Fa, Fv) for B0 in (0.0, 0.1, 0.25, 0.4, 0.5, 0.7, 0.9)
 
 
 def _eigen_5_43_worst() -> float:
-    from camdyn.derive import equivalent as eq
+    from camdyn.thesis import equivalent as eq
 
     worst = 0.0
     for B0, Fa, Fv in EIGEN_GRID:
@@ -89,7 +89,7 @@ def _eigen_5_43_worst() -> float:
 
 
 def _product_5_46_worst() -> float:
-    from camdyn.derive import equivalent as eq
+    from camdyn.thesis import equivalent as eq
 
     worst = 0.0
     for B0, Fa, Fv in EIGEN_GRID:
@@ -104,7 +104,7 @@ def _identity_5_43_from_5_39() -> bool:
     the frozen system written from its energies."""
     import sympy as sp
 
-    from camdyn.derive import equivalent as eq
+    from camdyn.thesis import equivalent as eq
 
     w_eb2 = sp.Symbol("w_eb2", positive=True)
     low, high = eq.eigenvalues_reduced(eq.m_x, eq.c_x, eq.m_beta, eq.c_beta, eq.tan_a)
@@ -124,7 +124,7 @@ def _identity_5_43_from_5_39() -> bool:
 def _identity_5_46() -> bool:
     import sympy as sp
 
-    from camdyn.derive import equivalent as eq
+    from camdyn.thesis import equivalent as eq
 
     low, high = eq.eigenvalues(eq.slope, eq.Fa, eq.Fv, eq.w_ex2_sym)
     return sp.simplify(sp.expand(low * high) - eq.eigenvalue_product(eq.Fa, eq.Fv, eq.w_ex2_sym)) == 0
@@ -134,7 +134,7 @@ def _identity_5_48_5_49() -> bool:
     """(5.48) = (5.49) with the slope-dependent follower mass and (5.51) (sec. 5.6 (1), (2))."""
     import sympy as sp
 
-    from camdyn.derive import equivalent as eq
+    from camdyn.thesis import equivalent as eq
 
     c_c = 1 / eq.constant_flexibility(eq.c_x, eq.c_z)
     c_tan = 1 / eq.tangential_flexibility(eq.c_beta, eq.c_y)
@@ -149,7 +149,7 @@ def _identity_5_52_5_14() -> bool:
     """(5.52) for the two-DOF mechanism (no m_z', m_y', rigid c_z', c_y') is (5.14b)."""
     import sympy as sp
 
-    from camdyn.derive import equivalent as eq
+    from camdyn.thesis import equivalent as eq
 
     J, R, h_m, beta_m = sp.symbols("J R h_m beta_m", positive=True)
     m = eq.follower_mass(eq.m_x, 0, eq.c_x, sp.oo)
@@ -163,7 +163,7 @@ def _identity_5_53() -> bool:
     """(5.53) as printed is c/m_eq of fig. 5.9b, (4.38) with (4.5), (5.49)-(5.52)."""
     import sympy as sp
 
-    from camdyn.derive import equivalent as eq
+    from camdyn.thesis import equivalent as eq
 
     printed = eq.lowest_eigenvalue_rayleigh(eq.slope, eq.Fa, eq.Fv, eq.w_ex2_sym)
     return sp.simplify(eq.rayleigh_4_38_two_dof() - printed) == 0
@@ -224,7 +224,7 @@ def limit_ratios(Fv: float = FV_INFINITE, rtol: float = 1e-8) -> np.ndarray:
 
 
 def _rayleigh_max_slope() -> float:
-    from camdyn.derive import equivalent as eq
+    from camdyn.thesis import equivalent as eq
 
     return eq.lowest_eigenvalue_rayleigh(2.0, 2.0, 2.0)
 

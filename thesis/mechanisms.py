@@ -37,8 +37,8 @@ Readings of the scan (the rest is legible)
       N=3600 revolutions per hour (60 r.p.m.).
 
 What App. 7 prints as *results* (c_c, T_e, tau, tan alpha_me, Fa, ...) is in each mechanism's
-``printed`` mapping, as printed, for the checks (camdyn/runtime/checks/examples.py).  The
-computations are in :mod:`camdyn.derive.examples`.
+``printed`` mapping, as printed, for the checks (camdyn/thesis/checks/examples.py).  The
+computations are in :mod:`camdyn.thesis.examples`.
 """
 from __future__ import annotations
 

@@ -40,7 +40,7 @@ def _gear_impact_T() -> float:
 
 
 def _impact_estimate() -> float:
-    from camdyn.derive import examples
+    from camdyn.thesis import examples
 
     return examples.indexing_impact(Xdd_s0=_Xdd("indexing", 0.68, backlash=False)).Xdd
 

@@ -1,6 +1,6 @@
 """The worked examples of thesis App. 7 and the impact estimate of sec. 7.4.4.
 
-App. 7 computes, for each mechanism of :mod:`camdyn.derive.mechanisms`, the figures that
+App. 7 computes, for each mechanism of :mod:`camdyn.thesis.mechanisms`, the figures that
 select a response graph of ch. 4 (fig. 4.11):
 
     c_c       stiffness of the uncoupled follower system, 1/c_c = sum 1/c_i (4.3), (4.40)

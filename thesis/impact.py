@@ -35,7 +35,7 @@ impact speed of the cycloid (3.16)
     The thesis's own number supports it: S = 1.27e-2 gives r_e = 0.306, printed 0.31 (sec. 7.4.4).
 
 damping over a dwell (3.7)
-    The printed decay law is :data:`camdyn.derive.theory.decay`,
+    The printed decay law is :data:`camdyn.thesis.theory.decay`,
     U0n/U00 = exp(-n 2 pi q/(1 - q^2)^(1/2)), with n = t_d/(tau t_m) free vibrations within
     the dwell t_d (sec. 3.4).  :func:`damped_free_vibration` is the free motion of the damped
     one-DOF model (d = 2 q sqrt(m c), (6.47)); over n *damped* periods 2 pi/(w_e (1 - q^2)^(1/2))

@@ -1,7 +1,7 @@
 """Natural frequencies and equivalent masses of CAMSHAFT-2 (thesis secs 5.5.7, 5.6).
 
 Two groups of relations, each written once here so that the tests and the
-check registry compare the generated model with them (runtime/checks/camshaft2.py):
+check registry compare the generated model with them (thesis/checks/camshaft2.py):
 
 Frozen two-DOF system (sec. 5.5.7): input blocked, small vibrations about a cam
 position, the slope dH/dB held constant (5.36).

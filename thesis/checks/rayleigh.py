@@ -1,6 +1,6 @@
 """Checks of topic 'rayleigh': Rayleigh's method, sec. 4.6 (4.33)-(4.40), and App. 3.
 
-Formulas: camdyn/derive/rayleigh.py (its docstring gives the readings of the
+Formulas: camdyn/thesis/rayleigh.py (its docstring gives the readings of the
 garbled equations).  Errors are relative errors of the frequency, in per cent,
 w_Rayleigh/w_exact - 1.
 """
@@ -14,7 +14,7 @@ _N = (1, 2, 3, 4)  # chain lengths of the symbolic identities: cheap, and beyond
 
 
 def _r():
-    from camdyn.derive import rayleigh
+    from camdyn.thesis import rayleigh
 
     return rayleigh
 
@@ -105,7 +105,7 @@ def _A3_8_m1_min() -> bool:
 
 
 def checks() -> list[Check]:
-    r_mod = "camdyn.derive.rayleigh"
+    r_mod = "camdyn.thesis.rayleigh"
     out = [
         Check("app3.eq4_38.identity",
               "(4.36) from V_max = T_max (4.34), (4.35) with the static deflection (4.37) is (4.38)/(A.3.1), n = 1..4",

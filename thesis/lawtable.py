@@ -27,7 +27,7 @@ from functools import lru_cache
 
 import sympy as sp
 
-from .camlaws import LAWS, T, CamLaw
+from camdyn.derive.camlaws import LAWS, T, CamLaw
 
 HALF = sp.Rational(1, 2)
 

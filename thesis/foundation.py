@@ -28,7 +28,7 @@ Readings taken where the scan is garbled
     Fig. 7.3 shows only the labels x and f; the equations above are the reading (the
     cam sits on the foundation, c_f is printed "c1", m_f "m1" in the scan).  They
     reproduce the printed root formula and the printed structure of (7.1), both
-    checked symbolically (runtime/checks/foundation.py).
+    checked symbolically (thesis/checks/foundation.py).
     (7.1): x/h' = w_ex^2 [(w_ef^2 - w_e1^2)/(w_e1^2 (w_e2^2 - w_e1^2)) 1/(1 + (D/w_e1)^2)
                           + (w_e2^2 - w_ef^2)/(w_e2^2 (w_e2^2 - w_e1^2)) 1/(1 + (D/w_e2)^2)].
     (7.3): w_e1^2 = w_ex^2 w_ef^2/(w_ex^2 + w_ef^2 + c_c/m_f); (7.4): w_e2^2 = w_ex^2 +
@@ -38,7 +38,7 @@ Readings taken where the scan is garbled
         envelope through the maxima, as sec. 3.7.3 compares contributions.  So
         U0i'' ~ |coefficient_i| tau_i/|1 - tau_i^2| and U0'' ~ tau/(1 - tau^2).
 
-Reproduction of the printed numbers (runtime/checks/foundation.py has them all)
+Reproduction of the printed numbers (thesis/checks/foundation.py has them all)
     tau1: 2.287 from the exact root (printed 2.28, truncated), 2.292 from (7.3).
     tau2: 0.15962 from (7.4) and from the exact root (printed 0.1595, 0.08 % off).
     U01'' : U02'' : U0'' = 0.0341 : 0.984 : 1 with the exact roots (printed

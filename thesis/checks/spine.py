@@ -60,7 +60,7 @@ def _koster_change_median() -> float:
 def _identity_3_6():
     import sympy as sp
 
-    from camdyn.derive import theory as th
+    from camdyn.thesis import theory as th
 
     return sp.simplify(th.U0dd - (2 * sp.pi / th.tau) ** 2 * th.U0) == 0
 

@@ -13,7 +13,7 @@ length with :func:`sympy.integrate`,
 
 so that what the thesis prints, (2.6), (2.22), the coefficients of (2.32),
 (2.33), (2.39) and of the matrices (2.40), can be compared with the result
-(runtime/checks/elements.py).
+(thesis/checks/elements.py).
 
 Every element also fits the generic forms (2.25)-(2.26),
 
@@ -369,8 +369,8 @@ def lagrange_equations(T, V, nodes, name: str = "element") -> list[sp.Expr]:
     :func:`camdyn.derive.lagrange.derive`, in plain symbols (x, rate(x),
     accel(x)) on return.
     """
-    from .lagrange import derive
-    from .model import Coordinate, Model, time
+    from camdyn.derive.lagrange import derive
+    from camdyn.derive.model import Coordinate, Model, time
 
     t = time("t_")
     coords = tuple(Coordinate(x.name, "m", "node coordinate") for x in nodes)

@@ -1,0 +1,106 @@
+"""The thesis room's commands, `camdyn check` and `camdyn laws` (the entry point,
+camdyn.runtime.cli, hands them over here).
+
+They live beside what they run: the comparisons with the thesis (:mod:`camdyn.thesis.checks`)
+and the App. 2 law table (:mod:`camdyn.thesis.lawtable`), both of which need SymPy, which the
+runtime's own commands never load.
+"""
+from __future__ import annotations
+
+import json
+import sys
+
+from camdyn.runtime.cli import fail, name_argument
+
+
+def check(args) -> int:
+    """`camdyn check`: run the comparisons with the thesis (thesis/checks/) and print the table."""
+    from . import checks
+
+    try:
+        topics = checks.TOPICS if not args.topic else tuple(args.topic)
+        unknown = sorted(set(topics) - set(checks.TOPICS))
+        if unknown:
+            return fail("camdyn check", f"argument --topic: unknown topic {unknown[0]!r}; "
+                                         f"choose from {', '.join(checks.TOPICS)}")
+        todo = [c for c in checks.registry(topics) if not args.k or args.k in c.key]
+    except Exception as exc:
+        return fail("camdyn check", f"cannot load the checks: {exc}")
+    outcomes = []
+    for i, c in enumerate(todo, 1):
+        if not args.json and not args.quiet:
+            print(f"  [{i}/{len(todo)}] {c.key}", file=sys.stderr, flush=True)
+        outcomes.append(checks.run(c))
+    if args.json:
+        print(json.dumps({"passed": all(o.passed for o in outcomes),
+                          "checks": [o.as_dict() for o in outcomes]}, indent=1))
+    else:
+        _print_check_table(outcomes)
+    return 0 if all(o.passed for o in outcomes) else 1
+
+
+def _fmt(value) -> str:
+    if isinstance(value, bool):
+        return "identical" if value else "differs"
+    if value is None:
+        return "-"
+    try:
+        return f"{float(value):.4g}"
+    except (TypeError, ValueError):
+        return str(value)
+
+
+def _print_check_table(outcomes) -> None:
+    rows = [("item", "reference", "printed", "derived", "rel. diff", "status")]
+    for o in outcomes:
+        c = o.check
+        rel = "-" if o.rel_diff is None else f"{o.rel_diff:.2g}"
+        derived = o.error if o.error else _fmt(o.derived)
+        rows.append((c.item, c.reference, c.printed or "(symbolic)", derived, rel, o.status))
+    widths = [min(max(len(r[i]) for r in rows), 60) for i in range(len(rows[0]))]
+    for k, r in enumerate(rows):
+        print("  ".join(cell[:60].ljust(widths[i]) for i, cell in enumerate(r)).rstrip())
+        if k == 0:
+            print("  ".join("-" * w for w in widths))
+    n_fail = sum(not o.passed for o in outcomes)
+    n_err = sum(o.check.errata for o in outcomes)
+    print(f"\n{len(outcomes)} checks: {len(outcomes) - n_fail} passed ({n_err} of them printed "
+          f"values shown to be misprints), {n_fail} failed, "
+          f"{sum(o.seconds for o in outcomes):.1f} s")
+    for o in outcomes:
+        if o.check.errata and o.check.note:
+            print(f"  errata {o.check.key}: {o.check.note}")
+
+
+def laws(args) -> int:
+    """`camdyn laws`: the App. 2 characteristics of every cam law, derived symbolically."""
+    from . import lawtable
+
+    try:
+        rows = [lawtable.properties(k, args.theta if k == "modified-sine" else None)
+                for k in lawtable.LAWS]
+    except ValueError as exc:
+        return fail("camdyn laws", name_argument(str(exc)))
+    if args.json:
+        print(json.dumps([r.as_dict() for r in rows], indent=1))
+        return 0
+    head = ("law", "H'max", "H''max", "H''min", "jerk T=0", "jerk T=1/2", "jerk T=1",
+            "max H'H''", "at T", "C", "p")
+    table = [head] + [(r.key, _num(r.H1_max), _num(r.H2_max), _num(r.H2_min), _num(r.jerk_0),
+                       _num(r.jerk_half), _num(r.jerk_1), _num(r.torque_max), _num(r.T_torque_max),
+                       _num(r.residual_coeff), str(r.residual_order)) for r in rows]
+    widths = [max(len(row[i]) for row in table) for i in range(len(head))]
+    for k, row in enumerate(table):
+        print("  ".join(c.rjust(w) if i else c.ljust(w) for i, (c, w) in enumerate(zip(row, widths))))
+        if k == 0:
+            print("  ".join("-" * w for w in widths))
+    print("\nNominal characteristics, thesis App. 2 (jerk = H''', 'impulse' where H'' jumps); "
+          "torque M = m h_m^2/(w_s t_m^3) H' H'' (A.2.7); one-DOF residual envelope "
+          "U0 <= C tau^p for tau << 1 (ch. 3).")
+    return 0
+
+
+def _num(v) -> str:
+    if v is None:
+        return "impulse"
+    return {float("inf"): "inf", float("-inf"): "-inf"}.get(v, f"{v:.4g}")
