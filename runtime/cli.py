@@ -175,6 +175,18 @@ def name_argument(message: str) -> str:
     return message
 
 
+def fmt(value) -> str:
+    """A value for a text table: 4 significant digits, '-' for None, words for booleans."""
+    if isinstance(value, bool):
+        return "identical" if value else "differs"
+    if value is None:
+        return "-"
+    try:
+        return f"{float(value):.4g}"
+    except (TypeError, ValueError):
+        return str(value)
+
+
 # -- camdyn check, camdyn laws: the thesis room's commands ----------------------------
 # The comparisons with the thesis and App. 2's law table live in camdyn.thesis, which may import
 # SymPy and both sides of the pipeline; the command line is the one place that reaches into it,
@@ -234,7 +246,7 @@ def _cmd_simulate(args) -> int:
         if key == "jump":
             v = summary["jump"]
             v = f"from T = {v['T']:.4g}" if v["occurs"] else "no"
-        print(f"  {key:26s} {v if isinstance(v, str) else _fmt(v)}")
+        print(f"  {key:26s} {v if isinstance(v, str) else fmt(v)}")
     for f in summary.get("figures", []):
         print(f"wrote {f}")
     return 0
@@ -273,8 +285,8 @@ def beam_follower_run(case, out_dir=None, progress=None, announce_run=True) -> d
     that of the designed motion, which a cam cut for this roller could not give."""
     from dataclasses import replace
 
-    from camdyn.derive.beam import geometry
     from . import beam
+    from .profile import RDFD
 
     beam.check(case)
     planned = []
@@ -293,8 +305,7 @@ def beam_follower_run(case, out_dir=None, progress=None, announce_run=True) -> d
             Path(out_dir).mkdir(parents=True, exist_ok=True)
         except OSError as exc:
             raise CamdynInputError(f"argument --out: cannot create {out_dir}: {exc}") from None
-    cut = geometry.undercut(geometry.CamGeometry(S_T=case.rise, r_b=case.base_radius,
-                                                 r_r=case.roller_radius, rise_law=case.law))
+    cut = RDFD.of(case.rise, case.base_radius, case.roller_radius, case.law).undercut()
     summary, _ = beam.run(case, progress if announce_run else None)
     out = {key: getattr(case, key) for key in _BEAM_FLAGS}
     out["roller_inertia"] = case.J_r

@@ -167,3 +167,15 @@ def test_camshaft2_bad_arguments_one_line_status_2(args, argument):
     assert argument in lines[0]
     assert "Traceback" not in p.stderr
     assert p.stdout == ""
+
+
+def test_simulate_text_table_matches_the_json():
+    """`camdyn simulate spring_loaded` without --json prints one row per summary figure; each
+    number in the table is the JSON's to the table's 4 significant digits (the text form once
+    crashed on a helper moved with `camdyn check`, while only --json was tested)."""
+    p = camdyn("simulate", "spring_loaded")
+    assert p.returncode == 0, p.stderr
+    rows = dict(line.split(None, 1) for line in p.stdout.splitlines()[1:] if line.strip())
+    j = json.loads(camdyn("simulate", "spring_loaded", "--json").stdout)
+    for key in ("tau", "Fa", "Fv", "Xdd_min_rise", "T_at_Xdd_min", "U0dd", "speed_variation_max"):
+        assert float(rows[key]) == pytest.approx(j[key], rel=5e-4), key

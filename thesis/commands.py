@@ -10,7 +10,7 @@ from __future__ import annotations
 import json
 import sys
 
-from camdyn.runtime.cli import fail, name_argument
+from camdyn.runtime.cli import fail, fmt, name_argument
 
 
 def check(args) -> int:
@@ -39,23 +39,12 @@ def check(args) -> int:
     return 0 if all(o.passed for o in outcomes) else 1
 
 
-def _fmt(value) -> str:
-    if isinstance(value, bool):
-        return "identical" if value else "differs"
-    if value is None:
-        return "-"
-    try:
-        return f"{float(value):.4g}"
-    except (TypeError, ValueError):
-        return str(value)
-
-
 def _print_check_table(outcomes) -> None:
     rows = [("item", "reference", "printed", "derived", "rel. diff", "status")]
     for o in outcomes:
         c = o.check
         rel = "-" if o.rel_diff is None else f"{o.rel_diff:.2g}"
-        derived = o.error if o.error else _fmt(o.derived)
+        derived = o.error if o.error else fmt(o.derived)
         rows.append((c.item, c.reference, c.printed or "(symbolic)", derived, rel, o.status))
     widths = [min(max(len(r[i]) for r in rows), 60) for i in range(len(rows[0]))]
     for k, r in enumerate(rows):

@@ -297,7 +297,8 @@ def wall_curvature(side: str) -> sp.Expr:
 
     Left unsimplified (its r''' terms cancel, but simplify is slow); for the
     offset by d = -/+ r_r it equals kappa_p / |1 + d kappa_p|, so the wall's radius
-    of curvature is rho_p -/+ r_r wherever the wall is not undercut.
+    of curvature is rho_p -/+ r_r wherever the wall is not undercut (the undercut test on
+    the pitch curve's curvature is :mod:`camdyn.runtime.profile`, in NumPy).
     """
     return signed_curvature(groove_walls()[_side(side)])
 
@@ -323,50 +324,6 @@ def _compiled(name, side=None):
     if isinstance(expr, sp.MatrixBase):
         expr = list(expr)  # a list lambdifies to a list, whatever the shapes of its entries
     return sp.lambdify((theta, *_jet, r_r), expr, "numpy", cse=True)
-
-
-class UndercutError(ValueError):
-    """A cam design whose groove wall is undercut (see :func:`undercut`)."""
-
-
-@dataclass(frozen=True)
-class Undercut:
-    """Where the groove walls are undercut: theta intervals (rad) per wall."""
-
-    r_r: float
-    inner: tuple
-    outer: tuple
-    min_rho_convex: float
-    """Smallest pitch-curve radius of curvature on convex parts (inner wall needs > r_r)."""
-    min_rho_concave: float
-    """Smallest |rho_p| on concave parts (outer wall needs > r_r); inf if none."""
-
-    def __bool__(self):
-        return bool(self.inner or self.outer)
-
-    @property
-    def message(self) -> str:
-        if not self:
-            return (f"no undercut: pitch-curve radius of curvature >= {self.min_rho_convex * 1e3:.3g} mm "
-                    f"on convex parts, |rho_p| >= {self.min_rho_concave * 1e3:.3g} mm on concave "
-                    f"parts, roller radius r_r = {self.r_r * 1e3:.3g} mm")
-        parts = []
-        for side, where, rho, shape in (("inner", self.inner, self.min_rho_convex, "convex"),
-                                        ("outer", self.outer, self.min_rho_concave, "concave")):
-            if where:
-                spans = ", ".join(f"[{np.degrees(lo):.2f}, {np.degrees(hi):.2f}] deg"
-                                  for lo, hi in where)
-                parts.append(f"the {side} wall is undercut for theta in {spans}: on this {shape} "
-                             f"part the pitch curve's radius of curvature (down to "
-                             f"{rho * 1e3:.3g} mm) is below the roller radius "
-                             f"r_r = {self.r_r * 1e3:.3g} mm")
-        return ("undercut: " + "; ".join(parts) + ". Use a larger base circle, a longer "
-                "rise/fall angle, a smaller lift or a smaller roller.")
-
-    def check(self):
-        """Raise :class:`UndercutError` with :attr:`message` if a wall is undercut."""
-        if self:
-            raise UndercutError(self.message)
 
 
 @dataclass(frozen=True)
@@ -472,48 +429,3 @@ class CamGeometry:
                 "rho_pitch": self.pitch_radius_of_curvature(th),
                 "rho_inner": self.wall_radius_of_curvature(th, "inner"),
                 "rho_outer": self.wall_radius_of_curvature(th, "outer")}
-
-    def undercut(self, samples: int = 4001) -> Undercut:
-        return undercut(self, samples)
-
-
-def _runs(th, bad, g):
-    """theta intervals where bad is True, ends refined to the roots of g."""
-    from scipy.optimize import brentq
-
-    out, i, n = [], 0, len(th)
-    while i < n:
-        if not bad[i]:
-            i += 1
-            continue
-        j = i
-        while j + 1 < n and bad[j + 1]:
-            j += 1
-        lo = th[i] if i == 0 else brentq(g, th[i - 1], th[i], xtol=1e-13)
-        hi = th[j] if j == n - 1 else brentq(g, th[j], th[j + 1], xtol=1e-13)
-        out.append((float(lo), float(hi)))
-        i = j + 1
-    return tuple(out)
-
-
-def undercut(geometry: CamGeometry, samples: int = 4001) -> Undercut:
-    """Where a groove wall is undercut (local test on the pitch curve's curvature).
-
-    The wall offset by d (-r_r inner, +r_r outer) has tangent p'(1 + d kappa_p):
-    where 1 + d kappa_p < 0 it runs backwards, i.e. it forms a cusp and a swallowtail
-    the roller cannot follow.  For the inner wall that is a convex part with
-    rho_p < r_r (the profile's radius of curvature rho_p - r_r would drop below
-    zero); for the outer wall a concave part with |rho_p| < r_r.  The curvature is
-    sampled on ``samples`` points plus the segment ends and the interval ends are
-    refined by root finding; an excursion narrower than the grid may be missed.
-    """
-    th = np.union1d(np.linspace(0.0, 2 * np.pi, samples), geometry.breakpoints)
-    kappa = geometry.pitch_curvature(th)
-    k = lambda x: float(geometry.pitch_curvature(np.array([x]))[0])  # noqa: E731
-    rr = geometry.r_r
-    inner = _runs(th, 1.0 - rr * kappa < 0, lambda x: 1.0 - rr * k(x))
-    outer = _runs(th, 1.0 + rr * kappa < 0, lambda x: 1.0 + rr * k(x))
-    convex, concave = kappa[kappa > 0], kappa[kappa < 0]
-    return Undercut(rr, inner, outer,
-                    float(1.0 / convex.max()) if convex.size else float("inf"),
-                    float(1.0 / -concave.min()) if concave.size else float("inf"))
