@@ -103,7 +103,7 @@ def bare_arguments(method: str, x: float) -> tuple:
     else:
         n_points = sim.run(PARAMS).t.shape[0]  # the record size simulate() would reserve
         cap = n_points + n_points // 4
-    return sim._integrator, p, stops, cap
+    return sim.integrator, p, stops, cap
 
 
 def camdyn_bare(method: str) -> Competitor:
@@ -115,10 +115,10 @@ def camdyn_bare(method: str) -> Competitor:
 
     def info(x):
         out = runner(x)()
-        if out[0] != 0:
-            raise RuntimeError(_integrate.STATUS_TEXT[out[0]])
-        rows = out[1][:out[3]]
-        return (*state_at_break(rows[:, 0], rows[:, 1:3]), int(out[6]))
+        if out.status != 0:
+            raise RuntimeError(_integrate.STATUS_TEXT[out.status])
+        rows = out.rows[:out.n]
+        return (*state_at_break(rows[:, 0], rows[:, 1:3]), int(out.n_rhs))
 
     grid = rk4_grid() if method == "rk4" else rtol_grid()
     return Competitor(f"camdyn-{method}-bare", f"camdyn {method.upper()} compiled loop",

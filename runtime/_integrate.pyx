@@ -17,6 +17,8 @@ from libc.stdlib cimport free
 from libc.string cimport memcpy
 from posix.time cimport CLOCK_MONOTONIC, clock_gettime, timespec
 
+from collections import namedtuple
+
 import numpy as np
 
 from camdyn.runtime.abi cimport *
@@ -24,6 +26,13 @@ from camdyn.runtime.abi cimport *
 RK4 = METHOD_RK4
 DP54 = METHOD_DP54
 KOSTER = METHOD_KOSTER
+
+RunRecord = namedtuple("RunRecord", "status rows modes n n_steps n_rejected n_rhs t_fail seconds "
+                                    "n_events")
+RunRecord.__doc__ = """What Integrator.run returns: the status (STATUS_TEXT), the record (``rows``:
+t, states and slopes at every recorded point; ``modes`` in force from each point on; ``n`` of
+them filled), step and right-hand-side counts, where a failed run stopped (``t_fail``), the
+wall time of the compiled loops and the number of events."""
 
 STATUS_TEXT = {
     STATUS_OK: "ok",
@@ -182,8 +191,8 @@ cdef class Integrator:
             finally:
                 free(run.rec.rows)
                 free(run.rec.mode)
-        return (status, rows, modes, n, run.n_steps, run.n_rejected, run.n_rhs, run.t_fail, seconds,
-                run.n_events)
+        return RunRecord(status, rows, modes, n, run.n_steps, run.n_rejected, run.n_rhs,
+                         run.t_fail, seconds, run.n_events)
 
 
 # -- evaluation helpers (vectorized, compiled) ------------------------------------

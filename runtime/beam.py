@@ -10,94 +10,20 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import asdict, dataclass, replace
+from dataclasses import asdict, replace
 
 import numpy as np
 
 from .errors import CamdynInputError
 from .laws import choose
 from .models import load
-from .residual import _scan_grid, extreme
+from .beam_case import FORMULATIONS, N_MAX, Case, check  # noqa: F401  (the case, re-exported)
+from .residual import extreme, scan_grid
 from .simulate import Simulator
-
-FORMULATIONS = {"augmented": 0.0, "partitioned": 1.0}
-N_MAX = 6
 
 # summary keys, in the order printed
 KEYS = ("model", "formulation", "omega", "modes", "revolutions", "max_abs_tip_deflection",
         "max_constraint_residual", "dwell_frequency_hz", "n_steps", "cpu_seconds")
-
-
-@dataclass(frozen=True)
-class Case:
-    """One Rayleigh-beam follower run.  Paper data (sec. 4) by default."""
-
-    omega: float = 240.0            # rad/s, cam speed (paper: 120, 240, 360)
-    modes: int = 3                  # N assumed modes (paper: 2, 3, 4; converged at 3)
-    rod_radius: float = 0.005       # m (paper: 3, 5, 7 mm)
-    distance: float = 0.112         # m, cam centre to guide exit, d (paper: 102, 112, 122 mm)
-    base_radius: float = 0.026      # m, r_b
-    rise: float = 0.015             # m, S_T (paper: 8, 15, 22 mm)
-    revolutions: float = 1.0
-    rayleigh: bool = True           # rotary inertia of the rod
-    roller_inertia: float | None = None   # kg m^2; None: uniform disc m_r r_r^2/2
-    formulation: str = "augmented"
-    law: str = "cycloidal"
-    roller_radius: float = 0.005    # m, r_r
-    roller_mass: float = 0.05       # kg, m_r
-    E: float = 2.1e11               # Pa
-    rho: float = 7800.0             # kg/m^3
-    rtol: float = 1e-9
-    w_B: float = 2.0e3              # rad/s, Baumgarte rate (augmented form)
-
-    @property
-    def model(self) -> str:
-        return f"beam{self.modes}"
-
-    @property
-    def J_r(self) -> float:
-        if self.roller_inertia is None:
-            return self.roller_mass * self.roller_radius**2 / 2
-        return self.roller_inertia
-
-    @property
-    def period(self) -> float:
-        return 2 * math.pi / self.omega
-
-    @property
-    def free_length_raised(self) -> float:
-        """x_E at the outer dwell, the follower fully raised: d - r_b - r_r - S_T."""
-        return self.distance - self.base_radius - self.roller_radius - self.rise
-
-
-def check(case: Case) -> Case:
-    """Refuse a case that cannot run, naming the parameter and its range."""
-    positive = ("omega", "rod_radius", "distance", "base_radius", "rise", "revolutions",
-                "roller_radius", "roller_mass", "E", "rho", "rtol")
-    for name in positive:
-        v = getattr(case, name)
-        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v <= 0:
-            raise CamdynInputError(f"{name}={v!r}: must be a positive number")
-    if isinstance(case.modes, bool) or not isinstance(case.modes, int) or not 1 <= case.modes <= N_MAX:
-        raise CamdynInputError(f"modes={case.modes!r}: choose an integer from 1 to {N_MAX}")
-    if case.formulation not in FORMULATIONS:
-        raise CamdynInputError(f"formulation={case.formulation!r}: choose one of "
-                               f"{', '.join(FORMULATIONS)}")
-    if case.roller_inertia is not None and not (math.isfinite(case.roller_inertia)
-                                                 and case.roller_inertia >= 0):
-        raise CamdynInputError(f"roller_inertia={case.roller_inertia!r}: must be >= 0")
-    if not (math.isfinite(case.w_B) and case.w_B >= 0):
-        raise CamdynInputError(f"w_B={case.w_B!r}: must be >= 0")
-    # the roller (radius r_r about E) must stay clear of the guide when fully raised
-    if case.free_length_raised <= case.roller_radius:
-        limit = case.distance - 2 * case.roller_radius - case.rise
-        raise CamdynInputError(
-            f"base_radius={case.base_radius:g} m puts the roller into the guide at the top of the "
-            f"stroke (free rod {case.free_length_raised * 1e3:.3g} mm, roller radius "
-            f"{case.roller_radius * 1e3:g} mm): with distance={case.distance:g} m and "
-            f"rise={case.rise:g} m, base_radius must be below {limit:g} m")
-    choose(case.law)
-    return case
 
 
 def parameters(case: Case) -> dict:
@@ -187,7 +113,7 @@ def run(case: Case, progress=None) -> tuple[dict, object]:
 def summarize(case: Case, res, cpu: float) -> dict:
     t0, t1 = float(res.t[0]), float(res.t[-1])
     # one dense sampling (4 points a step) serves all three maxima; the tip's is then refined
-    smp = res.sample(_scan_grid(res.t, t0, t1, 4))
+    smp = res.sample(scan_grid(res.t, t0, t1, 4))
     k = int(np.argmax(np.abs(smp["vE"])))
     span = (res.t[max(np.searchsorted(res.t, smp["t"][k]) - 1, 0)],
             res.t[min(np.searchsorted(res.t, smp["t"][k]) + 1, len(res.t) - 1)])

@@ -429,19 +429,14 @@ def build_parser() -> argparse.ArgumentParser:
     return top
 
 
-# the paper's values, shown in the help; the run takes its defaults from beam.Case itself
-# (importing camdyn.runtime.beam here would load SciPy for every command; a test keeps the two equal)
-BEAM_DEFAULTS = {"omega": 240.0, "modes": 3, "rod_radius": 0.005, "distance": 0.112,
-                 "base_radius": 0.026, "rise": 0.015, "revolutions": 1.0, "rayleigh": True,
-                 "roller_inertia": None, "formulation": "augmented"}
-BEAM_ROLLER = {"roller_radius": 0.005, "roller_mass": 0.05}   # for the disc inertia in the help
-BEAM_N_MAX = 6
-BEAM_FORMULATIONS = ("augmented", "partitioned")
-
-
 def _add_beam_follower(sub) -> None:
-    dflt = BEAM_DEFAULTS
-    disc = BEAM_ROLLER["roller_mass"] * BEAM_ROLLER["roller_radius"] ** 2 / 2
+    # the defaults shown in the help are the case's own (beam_case loads no SciPy)
+    from dataclasses import asdict
+
+    from .beam_case import FORMULATIONS, N_MAX, Case
+
+    dflt = asdict(Case())
+    disc = Case().J_r
     b = sub.add_parser(
         "beam-follower", help="the Rayleigh-beam follower of the paper (issue 5): tip response",
         description="Translating roller follower in the groove of a rigid disk cam (RDFD motion, "
@@ -458,7 +453,7 @@ def _add_beam_follower(sub) -> None:
     b.add_argument("--omega", type=float, metavar="RAD_S",
                    help=f"cam speed Omega, rad/s (default {dflt['omega']:g}; paper: 120, 240, 360)")
     b.add_argument("--modes", type=int, metavar="N",
-                   help=f"assumed modes N, 1 to {BEAM_N_MAX} (default {dflt['modes']})")
+                   help=f"assumed modes N, 1 to {N_MAX} (default {dflt['modes']})")
     b.add_argument("--rod-radius", type=float, metavar="M",
                    help=f"radius of the follower rod, m (default {dflt['rod_radius']:g})")
     b.add_argument("--distance", type=float, metavar="M",
@@ -476,7 +471,7 @@ def _add_beam_follower(sub) -> None:
     b.add_argument("--roller-inertia", type=float, metavar="KG_M2",
                    help=f"roller moment of inertia J_r, kg m^2, >= 0 (default: uniform disc "
                         f"m_r r_r^2/2 = {disc:g}); 0 ignores the roller's rotation")
-    b.add_argument("--formulation", choices=BEAM_FORMULATIONS,
+    b.add_argument("--formulation", choices=tuple(FORMULATIONS),
                    help=f"augmented (multipliers, Baumgarte) or partitioned (coordinate "
                         f"partitioning, paper (21)-(27)); default {dflt['formulation']}")
     b.add_argument("--json", action="store_true", help="one JSON object on stdout")

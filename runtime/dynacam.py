@@ -93,7 +93,7 @@ def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
         return yy
 
     def resid(u):
-        f = _integrate.eval_rhs(model.capsule, p, sim._codes, sim._pars, t0, state(u)[None, :],
+        f = _integrate.eval_rhs(model.capsule, p, sim.law_codes, sim.law_pars, t0, state(u)[None, :],
                                 element_modes=modes)[0]
         r = np.concatenate([f[n_q:2 * n_q], [f[k] for k in free if k >= 2 * n_q]])
         return r

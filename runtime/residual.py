@@ -31,7 +31,9 @@ class ResidualVibration:
         return asdict(self)
 
 
-def _scan_grid(t_rec: np.ndarray, a: float, b: float, per_step: int) -> np.ndarray:
+def scan_grid(t_rec: np.ndarray, a: float, b: float, per_step: int) -> np.ndarray:
+    """``per_step`` evenly spaced times in every recorded step inside [a, b], and b: where the
+    dense output is sampled before an extreme is refined."""
     knots = np.unique(np.concatenate([[a, b], t_rec[(t_rec > a) & (t_rec < b)]]))
     s = np.linspace(0.0, 1.0, per_step, endpoint=False)
     grid = (knots[:-1, None] + np.diff(knots)[:, None] * s[None, :]).ravel()
@@ -41,7 +43,7 @@ def _scan_grid(t_rec: np.ndarray, a: float, b: float, per_step: int) -> np.ndarr
 def extreme(result: Result, name: str, a: float, b: float, *, absolute: bool, minimum: bool,
             per_step: int = 12) -> tuple[float, float]:
     """Refined extreme of output ``name`` on [a, b]: (value, time)."""
-    grid = _scan_grid(result.t, a, b, per_step)
+    grid = scan_grid(result.t, a, b, per_step)
     vals = result.sample(grid)[name]
     score = np.abs(vals) if absolute else vals
     k = int(np.argmin(score) if minimum else np.argmax(score))

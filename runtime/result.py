@@ -19,29 +19,29 @@ class Result:
     the method's dense output.
     """
 
-    def __init__(self, sim, p, out: tuple):
+    def __init__(self, sim, p, out):
         self.model = sim.model
         self.method = sim.method
         self.laws = sim.laws
-        self._codes, self._pars = sim._codes, sim._pars
+        self.law_codes, self.law_pars = sim.law_codes, sim.law_pars
         self.p = p
         self._out = out
 
     @cached_property
     def stats(self) -> dict:
         """Steps, rejected steps, right-hand-side calls, wall time of the compiled loops."""
-        _, _, _, _, n_steps, n_rej, n_rhs, _, seconds, n_events = self._out
-        return {"n_steps": n_steps, "n_rejected": n_rej, "n_rhs": n_rhs, "n_events": n_events,
-                "seconds": seconds}
+        o = self._out
+        return {"n_steps": o.n_steps, "n_rejected": o.n_rejected, "n_rhs": o.n_rhs,
+                "n_events": o.n_events, "seconds": o.seconds}
 
     @cached_property
     def _rows(self) -> np.ndarray:
-        return self._out[1][:self._out[3]]
+        return self._out.rows[:self._out.n]
 
     @cached_property
     def mode(self) -> np.ndarray:
         """Modes in force from each recorded point on: cam segments, then force elements."""
-        return self._out[2][:self._out[3]]
+        return self._out.modes[:self._out.n]
 
     def element_mode(self, name: str) -> np.ndarray:
         """Value names of the force-element mode ``name`` at the recorded points."""
@@ -94,7 +94,7 @@ class Result:
     @cached_property
     def outputs(self) -> dict:
         """Outputs at the recorded points (computed on first use, in C)."""
-        out = _integrate.eval_outputs(self.model.capsule, self.p, self._codes, self._pars,
+        out = _integrate.eval_outputs(self.model.capsule, self.p, self.law_codes, self.law_pars,
                                       self.t, self.y, self.mode)
         return {name: out[:, k] for k, name in enumerate(self.output_names)}
 
@@ -116,7 +116,7 @@ class Result:
                 f"sample times must lie in [{self.t[0]:g}, {self.t[-1]:g}]")
         Y, idx = _integrate.dense_eval(self.t, self.y, self.f, self._extra, tq)
         modes = np.ascontiguousarray(self.mode[idx]) if self.mode.shape[1] else None
-        out = _integrate.eval_outputs(self.model.capsule, self.p, self._codes, self._pars,
+        out = _integrate.eval_outputs(self.model.capsule, self.p, self.law_codes, self.law_pars,
                                       tq, Y, modes)
         res = {"t": tq}
         res.update({name: Y[:, k] for k, name in enumerate(self.state_names)})

@@ -100,7 +100,7 @@ class Simulator:
         if isinstance(max_steps, bool) or not isinstance(max_steps, int) or max_steps < 1:
             raise CamdynInputError(f"max_steps must be a positive integer, got {max_steps!r}")
         self.model, self.method, self.t0, self.t_end, self.max_steps = m, method, t0, t_end, max_steps
-        self.laws, self._codes, self._pars = _law_choices(m, law, theta)
+        self.laws, self.law_codes, self.law_pars = _law_choices(m, law, theta)
         n = len(m.state_names)
         # a default initial state that depends on the parameters is worked out per run
         self._y0_given = y0 is not None or all(
@@ -119,17 +119,18 @@ class Simulator:
                     f"[{t0:g}, {t_end:g}]")
             atol, h, h_max, rtol = np.ones(n), method.step, method.step, 0.0
         self.modes0 = initial_modes(m, modes)
-        self._integrator = _integrate.Integrator(
-            m.capsule, method.code, self._codes, self._pars, y_init, t0, h, h_max, rtol, atol,
+        self.integrator = _integrate.Integrator(
+            m.capsule, method.code, self.law_codes, self.law_pars, y_init, t0, h, h_max, rtol, atol,
             max_steps, np.array(self.modes0, dtype=np.intc), int(max_events))
         self._stops: dict = {}
         self._cap = 256
 
     def stops(self, p: np.ndarray) -> np.ndarray:
         """Stop times for parameters p (cached: they depend on p only through the cam inputs)."""
-        return self._stops_and_cap(p)[0]
+        return self.stops_and_capacity(p)[0]
 
-    def _stops_and_cap(self, p: np.ndarray):
+    def stops_and_capacity(self, p: np.ndarray):
+        """(stop times, record capacity: 0 for adaptive methods) for parameters p, cached."""
         key = p.tobytes()
         hit = self._stops.get(key)
         if hit is None:
@@ -144,15 +145,15 @@ class Simulator:
         """One run with these parameter values (defaults for the ones not given)."""
         m = self.model
         p = m.parameter_vector(params)
-        stops, cap = self._stops_and_cap(p)
+        stops, cap = self.stops_and_capacity(p)
         y0 = None if self._y0_given else m.initial_state(p)
-        out = self._integrator.run(p, stops, cap or self._cap, y0)
-        if out[0] != 0:
+        out = self.integrator.run(p, stops, cap or self._cap, y0)
+        if out.status != 0:
             raise SimulationError(f"{m.name} with {self.method.name}: "
-                                  f"{_integrate.STATUS_TEXT[out[0]]} at "
-                                  f"{m.manifest['time']['name']} = {out[7]:.6g}")
+                                  f"{_integrate.STATUS_TEXT[out.status]} at "
+                                  f"{m.manifest['time']['name']} = {out.t_fail:.6g}")
         if not cap:
-            self._cap = max(256, out[3] + out[3] // 4)
+            self._cap = max(256, out.n + out.n // 4)
         return Result(self, p, out)
 
 
