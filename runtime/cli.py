@@ -4,7 +4,8 @@
     camdyn residual --model M --tau T ...   residual vibration of one rise
     camdyn check [--json]                   every comparison with the thesis
     camdyn laws [--json]                    cam-law characteristics (App. 2)
-    camdyn run [SCENE.toml] [--out DIR]     the main job: report and charts
+    camdyn run [SCENE] [--out DIR]          any scene (default: the CAMSHAFT-1 study): report
+    camdyn scenes [--json]                  the built-in scenes, their kinds and titles
     camdyn simulate SCENE.toml [--json]     a DYNACAM scene (thesis ch. 6, 7): summary and diagrams
     camdyn beam-follower [--omega W] ...    the Rayleigh-beam follower (paper; issue 5)
 
@@ -204,17 +205,55 @@ def _cmd_laws(args) -> int:
     return commands.laws(args)
 
 
-# -- camdyn run ---------------------------------------------------------------------
+# -- camdyn run, camdyn scenes --------------------------------------------------------
 
 def _cmd_run(args) -> int:
-    from . import report
+    """Any scene: the CAMSHAFT-1 study (report and charts), a DYNACAM mechanism (summary and
+    diagrams) or the beam follower (tip response), each writing report.json into --out."""
+    from . import report, scene as scenes
 
+    say = (lambda msg: None) if args.quiet else (lambda msg: print(msg, file=sys.stderr, flush=True))
     try:
-        scene = report.load_scene(args.scene)
-        path = report.main_job(scene, Path(args.out), progress=not args.quiet)
+        kind, sc = scenes.load_any(args.scene or "default")
+        out_dir = Path(args.out)
+        if kind == "camshaft1-study":
+            path = report.main_job(sc, out_dir, progress=not args.quiet)
+            print(f"report: {path}")
+            return 0
+        if kind == "dynacam":
+            from . import dynacam
+
+            summary, res = dynacam.run(sc, progress=say)
+            summary["figures"] = dynacam.plot(sc, res, summary, out_dir)
+            _print_dynacam(sc, summary)
+        else:
+            summary = beam_follower_run(sc.case, None, say)
+            _print_beam("camdyn run", summary)
     except CamdynInputError as exc:
         return fail("camdyn run", str(exc))
-    print(f"report: {path}")
+    except SimulationError as exc:
+        print(f"camdyn run: run failed: {exc}", file=sys.stderr)
+        return 1
+    out_dir.mkdir(parents=True, exist_ok=True)
+    (out_dir / "report.json").write_text(json.dumps({"kind": kind, "scene": sc.path,
+                                                     "title": sc.title, **summary}, indent=1))
+    print(f"report: {out_dir / 'report.json'}")
+    return 0
+
+
+def _cmd_scenes(args) -> int:
+    from . import scene as scenes
+
+    rows = scenes.builtins()
+    if args.json:
+        print(json.dumps([{"name": n, "kind": k, "title": t} for n, k, t in rows], indent=1))
+        return 0
+    w = max(len(n) for n, _, _ in rows)
+    wk = max(len(k) for _, k, _ in rows)
+    for name, kind, title in rows:
+        print(f"{name:<{w}}  {kind:<{wk}}  {title}")
+    print(f"\nrun one with `camdyn run NAME`; kinds: "
+          + "; ".join(f"{k}: {what}" for k, what in scenes.KINDS.items()))
     return 0
 
 
@@ -240,6 +279,13 @@ def _cmd_simulate(args) -> int:
     if args.json:
         print(json.dumps(summary, indent=1))
         return 0
+    _print_dynacam(sc, summary)
+    return 0
+
+
+def _print_dynacam(sc, summary) -> None:
+    from . import dynacam
+
     print(sc.title)
     for key in dynacam.KEYS:
         v = summary.get(key)
@@ -249,7 +295,6 @@ def _cmd_simulate(args) -> int:
         print(f"  {key:26s} {v if isinstance(v, str) else fmt(v)}")
     for f in summary.get("figures", []):
         print(f"wrote {f}")
-    return 0
 
 
 # -- camdyn beam-follower ----------------------------------------------------------
@@ -352,12 +397,22 @@ def _cmd_beam_follower(args) -> int:
     except SimulationError as exc:
         print(f"{prog}: run failed: {exc}", file=sys.stderr)
         return 1
+    if args.json:
+        _warn_undercut(prog, out)
+        print(json.dumps(out, indent=1))
+        return 0
+    _print_beam(prog, out)
+    return 0
+
+
+def _warn_undercut(prog, out) -> None:
     if out["undercut"]:
         print(f"{prog}: warning: {out['undercut']} The run follows the pitch curve all the same.",
               file=sys.stderr)
-    if args.json:
-        print(json.dumps(out, indent=1))
-        return 0
+
+
+def _print_beam(prog, out) -> None:
+    _warn_undercut(prog, out)
     rows = [(k, v) for k, v in out.items() if k != "figures"]
     rows = [(k, ("yes, see the warning" if v else "no") if k == "undercut" else v) for k, v in rows]
     width = max(len(k) for k, _ in rows)
@@ -367,7 +422,6 @@ def _cmd_beam_follower(args) -> int:
         print(f"{k:<{width}}  {text} {unit}".rstrip())
     for f in out.get("figures", []):
         print(f"wrote {f}")
-    return 0
 
 
 # -- parser -------------------------------------------------------------------------
@@ -413,11 +467,18 @@ def build_parser() -> argparse.ArgumentParser:
     lw.add_argument("--json", action="store_true", help="one JSON array on stdout")
     lw.set_defaults(func=_cmd_laws)
 
-    m = sub.add_parser("run", help="the main job on a scene (default: the embedded one)")
-    m.add_argument("scene", nargs="?", default=None, help="scene TOML (default: embedded)")
+    m = sub.add_parser("run", help="any scene: the CAMSHAFT-1 study (default), a DYNACAM mechanism, "
+                                   "the beam follower")
+    m.add_argument("scene", nargs="?", default=None,
+                   help="scene TOML or a built-in scene name (camdyn scenes); default: the "
+                        "embedded CAMSHAFT-1 study")
     m.add_argument("--out", default="out", help="folder for report and charts (default out/)")
     m.add_argument("--quiet", action="store_true", help="no progress lines")
     m.set_defaults(func=_cmd_run)
+
+    ls = sub.add_parser("scenes", help="the built-in scenes with their kinds and titles")
+    ls.add_argument("--json", action="store_true", help="one JSON array on stdout")
+    ls.set_defaults(func=_cmd_scenes)
 
     sm = sub.add_parser("simulate", help="a DYNACAM scene (thesis ch. 6, 7): summary and diagrams")
     sm.add_argument("scene", help="scene TOML, or a built-in scene: indexing, spring_loaded")

@@ -12,8 +12,6 @@ import json
 import math
 import sys
 import time
-import tomllib
-from importlib import resources
 from pathlib import Path
 
 import numpy as np
@@ -24,33 +22,53 @@ from .residual import residual
 from .simulate import simulate
 
 _SCHEMA = {
-    "title": str, "law": str,
-    "response": {"tau": float, "Fa": list},
-    "graphs": {"tau_min": float, "tau_max": float, "n_tau": int, "Fa": list},
-    "integration": {"method": str, "rtol": float},
+    "kind": str, "title": str, "law": str,
+    "study": {"response": {"tau": float, "Fa": list},
+              "graphs": {"tau_min": float, "tau_max": float, "n_tau": int, "Fa": list}},
+    "run": {"method": str, "rtol": float},
 }
+_OPTIONAL = {"reference": str, "note": str}
+KIND = "camshaft1-study"
 
 
 def load_scene(path: str | None) -> dict:
-    """The scene at ``path`` or the embedded default, checked against the schema."""
-    try:
-        if path is None:
-            text = resources.files("camdyn.runtime").joinpath("scenes/default.toml").read_text()
-            where = "embedded default scene"
-        else:
-            text = Path(path).read_text()
-            where = path
-        scene = tomllib.loads(text)
-    except FileNotFoundError:
-        raise CamdynInputError(f"scene file {path} not found") from None
-    except tomllib.TOMLDecodeError as exc:
-        raise CamdynInputError(f"scene {path}: not valid TOML ({exc})") from None
-    except OSError as exc:      # a folder, no permission
-        raise CamdynInputError(f"scene file {path}: {exc.strerror}") from None
-    except ValueError as exc:   # not UTF-8, an integer of more than 4300 digits
-        raise CamdynInputError(f"scene file {path}: {exc}") from None
-    _check(scene, _SCHEMA, where)
-    return scene
+    """The study scene at ``path`` (a file or a built-in name) or the embedded default, checked
+    against the schema and the CAMSHAFT-1 model's parameter ranges."""
+    from . import scene as scenes
+
+    data, where = scenes.read("default" if path is None else path)
+    scenes.expect_kind(data, where, KIND)
+    return check_scene(data, where)
+
+
+def check_scene(data: dict, where: str) -> dict:
+    """A camshaft1-study scene: every key of the schema, the right types, tau and Fa inside
+    the ranges the CAMSHAFT-1 manifest declares, a known method and law."""
+    from .laws import choose
+    from .methods import METHODS
+    from .models import load
+
+    _check(data, _SCHEMA, where)
+    choose(data["law"])
+    if data["run"]["method"] not in METHODS:
+        raise CamdynInputError(f"{where}: run.method={data['run']['method']!r}: choose one of "
+                               f"{', '.join(METHODS)}")
+    model = load("camshaft1")
+    study = data["study"]
+    for key, values in (("study.response", [(study["response"]["tau"], F)
+                                            for F in study["response"]["Fa"]]),
+                        ("study.graphs", [(t, F) for t in (study["graphs"]["tau_min"],
+                                                          study["graphs"]["tau_max"])
+                                          for F in study["graphs"]["Fa"]])):
+        for tau, Fa in values:
+            try:
+                model.parameter_vector({"tau": tau, "Fa": Fa})
+            except CamdynInputError as exc:
+                raise CamdynInputError(f"{where}: {key}: {exc}") from None
+    graphs = study["graphs"]
+    if not graphs["tau_max"] > graphs["tau_min"]:
+        raise CamdynInputError(f"{where}: study.graphs.tau_min must be below study.graphs.tau_max")
+    return data
 
 
 def _finite(v) -> bool:
@@ -61,9 +79,12 @@ def _finite(v) -> bool:
 
 
 def _check(d: dict, schema: dict, where: str, prefix: str = ""):
-    for key, kind in schema.items():
+    optional = _OPTIONAL if not prefix else {}
+    for key, kind in {**schema, **optional}.items():
         name = prefix + key
         if key not in d:
+            if key in optional:
+                continue
             raise CamdynInputError(f"{where}: {name} is missing")
         v = d[key]
         if isinstance(kind, dict):
@@ -82,13 +103,13 @@ def _check(d: dict, schema: dict, where: str, prefix: str = ""):
                 raise CamdynInputError(f"{where}: {name} must be a non-empty list of finite numbers")
         elif not isinstance(v, kind):
             raise CamdynInputError(f"{where}: {name} must be a {kind.__name__}, got {v!r}")
-    extra = sorted(set(d) - set(schema))
+    extra = sorted(set(d) - set(schema) - set(optional))
     if extra:
         raise CamdynInputError(f"{where}: unknown key {prefix}{extra[0]}")
 
 
 def _run(tau, Fa, scene):
-    integ = scene["integration"]
+    integ = scene["run"]
     return simulate("camshaft1", {"tau": tau, "Fa": Fa}, 3.0, integ["method"],
                     rtol=integ["rtol"], law=scene["law"])
 
@@ -102,9 +123,7 @@ def main_job(scene: dict, out: Path, progress: bool = True) -> Path:
     out.mkdir(parents=True, exist_ok=True)
     t_start = time.perf_counter()
     say = (lambda msg: print(msg, file=sys.stderr, flush=True)) if progress else (lambda msg: None)
-    resp, graphs = scene["response"], scene["graphs"]
-    if not graphs["tau_max"] > graphs["tau_min"] > 0:
-        raise CamdynInputError("graphs.tau_min and graphs.tau_max must satisfy 0 < tau_min < tau_max")
+    resp, graphs = scene["study"]["response"], scene["study"]["graphs"]
 
     # fig. 4.10: response curves
     say(f"response curves at tau = {resp['tau']} for Fa = {resp['Fa']}")
@@ -179,10 +198,10 @@ def main_job(scene: dict, out: Path, progress: bool = True) -> Path:
 
 
 def _markdown(scene, summary) -> str:
-    resp = scene["response"]
+    resp = scene["study"]["response"]
     lines = [f"# {scene['title']}", "",
              f"Model CAMSHAFT-1 (thesis (4.15)-(4.18)), {scene['law']} rise, integrated with "
-             f"{scene['integration']['method']} at rtol {scene['integration']['rtol']:g} "
+             f"{scene['run']['method']} at rtol {scene['run']['rtol']:g} "
              "over T in [0, 3].", "",
              f"## Response at tau = {resp['tau']:g} (cf. fig. 4.10)", "",
              "| Fa | U0 | U0'' | X''min in rise | at T | steps | ms |",

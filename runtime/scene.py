@@ -1,15 +1,28 @@
-"""DYNACAM scene files: a mechanism as options, parameters and a run, in TOML (SI units).
+"""Scene files: one format for every study camdyn runs, in TOML (SI units).
 
-A scene names the elements its mechanism has (``[options]``, the fields of
-:class:`camdyn.derive.models.dynacam.Options`), gives every parameter of the
-variant those options select (``[parameters]``, SI, reduced to the output
-member as in thesis sec. 2.4), and says how long to run (``[run]``, in the
-dimensionless time T = t/t_m of the rise, the rise starting at T = 0).
+Every scene says which study it is with ``kind`` and has the same top-level shape: ``title``,
+``reference``, ``note``, ``law`` (and ``theta``), then the tables its kind uses:
 
-Everything is checked before anything runs: an unknown key, a missing
-parameter, a value of the wrong type or out of the declared range is refused
-with a message that names it.  ``beta_0`` is not a scene parameter: the run
-places the rise start itself from ``run.T_start``.
+``kind = "dynacam"``
+    a DYNACAM mechanism (thesis ch. 6-8): ``[options]`` names the elements it has (the option
+    set of the DYNACAM declaration, listed in the generated variants' manifests),
+    ``[parameters]`` gives every parameter of the variant those options select (SI, reduced
+    to the output member as in thesis sec. 2.4), ``[run]`` how long to run in the
+    dimensionless time T = t/t_m of the rise (the rise starting at T = 0), ``[modes]`` the
+    initial modes of force elements.  ``beta_0`` is not a scene parameter: the run places the
+    rise start itself from ``run.T_start``.
+``kind = "camshaft1-study"``
+    the CAMSHAFT-1 study of thesis ch. 4 (`camdyn run`'s default): ``[study.response]`` (fig.
+    4.10) and ``[study.graphs]`` (fig. 4.11), ``[run]`` method and rtol
+    (:mod:`camdyn.runtime.report`).
+``kind = "beam-follower"``
+    the paper's Rayleigh-beam follower: ``[parameters]`` the fields of
+    :class:`camdyn.runtime.beam_case.Case`, ``[run]`` revolutions, rtol, formulation.
+
+Everything is checked before anything runs, against the model's manifest where the model
+declares it: an unknown key, a missing parameter, a value of the wrong type or out of the
+declared range is refused with a message that names it.  `camdyn run SCENE` runs any kind,
+`camdyn scenes` lists the built-in ones.
 """
 from __future__ import annotations
 
@@ -21,7 +34,12 @@ from pathlib import Path
 
 from .errors import CamdynInputError
 
-_TOP = {"title", "reference", "note", "law", "theta", "options", "parameters", "run", "modes"}
+KINDS = {"dynacam": "a DYNACAM mechanism (thesis ch. 6-8): summary and diagrams",
+         "camshaft1-study": "the CAMSHAFT-1 study of thesis ch. 4 (figs 4.10, 4.11): report and charts",
+         "beam-follower": "the paper's Rayleigh-beam follower: tip response"}
+"""The kinds of scene, with what a run of each gives."""
+
+_TOP = {"kind", "title", "reference", "note", "law", "theta", "options", "parameters", "run", "modes"}
 # T_end >= 1: a run covers the whole rise, whose largest deceleration every summary reports
 _RUN = {"T_start": (-5.0, 0.0), "T_end": (1.0, 50.0), "rtol": (1e-13, 1e-2), "method": None}
 
@@ -134,20 +152,132 @@ def check_parameters(options, table) -> dict:
     return out
 
 
-def load(path) -> Scene:
-    """Read and check a scene file (or a built-in scene name)."""
+def read(path) -> tuple[dict, str]:
+    """The TOML table of a scene file (or a built-in scene name), and the path it came from."""
     path = Path(path)
     if not path.suffix and not path.exists():
         path = builtin(str(path))
     try:
-        data = tomllib.loads(path.read_text())
+        return tomllib.loads(path.read_text()), str(path)
     except FileNotFoundError:
         raise CamdynInputError(f"scene file {path} not found") from None
     except OSError as exc:      # a folder, no permission
         raise CamdynInputError(f"scene file {path}: {exc.strerror}") from None
     except ValueError as exc:   # not TOML, not UTF-8, an integer of more than 4300 digits
         raise CamdynInputError(f"scene file {path}: {exc}") from None
-    return from_dict(data, str(path))
+
+
+def kind_of(data: dict, where: str) -> str:
+    """The scene's ``kind``; a file of the format before kinds gets told what changed."""
+    kind = data.get("kind")
+    if kind is None:
+        if "options" in data:
+            hint = 'a DYNACAM scene: add the line kind = "dynacam" at the top'
+        elif {"response", "graphs", "integration"} & set(data):
+            hint = ('a `camdyn run` study: add kind = "camshaft1-study", move [response] and '
+                    '[graphs] under [study] ([study.response], [study.graphs]) and rename '
+                    '[integration] to [run]')
+        else:
+            hint = f"add kind = one of {', '.join(repr(k) for k in KINDS)}"
+        raise CamdynInputError(f"{where}: the scene has no kind; every scene file now says which "
+                               f"study it is with kind = ... ({hint})")
+    if not isinstance(kind, str) or kind not in KINDS:
+        raise CamdynInputError(f"{where}: kind={kind!r}: choose one of {', '.join(KINDS)}")
+    return kind
+
+
+def expect_kind(data: dict, where: str, kind: str) -> None:
+    got = kind_of(data, where)
+    if got != kind:
+        raise CamdynInputError(f"{where} is a {got} scene, not a {kind} one; `camdyn run` runs "
+                               f"any kind")
+
+
+def load(path) -> Scene:
+    """Read and check a DYNACAM scene file (or a built-in scene name)."""
+    data, where = read(path)
+    expect_kind(data, where, "dynacam")
+    return from_dict(data, where)
+
+
+def load_any(path) -> tuple[str, object]:
+    """(kind, checked scene) of any scene file: a :class:`Scene`, the study's checked table
+    (:func:`camdyn.runtime.report.check_scene`) or a :class:`BeamScene`."""
+    data, where = read(path)
+    kind = kind_of(data, where)
+    if kind == "dynacam":
+        return kind, from_dict(data, where)
+    if kind == "camshaft1-study":
+        from .report import check_scene
+
+        return kind, check_scene(data, where)
+    return kind, beam_from_dict(data, where)
+
+
+def builtins() -> list[tuple[str, str, str]]:
+    """(name, kind, title) of every scene shipped with camdyn, sorted by name."""
+    files = resources.files("camdyn.runtime") / "scenes"
+    out = []
+    for p in sorted(files.iterdir(), key=lambda p: p.name):
+        if p.name.endswith(".toml"):
+            data = tomllib.loads(p.read_text())
+            out.append((p.name[:-5], data.get("kind", "?"), data.get("title", "")))
+    return out
+
+
+@dataclass(frozen=True)
+class BeamScene:
+    """A checked beam-follower scene: the case to run."""
+
+    path: str
+    title: str
+    reference: str
+    case: object    # beam_case.Case
+
+
+_BEAM_RUN = ("revolutions", "rtol", "formulation")
+
+
+def beam_from_dict(data: dict, path: str = "<scene>") -> BeamScene:
+    """A beam-follower scene: [parameters] and [run] are fields of beam_case.Case, checked as
+    the command line checks them."""
+    from dataclasses import fields
+
+    from .beam_case import Case, check
+
+    allowed = {"kind", "title", "reference", "note", "law", "parameters", "run"}
+    unknown = sorted(set(data) - allowed)
+    if unknown:
+        raise CamdynInputError(f"{unknown[0]} is not a key of a beam-follower scene; keys are "
+                               f"{', '.join(sorted(allowed))}")
+    names = {f.name for f in fields(Case)} - set(_BEAM_RUN) - {"law"}
+    values = {}
+    for table, keys in (("parameters", names), ("run", set(_BEAM_RUN))):
+        t = data.get(table, {})
+        if not isinstance(t, dict):
+            raise CamdynInputError(f"[{table}] must be a table")
+        for key, value in t.items():
+            if key not in keys:
+                raise CamdynInputError(f"{table}.{key} is not a beam-follower {table} key; "
+                                       f"choose from {', '.join(sorted(keys))}")
+            values[key] = value
+    if "law" in data:
+        values["law"] = data["law"]
+    for key, value in values.items():
+        if key in ("rayleigh",):
+            if not isinstance(value, bool):
+                raise CamdynInputError(f"{key} must be true or false, got {value!r}")
+        elif key in ("formulation", "law"):
+            if not isinstance(value, str):
+                raise CamdynInputError(f"{key} must be a name, got {value!r}")
+        elif key == "modes":
+            if isinstance(value, bool) or not isinstance(value, int):
+                raise CamdynInputError(f"parameters.modes must be an integer, got {value!r}")
+        else:
+            values[key] = _number(key, value)
+    case = check(Case(**values))
+    return BeamScene(path=path, title=str(data.get("title", Path(path).stem)),
+                     reference=str(data.get("reference", "")), case=case)
 
 
 def from_dict(data: dict, path: str = "<scene>") -> Scene:

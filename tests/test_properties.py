@@ -414,7 +414,9 @@ def _toml(data: dict) -> str:
 
 
 SCENE_DIR = Path(scenes.builtin("indexing")).parent
-SCENES = sorted(p.stem for p in SCENE_DIR.glob("*.toml") if p.stem != "default")
+# the DYNACAM scenes (the others are the CAMSHAFT-1 study, below, and the beam follower)
+SCENES = sorted(p.stem for p in SCENE_DIR.glob("*.toml")
+                if tomllib.loads(p.read_text()).get("kind") == "dynacam")
 
 
 @functools.cache
@@ -803,14 +805,14 @@ def test_default_scene_corruption_is_refused_by_name(scene_file, case):
     below 1 or not an integer for n_tau, an empty list or one with a non-number for Fa, a
     non-string title or law, a table that is not a table) or an unknown key added at any
     level makes ``report.load_scene`` raise CamdynInputError with a one-line message that
-    contains the dotted key (e.g. ``graphs.n_tau``)."""
+    contains the dotted key (e.g. ``study.graphs.n_tau``)."""
     data, token = case
     _refused(report.load_scene, str(scene_file(data)), token)
 
 
 def test_default_scene_refuses_an_integer_no_double_holds(scene_file):
-    """response.tau = 10^400 (TOML integers have no size limit in tomllib) must be refused by
-    name like any other bad number (report.load_scene once raised OverflowError here)."""
+    """study.response.tau = 10^400 (TOML integers have no size limit in tomllib) must be refused
+    by name like any other bad number (report.load_scene once raised OverflowError here)."""
     data = copy.deepcopy(DEFAULT)
-    data["response"]["tau"] = 10**400
-    _refused(report.load_scene, str(scene_file(data)), "response.tau")
+    data["study"]["response"]["tau"] = 10**400
+    _refused(report.load_scene, str(scene_file(data)), "study.response.tau")

@@ -1,4 +1,5 @@
-"""DYNACAM scene files: strict checking before anything runs (issue 4, item 4)."""
+"""Scene files: one format with a kind, strict checking before anything runs (issue 4, item 4;
+issue 12, item 3)."""
 import copy
 import json
 import subprocess
@@ -80,3 +81,89 @@ def test_characteristics_of_the_scenes_are_the_printed_ones():
     assert ch["tau"] == pytest.approx(0.141, abs=0.0015)
     assert ch["Fa"] == pytest.approx(2.04, abs=0.005)
     assert ch["Fv"] == pytest.approx(2.68, abs=0.05)
+
+
+# -- one format for every kind (issue 12, item 3) ----------------------------------------------
+
+def _cli(*args, cwd=None):
+    return subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", *args], capture_output=True,
+                          text=True, timeout=300, cwd=cwd)
+
+
+def test_every_builtin_scene_loads_as_its_kind():
+    """Every file of runtime/scenes/ says its kind and loads through the one loader as that
+    kind; `camdyn scenes --json` lists exactly these files with their kinds and titles."""
+    files = sorted(p.stem for p in scenes.builtin("indexing").parent.glob("*.toml"))
+    listed = json.loads(_cli("scenes", "--json").stdout)
+    assert [r["name"] for r in listed] == files
+    types = {"dynacam": scenes.Scene, "camshaft1-study": dict, "beam-follower": scenes.BeamScene}
+    for row in listed:
+        data = _data(row["name"])
+        assert row["kind"] == data["kind"] and row["title"] == data["title"]
+        kind, sc = scenes.load_any(row["name"])
+        assert kind == data["kind"] and isinstance(sc, types[kind])
+    assert {r["kind"] for r in listed} == set(scenes.KINDS)
+
+
+@pytest.mark.parametrize("name, drop, says", [
+    ("spring_loaded", (), 'add the line kind = "dynacam"'),
+    ("default", (), 'move [response] and [graphs] under [study]'),
+])
+def test_a_scene_of_the_old_format_is_told_what_changed(tmp_path, name, drop, says):
+    """A file without kind, as every scene was before kinds, is refused by `camdyn run` and
+    `camdyn simulate` with one line that says what to change (status 2, nothing run)."""
+    data = _data(name)
+    text = scenes.builtin(name).read_text().replace(f'kind = "{data["kind"]}"\n', "")
+    if name == "default":   # the study's old layout: [response], [graphs], [integration]
+        text = (text.replace("[study.response]", "[response]").replace("[study.graphs]", "[graphs]")
+                .replace("[run]", "[integration]"))
+    old = tmp_path / "old.toml"
+    old.write_text(text)
+    for cmd in ("run", "simulate"):
+        p = _cli(cmd, str(old), "--out", str(tmp_path / "out"))
+        assert p.returncode == 2 and "the scene has no kind" in p.stderr and says in p.stderr
+        assert len(p.stderr.strip().splitlines()) == 1
+    assert not (tmp_path / "out").exists()
+
+
+def test_simulate_refuses_another_kind_and_points_to_run():
+    p = _cli("simulate", "beam_paper")
+    assert p.returncode == 2
+    assert "is a beam-follower scene, not a dynacam one; `camdyn run` runs any kind" in p.stderr
+
+
+@pytest.mark.parametrize("edit, message", [
+    (lambda d: d["parameters"].__setitem__("modes", 9), "modes=9: choose an integer from 1 to"),
+    (lambda d: d["parameters"].__setitem__("modes", 2.5), "parameters.modes must be an integer"),
+    (lambda d: d["parameters"].__setitem__("rise", -0.01), "rise=-0.01: must be a positive number"),
+    (lambda d: d["parameters"].__setitem__("rayleigh", 1), "rayleigh must be true or false"),
+    (lambda d: d["parameters"].__setitem__("colour", 1), "parameters.colour is not a beam-follower"),
+    (lambda d: d["run"].__setitem__("formulation", "lagrange"), "formulation='lagrange': choose one of"),
+    (lambda d: d.__setitem__("options", {}), "options is not a key of a beam-follower scene"),
+    (lambda d: d.__setitem__("kind", "camshaft2"), "kind='camshaft2': choose one of"),
+])
+def test_bad_beam_scenes_are_refused_by_name(edit, message):
+    d = copy.deepcopy(_data("beam_paper"))
+    edit(d)
+    with pytest.raises(CamdynInputError, match=message.replace("(", r"\(").replace("[", r"\[")):
+        scenes.kind_of(d, "x") and scenes.beam_from_dict(d)
+
+
+def test_run_any_kind_writes_the_summary_of_its_own_command(tmp_path):
+    """`camdyn run` on a DYNACAM scene and on the beam follower writes report.json with the same
+    figures as `camdyn simulate --json` and `camdyn beam-follower --json` give for them."""
+    p = _cli("run", "spring_loaded", "--out", str(tmp_path / "a"), "--quiet")
+    assert p.returncode == 0, p.stderr
+    got = json.loads((tmp_path / "a" / "report.json").read_text())
+    want = json.loads(_cli("simulate", "spring_loaded", "--json").stdout)
+    assert got["kind"] == "dynacam"
+    for key in ("tau", "Fa", "Fv", "Xdd_min_rise", "T_at_Xdd_min", "U0dd", "U0"):
+        assert got[key] == pytest.approx(want[key], rel=1e-12), key
+    assert any(f.endswith("spring_loaded_Xdd.png") for f in got["figures"])
+    p = _cli("run", "beam_paper", "--out", str(tmp_path / "b"), "--quiet")
+    assert p.returncode == 0, p.stderr
+    got = json.loads((tmp_path / "b" / "report.json").read_text())
+    want = json.loads(_cli("beam-follower", "--json").stdout)
+    assert got["kind"] == "beam-follower"
+    for key in ("max_abs_tip_deflection", "max_constraint_residual", "dwell_frequency_hz"):
+        assert got[key] == pytest.approx(want[key], rel=1e-12), key

@@ -34,8 +34,9 @@ from camdyn.runtime.residual import extreme
 from camdyn.runtime.simulate import simulate
 
 SCENE_DIR = Path(camdyn.runtime.__file__).parent / "scenes"
-# default.toml is the CAMSHAFT-1 study of `camdyn run`, not a DYNACAM mechanism
-SCENES = sorted(p.stem for p in SCENE_DIR.glob("*.toml") if p.stem != "default")
+# the DYNACAM mechanisms (default.toml is the CAMSHAFT-1 study, beam_paper.toml the beam follower)
+SCENES = sorted(p.stem for p in SCENE_DIR.glob("*.toml")
+                if tomllib.loads(p.read_text()).get("kind") == "dynacam")
 KEYS = ("tau", "Fa", "Fv", "t_m", "c_c", "m", "tan_alpha_me", "c_tan", "m_tan")
 ODE = dict(method="DOP853", rtol=1e-12, atol=1e-15)
 
