@@ -102,6 +102,12 @@ def derive(model: Model) -> Equations:
         f = f.xreplace(rates)
     M = M.applyfunc(_tidy)
     f = f.applyfunc(_tidy)
+    if not model.constraints:
+        # a coordinate without inertia makes M singular: its equation would divide by zero
+        for i in range(n):
+            if all(M[i, j] == 0 for j in range(n)):
+                raise ValueError(f"{model.name}: coordinate {q[i].func} has no inertia (the "
+                                 f"kinetic energy has no term in its rate), so M is singular")
 
     Phi = sp.Matrix(list(model.constraints))
     if Phi.rows:

@@ -6,6 +6,7 @@
     camdyn laws [--json]                    cam-law characteristics (App. 2)
     camdyn run [SCENE] [--out DIR]          any scene (default: the CAMSHAFT-1 study): report
     camdyn scenes [--json]                  the built-in scenes, their kinds and titles
+    camdyn integrate MODEL --t-end T ...    any model: a model file (built on demand) or built-in
     camdyn simulate SCENE.toml [--json]     a DYNACAM scene (thesis ch. 6, 7): summary and diagrams
     camdyn beam-follower [--omega W] ...    the Rayleigh-beam follower (paper; issue 5)
 
@@ -203,6 +204,124 @@ def _cmd_laws(args) -> int:
     from camdyn.thesis import commands
 
     return commands.laws(args)
+
+
+# -- camdyn integrate ------------------------------------------------------------------
+
+def _assignments(items, flag: str) -> dict:
+    out = {}
+    for item in items or ():
+        name, sep, value = item.partition("=")
+        if not sep or not name:
+            raise CamdynInputError(f"argument {flag}: {item!r} is not NAME=VALUE")
+        try:
+            out[name] = float(value)
+        except ValueError:
+            raise CamdynInputError(f"argument {flag}: {name}={value!r} is not a number") from None
+    return out
+
+
+def integrate_run(model_arg: str, params: dict, initial: dict, t_end: float, method: str,
+                  rtol, step, law: str, theta, progress=None) -> tuple[dict, object]:
+    """One run of a model file (built on demand) or a built-in model: (summary, result)."""
+    from .models import available, load
+    from .simulate import Simulator
+
+    if model_arg.endswith(".py") or Path(model_arg).is_file():
+        from . import ondemand
+
+        model = ondemand.model_file(model_arg, progress)
+    elif model_arg in available():
+        model = load(model_arg)
+    else:
+        raise CamdynInputError(f"MODEL {model_arg!r} is neither a model file (.py) nor a built-in "
+                               f"model; built-in models: {', '.join(available())}")
+    p = model.parameter_vector(params)
+    y0 = model.initial_state(p)
+    for name, value in initial.items():
+        if name not in model.state_names:
+            raise CamdynInputError(f"argument --initial: {model.name} has no state {name}; its "
+                                   f"states are {', '.join(model.state_names)}")
+        y0[model.state_names.index(name)] = value
+    sim = Simulator(model, t_end, method, rtol=rtol, step=step, law=law, theta=theta, y0=y0)
+    c0 = time.process_time()
+    res = sim.run(params)
+    cpu = time.process_time() - c0
+    final = res.sample([res.t[-1]])
+    summary = {"model": model.name, "method": method, "t_end": t_end,
+               "time_unit": model.manifest["time"]["unit"],
+               "state": {n: float(final[n][0]) for n in model.state_names},
+               "n_steps": int(res.stats["n_steps"]), "n_rhs": int(res.stats["n_rhs"]),
+               "cpu_seconds": cpu, "status": "ok"}
+    return summary, res
+
+
+def write_series(res, out_dir) -> list:
+    """states and outputs against time: <model>.csv and <model>.png in ``out_dir``."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    out = Path(out_dir)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise CamdynInputError(f"argument --out: cannot create {out}: {exc}") from None
+    m = res.model
+    names = m.state_names + m.output_names
+    units = {s["name"]: s.get("unit", "") for s in m.manifest["states"] + m.manifest["outputs"]}
+    tname = m.manifest["time"]["name"]
+    T = np.unique(np.concatenate([res.t, np.linspace(res.t[0], res.t[-1], 1001)]))
+    smp = res.sample(T)
+    csv = out / f"{m.name}.csv"
+    np.savetxt(csv, np.column_stack([T] + [smp[n] for n in names]), delimiter=",",
+               header=",".join([tname] + names), comments="")
+    fig, axes = plt.subplots(len(names), 1, figsize=(7, 1.8 * len(names) + 0.6), sharex=True,
+                             squeeze=False)
+    for ax, n in zip(axes[:, 0], names):
+        ax.plot(T, smp[n], lw=0.9)
+        ax.set_ylabel(f"{n} [{units.get(n, '')}]", fontsize=8)
+        ax.grid(alpha=0.3)
+    axes[-1, 0].set_xlabel(f"{tname} [{m.manifest['time']['unit']}]")
+    axes[0, 0].set_title(m.manifest.get("title", m.name), fontsize=9)
+    fig.tight_layout()
+    png = out / f"{m.name}.png"
+    fig.savefig(png, dpi=110)
+    plt.close(fig)
+    return [str(csv), str(png)]
+
+
+def _cmd_integrate(args) -> int:
+    prog = "camdyn integrate"
+    say = (lambda msg: print(msg, file=sys.stderr, flush=True))
+    try:
+        params = _assignments(args.set, "--set")
+        initial = _assignments(args.initial, "--initial")
+        if args.rtol is not None and args.step is not None:
+            raise CamdynInputError("arguments --rtol and --step: give one (rtol for dp54, step "
+                                   "for rk4 and koster)")
+        summary, res = integrate_run(args.model, params, initial, args.t_end, args.method,
+                                     args.rtol, args.step, args.law, args.theta, say)
+        if args.out:
+            summary["files"] = write_series(res, args.out)
+    except CamdynInputError as exc:
+        return fail(prog, str(exc))
+    except SimulationError as exc:
+        print(f"{prog}: run failed: {exc}", file=sys.stderr)
+        return 1
+    if args.json:
+        print(json.dumps(summary, indent=1))
+        return 0
+    print(f"{summary['model']}: {summary['method']} to {summary['t_end']:g} "
+          f"{summary['time_unit']}, {summary['n_steps']} steps, {summary['n_rhs']} rhs calls, "
+          f"{summary['cpu_seconds']:.3g} s CPU")
+    for name, value in summary["state"].items():
+        print(f"  {name:12s} {value:.10g}")
+    for f in summary.get("files", []):
+        print(f"wrote {f}")
+    return 0
 
 
 # -- camdyn run, camdyn scenes --------------------------------------------------------
@@ -479,6 +598,25 @@ def build_parser() -> argparse.ArgumentParser:
     ls = sub.add_parser("scenes", help="the built-in scenes with their kinds and titles")
     ls.add_argument("--json", action="store_true", help="one JSON array on stdout")
     ls.set_defaults(func=_cmd_scenes)
+
+    ig = sub.add_parser("integrate", help="any model: a model file (built on first use) or a "
+                                          "built-in model, to t_end")
+    ig.add_argument("model", metavar="MODEL",
+                    help="a Python file defining build() -> Model, or a built-in model name")
+    ig.add_argument("--set", action="append", metavar="NAME=VALUE",
+                    help="a parameter value, in the model's units (repeatable)")
+    ig.add_argument("--initial", action="append", metavar="NAME=VALUE",
+                    help="an initial state value (repeatable; default: the declared state)")
+    ig.add_argument("--t-end", type=float, required=True, metavar="T",
+                    help="end time, in the model's time unit")
+    ig.add_argument("--method", default="dp54", choices=sorted(methods.METHODS))
+    ig.add_argument("--rtol", type=float, default=None, help="dp54 tolerance (default 1e-8)")
+    ig.add_argument("--step", type=float, default=None, help="rk4/koster step")
+    ig.add_argument("--law", default="cycloidal", choices=laws.NAMES, help="cam law of the inputs")
+    ig.add_argument("--theta", type=float, default=None, help="shape parameter of the law")
+    ig.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    ig.add_argument("--out", default=None, help="folder for <model>.csv and <model>.png")
+    ig.set_defaults(func=_cmd_integrate)
 
     sm = sub.add_parser("simulate", help="a DYNACAM scene (thesis ch. 6, 7): summary and diagrams")
     sm.add_argument("scene", help="scene TOML, or a built-in scene: indexing, spring_loaded")

@@ -107,19 +107,24 @@ def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
     return out
 
 
+def variant_model(scene: Scene, progress=None):
+    """The compiled variant the scene's options select: pre-generated, or else derived,
+    generated and compiled on first use into the user cache (:mod:`camdyn.runtime.ondemand`)."""
+    from dataclasses import asdict
+
+    from .models import available
+
+    if scene.variant in available():
+        return load(scene.variant)
+    from . import ondemand
+
+    return ondemand.dynacam_variant(asdict(scene.options), scene.variant, progress)
+
+
 def run(scene: Scene, progress=None, method=None) -> tuple[dict, object]:
     """Run a scene; returns (summary, result).  ``method``: the integration method, by default
     DP54 at the scene's rtol with no step limit (a step-limited one serves as a reference)."""
-    try:
-        model = load(scene.variant)
-    except CamdynInputError:
-        from camdyn.derive.models import DYNACAM_VARIANTS
-
-        raise CamdynInputError(
-            f"the options of {scene.path} select the variant {scene.variant}, which is not generated; "
-            f"generated variants: {', '.join(o.name for o in DYNACAM_VARIANTS)}.  Add its Options(...) "
-            f"to DYNACAM_VARIANTS in camdyn/derive/models/__init__.py, then run `camdyn derive` and "
-            f"`pip install -e .`") from None
+    model = variant_model(scene, progress)
     params = dict(scene.parameters)
     params["beta_0"] = -scene.T_start * params["beta_m"]
     ch = characteristics(scene.options, params)

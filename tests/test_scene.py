@@ -47,15 +47,6 @@ def test_bad_scenes_are_refused_by_name(edit, message):
         scenes.from_dict(d)
 
 
-def test_options_without_a_generated_variant_are_refused_before_running():
-    d = copy.deepcopy(_data("indexing"))
-    d["options"]["external"] = True
-    d["parameters"]["F_ex"] = 10.0
-    sc = scenes.from_dict(d)
-    with pytest.raises(CamdynInputError, match="dynacam_acbg_yze, which is not generated"):
-        dynacam.run(sc)
-
-
 def test_cli_names_the_bad_parameter(tmp_path):
     text = scenes.builtin("spring_loaded").read_text().replace("c_s = 1000.0", "c_s = -5.0")
     bad = tmp_path / "bad.toml"
