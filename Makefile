@@ -44,6 +44,10 @@ wheel-check:
 	cd $(WHEEL_DIR) && venv/bin/camdyn simulate spring_loaded --json > simulate.json && \
 		venv/bin/python -c "import json; s = json.load(open('simulate.json')); print('simulate spring_loaded: Xdd_min_rise', s['Xdd_min_rise'])"
 	cd $(WHEEL_DIR) && venv/bin/camdyn residual --model camshaft1 --tau 0.15 --fa 2 --json
+	$(PYTHON) -c "import re, sys; t = open('README.md').read(); \
+		sys.stdout.write(re.search(r'user-model: oscillator.py -->\s*\x60\x60\x60python\n(.*?)\x60\x60\x60', t, re.S).group(1))" \
+		> $(WHEEL_DIR)/oscillator.py
+	cd $(WHEEL_DIR) && CAMDYN_CACHE_DIR=$(WHEEL_DIR)/cache venv/bin/camdyn integrate oscillator.py --t-end 3 --json
 	rm -rf $(WHEEL_DIR)
 
 # mutation testing of the pure-Python physics in scratch copies of the tree; report in
