@@ -382,10 +382,23 @@ def render_camlaws() -> dict[str, str]:
             "camlaws.pyx": env.get_template("camlaws.pyx.j2").render(**ctx)}
 
 
+# -- the catalog: declarations the runtime reads as data ---------------------------
+
+def render_catalog() -> dict[str, str]:
+    """``catalog.json``: what the runtime needs of the declarations without SymPy (the DYNACAM
+    option set and how a variant is named), so that checking a scene loads no derive code."""
+    from .models import dynacam
+
+    head = ("written by `camdyn derive` from camdyn/derive/models/dynacam.py; do not edit, "
+            "edit the declaration and regenerate")
+    return {"catalog.json": json.dumps({"generated": head, "dynacam": dynacam.catalog()},
+                                       indent=1) + "\n"}
+
+
 # -- all files ----------------------------------------------------------------------
 
 
-def _render_registered(name: str) -> str:
+def render_registered(name: str) -> str:
     from .models import REGISTRY
 
     model = REGISTRY[name]()
@@ -406,13 +419,13 @@ def render_all(only=None, workers: int | None = None) -> dict[str, str]:
 
     from .models import REGISTRY
 
-    files = render_camlaws()
+    files = {**render_camlaws(), **render_catalog()}
     names = sorted(REGISTRY) if only is None else sorted(only)
     workers = workers or min(len(names), os.cpu_count() or 1)
     if workers > 1:
         with ProcessPoolExecutor(max_workers=workers) as pool:
-            texts = list(pool.map(_render_registered, names))
+            texts = list(pool.map(render_registered, names))
     else:
-        texts = [_render_registered(n) for n in names]
+        texts = [render_registered(n) for n in names]
     files.update({f"{n}.pyx": text for n, text in zip(names, texts)})
     return files

@@ -27,7 +27,7 @@ def project_root(start: Path | None = None) -> Path:
 
 
 def _generated_files(out: Path) -> set[str]:
-    return {p.name for p in out.iterdir() if p.is_file() and p.suffix in (".pyx", ".pxd")}
+    return {p.name for p in out.iterdir() if p.is_file() and p.suffix in (".pyx", ".pxd", ".json")}
 
 
 def _expected(only) -> set[str]:
@@ -38,7 +38,7 @@ def _expected(only) -> set[str]:
     unknown = sorted(set(names) - set(REGISTRY))
     if unknown:
         raise KeyError(f"no model {unknown[0]!r} in the registry; known: {', '.join(sorted(REGISTRY))}")
-    return {"camlaws.pxd", "camlaws.pyx"} | {f"{n}.pyx" for n in names}
+    return {"camlaws.pxd", "camlaws.pyx", "catalog.json"} | {f"{n}.pyx" for n in names}
 
 
 def write(out: Path, only=None) -> list[str]:

@@ -108,17 +108,10 @@ def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
 
 
 def variant_model(scene: Scene, progress=None):
-    """The compiled variant the scene's options select: pre-generated, or else derived,
-    generated and compiled on first use into the user cache (:mod:`camdyn.runtime.ondemand`)."""
-    from dataclasses import asdict
+    """The compiled variant the scene's options select (:func:`variants.options_model`)."""
+    from .variants import options_model
 
-    from .models import available
-
-    if scene.variant in available():
-        return load(scene.variant)
-    from . import ondemand
-
-    return ondemand.dynacam_variant(asdict(scene.options), scene.variant, progress)
+    return options_model(scene.options, progress)
 
 
 def run(scene: Scene, progress=None, method=None) -> tuple[dict, object]:

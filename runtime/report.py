@@ -21,91 +21,14 @@ from .errors import CamdynInputError
 from .residual import residual
 from .simulate import simulate
 
-_SCHEMA = {
-    "kind": str, "title": str, "law": str,
-    "study": {"response": {"tau": float, "Fa": list},
-              "graphs": {"tau_min": float, "tau_max": float, "n_tau": int, "Fa": list}},
-    "run": {"method": str, "rtol": float},
-}
-_OPTIONAL = {"reference": str, "note": str}
-KIND = "camshaft1-study"
-
-
 def load_scene(path: str | None) -> dict:
     """The study scene at ``path`` (a file or a built-in name) or the embedded default, checked
-    against the schema and the CAMSHAFT-1 model's parameter ranges."""
+    (:func:`camdyn.runtime.scene.check_study`)."""
     from . import scene as scenes
 
     data, where = scenes.read("default" if path is None else path)
-    scenes.expect_kind(data, where, KIND)
-    return check_scene(data, where)
-
-
-def check_scene(data: dict, where: str) -> dict:
-    """A camshaft1-study scene: every key of the schema, the right types, tau and Fa inside
-    the ranges the CAMSHAFT-1 manifest declares, a known method and law."""
-    from .laws import choose
-    from .methods import METHODS
-    from .models import load
-
-    _check(data, _SCHEMA, where)
-    choose(data["law"])
-    if data["run"]["method"] not in METHODS:
-        raise CamdynInputError(f"{where}: run.method={data['run']['method']!r}: choose one of "
-                               f"{', '.join(METHODS)}")
-    model = load("camshaft1")
-    study = data["study"]
-    for key, values in (("study.response", [(study["response"]["tau"], F)
-                                            for F in study["response"]["Fa"]]),
-                        ("study.graphs", [(t, F) for t in (study["graphs"]["tau_min"],
-                                                          study["graphs"]["tau_max"])
-                                          for F in study["graphs"]["Fa"]])):
-        for tau, Fa in values:
-            try:
-                model.parameter_vector({"tau": tau, "Fa": Fa})
-            except CamdynInputError as exc:
-                raise CamdynInputError(f"{where}: {key}: {exc}") from None
-    graphs = study["graphs"]
-    if not graphs["tau_max"] > graphs["tau_min"]:
-        raise CamdynInputError(f"{where}: study.graphs.tau_min must be below study.graphs.tau_max")
-    return data
-
-
-def _finite(v) -> bool:
-    try:
-        return math.isfinite(v)
-    except OverflowError:   # a TOML integer beyond any double
-        return False
-
-
-def _check(d: dict, schema: dict, where: str, prefix: str = ""):
-    optional = _OPTIONAL if not prefix else {}
-    for key, kind in {**schema, **optional}.items():
-        name = prefix + key
-        if key not in d:
-            if key in optional:
-                continue
-            raise CamdynInputError(f"{where}: {name} is missing")
-        v = d[key]
-        if isinstance(kind, dict):
-            if not isinstance(v, dict):
-                raise CamdynInputError(f"{where}: [{name}] must be a table")
-            _check(v, kind, where, name + ".")
-        elif kind is float:
-            if isinstance(v, bool) or not isinstance(v, (int, float)) or not _finite(v):
-                raise CamdynInputError(f"{where}: {name} must be a finite number, got {v!r}")
-        elif kind is int:
-            if isinstance(v, bool) or not isinstance(v, int) or v < 1:
-                raise CamdynInputError(f"{where}: {name} must be a positive integer, got {v!r}")
-        elif kind is list:
-            if not isinstance(v, list) or not v or not all(
-                    isinstance(x, (int, float)) and not isinstance(x, bool) and _finite(x) for x in v):
-                raise CamdynInputError(f"{where}: {name} must be a non-empty list of finite numbers")
-        elif not isinstance(v, kind):
-            raise CamdynInputError(f"{where}: {name} must be a {kind.__name__}, got {v!r}")
-    extra = sorted(set(d) - set(schema) - set(optional))
-    if extra:
-        raise CamdynInputError(f"{where}: unknown key {prefix}{extra[0]}")
+    scenes.expect_kind(data, where, scenes.STUDY)
+    return scenes.check_study(data, where)
 
 
 def _run(tau, Fa, scene):

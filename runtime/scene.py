@@ -53,7 +53,7 @@ class Scene:
     reference: str
     law: str
     theta: float | None
-    options: object                 # dynacam.Options
+    options: object                 # variants.Options
     parameters: dict = field(default_factory=dict)
     modes: dict = field(default_factory=dict)
     T_start: float = -0.1
@@ -77,6 +77,87 @@ def builtin(name: str) -> Path:
     return path
 
 
+# -- the CAMSHAFT-1 study (kind camshaft1-study), run by camdyn.runtime.report --------------
+
+STUDY = "camshaft1-study"
+STUDY_SCHEMA = {
+    "kind": str, "title": str, "law": str,
+    "study": {"response": {"tau": float, "Fa": list},
+              "graphs": {"tau_min": float, "tau_max": float, "n_tau": int, "Fa": list}},
+    "run": {"method": str, "rtol": float},
+}
+_STUDY_OPTIONAL = {"reference": str, "note": str}
+
+
+def check_study(data: dict, where: str) -> dict:
+    """A camshaft1-study scene: every key of the schema, the right types, tau and Fa inside
+    the ranges the CAMSHAFT-1 manifest declares, a known method and law."""
+    from .laws import choose
+    from .methods import METHODS
+    from .models import load
+
+    _check(data, STUDY_SCHEMA, where)
+    choose(data["law"])
+    if data["run"]["method"] not in METHODS:
+        raise CamdynInputError(f"{where}: run.method={data['run']['method']!r}: choose one of "
+                               f"{', '.join(METHODS)}")
+    model = load("camshaft1")
+    study = data["study"]
+    for key, values in (("study.response", [(study["response"]["tau"], F)
+                                            for F in study["response"]["Fa"]]),
+                        ("study.graphs", [(t, F) for t in (study["graphs"]["tau_min"],
+                                                          study["graphs"]["tau_max"])
+                                          for F in study["graphs"]["Fa"]])):
+        for tau, Fa in values:
+            try:
+                model.parameter_vector({"tau": tau, "Fa": Fa})
+            except CamdynInputError as exc:
+                raise CamdynInputError(f"{where}: {key}: {exc}") from None
+    graphs = study["graphs"]
+    if not graphs["tau_max"] > graphs["tau_min"]:
+        raise CamdynInputError(f"{where}: study.graphs.tau_min must be below study.graphs.tau_max")
+    return data
+
+
+def _finite(v) -> bool:
+    try:
+        return math.isfinite(v)
+    except OverflowError:   # a TOML integer beyond any double
+        return False
+
+
+def _check(d: dict, schema: dict, where: str, prefix: str = ""):
+    optional = _STUDY_OPTIONAL if not prefix else {}
+    for key, kind in {**schema, **optional}.items():
+        name = prefix + key
+        if key not in d:
+            if key in optional:
+                continue
+            raise CamdynInputError(f"{where}: {name} is missing")
+        v = d[key]
+        if isinstance(kind, dict):
+            if not isinstance(v, dict):
+                raise CamdynInputError(f"{where}: [{name}] must be a table")
+            _check(v, kind, where, name + ".")
+        elif kind is float:
+            if isinstance(v, bool) or not isinstance(v, (int, float)) or not _finite(v):
+                raise CamdynInputError(f"{where}: {name} must be a finite number, got {v!r}")
+        elif kind is int:
+            if isinstance(v, bool) or not isinstance(v, int) or v < 1:
+                raise CamdynInputError(f"{where}: {name} must be a positive integer, got {v!r}")
+        elif kind is list:
+            if not isinstance(v, list) or not v or not all(
+                    isinstance(x, (int, float)) and not isinstance(x, bool) and _finite(x) for x in v):
+                raise CamdynInputError(f"{where}: {name} must be a non-empty list of finite numbers")
+        elif not isinstance(v, kind):
+            raise CamdynInputError(f"{where}: {name} must be a {kind.__name__}, got {v!r}")
+    extra = sorted(set(d) - set(schema) - set(optional))
+    if extra:
+        raise CamdynInputError(f"{where}: unknown key {prefix}{extra[0]}")
+
+
+# -- DYNACAM (kind dynacam) -----------------------------------------------------------------
+
 def _float(where: str, value) -> float:
     try:
         return float(value)
@@ -96,7 +177,7 @@ def _number(where: str, value, low=None, high=None) -> float:
 
 
 def _options(table) -> object:
-    from camdyn.derive.models.dynacam import Options
+    from .variants import CHOICES, Options
 
     if not isinstance(table, dict):
         raise CamdynInputError("[options] must be a table")
@@ -104,20 +185,43 @@ def _options(table) -> object:
     for key, value in table.items():
         if key not in kinds:
             raise CamdynInputError(f"options.{key} is not an option; options are {', '.join(kinds)}")
-        if key in Options.CHOICES:
-            if not isinstance(value, str) or value not in Options.CHOICES[key]:
+        if key in CHOICES:
+            if not isinstance(value, str) or value not in CHOICES[key]:
                 raise CamdynInputError(
-                    f"options.{key}={value!r}: choose one of {', '.join(Options.CHOICES[key])}")
+                    f"options.{key}={value!r}: choose one of {', '.join(CHOICES[key])}")
         elif not isinstance(value, bool):
             raise CamdynInputError(f"options.{key} must be true or false, got {value!r}")
     return Options(**table)
 
 
-def _declared_parameters(options) -> dict:
-    """The variant's parameters from the declaration (name -> Parameter), without compiling."""
-    from camdyn.derive.models import dynacam
+@dataclass(frozen=True)
+class ParameterSpec:
+    """A parameter as the variant's manifest declares it (name, unit, doc, range)."""
 
-    return {p.name: p for p in dynacam.build(options).parameters}
+    name: str
+    unit: str
+    doc: str
+    low: float
+    high: float
+    open_low: bool
+    open_high: bool
+
+    def admits(self, value: float) -> bool:
+        above = self.low < value if self.open_low else self.low <= value
+        below = value < self.high if self.open_high else value <= self.high
+        return math.isfinite(value) and above and below
+
+
+def _declared_parameters(options, progress=None) -> dict:
+    """The variant's parameters (name -> ParameterSpec) from its compiled manifest: a
+    pre-generated variant's at once, any other's once it is built on demand."""
+    from .variants import variant_manifest
+
+    return {p["name"]: ParameterSpec(p["name"], p["unit"], p["doc"],
+                                     -math.inf if p["low"] is None else p["low"],
+                                     math.inf if p["high"] is None else p["high"],
+                                     p["open_low"], p["open_high"])
+            for p in variant_manifest(options, progress)["parameters"]}
 
 
 def check_parameters(options, table) -> dict:
@@ -202,15 +306,13 @@ def load(path) -> Scene:
 
 def load_any(path) -> tuple[str, object]:
     """(kind, checked scene) of any scene file: a :class:`Scene`, the study's checked table
-    (:func:`camdyn.runtime.report.check_scene`) or a :class:`BeamScene`."""
+    (:func:`check_study`) or a :class:`BeamScene`."""
     data, where = read(path)
     kind = kind_of(data, where)
     if kind == "dynacam":
         return kind, from_dict(data, where)
-    if kind == "camshaft1-study":
-        from .report import check_scene
-
-        return kind, check_scene(data, where)
+    if kind == STUDY:
+        return kind, check_study(data, where)
     return kind, beam_from_dict(data, where)
 
 

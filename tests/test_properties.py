@@ -738,7 +738,7 @@ def test_camdyn_simulate_names_the_bad_key_with_status_2(tmp_path):
 DEFAULT = tomllib.loads((SCENE_DIR / "default.toml").read_text())
 
 
-def _schema_leaves(schema=report._SCHEMA, prefix=""):
+def _schema_leaves(schema=scenes.STUDY_SCHEMA, prefix=""):
     """(dotted name, kind) of every key of the report schema, tables included."""
     for key, kind in schema.items():
         path = prefix + key
@@ -800,7 +800,7 @@ def test_default_scene_reads_back_through_the_toml_writer(scene_file):
 @FAST
 @given(corrupted_default())
 def test_default_scene_corruption_is_refused_by_name(scene_file, case):
-    """The CAMSHAFT-1 study scene (default.toml) against its schema (report._SCHEMA): any key
+    """The CAMSHAFT-1 study scene (default.toml) against its schema (scene.STUDY_SCHEMA): any key
     removed, set to a value of the wrong kind (a non-finite or non-number float, an integer
     below 1 or not an integer for n_tau, an empty list or one with a non-number for Fa, a
     non-string title or law, a table that is not a table) or an unknown key added at any

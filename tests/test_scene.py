@@ -158,3 +158,31 @@ def test_run_any_kind_writes_the_summary_of_its_own_command(tmp_path):
     assert got["kind"] == "beam-follower"
     for key in ("max_abs_tip_deflection", "max_constraint_residual", "dwell_frequency_hz"):
         assert got[key] == pytest.approx(want[key], rel=1e-12), key
+
+
+def test_runtime_options_are_the_declaration_s():
+    """The runtime's Options (built from generated/catalog.json, no SymPy) against the
+    declaration's (camdyn.derive.models.dynacam.Options): the same fields, defaults, choices and
+    docs, and the same variant name for all 4608 option sets; an invalid choice is refused by
+    both."""
+    import itertools
+    from dataclasses import fields
+
+    from camdyn.derive.models import dynacam as declared
+    from camdyn.runtime import variants
+
+    mine, theirs = fields(variants.Options), fields(declared.Options)
+    assert [(f.name, f.default, f.metadata["doc"]) for f in mine] == \
+           [(f.name, f.default, f.metadata["doc"]) for f in theirs]
+    assert variants.CHOICES == declared.Options.CHOICES
+    keys = [f.name for f in theirs]
+    values = [declared.Options.CHOICES.get(k, (False, True)) for k in keys]
+    n = 0
+    for combo in itertools.product(*values):
+        kw = dict(zip(keys, combo))
+        assert variants.Options(**kw).name == declared.Options(**kw).name, kw
+        n += 1
+    assert n == 4608
+    for cls in (variants.Options, declared.Options):
+        with pytest.raises(ValueError, match="option gear='chain': choose one of"):
+            cls(gear="chain")

@@ -41,7 +41,7 @@ it has) is in its manifest; a scene generates only what it asks for.
 """
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field, fields
 
 import sympy as sp
 
@@ -52,20 +52,26 @@ t = time("t")
 H = cam_input("H")
 
 
+def _opt(default, doc):
+    return field(default=default, metadata={"doc": doc})
+
+
 @dataclass(frozen=True)
 class Options:
     """What a DYNACAM variant contains (each field names the thesis section)."""
 
-    cam: str = "radial"            # "radial" | "axial" (6.21)
-    motor: str = "constant"        # "constant" | "first" | "second" (App. 5, sec. 6.7)
-    gear: str = "rigid"            # "rigid" | "backlash" | "squeeze" (6.1)-(6.9)
-    roller: str = "bilateral"      # "bilateral" | "contact" | "groove" | "groove-squeeze" (6.27)-(6.41)
-    shaft_y: bool = True           # tangential shaft deflection y' (6.12), (6.16)
-    shaft_z: bool = True           # shaft deflection z' along the follower (6.11), (6.15)
-    cam_friction: bool = False     # (6.13)
-    linkage_friction: bool = False  # (6.43)
-    spring: bool = False           # follower spring with preload (6.45)
-    external: bool = False         # constant external force on the output (6.46)
+    cam: str = _opt("radial", "cam: radial disk or axial (globoidal) (6.21)")
+    motor: str = _opt("constant", "drive: constant speed, first- or second-order motor (App. 5, sec. 6.7)")
+    gear: str = _opt("rigid", "gear between motor and camshaft: rigid, with backlash, or with backlash "
+                              "and a squeeze film (6.1)-(6.9)")
+    roller: str = _opt("bilateral", "roller: held on both sides, in contact held by a spring, in a groove "
+                                    "with backlash, or in a groove with a squeeze film (6.27)-(6.41)")
+    shaft_y: bool = _opt(True, "tangential shaft deflection y' (6.12), (6.16)")
+    shaft_z: bool = _opt(True, "shaft deflection z' along the follower (6.11), (6.15)")
+    cam_friction: bool = _opt(False, "Coulomb friction between roller and cam (6.13)")
+    linkage_friction: bool = _opt(False, "Coulomb friction in the follower linkage (6.43)")
+    spring: bool = _opt(False, "follower spring with preload (6.45)")
+    external: bool = _opt(False, "constant external force on the output (6.46)")
 
     CHOICES = {"cam": ("radial", "axial"), "motor": ("constant", "first", "second"),
                "gear": ("rigid", "backlash", "squeeze"),
@@ -78,17 +84,36 @@ class Options:
 
     @property
     def name(self) -> str:
-        """Module name: dynacam_<cam><motor><gear><roller>_<flags>."""
-        code = (self.cam[0] + {"constant": "c", "first": "1", "second": "2"}[self.motor]
-                + {"rigid": "r", "backlash": "b", "squeeze": "s"}[self.gear]
-                + {"bilateral": "b", "contact": "c", "groove": "g", "groove-squeeze": "s"}[self.roller])
-        flags = "".join(c for c, on in (("y", self.shaft_y), ("z", self.shaft_z), ("f", self.cam_friction),
-                                        ("l", self.linkage_friction), ("s", self.spring),
-                                        ("e", self.external)) if on)
+        """Module name: dynacam_<cam><motor><gear><roller>_<flags> (NAME_CODES, NAME_FLAGS)."""
+        code = "".join(NAME_CODES[key][getattr(self, key)] for key in NAME_CODES)
+        flags = "".join(c for c, key in NAME_FLAGS if getattr(self, key))
         return f"dynacam_{code}_{flags or 'n'}"
 
     def items(self) -> tuple:
         return tuple(sorted(asdict(self).items()))
+
+
+NAME_CODES = {"cam": {"radial": "r", "axial": "a"},
+              "motor": {"constant": "c", "first": "1", "second": "2"},
+              "gear": {"rigid": "r", "backlash": "b", "squeeze": "s"},
+              "roller": {"bilateral": "b", "contact": "c", "groove": "g", "groove-squeeze": "s"}}
+"""One letter per choice, in this order, make the first part of a variant's name."""
+NAME_FLAGS = (("y", "shaft_y"), ("z", "shaft_z"), ("f", "cam_friction"),
+              ("l", "linkage_friction"), ("s", "spring"), ("e", "external"))
+"""The letters of the switched-on elements make the second part ('n': none)."""
+
+
+def catalog() -> dict:
+    """The option set as data, for the runtime (generated/catalog.json): every option with its
+    default, its choices (or false/true) and what it is, and the rule that names a variant's
+    module."""
+    options = []
+    for f in fields(Options):
+        choices = list(Options.CHOICES[f.name]) if f.name in Options.CHOICES else [False, True]
+        options.append({"name": f.name, "default": f.default, "choices": choices,
+                        "doc": f.metadata["doc"]})
+    return {"options": options, "name": {"prefix": "dynacam_", "codes": NAME_CODES,
+                                         "flags": [list(f) for f in NAME_FLAGS], "none": "n"}}
 
 
 def _p(name, default, unit, doc, low=0.0, open_low=True, high=float("inf")):

@@ -1,0 +1,170 @@
+"""The rooms and their one-way doors (issue 12, item 2), read from the source.
+
+derive/ (SymPy, Jinja2) -> generated/ -> runtime/ (NumPy, SciPy, the compiled modules); the
+thesis room may import both sides and nothing in the pipeline imports it.  Checked on every
+import statement (module level and inside functions) of every module, with relative imports
+resolved, and on the cimports of the generated Cython.  The one sanctioned crossing is the
+command line's dispatch: camdyn.runtime.cli hands `camdyn derive` to camdyn.derive and
+`camdyn check`, `camdyn laws` to camdyn.thesis, inside those commands' functions only.
+"""
+import ast
+import json
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+ROOMS = ("derive", "generated", "runtime", "thesis")
+DISPATCH = {("runtime/cli.py", "_cmd_derive"): "camdyn.derive",
+            ("runtime/cli.py", "_cmd_check"): "camdyn.thesis",
+            ("runtime/cli.py", "_cmd_laws"): "camdyn.thesis"}
+
+
+def _module_name(path: Path) -> str:
+    rel = path.relative_to(ROOT).with_suffix("")
+    parts = list(rel.parts)
+    if parts[-1] == "__init__":
+        parts.pop()
+    return ".".join(["camdyn", *parts])
+
+
+def imports():
+    """(file, enclosing function or None, imported module) of every import in the rooms."""
+    out = []
+    for room in ROOMS:
+        for path in sorted((ROOT / room).rglob("*.py")):
+            tree = ast.parse(path.read_text(), str(path))
+            me = _module_name(path)
+            package = me if path.name == "__init__.py" else me.rsplit(".", 1)[0]
+
+            def visit(node, func):
+                for child in ast.iter_child_nodes(node):
+                    f = func
+                    if isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                        f = child.name if func is None else func
+                    if isinstance(child, ast.Import):
+                        for a in child.names:
+                            out.append((path, f, a.name))
+                    elif isinstance(child, ast.ImportFrom):
+                        base = child.module or ""
+                        if child.level:
+                            up = package.split(".")
+                            up = up[:len(up) - child.level + 1]
+                            base = ".".join(up + ([base] if base else []))
+                        out.append((path, f, base))
+                        for a in child.names:    # "from camdyn.thesis import checks"
+                            out.append((path, f, f"{base}.{a.name}"))
+                    visit(child, f)
+            visit(tree, None)
+    return out
+
+
+IMPORTS = imports()
+
+
+def _crossings(room, targets):
+    bad = []
+    for path, func, mod in IMPORTS:
+        rel = str(path.relative_to(ROOT))
+        if not rel.startswith(room + "/"):
+            continue
+        for t in targets:
+            if mod == t or mod.startswith(t + "."):
+                if DISPATCH.get((rel, func)) == t:
+                    continue
+                bad.append(f"{rel}:{func or '<module>'} imports {mod}")
+    return bad
+
+
+def test_the_import_census_sees_the_known_crossing():
+    """The census must find the command line's sanctioned dispatch (else it finds nothing)."""
+    seen = {(str(p.relative_to(ROOT)), f, m) for p, f, m in IMPORTS}
+    assert ("runtime/cli.py", "_cmd_check", "camdyn.thesis.commands") in seen
+    assert ("runtime/cli.py", "_cmd_derive", "camdyn.derive.generate") in seen
+    assert len(IMPORTS) > 300
+
+
+def test_derive_never_imports_the_runtime_or_the_thesis():
+    assert _crossings("derive", ("camdyn.runtime", "camdyn.thesis")) == []
+
+
+def test_runtime_never_imports_derive_sympy_or_the_thesis():
+    assert _crossings("runtime", ("camdyn.derive", "camdyn.thesis", "sympy", "jinja2")) == []
+
+
+def test_generated_code_uses_only_the_runtime_abi():
+    """Every generated module cimports from camdyn.runtime and the cam-law library only, and
+    imports no camdyn Python module at all."""
+    bad = []
+    for path in sorted((ROOT / "generated").glob("*.pyx")):
+        for line in path.read_text().splitlines():
+            m = re.match(r"\s*(?:from\s+(\S+)\s+)?c?import\s+(\S+)", line)
+            if not m or line.lstrip().startswith("#"):
+                continue
+            mod = m.group(1) or m.group(2)
+            if mod.startswith("camdyn") and not (mod.startswith("camdyn.runtime.")
+                                                 or mod == "camdyn.generated.camlaws"):
+                bad.append(f"{path.name}: {line.strip()}")
+            if "cimport" not in line and mod.startswith("camdyn"):
+                bad.append(f"{path.name}: {line.strip()}")
+    assert bad == []
+
+
+def test_no_import_cycles_between_modules():
+    """The module-level import graph of the rooms has no cycle (a function-level import is a
+    door opened on use; module-level cycles are the ones that break imports)."""
+    graph = {}
+    names = {_module_name(p) for room in ROOMS for p in (ROOT / room).rglob("*.py")}
+    for path, func, mod in IMPORTS:
+        if func is None and mod in names:
+            graph.setdefault(_module_name(path), set()).add(mod)
+    for start in graph:
+        graph[start].discard(start)
+    state = {}
+
+    def dfs(node, stack):
+        state[node] = 1
+        for nxt in graph.get(node, ()):
+            # a package importing its own submodules is how __init__ files re-export
+            if nxt.startswith(node + "."):
+                continue
+            if state.get(nxt) == 1:
+                raise AssertionError(" -> ".join(stack + [node, nxt]))
+            if state.get(nxt) is None:
+                dfs(nxt, stack + [node])
+        state[node] = 2
+
+    for node in sorted(graph):
+        if node not in state:
+            dfs(node, [])
+
+
+RUNTIME_COMMANDS = {
+    "residual": ["residual", "--model", "camshaft1", "--tau", "0.15", "--fa", "2", "--json"],
+    "beam-follower": ["beam-follower", "--revolutions", "0.05", "--json"],
+    "integrate": ["integrate", "one_dof", "--t-end", "2", "--json"],
+    "run-beam": ["run", "beam_paper", "--quiet", "--out", "{tmp}/beam"],
+    "simulate": ["simulate", "spring_loaded", "--json"],
+    "run-dynacam": ["run", "indexing", "--quiet", "--out", "{tmp}/indexing"],
+    "scenes": ["scenes"],
+}
+
+
+@pytest.mark.parametrize("name", sorted(RUNTIME_COMMANDS))
+def test_a_simulating_command_never_loads_sympy(name, tmp_path):
+    """The command runs in a process of its own; afterwards neither sympy nor camdyn.derive
+    nor camdyn.thesis is among the loaded modules."""
+    args = [a.replace("{tmp}", str(tmp_path)) for a in RUNTIME_COMMANDS[name]]
+    code = ("import json, sys\nfrom camdyn.runtime import cli\n"
+            f"rc = cli.main({args!r})\n"
+            "bad = sorted(m for m in sys.modules if m.split('.')[0] == 'sympy' "
+            "or m.startswith(('camdyn.derive', 'camdyn.thesis')))\n"
+            "print(json.dumps({'rc': rc, 'loaded': bad[:5]}), file=sys.stderr)\n")
+    env = {**os.environ, "MPLBACKEND": "Agg"}
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env,
+                       timeout=300, cwd=tmp_path)
+    assert json.loads(p.stderr.strip().splitlines()[-1]) == {"rc": 0, "loaded": []}, p.stderr
