@@ -1,7 +1,7 @@
 """Rayleigh-beam follower (issue 5): solver checks (item 3) and the paper's results (item 4).
 
 Paper: "Transverse vibration analysis of a translating roller-follower cam using cycloidal
-profile for RDFD motion" (MODELS.md, "The Rayleigh-beam follower").  Model:
+profile for RDFD motion" (cited as "paper (n)"; README, "Rayleigh-beam follower").  Model:
 derive/models/beam.py, generated modules camdyn.generated.beam1..beam6, runtime
 camdyn.runtime.beam.
 
@@ -308,8 +308,8 @@ def test_rigid_limit_kinematics(rigid, default_runs):
     deflection vanishes, max |v_E| = 1.21e-8 m (N = 3) and 9.1e-11 m (N = 1) against 2.193e-4 m
     of the default run, ratios 5.5e-5 and 4e-7 (a static deflection would scale as 1/E),
     asserted < 3e-4; x_E follows d - r(Omega t) within 5.0e-9 m =
-    4.5e-8 d and theta follows Omega t within 3.6e-7 rad = 5.8e-8 of a revolution (MODELS.md:
-    "for a rigid rod theta = Omega t and x_E = d - r(Omega t)"); asserted 1e-6 of d and of
+    4.5e-8 d and theta follows Omega t within 3.6e-7 rad = 5.8e-8 of a revolution (a rigid rod
+    keeps the pin on the follower axis: theta = Omega t, x_E = d - r(Omega t)); asserted 1e-6 of d and of
     2 pi."""
     c = rigid["case"]
     t = rigid["t"]

@@ -1,9 +1,9 @@
 """Geometry of the grooved disk cam with a translating roller follower (issue 5, item 1).
 
 Source: *Transverse Vibration Analysis of a Translating Roller-Follower Cam Using
-Cycloidal Profile for RDFD Motion* (seeds/003), cited as "paper (n)".
+Cycloidal Profile for RDFD Motion*, cited as "paper (n)".
 
-Frame and symbols (MODELS.md, paper (3), (4)): the cam frame is fixed to the cam,
+Frame and symbols (paper (3), (4)): the cam frame is fixed to the cam,
 polar angle ``theta`` (the cam parameter).  The roller centre, i.e. the pitch-curve
 point at ``theta``, is r(theta) (cos theta, sin theta) with r = r_b + r_r + S(theta):
 r_b base-circle radius, r_r roller radius, S the follower displacement.  The
