@@ -70,6 +70,8 @@ bench: build
 	$(BIN)/python bench/run.py
 	$(BIN)/python bench/beam.py
 	$(BIN)/python bench/scene_load.py
+	$(BIN)/python bench/derive_time.py
+	$(BIN)/python bench/derive_seeds.py --seeds 0 random random
 
 figures: build
 	$(BIN)/camdyn run --out out

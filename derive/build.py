@@ -87,6 +87,18 @@ def declaration(args):
     return REGISTRY[args.registered](), f"registered model {args.registered}"
 
 
+def _provenance(args) -> str:
+    """The file the declaration comes from, for the generated file's provenance line."""
+    if args.file:
+        return str(args.file)
+    if args.dynacam:
+        return "camdyn/derive/models/dynacam.py"
+    from .codegen import source_of
+    from .models import REGISTRY
+
+    return source_of(REGISTRY[args.registered])
+
+
 def _stage_headers(include: Path) -> None:
     """camdyn/runtime/*.pxd, *.pxi and camdyn/generated/camlaws.pxd under ``include``, the
     paths the generated code cimports and includes."""
@@ -170,7 +182,7 @@ def main(argv=None) -> int:
         from .codegen import render_model
 
         try:
-            pyx = render_model(model)
+            pyx = render_model(model, _provenance(args))
         except Exception as exc:    # the derivation's refusal, in one line
             raise BuildError(f"{source}: the derivation refused the model: "
                              f"{type(exc).__name__}: {exc}") from None

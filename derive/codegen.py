@@ -79,6 +79,7 @@ class _Plain:
     orders: list      # highest derivative order used per instance
     cam: dict         # cam function atom -> plain symbol
     states: set       # plain symbols of q, q', z (state dependence of cam arguments)
+    time_functions: dict  # q'' -> Xdd, q' -> Xd, q -> X, z -> z (built once: costly on many q)
 
     def __call__(self, expr):
         m, t = self.model, self.model.time
@@ -88,7 +89,7 @@ class _Plain:
         if m.first_order:
             expr = expr.xreplace({z(t).diff(t): z.rate for z in m.first_order})
         expr = expr.xreplace(self.cam) if self.cam else expr
-        return expr.xreplace(_time_functions(m))
+        return expr.xreplace(self.time_functions)
 
 
 def _time_functions(m: Model) -> dict:
@@ -114,7 +115,7 @@ def _plainer(m: Model, exprs) -> _Plain:
     for e in exprs:
         e = sp.sympify(e)
         if rates:
-            e = e.subs(rates)
+            e = e.xreplace(rates)
         found |= e.atoms(CamFunction)
     # one instance per family and argument; arguments are compared expanded, because
     # Lagrange's equations may have expanded (beta - beta_0)/beta_m in some terms only
@@ -141,7 +142,7 @@ def _plainer(m: Model, exprs) -> _Plain:
         names[mode.symbol] = f"ctx.mode[{ncam + j}]"
     states = {v for k, v in tf.items() if not (isinstance(k, sp.Derivative) and k.derivative_count == 2)}
     return _Plain(m, names, [(key[0], keyed[key][0]) for key in order],
-                  [keyed[key][1] for key in order], cam, states)
+                  [keyed[key][1] for key in order], cam, states, tf)
 
 
 def _time_affine(arg, t, states: set):
@@ -166,6 +167,18 @@ def _armed(event, modes: dict):
     return sp.And(*conds) if conds else sp.true
 
 
+def _stiffness(m: Model, f: sp.Matrix) -> sp.Matrix:
+    """K = -df/dq, the coordinates and their rates held as plain symbols while differentiating.
+
+    The same matrix as ``-f.jacobian(m.q)`` (SymPy treats q' as independent of q there too),
+    but SymPy differentiates with respect to a function q(t) by swapping it for a dummy
+    symbol in every term, which takes more than half of the time on the large squeeze-film
+    equations of DYNACAM (issue 12, item 7)."""
+    tf = _time_functions(m)
+    back = {v: k for k, v in tf.items()}
+    return (-f.xreplace(tf).jacobian([tf[q] for q in m.q])).xreplace(back)
+
+
 MAX_VARIANT_INSTANCES = 3  # 2^3 dwell variants at most; beyond that, one general rhs
 
 
@@ -178,11 +191,10 @@ def model_context(eq: Equations) -> dict:
     n, nz = len(m.coordinates), len(m.first_order)
     modes = {mode.name: mode for mode in m.modes}
     qdd_syms = [sp.Symbol(c.name + "dd", real=True) for c in m.coordinates]
-    q_funcs = m.q
     # the frozen stiffness K = -df/dq serves smooth models; with modes (contact, friction)
     # there is no single linearization, and K is left undefined (NaN)
     smooth = not m.modes
-    K_raw = (-eq.f.jacobian(q_funcs)) if n and smooth else sp.zeros(0, 0)
+    K_raw = _stiffness(m, eq.f) if n and smooth else sp.zeros(0, 0)
     event_exprs = []
     for e in m.events:
         event_exprs.append(e.g)
@@ -337,12 +349,21 @@ def _state_index(m: Model, name: str) -> int:
     return names.index(name)
 
 
-def render_model(model: Model) -> str:
+def source_of(build) -> str:
+    """The source file of a model's build function, as the provenance line of its generated
+    file names it (``camdyn/derive/models/dynacam.py`` for every DYNACAM variant)."""
+    module = getattr(build, "func", build).__module__
+    return module.replace(".", "/") + ".py"
+
+
+def render_model(model: Model, source: str) -> str:
+    """The generated module of ``model``; ``source`` is the file its declaration comes from
+    (the provenance line of the preamble)."""
     if model.constraints:
         from .dae import render_constrained
 
-        return render_constrained(model)
-    return _env().get_template("model.pyx.j2").render(**model_context(derive(model)))
+        return render_constrained(model, source)
+    return _env().get_template("model.pyx.j2").render(**model_context(derive(model)), source=source)
 
 
 # -- cam-law library ------------------------------------------------------------
@@ -404,28 +425,4 @@ def render_registered(name: str) -> str:
     model = REGISTRY[name]()
     if model.name != name:
         raise ValueError(f"registry key {name!r} differs from model name {model.name!r}")
-    return render_model(model)
-
-
-def render_all(only=None, workers: int | None = None) -> dict[str, str]:
-    """File name -> text of everything that belongs in ``generated/`` (the cam-law
-    library and every registered model, or the models named in ``only``).
-
-    Models are derived in parallel processes (the large DYNACAM variants take tens of
-    seconds each); every file depends on its model only, so the result is the same.
-    """
-    import os
-    from concurrent.futures import ProcessPoolExecutor
-
-    from .models import REGISTRY
-
-    files = {**render_camlaws(), **render_catalog()}
-    names = sorted(REGISTRY) if only is None else sorted(only)
-    workers = workers or min(len(names), os.cpu_count() or 1)
-    if workers > 1:
-        with ProcessPoolExecutor(max_workers=workers) as pool:
-            texts = list(pool.map(render_registered, names))
-    else:
-        texts = [render_registered(n) for n in names]
-    files.update({f"{n}.pyx": text for n, text in zip(names, texts)})
-    return files
+    return render_model(model, source_of(REGISTRY[name]))

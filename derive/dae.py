@@ -142,6 +142,6 @@ def constrained_context(eq: Equations) -> dict:
     }
 
 
-def render_constrained(model: Model) -> str:
+def render_constrained(model: Model, source: str) -> str:
     ctx = constrained_context(derive(model))
-    return _env().get_template("constrained.pyx.j2").render(**ctx)
+    return _env().get_template("constrained.pyx.j2").render(**ctx, source=source)

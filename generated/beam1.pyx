@@ -1,7 +1,9 @@
 # cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
 #
-# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py (camdyn/derive/dae.py);
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+# Derivation key: sha256:fbc5b69d0de7c0bcb43026f0b45176feec44391ccacea81ecb56871b49123692
+# Text hash: sha256:a689e4267de71005de7e040d50adb37c280e04a781835b324eeba0a625eb37ed
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20); MODELS.md 'The Rayleigh-beam follower')
 # Source hash: sha256:26b224444cefa66d709774ee9ebf33ce2848bba62b150b7ef9d19ac10d9dad40

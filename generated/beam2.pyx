@@ -1,7 +1,9 @@
 # cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
 #
-# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py (camdyn/derive/dae.py);
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+# Derivation key: sha256:020b2cfb9cd0d0451db15b449177a52f58243d556e1e9e18484852ecd516bd0d
+# Text hash: sha256:2018596176564b225fc0c4c36e9f77b2cb5ea4e5e0e983cba5b1f82ad9cc446d
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20); MODELS.md 'The Rayleigh-beam follower')
 # Source hash: sha256:83c45660398366ea1cb09f6effc8558624fdf8d8fae6d0fbcf00957d1ae29f83

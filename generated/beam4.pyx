@@ -1,7 +1,9 @@
 # cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
 #
-# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py (camdyn/derive/dae.py);
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+# Derivation key: sha256:7f03a290355fec1c1dd9ef49877242a8b2e8b9e8a72103ea2473f693527de747
+# Text hash: sha256:cd5ba1b84c98e59fa16f3a918b67d8e37fd8c2100eba8b58e0004ea710d5c75e
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20); MODELS.md 'The Rayleigh-beam follower')
 # Source hash: sha256:93e0de9ea0da0fe58fbf68b3a50bc55c309bec06ccdfff483d37533bc8bb26a4

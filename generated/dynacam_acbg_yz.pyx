@@ -1,7 +1,9 @@
 # cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
 #
-# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam_acbg_yz.py;
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+# Derivation key: sha256:f20d4a151edf378a29e335c9cc5c41dc89a10b39f1d17430fa88c1b0746f8cef
+# Text hash: sha256:f88b0307812079ecc6b0a6cd59e5b72e1c631a922d108535629255d7c481af63
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:347f5e213ab558582dc4001d4fefee5ca7cff535c2a92098389a5ca7d391cd67

@@ -1,7 +1,9 @@
 # cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
 #
-# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam_acrb_yz.py;
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+# Derivation key: sha256:a82e47caf0dccf091fd1c60f2f91662a1627246d7872ffa67a885f2c156cc23c
+# Text hash: sha256:c5b07d5c677ec417b73b20b493b74de54707cded351e3b2b63801dd95023a991
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:ae168ebf14a2966d0ec160ac887db98fecd7ba159cd23b280a94c2f410dff6cd

@@ -1,7 +1,9 @@
 # cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
 #
-# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam_rcrb_n.py;
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+# Derivation key: sha256:194493a963127fcad7f16d3d5c8b22cd9d3e6ed65ddcb2c88b3f93da450cfbaa
+# Text hash: sha256:a3a878af99703c734fd9cc9c440dba066adbfee2483a0db785b811ca17ca7480
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:fdeb028669c58701329cc774e76d6089faff93726321283bdb9ab572fe71789a

@@ -1,7 +1,9 @@
 # cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
 #
-# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam_rcrc_yzfls.py;
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+# Derivation key: sha256:f7af514d89d8b95e86d5dfe67b67022093c0fae942791e6ad7631802be20360b
+# Text hash: sha256:7b1de366033ce84f80c62b8b25f8f02e42a418c407eb0c70eaf6352c3c725f59
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:38f51eea7b4df33419d505fefe9fecae0c92e3d2738852226abd4a73c87fa423

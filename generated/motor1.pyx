@@ -1,7 +1,9 @@
 # cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
 #
-# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor1.py;
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+# Derivation key: sha256:816572612c4886de049e8d53975c63c799e085c12bf0c30bb90fbbd9b37d34ed
+# Text hash: sha256:73c491079076f24de6bab2b545a7dd65a26fca5036c8befe1082c48eef051852
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:d2982da34d717e81e23fa41761bafe1a5697842fe6b4ba3f99fe71c7426e0cf7

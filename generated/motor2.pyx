@@ -1,7 +1,9 @@
 # cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
 #
-# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor2.py;
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+# Derivation key: sha256:ce9b45a644ef3dfd949939d688942fdb37817fa9f870dfb7c57c50212a8bb7dd
+# Text hash: sha256:a0511dbcaaea3988457f76947f1f4f3e5b0dd20b9f44b0cf55c090e214fe93fa
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2c1f555639a7d49b92ea7d665e9a0369046a7aa9f18b7ac380d975c265d508a4

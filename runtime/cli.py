@@ -48,9 +48,9 @@ def _cmd_derive(args) -> int:
     only = args.only or None
     try:
         if args.check:
-            problems = generate.check(out, only)
+            problems = generate.check(out, only, full=args.full)
         else:
-            changed = generate.write(out, only)
+            changed = generate.write(out, only, full=args.full)
     except KeyError as exc:
         return fail("camdyn derive", f"argument --only: {exc.args[0]}")
     if args.check:
@@ -555,6 +555,8 @@ def build_parser() -> argparse.ArgumentParser:
     d.add_argument("--check", action="store_true", help="exit 1 when generated/ is stale")
     d.add_argument("--out", help="target folder (default: generated/ of this checkout)")
     d.add_argument("--only", nargs="+", metavar="MODEL", help="only these registered models")
+    d.add_argument("--full", action="store_true",
+                   help="derive every file again, also those whose recorded derivation key is current")
     d.set_defaults(func=_cmd_derive)
 
     r = sub.add_parser("residual", help="residual vibration after one rise (thesis ch. 3-5)")

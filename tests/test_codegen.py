@@ -111,7 +111,9 @@ def test_generated_equals_lambdify(model_name, law_key, rng):
 
 
 def test_derive_check_passes_on_this_checkout():
-    """`camdyn derive --check` regenerates in memory and finds generated/ up to date."""
+    """`camdyn derive --check` finds generated/ up to date: every file records the derivation
+    key of the current declarations and code and is intact (the key-less full comparison is
+    `--full`; the tests below show what each catches)."""
     proc = subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", "derive", "--check"],
                           cwd=ROOT, capture_output=True, text=True, timeout=600)
     assert proc.returncode == 0, proc.stderr
@@ -122,50 +124,164 @@ SMALL = ["camshaft1", "camshaft2", "motor2", "dynacam_rcrb_n"]
 
 
 def test_regeneration_is_byte_identical_under_another_hash_seed(tmp_path):
-    """Same models, other PYTHONHASHSEED: the same bytes (no set-order leaks into the files).
-    The full registry is covered by the --check test above; here a representative subset."""
+    """Same models, other PYTHONHASHSEED: the same bytes, derivation keys included (no
+    set-order leaks into the files or the keys).  The other models are derived under the
+    seed of whoever regenerated generated/; bench/derive_seeds.py compares all of them."""
     env = dict(os.environ, PYTHONHASHSEED="12345")
     proc = subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", "derive", "--out", str(tmp_path),
                            "--only", *SMALL], cwd=ROOT, capture_output=True, text=True, timeout=600, env=env)
     assert proc.returncode == 0, proc.stderr
-    for name in ["camlaws.pxd", "camlaws.pyx"] + [f"{m}.pyx" for m in SMALL]:
+    for name in ["camlaws.pxd", "camlaws.pyx", "catalog.json"] + [f"{m}.pyx" for m in SMALL]:
         assert (tmp_path / name).read_bytes() == (ROOT / "generated" / name).read_bytes(), name
 
 
-def test_check_reports_stale_missing_and_extra_files(tmp_path):
+def _copy_generated(tmp_path, models) -> Path:
     out = tmp_path / "generated"
-    keep = ["camlaws.pxd", "camlaws.pyx", "camshaft1.pyx", "one_dof.pyx"]
     out.mkdir()
-    for name in keep:
+    for name in ["camlaws.pxd", "camlaws.pyx", "catalog.json"] + [f"{m}.pyx" for m in models]:
         shutil.copyfile(ROOT / "generated" / name, out / name)
+    return out
+
+
+@pytest.fixture
+def derived(monkeypatch):
+    """Names of the units derived (not merely key-checked) by generate.check/write, which
+    run in this process (workers=1) so that the spy and monkeypatched declarations hold."""
+    calls = []
+    render_model, render_camlaws = codegen.render_model, codegen.render_camlaws
+
+    def spy_model(model, source):
+        calls.append(model.name)
+        return render_model(model, source)
+
+    def spy_camlaws():
+        calls.append("camlaws")
+        # the same text every time: derived once per test (it takes seconds)
+        if not memo:
+            memo.append(render_camlaws())
+        return dict(memo[0])
+
+    memo = []
+
+    monkeypatch.setattr(codegen, "render_model", spy_model)
+    monkeypatch.setattr(codegen, "render_camlaws", spy_camlaws)
+    return calls
+
+
+def test_check_trusts_current_files_and_finds_a_hand_edit(tmp_path, derived):
+    """Files that record the current key and are intact are not derived again; a hand edit
+    anywhere in a file (its body, or its recorded key) changes its text hash, and the check
+    derives that file and shows the diff."""
     only = ["camshaft1", "one_dof"]
-    assert generate.check(out, only) == []
+    out = _copy_generated(tmp_path, only)
+    assert generate.check(out, only, workers=1) == []
+    assert derived == []
     f = out / "camshaft1.pyx"
     f.write_text(f.read_text().replace("_k0", "_k9", 1))
-    assert "stale: camshaft1.pyx" in generate.check(out, only)
+    problems = generate.check(out, only, workers=1)
+    assert problems[0] == "stale: camshaft1.pyx: edited after generation (its text hash differs)"
+    assert any(line.strip().startswith("-") and "_k9" in line for line in problems)
+    assert derived == ["camshaft1"]
+    # a recorded key edited to match other inputs is an edit as well
+    key, _ = generate.read_stamp((ROOT / "generated" / "camshaft1.pyx").read_text())
+    f.write_text((ROOT / "generated" / "camshaft1.pyx").read_text().replace(key, "sha256:" + "0" * 64))
+    assert generate.read_stamp(f.read_text()) == ("sha256:" + "0" * 64, False)
+    assert generate.check(out, only, workers=1)[0].startswith("stale: camshaft1.pyx: edited")
+    # a file without the stamp (hand-written, or from before the keys)
+    lines = (ROOT / "generated" / "one_dof.pyx").read_text().splitlines(keepends=True)
+    (out / "one_dof.pyx").write_text("".join(l for l in lines if not l.startswith(
+        ("# Derivation key:", "# Text hash:"))))
+    assert "stale: one_dof.pyx: no derivation key (written by hand or by an older camdyn)" in \
+        generate.check(out, only, workers=1)
+
+
+def test_check_reports_missing_and_write_repairs(tmp_path):
+    only = ["camshaft1", "one_dof"]
+    out = _copy_generated(tmp_path, only)
+    f = out / "camshaft1.pyx"
+    f.write_text(f.read_text().replace("_k0", "_k9", 1))
     (out / "one_dof.pyx").unlink()
     assert generate.check(out, only) == ["missing: one_dof.pyx"]
-    # writing repairs it
-    generate.write(out, only)
+    assert generate.write(out, only) == ["camshaft1.pyx", "one_dof.pyx"]
     assert generate.check(out, only) == []
-    # a full check names files that no model generates, without rendering anything when
-    # the registry's files are missing
+    for name in ("camshaft1.pyx", "one_dof.pyx"):
+        assert (out / name).read_bytes() == (ROOT / "generated" / name).read_bytes()
+    # a check over the whole registry reports the missing files without deriving anything
     (out / "orphan.pyx").write_text("# not from any model\n")
-    problems = generate.check(out)
-    assert any(p.startswith("missing: dynacam_") for p in problems)
+    assert any(p.startswith("missing: dynacam_") for p in generate.check(out))
 
 
-def test_check_names_files_no_model_generates(tmp_path, monkeypatch):
-    """A full check reports a stray file (the rendering itself replaced by the files on disk,
-    which the --check test compares for real)."""
+def test_editing_a_declaration_rederives_that_model_only(tmp_path, derived, monkeypatch):
+    """A changed declaration changes its model's key: check reports that file stale, write
+    derives it (and nothing else) and records the new key."""
+    import dataclasses
+
+    only = ["camshaft1", "one_dof"]
+    out = _copy_generated(tmp_path, only)
+    build = REGISTRY["camshaft1"]
+    monkeypatch.setitem(REGISTRY, "camshaft1", lambda: dataclasses.replace(
+        build(), title=build().title + " (edited)"))
+    problems = generate.check(out, only, workers=1)
+    assert problems[0] == ("stale: camshaft1.pyx: derived from other inputs than the current "
+                           "ones (derivation key differs)")
+    assert any("(edited)" in line for line in problems)
+    assert derived == ["camshaft1"]
+    derived.clear()
+    assert generate.write(out, only, workers=1) == ["camshaft1.pyx"]
+    assert derived == ["camshaft1"]
+    derived.clear()
+    assert generate.check(out, only, workers=1) == []
+    assert derived == []
+
+
+def test_full_derives_everything_and_sees_what_the_key_does_not(tmp_path, derived, monkeypatch):
+    """--full derives every file whatever its key: a change the key cannot see (here the
+    printer replaced behind its back) passes the keyed check and fails the full one."""
+    only = ["camshaft1"]
+    out = _copy_generated(tmp_path, only)
+    assert generate.check(out, only, full=True, workers=1) == []
+    assert sorted(derived) == ["camlaws", "camshaft1"]
+    render = codegen.render_model
+    monkeypatch.setattr(codegen, "render_model", lambda m, s: render(m, s).replace("_k0", "_k9"))
+    assert generate.check(out, only, workers=1) == []
+    assert generate.check(out, only, full=True, workers=1)[0] == (
+        "stale: camshaft1.pyx: differs from a fresh derivation of the same inputs")
+
+
+def test_derivation_key_covers_code_templates_and_declaration(monkeypatch, tmp_path):
+    """The key changes with the declaration, its source file, with every file of the derive code that prints
+    the model, and with the SymPy version; not with the hash seed (the byte-identity test)."""
+    model, here = REGISTRY["camshaft1"](), "camdyn/derive/models/camshaft1.py"
+    key = generate.model_key(model, here)
+    assert generate.model_key(REGISTRY["camshaft1"](), here) == key
+    assert generate.model_key(REGISTRY["one_dof"](), "camdyn/derive/models/one_dof.py") != key
+    # the provenance line is part of the text: a declaration moved to another file re-derives
+    assert generate.model_key(model, "camdyn/derive/models/other.py") != key
+    digest = generate._code_digest("model")
+    assert set(digest["code"]) >= {"codegen.py", "lagrange.py", "printer.py", "optimize.py", "model.py",
+                                   "templates/model.pyx.j2", "templates/preamble.j2"}
+    assert digest["sympy"] == sp.__version__
+    assert "dae.py" in generate._code_digest("constrained")["code"]
+    assert "camlaws.py" in generate._code_digest("camlaws")["code"]
+    derive_dir = tmp_path / "derive"
+    shutil.copytree(generate.DERIVE, derive_dir, ignore=shutil.ignore_patterns("__pycache__", "models"))
+    (derive_dir / "printer.py").write_text((derive_dir / "printer.py").read_text() + "\n# edited\n")
+    monkeypatch.setattr(generate, "DERIVE", derive_dir)
+    generate._code_digest.cache_clear()
+    try:
+        assert generate.model_key(model, here) != key
+    finally:
+        generate._code_digest.cache_clear()
+
+
+def test_check_names_files_no_model_generates(tmp_path):
+    """A check over the whole registry reports a stray file, and write removes it (all files
+    current: nothing is derived, only keyed)."""
     out = tmp_path / "generated"
     shutil.copytree(ROOT / "generated", out, ignore=shutil.ignore_patterns("*.so", "*.c", "__pycache__"))
-    on_disk = {p.name: p.read_text() for p in out.iterdir() if p.suffix in (".pyx", ".pxd")}
-    monkeypatch.setattr(generate, "render_all", lambda only=None: dict(on_disk))
-    assert generate.check(out) == []
     (out / "orphan.pyx").write_text("# not from any model\n")
     assert generate.check(out) == ["not generated by any model: orphan.pyx"]
-    generate.write(out)
+    assert generate.write(out) == ["orphan.pyx (removed)"]
     assert not (out / "orphan.pyx").exists()
 
 

@@ -3,6 +3,8 @@
 Each entry maps the generated module name to a function returning the
 :class:`~camdyn.derive.model.Model` declaration.
 """
+from functools import partial
+
 from . import beam, camshaft1, camshaft2, chain3, dynacam, motor, one_dof
 
 REGISTRY = {
@@ -35,9 +37,9 @@ DYNACAM_VARIANTS = (
 compare them with.  A scene whose options are not here is refused with the list."""
 
 for _opts in DYNACAM_VARIANTS:
-    REGISTRY[_opts.name] = (lambda o: lambda: dynacam.build(o))(_opts)
+    REGISTRY[_opts.name] = partial(dynacam.build, _opts)
 
 for _n in range(1, beam.N_MAX + 1):
-    REGISTRY[f"beam{_n}"] = (lambda n: lambda: beam.build(n))(_n)
+    REGISTRY[f"beam{_n}"] = partial(beam.build, _n)
 """The Rayleigh-beam follower with N = 1..6 assumed modes (issue 5: the user picks N)."""
 

@@ -1,0 +1,99 @@
+"""What regeneration costs a user (issue 12, item 7): `camdyn derive --check` with nothing
+changed, and `camdyn derive` after one model's declaration was edited.  Goal: both under 30 s.
+
+Each figure is the median of ``--repeat`` runs, each in a fresh process (imports included):
+  check        `camdyn derive --check` on this checkout (every file's recorded key compared
+               with the key of the current inputs; nothing derived);
+  check-full   `camdyn derive --check --full` (everything derived again; the old check), once;
+  edit MODEL   a copy of generated/, MODEL's declaration edited (its title), `derive` over the
+               whole registry into the copy: that model alone is derived.  Done for the
+               costliest model (the DYNACAM variant with squeeze film and backlash) and a
+               small one.
+Written to BENCHMARKS-derive.md.
+
+    python bench/derive_time.py [--repeat 3] [--no-full]
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+GOAL = 30.0
+
+_EDIT = r"""
+import dataclasses, sys, time
+from pathlib import Path
+from camdyn.derive import generate
+from camdyn.derive.models import REGISTRY
+name, out = sys.argv[1], Path(sys.argv[2])
+build = REGISTRY[name]
+REGISTRY[name] = lambda: dataclasses.replace(build(), title=build().title + " (edited)")
+changed = generate.write(out)
+assert changed == [name + ".pyx"], changed
+"""
+
+
+def _timed(cmd, env=None) -> float:
+    t0 = time.perf_counter()
+    proc = subprocess.run(cmd, cwd=ROOT, capture_output=True, text=True, env=env)
+    if proc.returncode:
+        raise SystemExit(f"derive_time: {' '.join(map(str, cmd))} failed:\n{proc.stderr}")
+    return time.perf_counter() - t0
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--no-full", action="store_true", help="skip the full check (about a minute)")
+    ap.add_argument("--models", nargs="+", default=["dynacam_acbg_yz", "camshaft1"])
+    ap.add_argument("--out", type=Path, default=ROOT / "BENCHMARKS-derive.md")
+    args = ap.parse_args(argv)
+    py = sys.executable
+    rows = []
+
+    def row(what, runs):
+        med = statistics.median(runs)
+        rows.append((what, med, min(runs), max(runs), len(runs)))
+        print(f"  {what:32s} median {med:6.1f} s  ({min(runs):.1f}-{max(runs):.1f}, "
+              f"{len(runs)} runs)", file=sys.stderr)
+
+    row("derive --check (nothing changed)",
+        [_timed([py, "-m", "camdyn.runtime.cli", "derive", "--check"]) for _ in range(args.repeat)])
+    if not args.no_full:
+        row("derive --check --full", [_timed([py, "-m", "camdyn.runtime.cli", "derive", "--check",
+                                              "--full"])])
+    for model in args.models:
+        runs = []
+        for _ in range(args.repeat):
+            with tempfile.TemporaryDirectory() as tmp:
+                out = Path(tmp) / "generated"
+                shutil.copytree(ROOT / "generated", out,
+                                ignore=shutil.ignore_patterns("*.so", "*.c", "__pycache__"))
+                runs.append(_timed([py, "-c", _EDIT, model, str(out)]))
+        row(f"derive after editing {model}", runs)
+
+    cpus = os.cpu_count()
+    lines = ["# Regeneration time (`python bench/derive_time.py`, issue 12, item 7)", "",
+             f"Wall seconds on this machine ({cpus} CPUs), each run a fresh process; goal: "
+             f"under {GOAL:g} s for the check and for a one-model edit.", "",
+             "| run | median s | min | max | runs | goal met |", "|---|---:|---:|---:|---:|---|"]
+    for what, med, lo, hi, n in rows:
+        goal = "" if "full" in what else ("yes" if med < GOAL else "**no**")
+        lines.append(f"| {what} | {med:.1f} | {lo:.1f} | {hi:.1f} | {n} | {goal} |")
+    lines += ["", "Before issue 12 every check derived every model: 83 s on two cores, and "
+              "up to 17+ min under an unlucky PYTHONHASHSEED (see `bench/derive_seeds.py`)."]
+    args.out.write_text("\n".join(lines) + "\n")
+    print(f"wrote {args.out}", file=sys.stderr)
+    return 0 if all(med < GOAL for what, med, *_ in rows if "full" not in what) else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
