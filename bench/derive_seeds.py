@@ -27,9 +27,9 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 
-# the models that took longest to derive before issue 12 (and dynacam_acbg_yz, the variant
+# the models that took longest to derive before issue 12 (and dynacam_axial_ideal_backlash_groove_shafty_shaftz, the variant
 # whose derivation ran away under some seeds)
-SLOW = ("dynacam_acbg_yz", "dynacam_acss_yz", "dynacam_rcrc_yzfls", "dynacam_r2rc_yzs",
+SLOW = ("dynacam_axial_ideal_backlash_groove_shafty_shaftz", "dynacam_axial_ideal_gearsqueeze_groovesqueeze_shafty_shaftz", "dynacam_radial_ideal_rigidgear_contact_shafty_shaftz_camfriction_linkfriction_spring", "dynacam_radial_motor2_rigidgear_contact_shafty_shaftz_spring",
         "beam6", "camlaws")
 
 _CHILD = r"""

@@ -53,7 +53,7 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--no-full", action="store_true", help="skip the full check (about a minute)")
-    ap.add_argument("--models", nargs="+", default=["dynacam_acbg_yz", "camshaft1"])
+    ap.add_argument("--models", nargs="+", default=["dynacam_axial_ideal_backlash_groove_shafty_shaftz", "camshaft1"])
     ap.add_argument("--out", type=Path, default=ROOT / "BENCHMARKS-derive.md")
     args = ap.parse_args(argv)
     py = sys.executable

@@ -182,14 +182,94 @@ def _stiffness(m: Model, f: sp.Matrix) -> sp.Matrix:
 MAX_VARIANT_INSTANCES = 3  # 2^3 dwell variants at most; beyond that, one general rhs
 
 
+def _rhs_expressions(m: Model, eq: Equations, plain: _Plain):
+    """(expressions of the right-hand side, whether M is diagonal): q'' divided out
+    symbolically for a diagonal M, else the entries of M and f for a solve, then z'."""
+    n = len(m.coordinates)
+    M = eq.M.applyfunc(plain)
+    f = eq.f.applyfunc(plain)
+    rates = [plain(z.rate) for z in m.first_order]
+    if M.is_diagonal():
+        acc = [f[i] / M[i, i] for i in range(n)]
+        acc = [sp.simplify(e) if M[i, i] != 1 and not e.has(sp.Piecewise) else e
+               for i, e in enumerate(acc)]
+        return acc + rates, True
+    return list(M) + list(f) + rates, False
+
+
+def _event_entries(m: Model, plain: _Plain, printer: CythonPrinter) -> list:
+    """The model's own events, with their arming condition and branches (modes, resets)."""
+    modes = {mode.name: mode for mode in m.modes}
+    events = []
+    for e in m.events:
+        branches = []
+        for b in e.branches:
+            branches.append({
+                "condition": printer.doprint(plain(sp.sympify(b.condition))),
+                "modes": [(len(plain.instances) + list(modes).index(k), modes[k].index(v), k, v)
+                          for k, v in sorted(b.modes.items())],
+                "resets": [(_state_index(m, k), printer.doprint(plain(v)), k)
+                           for k, v in sorted(b.resets.items())],
+            })
+        events.append({"kind": "model", "name": e.name, "direction": e.direction,
+                       "g": printer.doprint(plain(e.g)),
+                       "armed": printer.doprint(_armed(e, modes)), "branches": branches})
+    return events
+
+
+def _cam_instances(m: Model, plain: _Plain, printer: CythonPrinter) -> tuple[list, list]:
+    """(cam-input instances, their breakpoint events): an instance whose argument is not
+    affine in time is driven by a state, and its segment ends are located as events."""
+    instances, events = [], []
+    families = sorted({fam for fam, _ in plain.instances})
+    for i, ((family, arg), order) in enumerate(zip(plain.instances, plain.orders)):
+        affine = _time_affine(arg, m.time, plain.states)
+        inst = {"index": i, "bit": 1 << i, "family": family, "family_index": families.index(family),
+                "arg": printer.doprint(arg), "arg_text": str(arg), "order": order,
+                "affine": None if affine is None else [printer.doprint(affine[0]),
+                                                       printer.doprint(affine[1])]}
+        instances.append(inst)
+        if affine is None:
+            for direction, side in ((1, "hi"), (-1, "lo")):
+                events.append({"kind": "cam", "name": f"cam{i}_{side}", "direction": direction,
+                               "instance": inst, "side": side})
+    return instances, events
+
+
+def _model_manifest(m: Model, eq: Equations, instances: list, events: list) -> dict:
+    """The manifest the runtime reads (states, parameters, outputs, cam inputs, modes,
+    events, options) with the source hash of the equations it was generated from."""
+    manifest = {
+        **manifest_common(m),
+        "states": _state_entries(m) + [{"name": z.name, "unit": z.unit, "scale": z.scale, "doc": z.doc,
+                                        "initial": _num(z.initial)} for z in m.first_order],
+        "outputs": [{"name": o.name, "unit": o.unit, "doc": o.doc} for o in m.outputs],
+        "cam_families": sorted({d["family"] for d in instances}),
+        "cam_instances": [{"family": d["family"], "argument": d["arg_text"],
+                           "time_affine": d["affine"] is not None} for d in instances],
+        "modes": [{"name": mode.name, "values": list(mode.values), "doc": mode.doc,
+                   "initial": mode.initial or mode.values[0]} for mode in m.modes],
+        "events": [e["name"] for e in events],
+        "residual": None if m.residual is None else {
+            "error": m.residual.error, "acceleration": m.residual.acceleration,
+            "rise_end": m.residual.rise_end, "rise_state": m.residual.rise_state},
+        "options": [list(o) if isinstance(o, tuple) else o for o in m.options],
+    }
+    canonical = json.dumps({"M": sp.srepr(eq.M), "f": sp.srepr(eq.f), "Phi": sp.srepr(eq.Phi),
+                            "rates": [sp.srepr(z.rate) for z in m.first_order],
+                            "events": [sp.srepr(e.g) for e in m.events],
+                            "outputs": [sp.srepr(o.expr) for o in m.outputs],
+                            "manifest": manifest}, sort_keys=True)
+    manifest["source_hash"] = "sha256:" + hashlib.sha256(canonical.encode()).hexdigest()
+    return manifest
+
+
 def model_context(eq: Equations) -> dict:
     """Everything the model template needs, printed as Cython strings."""
     m = eq.model
-    t = m.time
     if eq.Phi.rows:
         raise NotImplementedError(f"{m.name}: constrained models are generated by the DAE layer")
     n, nz = len(m.coordinates), len(m.first_order)
-    modes = {mode.name: mode for mode in m.modes}
     qdd_syms = [sp.Symbol(c.name + "dd", real=True) for c in m.coordinates]
     # the frozen stiffness K = -df/dq serves smooth models; with modes (contact, friction)
     # there is no single linearization, and K is left undefined (NaN)
@@ -204,19 +284,7 @@ def model_context(eq: Equations) -> dict:
                  + [o.expr for o in m.outputs] + event_exprs)
     plain = _plainer(m, all_exprs)
 
-    M = eq.M.applyfunc(plain)
-    f = eq.f.applyfunc(plain)
-    rates = [plain(z.rate) for z in m.first_order]
-    diagonal = M.is_diagonal()
-
-    # right-hand side: q'' from M q'' = f (diagonal M: divided out symbolically), then z'
-    if diagonal:
-        acc = [f[i] / M[i, i] for i in range(n)]
-        acc = [sp.simplify(e) if M[i, i] != 1 and not e.has(sp.Piecewise) else e
-               for i, e in enumerate(acc)]
-        rhs_exprs = acc + rates
-    else:
-        rhs_exprs = list(M) + list(f) + rates
+    rhs_exprs, diagonal = _rhs_expressions(m, eq, plain)
     cam_syms = [[sp.Symbol(f"_cam{i}_{k}", real=True) for k in range(order + 1)]
                 for i, order in enumerate(plain.orders)]
     specialise = 0 < len(plain.instances) <= MAX_VARIANT_INSTANCES
@@ -242,66 +310,20 @@ def model_context(eq: Equations) -> dict:
     used |= u
     const_lines, const_code, u = cse_block([e for _, e in consts.items], names, prefix="_c")
     used |= u
-    ms_lines, ms_code, u = cse_block(list(M) + list(K_raw.applyfunc(plain)), names, prefix="_m")
+    ms_lines, ms_code, u = cse_block(list(eq.M.applyfunc(plain)) + list(K_raw.applyfunc(plain)),
+                                     names, prefix="_m")
     if not smooth:
         ms_code += ["0.0 / 0.0"] * (n * n)
     used |= u
 
     # events: the model's own, then the breakpoints of cam inputs driven by a state
     printer = CythonPrinter(names)
-    events = []
-    for e in m.events:
-        branches = []
-        for b in e.branches:
-            branches.append({
-                "condition": printer.doprint(plain(sp.sympify(b.condition))),
-                "modes": [(len(plain.instances) + list(modes).index(k), modes[k].index(v), k, v)
-                          for k, v in sorted(b.modes.items())],
-                "resets": [(_state_index(m, k), printer.doprint(plain(v)), k)
-                           for k, v in sorted(b.resets.items())],
-            })
-        events.append({"kind": "model", "name": e.name, "direction": e.direction,
-                       "g": printer.doprint(plain(e.g)),
-                       "armed": printer.doprint(_armed(e, modes)), "branches": branches})
-    instances = []
-    for i, ((family, arg), order) in enumerate(zip(plain.instances, plain.orders)):
-        affine = _time_affine(arg, t, plain.states)
-        fam_index = sorted({fam for fam, _ in plain.instances}).index(family)
-        inst = {"index": i, "bit": 1 << i, "family": family, "family_index": fam_index,
-                "arg": printer.doprint(arg), "arg_text": str(arg), "order": order,
-                "affine": None if affine is None else [printer.doprint(affine[0]),
-                                                       printer.doprint(affine[1])]}
-        instances.append(inst)
-        if affine is None:
-            for direction, side in ((1, "hi"), (-1, "lo")):
-                events.append({"kind": "cam", "name": f"cam{i}_{side}", "direction": direction,
-                               "instance": inst, "side": side})
+    events = _event_entries(m, plain, printer)
+    instances, cam_events = _cam_instances(m, plain, printer)
+    events += cam_events
     used |= printer.used
     used = sorted(used & (set(MATH_FUNCTIONS) | {"M_PI"}))
-    families = sorted({fam for fam, _ in plain.instances})
-
-    manifest = {
-        **manifest_common(m),
-        "states": _state_entries(m) + [{"name": z.name, "unit": z.unit, "scale": z.scale, "doc": z.doc,
-                                        "initial": _num(z.initial)} for z in m.first_order],
-        "outputs": [{"name": o.name, "unit": o.unit, "doc": o.doc} for o in m.outputs],
-        "cam_families": families,
-        "cam_instances": [{"family": d["family"], "argument": d["arg_text"],
-                           "time_affine": d["affine"] is not None} for d in instances],
-        "modes": [{"name": mode.name, "values": list(mode.values), "doc": mode.doc,
-                   "initial": mode.initial or mode.values[0]} for mode in m.modes],
-        "events": [e["name"] for e in events],
-        "residual": None if m.residual is None else {
-            "error": m.residual.error, "acceleration": m.residual.acceleration,
-            "rise_end": m.residual.rise_end, "rise_state": m.residual.rise_state},
-        "options": [list(o) if isinstance(o, tuple) else o for o in m.options],
-    }
-    canonical = json.dumps({"M": sp.srepr(eq.M), "f": sp.srepr(eq.f), "Phi": sp.srepr(eq.Phi),
-                            "rates": [sp.srepr(z.rate) for z in m.first_order],
-                            "events": [sp.srepr(e.g) for e in m.events],
-                            "outputs": [sp.srepr(o.expr) for o in m.outputs],
-                            "manifest": manifest}, sort_keys=True)
-    manifest["source_hash"] = "sha256:" + hashlib.sha256(canonical.encode()).hexdigest()
+    manifest = _model_manifest(m, eq, instances, events)
 
     initial = ([c.initial for c in m.coordinates] + [c.initial_rate for c in m.coordinates]
                + [z.initial for z in m.first_order])
@@ -313,6 +335,7 @@ def model_context(eq: Equations) -> dict:
         "title": m.title,
         "reference": m.reference,
         "doc_lines": [line.rstrip() for line in m.doc.strip().splitlines()],
+        "variant_lines": list(m.variant),
         "n": n,
         "nz": nz,
         "n_states": 2 * n + nz,
@@ -321,7 +344,7 @@ def model_context(eq: Equations) -> dict:
         "zs": [z.name for z in m.first_order],
         "outputs": [o.name for o in m.outputs],
         "instances": instances,
-        "n_families": len(families),
+        "n_families": len(manifest["cam_families"]),
         "n_modes": len(m.modes),
         "diagonal": diagonal,
         "specialise": specialise,

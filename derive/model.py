@@ -297,6 +297,9 @@ class Model:
     first_order: tuple = ()
     modes: tuple = ()
     events: tuple = ()
+    variant: tuple = ()
+    """Lines saying in words what this member of a model family contains (the options of a
+    DYNACAM variant), printed in the generated file's header."""
 
     def __post_init__(self):
         _check_name(self.name, "model")

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fbc5b69d0de7c0bcb43026f0b45176feec44391ccacea81ecb56871b49123692
-# Text hash: sha256:a689e4267de71005de7e040d50adb37c280e04a781835b324eeba0a625eb37ed
+# Derivation key: sha256:0251a1de8c341dd20b06bd53df10b7df1a6e4466fdd230b67fcb1f246715e53e
+# Text hash: sha256:a68a5ee43f2b22475c0f717ddba483a1a2b8703b5eb37db5f60b1329f29a448f
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20); MODELS.md 'The Rayleigh-beam follower')
 # Source hash: sha256:26b224444cefa66d709774ee9ebf33ce2848bba62b150b7ef9d19ac10d9dad40

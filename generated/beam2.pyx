@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:020b2cfb9cd0d0451db15b449177a52f58243d556e1e9e18484852ecd516bd0d
-# Text hash: sha256:2018596176564b225fc0c4c36e9f77b2cb5ea4e5e0e983cba5b1f82ad9cc446d
+# Derivation key: sha256:0e8ebd9f4c19a591e91cb72cf8267f9412506bce7df14af1421a6995e491c1f4
+# Text hash: sha256:b3ec137379f30c1deb4dac883e67fe38b7a5f41151c87acc5e333711f884a8ed
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20); MODELS.md 'The Rayleigh-beam follower')
 # Source hash: sha256:83c45660398366ea1cb09f6effc8558624fdf8d8fae6d0fbcf00957d1ae29f83

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1c331f30242a72aeb2e6efddf288777bf0bae6f249beb2dffff6c43e97ed63ff
-# Text hash: sha256:84cc707a1293b75ca02fffeec9f120279e86097ffe5c2523b3fa4ec0144d6230
+# Derivation key: sha256:d4fc80e09b9cd83254b7f95ae0c558c8a1217943c2e354fd9d49625a615ebbfd
+# Text hash: sha256:4032496c85eb357a3436d2353ea6d166ede218737b3952db1b04bd7fa59ecc2d
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20); MODELS.md 'The Rayleigh-beam follower')
 # Source hash: sha256:92b3ca7cca25a30e876d5a6fd9dfb7e79332f0f816a12cdc280b9914b2935dbd

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7f03a290355fec1c1dd9ef49877242a8b2e8b9e8a72103ea2473f693527de747
-# Text hash: sha256:cd5ba1b84c98e59fa16f3a918b67d8e37fd8c2100eba8b58e0004ea710d5c75e
+# Derivation key: sha256:33ac790e28496f52af355aadb2f058abdb997ae275aebc3904dcfbdb309d5c9c
+# Text hash: sha256:ca663af3f7993556c2d8a2f6adfda5e86dbc1105beb6e54a6fcd86a26a1feab2
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20); MODELS.md 'The Rayleigh-beam follower')
 # Source hash: sha256:93e0de9ea0da0fe58fbf68b3a50bc55c309bec06ccdfff483d37533bc8bb26a4

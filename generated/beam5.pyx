@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f044890b9d1c138f01283a22483ee1c87ab2a913bd36df9d76642a77c06e9a4c
-# Text hash: sha256:0e92dfe3d79cb929fa5a3d65158ff5668ec0887603b3b120c8756f10b817b97d
+# Derivation key: sha256:fd8a1a85f370ec35d922832d305a10277e87629caf6adb237497b27e2a0dd146
+# Text hash: sha256:b04186b8dcf1735ec948db82875168ed758c7bf7a4df38ee87e38a72e50d8e4d
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20); MODELS.md 'The Rayleigh-beam follower')
 # Source hash: sha256:e0f4b05900b06a83b9fa7841d5815088d1cb9f50ab65127b014fac737cd82d5b

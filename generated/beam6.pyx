@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:918f98833ee1857a5ca68b29e49dda9b634b553499c4d1c50f0f5e2270bed751
-# Text hash: sha256:6b7c48f76f485f890eeda6c4aeee2503a490bca78c50b5cd2d7e0ea135d00898
+# Derivation key: sha256:e936a3b9ffaa8596c18d4a29aff2863c24b9861f235064418640666f20a8e05b
+# Text hash: sha256:319e4634ebe497ca7dc1811c5082ea53db2ad66ad5a3e030a587d080de1351bd
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20); MODELS.md 'The Rayleigh-beam follower')
 # Source hash: sha256:403a38ecdf10bcd02e78806a6ee165271d00c3f14591424b590cc0310053401c

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:05bc3d57e7330981e2fbe47a6e7739923ba53fa3f463e745f9e0c8591377907e
-# Text hash: sha256:41311fbdf6aceeb431effa67666be001286fc9b5a3e51554c61fa79d6f8b5acc
+# Derivation key: sha256:bf3875c577225265baccc097e35b9f07d7c463c61f5c6169d5bb5e485d85ef35
+# Text hash: sha256:d67d8f7f112330770ec282b93b1fb305766512c11ed5f0833e49de7648b202e8
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),

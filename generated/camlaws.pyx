@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:05bc3d57e7330981e2fbe47a6e7739923ba53fa3f463e745f9e0c8591377907e
-# Text hash: sha256:2e78f7134b617744986cc4107a2723be0656276bea916de4f269348caf5ed6b5
+# Derivation key: sha256:bf3875c577225265baccc097e35b9f07d7c463c61f5c6169d5bb5e485d85ef35
+# Text hash: sha256:2bc73d4441173aeea467334208cd15e0d63e0f7669c9b748dd672e4ca8abe494
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

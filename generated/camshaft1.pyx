@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fa6581bab0adfed678eb09abc06f34576584d3933062c60fd2d8dfc6238f58cb
-# Text hash: sha256:0bb6c8b1e448e7b6bf95ad37c8df09025388e3aa6be0d07bb5e279b12c9ec0ed
+# Derivation key: sha256:b8f0815daf7eb68f53ed2831f189a929873a30fac7faedc6a1052fbfb77aa7b0
+# Text hash: sha256:7f56012a07dd92f91857e1e0c1cd496fcb256862224868cb7e4c57a78015cadf
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:11095417643cf9097a3900ed13598f188b7a3cfe598b6ca63a6411c1f013edca

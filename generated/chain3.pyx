@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:24f02c9217a70b02e7388570b1a071d6059fd6ce3a37bb392a901356e1bf78cb
-# Text hash: sha256:121d96b7684e755e1e7fe87a00bee26bc4a881545db24f6322e440a92aa5f35f
+# Derivation key: sha256:f652d5a340a03a1b5621d7c16d368f2629fa8da17e99ce784be8dd2ea9104eda
+# Text hash: sha256:4f36db6324fcfe4e9ce597d61e8f162c06d183513be477427c9e35cef44e85e5
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:e1c62cc1d141de24664a5c402adec44384d1978e0cde22eb2e227011884d378e

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ce9b45a644ef3dfd949939d688942fdb37817fa9f870dfb7c57c50212a8bb7dd
-# Text hash: sha256:a0511dbcaaea3988457f76947f1f4f3e5b0dd20b9f44b0cf55c090e214fe93fa
+# Derivation key: sha256:f91e5108ff206b1ca4f4705bda3de1e9bd115ed8f8f4e54aecb25bb11b88fa67
+# Text hash: sha256:2905af32262f346b512a4efa498fa457d9790880e7582e643112e3f6da9a871d
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2c1f555639a7d49b92ea7d665e9a0369046a7aa9f18b7ac380d975c265d508a4

@@ -78,7 +78,8 @@ def _build(args: list, label: str, entry: Path, progress) -> None:
     """Run the builder into a temporary folder beside ``entry`` and rename it into place."""
     entry.parent.mkdir(parents=True, exist_ok=True)
     tmp = Path(tempfile.mkdtemp(prefix=f".{entry.name}.", dir=entry.parent))
-    say = progress or (lambda msg: None)
+    # a build takes seconds: without a progress callback the user still hears why on stderr
+    say = progress or (lambda msg: print(msg, file=sys.stderr, flush=True))
     say(f"{label}: not in the cache; deriving, generating and compiling it once "
         f"(into {entry})")
     t0 = time.perf_counter()

@@ -23,9 +23,9 @@ DOCS = {o["name"]: o["doc"] for o in _DYN["options"]}
 def _name(self) -> str:
     """Module name of the variant these options select (the catalog's naming rule)."""
     rule = _DYN["name"]
-    code = "".join(rule["codes"][key][getattr(self, key)] for key in rule["codes"])
-    flags = "".join(letter for letter, key in rule["flags"] if getattr(self, key))
-    return f"{rule['prefix']}{code}_{flags or rule['none']}"
+    words = [rule["prefix"]] + [rule["words"][key][getattr(self, key)] for key in rule["words"]]
+    words += [word for word, key in rule["flags"] if getattr(self, key)]
+    return rule["separator"].join(words)
 
 
 def _items(self) -> tuple:

@@ -1,6 +1,6 @@
 """The dry backlash laws of DYNACAM against hand-computable answers.
 
-Two force elements of the generated ``dynacam_acbg_yz`` (axial cam, constant input speed,
+Two force elements of the generated ``dynacam_axial_ideal_backlash_groove_shafty_shaftz`` (axial cam, constant input speed,
 gear="backlash", roller="groove"; the thesis's indexing mechanism, scenes/indexing.toml):
 
 * the reduction gear, backlash s_g (6.1): shaft torque M = k (phi_r - beta) + d_b (phi' - beta')
@@ -12,7 +12,7 @@ gear="backlash", roller="groove"; the thesis's indexing mechanism, scenes/indexi
 
 Dry contact law (the dynacam docstring): the spring-damper engages when the gap closes and
 releases when the spring's deflection is zero again.  The squeeze film of (6.5)-(6.9),
-(6.37)-(6.41) is the other variant (acss_yz, tests/test_nonsmooth.py); here it is absent
+(6.37)-(6.41) is the other variant (axial_ideal_gearsqueeze_groovesqueeze_shafty_shaftz, tests/test_nonsmooth.py); here it is absent
 (the limit eta -> 0 of (6.6), (6.38)).
 
 The mechanisms are tiny: the cam stays in the dwell before its rise (beta < beta_0, so H = H'
@@ -35,7 +35,7 @@ import pytest
 from camdyn.runtime.models import load
 from camdyn.runtime.simulate import Simulator
 
-MODEL = "dynacam_acbg_yz"
+MODEL = "dynacam_axial_ideal_backlash_groove_shafty_shaftz"
 
 # rtol -> relative tolerances on event times and on the closed forms (speeds, forces, gaps,
 # relative to their scale).  Measured: rtol 1e-8, event times within 4.1e-9 and closed forms

@@ -64,7 +64,7 @@ _CASES = [(m, law) for m in sorted(REGISTRY) if not m.startswith(("dynacam_", "b
 # the DYNACAM variants are large: one law each, and fewer points (see _POINTS)
 # lambdify of the variants with contact modes and squeeze films takes minutes each (the
 # nested Piecewise of H(B) inside the solved accelerations); the smooth ones cover the printer
-_CASES += [(m, "cycloidal") for m in ("dynacam_rcrb_n", "dynacam_rcrb_yz")]
+_CASES += [(m, "cycloidal") for m in ("dynacam_radial_ideal_rigidgear_bilateral", "dynacam_radial_ideal_rigidgear_bilateral_shafty_shaftz")]
 _POINTS = {"dynacam": 12}
 
 
@@ -119,7 +119,7 @@ def test_derive_check_passes_on_this_checkout():
     assert proc.returncode == 0, proc.stderr
 
 
-SMALL = ["camshaft1", "camshaft2", "motor2", "dynacam_rcrb_n"]
+SMALL = ["camshaft1", "camshaft2", "motor2", "dynacam_radial_ideal_rigidgear_bilateral"]
 """Models cheap enough to regenerate several times in one test run."""
 
 

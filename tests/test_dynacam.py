@@ -102,7 +102,7 @@ def test_indexing_without_backlash_fig_7_15_and_impact_estimate(indexing):
 
     sc, s, res = indexing
     sc0 = scenes.without_backlash(sc)
-    assert sc0.variant == "dynacam_acrb_yz"
+    assert sc0.variant == "dynacam_axial_ideal_rigidgear_bilateral_shafty_shaftz"
     s0, res0 = dynacam.run(sc0)
     x0 = dynacam.sample_at(sc0, res0, 0.68)
     assert x0 == pytest.approx(-7.4, rel=0.05)
@@ -123,13 +123,13 @@ def test_indexing_amplitude_grows_towards_T_1_without_damping(indexing):
 
 # -- item 7: a reduced variant agrees with the full one with the dropped element made ideal ----
 def test_constant_speed_variant_is_the_stiff_motor_limit(spring_loaded):
-    """rcrc_yzs (no motor states) against r2rc_yzs with a motor of huge inertia and torque
+    """radial_ideal_rigidgear_contact_shafty_shaftz_spring (no motor states) against radial_motor2_rigidgear_contact_shafty_shaftz_spring with a motor of huge inertia and torque
     slope (J_ma = 1e6 kg m^2, G_a = 1e9 N m s/rad: speed deviation M/G_a ~ 1e-8 rad/s): the
     follower accelerations agree to 1e-5 of their peak over the whole run."""
     sc, _, _ = spring_loaded
     full = scenes.replace(sc, parameters={"J_ma": 1e6, "G_a": 1e9})
     reduced = scenes.replace(sc, {"motor": "constant"}, drop=("J_ma", "G_a", "T_el", "alpha_w", "mu_w"))
-    assert (full.variant, reduced.variant) == ("dynacam_r2rc_yzs", "dynacam_rcrc_yzs")
+    assert (full.variant, reduced.variant) == ("dynacam_radial_motor2_rigidgear_contact_shafty_shaftz_spring", "dynacam_radial_ideal_rigidgear_contact_shafty_shaftz_spring")
     sf, rf = dynacam.run(full)
     sr, rr = dynacam.run(reduced)
     t = np.linspace(0.0, rr.t[-1], 400)
@@ -139,7 +139,7 @@ def test_constant_speed_variant_is_the_stiff_motor_limit(spring_loaded):
 
 
 def test_backlash_variant_tends_to_the_backlash_free_one(indexing):
-    """acbg_yz (gear and groove backlash) with the backlash shrunk towards zero against acrb_yz
+    """axial_ideal_backlash_groove_shafty_shaftz (gear and groove backlash) with the backlash shrunk towards zero against axial_ideal_rigidgear_bilateral_shafty_shaftz
     (rigid gear, bilateral roller), zero damping: the largest X'' difference over the run falls
     from 10 % of the peak at s_g = 1e-4 rad to under 1 % at s_g = 1e-6 rad (s_r = s_g/100 m).
     It levels off near 0.3 % (event location at rtol 1e-8 with undamped contacts)."""

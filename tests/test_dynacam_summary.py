@@ -2,10 +2,10 @@
 
 Each quantity is checked against a hand computation on a scene small enough to have one:
 
-* a one-DOF scene: the DYNACAM variant without shaft deflections (rcrb_n) with a cam of huge
+* a one-DOF scene: the DYNACAM variant without shaft deflections (radial_ideal_rigidgear_bilateral) with a cam of huge
   inertia on a stiff shaft and a huge base radius, so that it is the thesis's one-DOF model at
   constant fictitious speed (sec. 3.3) with its closed forms (3.4a), (3.4b), (3.5), (3.6);
-* a stiff spring-loaded follower at constant speed (rcrc_yzs) whose roller lifts off where the
+* a stiff spring-loaded follower at constant speed (radial_ideal_rigidgear_contact_shafty_shaftz_spring) whose roller lifts off where the
   nominal inertia force first overcomes the spring preload (sec. 7.5);
 * the static equilibrium (6.49)-(6.68) of preloaded springs in series, with cam friction
   (6.13) and linkage friction (6.43), and with the second-order motor (App. 5);
@@ -38,7 +38,7 @@ def _scene(name, options, parameters, T_end, rtol=1e-8):
     return scenes.from_dict(data, f"/nonexistent/{name}.toml")
 
 
-# -- one DOF: rcrb_n as the model of sec. 3.3 --------------------------------------------------
+# -- one DOF: radial_ideal_rigidgear_bilateral as the model of sec. 3.3 --------------------------------------------------
 TAU = 0.15          # sin(pi/tau) = 0.87: U0 well away from a zero of (3.5)
 H_M, M_X = 0.01, 1.0
 C_X = M_X * (2 * math.pi / (TAU * T_M)) ** 2      # tau = 2 pi (m/c)^(1/2)/t_m (4.11), (4.12)
@@ -166,7 +166,7 @@ def figures(tmp_path_factory):
 
 
 def test_plot_writes_one_png_per_diagram_of_the_variant(figures):
-    """rcrb_n (rigid gear, bilateral roller, constant speed) has the diagrams X'', B'', the
+    """radial_ideal_rigidgear_bilateral (rigid gear, bilateral roller, constant speed) has the diagrams X'', B'', the
     shaft torque and the fictitious speed variation (figs 7.11, 7.12), no gap or motor one:
     exactly those four files, named <scene stem>_<key>.png in the output folder, PNG each."""
     out, written, _, _ = figures
@@ -275,7 +275,7 @@ def _series_force(p):
 
 
 def test_equilibrium_with_cam_and_linkage_friction_6_13_6_43():
-    """rcrc_yzfls at rest in the dwell, cam slipping forward under it: the contact force is the
+    """radial_ideal_rigidgear_contact_shafty_shaftz_camfriction_linkfriction_spring at rest in the dwell, cam slipping forward under it: the contact force is the
     series-spring one, F = F_0/(1 + c_s/c_c); the linkage friction (sticking, nu_x) holds no
     force there; the cam friction torque nu_b F R_b (6.13) (tan alpha = 0, R = R_b) winds the
     shaft back, beta = -nu_b F R_b/k; z = F/c_z, x = -F/c_c, y = 0.  1e-9 relative (measured

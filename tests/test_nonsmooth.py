@@ -19,8 +19,8 @@ def _p(model, **values):
 def test_squeeze_film_approach_velocity_A_4_11():
     """(A.4.11), (6.41): with no linkage damping (q_x = 0) and the cam in its dwell, the roller
     approaches the lower groove wall at h_r' = -N gap^(3/2)/V_R, N = c_x (h_r - x) the load it
-    carries.  Checked on the generated acss_yz at several gaps and loads, to 1e-12."""
-    m = load("dynacam_acss_yz")
+    carries.  Checked on the generated axial_ideal_gearsqueeze_groovesqueeze_shafty_shaftz at several gaps and loads, to 1e-12."""
+    m = load("dynacam_axial_ideal_gearsqueeze_groovesqueeze_shafty_shaftz")
     p = _p(m, q_x=0.0, V_R=2e-5, c_x=1e6, beta_0=0.5)
     choice = laws.choose("cycloidal")
     codes, pars = np.array([choice.code], dtype=np.intc), np.array([choice.par])
@@ -41,9 +41,9 @@ def test_gear_squeeze_film_closes_on_the_loaded_flank_6_9(flank):
     (phi_r - phi)^(-3/2), (6.7)) and the back flank phi + s_g (BB, (6.8)); with no shaft
     damping (q_b = 0) the massless wheel moves at phi_r' = phi' - N gap^(3/2)/V_T, N = k (phi_r -
     beta) the torque it passes on, so the loaded film closes: driving torque (N > 0) on the
-    driving flank, reversed torque on the back flank.  Generated acss_yz at t = 0 (phi = 0),
+    driving flank, reversed torque on the back flank.  Generated axial_ideal_gearsqueeze_groovesqueeze_shafty_shaftz at t = 0 (phi = 0),
     to 1e-12."""
-    m = load("dynacam_acss_yz")
+    m = load("dynacam_axial_ideal_gearsqueeze_groovesqueeze_shafty_shaftz")
     V_T, k, s_g, w_s = 2e-4, 5e3, 1e-2, 3.0
     p = _p(m, q_b=0.0, V_T=V_T, k=k, s_g=s_g, omega_s=w_s, beta_0=0.5)
     choice = laws.choose("cycloidal")
@@ -72,7 +72,7 @@ def test_follower_jump_where_the_spring_can_no_longer_hold_the_follower():
     inertia force m x''(T) first overcomes the spring preload F_0 (c_s = 0):
     2 pi (h_m/t_m^2) m sin 2 pi T = -F_0, i.e. T = 1/2 + asin(F_0 t_m^2/(2 pi m h_m))/(2 pi).
     Tolerance 0.003 in T (the dynamic deviation is of order (2 pi tau)^2)."""
-    m = load("dynacam_rcrc_yzs")
+    m = load("dynacam_radial_ideal_rigidgear_contact_shafty_shaftz_spring")
     h_m, F_0 = 0.01, 0.05
     p = _p(m, h_m=h_m, beta_m=1.0, beta_0=0.1, R_b=1.0, omega_s=1.0, J=1e6, k=1e9, q_b=0.05,
            m_x=1.0, c_x=1e6, q_x=0.05, m_y=1.0, c_y=1e9, q_y=0.05, m_z=1.0, c_z=1e9, q_z=0.05,
@@ -100,7 +100,7 @@ def test_stick_slip_threshold_of_linkage_friction():
     turning at constant speed); sticking breaks when that growth reaches the static limit
     1.001 nu (F_0 + growth), i.e. c h_m H(T) = 1.001 nu F_0/(1 - 1.001 nu).  The cycloid's
     H(T) = T - sin(2 pi T)/(2 pi) is inverted numerically.  Tolerance 1e-3 relative in H."""
-    m = load("dynacam_rcrc_yzfls")
+    m = load("dynacam_radial_ideal_rigidgear_contact_shafty_shaftz_camfriction_linkfriction_spring")
     h_m, F_0, nu, c_x, c_z = 0.01, 5.0, 0.1, 1e6, 1e9
     p = _p(m, h_m=h_m, beta_m=1.0, beta_0=0.1, R_b=1.0, omega_s=1.0, J=1e6, k=1e9, q_b=0.05,
            m_x=1.0, c_x=c_x, q_x=0.0, m_y=1.0, c_y=1e9, q_y=0.05, m_z=1.0, c_z=c_z, q_z=0.0,
@@ -129,8 +129,8 @@ def test_cam_friction_torque_6_13(mode, sign):
     nu_b |F_x| R (1 + tan^2 alpha)^(1/2).  In the dwell before the rise tan alpha = 0 and
     R = R_b (+ h = 0), so turning the friction on changes the cam's angular acceleration by
     -/+ nu_b |F_x| R_b/J.  F_x is read from the generated outputs, the rest by hand; generated
-    rcrc_yzfls at a state with the linkage compressed, to 1e-12 relative."""
-    m = load("dynacam_rcrc_yzfls")
+    radial_ideal_rigidgear_contact_shafty_shaftz_camfriction_linkfriction_spring at a state with the linkage compressed, to 1e-12 relative."""
+    m = load("dynacam_radial_ideal_rigidgear_contact_shafty_shaftz_camfriction_linkfriction_spring")
     nu, R_b, J = 0.2, 0.08, 0.003
     base = dict(R_b=R_b, J=J, beta_0=0.5, F_0=20.0, c_s=100.0, nu_x=0.0, q_x=0.0)
     choice = laws.choose("cycloidal")
@@ -158,10 +158,10 @@ def test_cam_friction_torque_6_13(mode, sign):
 def test_worm_gear_passes_the_shaft_torque_with_its_efficiency_6_71(mode):
     """(6.71), (6.72): driving, the motor supplies the shaft torque M over the worm gear's
     efficiency eta = tan(a)/tan(a + mu) (0.87 at a = 0.36 rad, mu = 0.05, App. 5); driven back,
-    it receives M eta' with eta' = tan(a - mu)/tan(a).  On the generated r2rc_yzs the motor's
+    it receives M eta' with eta' = tan(a - mu)/tan(a).  On the generated radial_motor2_rigidgear_contact_shafty_shaftz_spring the motor's
     speed deviation then changes at (M_ea - M_ma)/J_ma (A.5.8): checked with M and M_ea read
     from the outputs, to 1e-12 relative."""
-    m = load("dynacam_r2rc_yzs")
+    m = load("dynacam_radial_motor2_rigidgear_contact_shafty_shaftz_spring")
     a, mu, J_ma = 0.36, 0.05, 2.0
     p = _p(m, alpha_w=a, mu_w=mu, J_ma=J_ma, beta_0=0.5)
     choice = laws.choose("cycloidal")

@@ -54,13 +54,13 @@ def test_rise_start_after_a_long_dwell_step(beta_0):
     search's first secant hits exactly (g = 0).  The rise starts where the cam reaches
     beta_0, to 1e-12 rad.  (Returning the far end of the bracket after such a hit started it
     at beta = 1.11 for beta_0 = 0.3, the end of the dwell step, and 1.4e-9 late for 1.3.)"""
-    m = load("dynacam_rcrc_yzs")
+    m = load("dynacam_radial_ideal_rigidgear_contact_shafty_shaftz_spring")
     p = dict(h_m=0.01, beta_m=1.0, beta_0=beta_0, R_b=1.0, omega_s=1.0, J=1e6, k=1e9, q_b=0.05,
              m_x=1.0, c_x=1e6, q_x=0.05, m_y=1.0, c_y=1e9, q_y=0.05, m_z=1.0, c_z=1e9, q_z=0.05,
              F_0=0.0, c_s=0.0)
     y0 = np.zeros(len(m.state_names))
     y0[m.state_names.index("betad")] = 1.0
-    res = simulate("dynacam_rcrc_yzs", p, beta_0 + 1.5, "dp54", rtol=1e-8, y0=y0)
+    res = simulate("dynacam_radial_ideal_rigidgear_contact_shafty_shaftz_spring", p, beta_0 + 1.5, "dp54", rtol=1e-8, y0=y0)
     first = np.flatnonzero(res.mode[:, 0] == 1)[0]    # the cam law's first rise segment
     assert res["beta"][first] == pytest.approx(beta_0, abs=1e-12)
 

@@ -5,11 +5,14 @@ import json
 import subprocess
 import sys
 import tomllib
+from pathlib import Path
 
 import pytest
 
 from camdyn.runtime import dynacam, scene as scenes
 from camdyn.runtime.errors import CamdynInputError
+
+ROOT = Path(__file__).resolve().parents[1]
 
 
 def _data(name):
@@ -186,3 +189,43 @@ def test_runtime_options_are_the_declaration_s():
     for cls in (variants.Options, declared.Options):
         with pytest.raises(ValueError, match="option gear='chain': choose one of"):
             cls(gear="chain")
+
+
+def test_variant_names_are_words_that_each_mean_one_thing():
+    """Issue 12, item 6: a variant's name spells its options with one word per choice and per
+    element switched on; no word stands for two things, so the name can be read back into the
+    option set (all 4608 names distinct and parsed back to their options), and the generated
+    file of every pre-generated variant states each option in words in its header."""
+    import itertools
+    from dataclasses import fields
+
+    from camdyn.derive.models import DYNACAM_VARIANTS
+    from camdyn.derive.models import dynacam as declared
+
+    meaning = {}
+    for key, words in declared.NAME_WORDS.items():
+        for value, word in words.items():
+            meaning.setdefault(word, []).append((key, value))
+    for word, key in declared.NAME_FLAGS:
+        meaning.setdefault(word, []).append((key, True))
+    assert {w: m for w, m in meaning.items() if len(m) > 1} == {}
+    assert all(w.isalnum() and w.islower() for w in meaning)
+    keys = [f.name for f in fields(declared.Options)]
+    values = [declared.Options.CHOICES.get(k, (False, True)) for k in keys]
+    names = set()
+    for combo in itertools.product(*values):
+        opts = declared.Options(**dict(zip(keys, combo)))
+        words = opts.name.split("_")
+        assert words[0] == "dynacam"
+        back = {k: False for k in keys if k not in declared.Options.CHOICES}
+        back.update(dict(meaning[w][0] for w in words[1:]))
+        assert declared.Options(**back) == opts
+        names.add(opts.name)
+    assert len(names) == 4608
+    for opts in DYNACAM_VARIANTS:
+        head = (ROOT / "generated" / f"{opts.name}.pyx").read_text()[:6000]
+        assert "from camdyn/derive/models/dynacam.py;" in head
+        for key in keys:
+            value = getattr(opts, key)
+            shown = value if isinstance(value, str) else ("yes" if value else "no")
+            assert f"#   {key} = {shown}: " in head, (opts.name, key)

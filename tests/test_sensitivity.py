@@ -214,7 +214,7 @@ def one_dof():
 
 
 def test_two_dof_variant_is_camshaft2():
-    """Without the shaft deflections (variant rcrb_n) DYNACAM is J beta'' = k (w_s t - beta) -
+    """Without the shaft deflections (variant radial_ideal_rigidgear_bilateral) DYNACAM is J beta'' = k (w_s t - beta) -
     F_x dh/dbeta, m_x x'' = c_x (h(beta) - x); with B = beta/beta_m, T = t/t_m this is (5.15),
     (5.16) exactly, at Fv = m_x h_m^2/(J beta_m^2) (5.14), Fa = c_x h_m^2/(k beta_m^2)
     (5.12b) and tau_b^2 = tau^2 Fa/Fv, and characteristics gives those numbers (R_1/2 cancels).
@@ -225,7 +225,7 @@ def test_two_dof_variant_is_camshaft2():
     k = C * GEOMETRY["h_m"] ** 2 / (Fa * GEOMETRY["beta_m"] ** 2)
     J = M * GEOMETRY["h_m"] ** 2 / (Fv * GEOMETRY["beta_m"] ** 2)
     sc, res = _dynacam(dict(shaft_y=False, shaft_z=False), dict(m_x=M, c_x=C, k=k, J=J))
-    assert sc.variant == "dynacam_rcrb_n"
+    assert sc.variant == "dynacam_radial_ideal_rigidgear_bilateral"
     ch = dynacam.characteristics(sc.options, sc.parameters)
     assert (ch["tau"], ch["Fa"], ch["Fv"]) == pytest.approx((TAU, Fa, Fv), rel=1e-12)
     got = _on_grid(sc, res)
@@ -237,7 +237,7 @@ def test_two_dof_variant_is_camshaft2():
 
 
 def test_huge_cam_inertia_gives_the_one_dof_model(one_dof):
-    """Fv -> 0 (J -> infinity): the cam turns at w_s and rcrb_n is (3.1), X'' = (2 pi/tau)^2 (H - X)
+    """Fv -> 0 (J -> infinity): the cam turns at w_s and radial_ideal_rigidgear_bilateral is (3.1), X'' = (2 pi/tau)^2 (H - X)
     (sec. 5.7 (2): 'Fv = 0 means that the mass of the cam is infinite ... the starting point of
     the model of chapter 3').  No variant has beta fixed, so this is a limit: beta lags w_s t
     by the contact torque's double integral over J, and the error in X is proportional to Fv,
@@ -258,14 +258,14 @@ def test_huge_cam_inertia_gives_the_one_dof_model(one_dof):
 
 
 def test_four_dof_with_rigid_heavy_shaft_and_cam_is_the_one_dof_model(one_dof):
-    """The 4-DOF variant rcrb_yz with the shaft's y', z' stiffness 1e15 N/m and mass 1e9 kg
+    """The 4-DOF variant radial_ideal_rigidgear_bilateral_shafty_shaftz with the shaft's y', z' stiffness 1e15 N/m and mass 1e9 kg
     (deflection F/c ~ 1e-13 m, natural frequency 1e3 rad/s, so not stiff) and J = 1e9 kg m^2
     (Fv ~ 1e-11): (3.1) at the characteristics' tau, which is 0.161 to 1e-9 (c_c, m of (4.3),
     (4.39) move by 3e-10).  X to 1e-8, X'' to 1e-8 of its peak; measured 1.1e-11, 1.7e-9."""
     big = 1e9
     sc, res = _dynacam({}, dict(m_x=M, c_x=C, k=1000.0, J=big, m_y=big, c_y=1e6 * big, m_z=big,
                                 c_z=1e6 * big, q_y=0.0, q_z=0.0))
-    assert sc.variant == "dynacam_rcrb_yz"
+    assert sc.variant == "dynacam_radial_ideal_rigidgear_bilateral_shafty_shaftz"
     assert dynacam.characteristics(sc.options, sc.parameters)["tau"] == pytest.approx(TAU, rel=1e-9)
     got = _on_grid(sc, res)
     assert np.max(np.abs(got["X"] - one_dof["X"])) < 1e-8
@@ -284,7 +284,7 @@ def test_massless_tangential_shaft_under_an_axial_cam_is_camshaft1():
     m_tan (5.51) -> 0 with m_y', so this is sec. 5.7's 'Fv = oo means that there is no cam mass
     at all ... the characteristics Fv = oo agree with those of the CAMSHAFT-1' (Fv = 8400 at
     the eps below).  z' is held by m_z' = 1e9 kg, c_z' = 1e15 N/m, so c_c = c_x.
-    The variant acrb_yz keeps m_y' > 0 and the limit is singular (stiff), so it is taken by
+    The variant axial_ideal_rigidgear_bilateral_shafty_shaftz keeps m_y' > 0 and the limit is singular (stiff), so it is taken by
     extrapolation: the error in X is proportional to eps = m_y'/m_x (0.17 eps measured;
     doubling eps doubles it, asserted within 5 %, measured 2.0001) and the Richardson value
     2 X(eps) - X(2 eps) at eps = 2.5e-5 is within 1e-8 of camshaft1 (measured 1.1e-9; X''
@@ -299,7 +299,7 @@ def test_massless_tangential_shaft_under_an_axial_cam_is_camshaft1():
         sc, res = _dynacam(dict(cam="axial"), dict(
             R_b=radius, m_x=M, c_x=C, k=1e12, J=1e9, m_y=eps * M, c_y=C * slope**2 / Fa,
             m_z=1e9, c_z=1e15, q_y=0.0, q_z=0.0))
-        assert sc.variant == "dynacam_acrb_yz"
+        assert sc.variant == "dynacam_axial_ideal_rigidgear_bilateral_shafty_shaftz"
         ch = dynacam.characteristics(sc.options, sc.parameters)
         assert (ch["tau"], ch["Fa"]) == pytest.approx((TAU, Fa), rel=1e-8)
         return _on_grid(sc, res)

@@ -84,23 +84,58 @@ class Options:
 
     @property
     def name(self) -> str:
-        """Module name: dynacam_<cam><motor><gear><roller>_<flags> (NAME_CODES, NAME_FLAGS)."""
-        code = "".join(NAME_CODES[key][getattr(self, key)] for key in NAME_CODES)
-        flags = "".join(c for c, key in NAME_FLAGS if getattr(self, key))
-        return f"dynacam_{code}_{flags or 'n'}"
+        """Module name: ``dynacam_`` and the words of NAME_WORDS for the four choices, then those
+        of NAME_FLAGS for the elements switched on, joined by underscores."""
+        words = [NAME_WORDS[key][getattr(self, key)] for key in NAME_WORDS]
+        words += [word for word, key in NAME_FLAGS if getattr(self, key)]
+        return "dynacam_" + "_".join(words)
+
+    def description(self) -> tuple:
+        """What this variant contains, one line per option, in words (its generated header)."""
+        lines = [f"{key} = {getattr(self, key)}: {DESCRIPTIONS[key][getattr(self, key)]}"
+                 for key in NAME_WORDS]
+        lines += [f"{key} = {'yes' if getattr(self, key) else 'no'}: "
+                  f"{DESCRIPTIONS[key][getattr(self, key)]}" for _, key in NAME_FLAGS]
+        return tuple(lines)
 
     def items(self) -> tuple:
         return tuple(sorted(asdict(self).items()))
 
 
-NAME_CODES = {"cam": {"radial": "r", "axial": "a"},
-              "motor": {"constant": "c", "first": "1", "second": "2"},
-              "gear": {"rigid": "r", "backlash": "b", "squeeze": "s"},
-              "roller": {"bilateral": "b", "contact": "c", "groove": "g", "groove-squeeze": "s"}}
-"""One letter per choice, in this order, make the first part of a variant's name."""
-NAME_FLAGS = (("y", "shaft_y"), ("z", "shaft_z"), ("f", "cam_friction"),
-              ("l", "linkage_friction"), ("s", "spring"), ("e", "external"))
-"""The letters of the switched-on elements make the second part ('n': none)."""
+NAME_WORDS = {"cam": {"radial": "radial", "axial": "axial"},
+              "motor": {"constant": "ideal", "first": "motor1", "second": "motor2"},
+              "gear": {"rigid": "rigidgear", "backlash": "backlash", "squeeze": "gearsqueeze"},
+              "roller": {"bilateral": "bilateral", "contact": "contact", "groove": "groove",
+                         "groove-squeeze": "groovesqueeze"}}
+"""One word per choice, in this order, make the first part of a variant's name; no word
+stands for two things (tests/test_dynacam.py checks)."""
+NAME_FLAGS = (("shafty", "shaft_y"), ("shaftz", "shaft_z"), ("camfriction", "cam_friction"),
+              ("linkfriction", "linkage_friction"), ("spring", "spring"), ("force", "external"))
+"""The words of the elements switched on make the rest of the name."""
+
+DESCRIPTIONS = {
+    "cam": {"radial": "radial disk cam, pitch radius R_b + h (6.21)",
+            "axial": "axial (globoidal) cam, constant pitch radius R_b (6.21)"},
+    "motor": {"constant": "camshaft input turning at the constant speed omega_s (ideal drive)",
+              "first": "asynchronous motor without electrical lag (T_el -> 0, App. 5), worm gear (6.71), (6.72)",
+              "second": "asynchronous motor with electrical lag T_el (A.5.6)-(A.5.9), worm gear (6.71), (6.72)"},
+    "gear": {"rigid": "reduction gear without backlash: the shaft torsion k, d_b alone (6.10)",
+             "backlash": "reduction gear with backlash s_g, dry contact (6.1), fig. 6.3",
+             "squeeze": "reduction gear with backlash s_g and a squeeze film between the teeth (6.5)-(6.9)"},
+    "roller": {"bilateral": "roller held on both sides: the linkage spring always carries (6.42)",
+               "contact": "roller held on the cam by the follower spring; it may lift off (6.42)",
+               "groove": "roller in a groove with backlash s_r, dry contact (6.27), fig. 6.10",
+               "groove-squeeze": "roller in a groove with backlash s_r and a squeeze film (6.37)-(6.41)"},
+    "shaft_y": {True: "tangential shaft deflection y (6.12), (6.16)", False: "shaft rigid tangentially"},
+    "shaft_z": {True: "shaft deflection z along the follower (6.11), (6.15)",
+                False: "shaft rigid along the follower"},
+    "cam_friction": {True: "Coulomb friction between roller and cam (6.13)", False: "no friction on the cam"},
+    "linkage_friction": {True: "Coulomb friction in the follower linkage (6.43)",
+                         False: "no friction in the linkage"},
+    "spring": {True: "follower spring with preload F_0 (6.45)", False: "no follower spring"},
+    "external": {True: "constant external force F_ex on the output (6.46)", False: "no external force"},
+}
+"""Each option's value in words, for the header of the generated file."""
 
 
 def catalog() -> dict:
@@ -112,8 +147,8 @@ def catalog() -> dict:
         choices = list(Options.CHOICES[f.name]) if f.name in Options.CHOICES else [False, True]
         options.append({"name": f.name, "default": f.default, "choices": choices,
                         "doc": f.metadata["doc"]})
-    return {"options": options, "name": {"prefix": "dynacam_", "codes": NAME_CODES,
-                                         "flags": [list(f) for f in NAME_FLAGS], "none": "n"}}
+    return {"options": options, "name": {"prefix": "dynacam", "words": NAME_WORDS,
+                                         "flags": [list(f) for f in NAME_FLAGS], "separator": "_"}}
 
 
 def _p(name, default, unit, doc, low=0.0, open_low=True, high=float("inf")):
@@ -191,24 +226,54 @@ def _coulomb(name: str, coordinate, rate, friction_force, other_force, doc, init
     return mode, force, events
 
 
-def build(opts: Options = Options()) -> Model:
+@dataclass
+class _Parts:
+    """What the elements of a variant declare, collected in the order they are added (the
+    order of parameters, states, modes, events and outputs in the generated manifest)."""
+
+    params: list
+    P: dict = field(default_factory=dict)
+    first_order: list = field(default_factory=list)
+    modes: list = field(default_factory=list)
+    events: list = field(default_factory=list)
+    outputs: list = field(default_factory=list)
+
+    def __post_init__(self):
+        self.P = {p.name: p.symbol for p in self.params}
+
+    def use(self, *params):
+        self.params += params
+        self.P.update({p.name: p.symbol for p in params})
+
+
+@dataclass
+class _Cam:
+    """The cam and the contact point it drives (6.17)-(6.26)."""
+
+    B: object        # cam angle over the rise angle (6.17)
+    h: object        # cam law h(beta)
+    R: object        # pitch radius (6.21)
+    tan_a: object    # cam slope (6.20)
+    h_c: object      # contact point displacement (6.22)
+    dhc: list        # dh_c/dq per coordinate, for the contact force's work
+    hc_rate: object  # h_c' (6.23), (6.26)
+
+
+def _coordinates(opts: Options):
+    """The coordinates beta, [y], [z], x (figs 6.1, 6.2) and their functions of time (0 for a
+    deflection the variant leaves out)."""
     b_c = Coordinate("beta", "rad", "cam angle", scale=1.0, initial_rate=omega_s.symbol)
     x_c = Coordinate("x", "m", "follower output position", scale=0.01)
     y_c = Coordinate("y", "m", "tangential deflection of the camshaft", scale=1e-5)
     z_c = Coordinate("z", "m", "deflection of the camshaft along the follower", scale=1e-5)
     coords = [b_c] + ([y_c] if opts.shaft_y else []) + ([z_c] if opts.shaft_z else []) + [x_c]
-    beta, x = b_c(t), x_c(t)
     y = y_c(t) if opts.shaft_y else sp.Integer(0)
     z = z_c(t) if opts.shaft_z else sp.Integer(0)
-    params = [h_m, beta_m, beta_0, R_b, omega_s, J, k, q_b, m_x, c_x, q_x]
-    if opts.shaft_y:
-        params += [m_y, c_y, q_y]
-    if opts.shaft_z:
-        params += [m_z, c_z, q_z]
-    P = {p.name: p.symbol for p in params}
-    first_order, modes, events, outputs = [], [], [], []
+    return coords, b_c(t), y, z, x_c(t)
 
-    # cam: (6.17)-(6.21)
+
+def _cam(opts: Options, P: dict, coords, beta, y, z) -> _Cam:
+    """Cam law, pitch radius, slope and the contact point's displacement (6.17)-(6.26)."""
     B = (beta - P["beta_0"]) / P["beta_m"]
     h = P["h_m"] * H(B)
     dh = sp.diff(h, beta)
@@ -216,163 +281,181 @@ def build(opts: Options = Options()) -> Model:
     tan_a = dh / R
     h_c = h - y * tan_a - z                       # (6.22)
     q_funcs = [c(t) for c in coords]
-    dhc = [sp.diff(h_c, qq) for qq in q_funcs]    # dh_c/dq, for the contact force's work
+    dhc = [sp.diff(h_c, qq) for qq in q_funcs]
     hc_rate = sum(g * qq.diff(t) for g, qq in zip(dhc, q_funcs))   # (6.23), (6.26)
+    return _Cam(B, h, R, tan_a, h_c, dhc, hc_rate)
 
-    # input angle: constant speed, or the asynchronous motor (A.5.6)-(A.5.9)
+
+def _drive(opts: Options, parts: _Parts):
+    """The input angle phi, its rate and the motor's speed deviation dw (None at constant
+    speed); the motor's states are declared with their rates by :func:`_motor`."""
+    P = parts.P
     if opts.motor == "constant":
-        phi, phi_rate = P["omega_s"] * t, P["omega_s"]
-    else:
-        params += [J_ma, G_a, alpha_w, mu_w] + ([T_el] if opts.motor == "second" else [])
-        P.update({p.name: p.symbol for p in params})
-        phi_s = FirstOrder("phi", "rad", "input angle of the camshaft (motor side of the shaft)", 0,
-                           scale=1.0)
-        dw_s = FirstOrder("dw", "rad/s", "speed deviation of the motor, reduced (A.5.8)", 0, scale=0.1)
-        phi, dw = phi_s(t), dw_s(t)
-        phi_rate = P["omega_s"] + dw
+        return P["omega_s"] * t, P["omega_s"], None
+    parts.use(J_ma, G_a, alpha_w, mu_w, *([T_el] if opts.motor == "second" else []))
+    phi = FirstOrder("phi", "rad", "input angle of the camshaft (motor side of the shaft)", 0)(t)
+    dw = FirstOrder("dw", "rad/s", "speed deviation of the motor, reduced (A.5.8)", 0)(t)
+    return phi, P["omega_s"] + dw, dw
 
-    # reduction gear and shaft torsion: the torque M reaching the cam (6.1)-(6.10)
+
+def _gear(opts: Options, parts: _Parts, phi, phi_rate, beta):
+    """The torque M reaching the cam through the reduction gear and the shaft torsion
+    (6.1)-(6.10): rigid, dry backlash, or backlash with a squeeze film."""
+    P = parts.P
     d_b = 2 * P["q_b"] * sp.sqrt(P["J"] * P["k"])
     if opts.gear == "rigid":
-        M = P["k"] * (phi - beta) + d_b * (phi_rate - beta.diff(t))
-    elif opts.gear == "backlash":
-        params.append(s_g)
-        P["s_g"] = s_g.symbol
+        return P["k"] * (phi - beta) + d_b * (phi_rate - beta.diff(t))
+    if opts.gear == "backlash":
+        parts.use(s_g)
         gear = Mode("gear", ("drive", "free", "back"), "flank of the reduction gear in contact",
                     initial="drive")
-        modes.append(gear)
+        parts.modes.append(gear)
         M_drive = P["k"] * (phi - beta) + d_b * (phi_rate - beta.diff(t))
         # the cam runs ahead of the gear by s_g when the back flank is hit
         M_back = P["k"] * (phi + P["s_g"] - beta) + d_b * (phi_rate - beta.diff(t))
-        M = gear.select(drive=M_drive, free=0, back=M_back)
-        events += [
+        parts.events += [
             Event("gear_lift_drive", phi - beta, -1, {"gear": ("drive",)}, (Branch({"gear": "free"}),)),
             Event("gear_hit_drive", phi - beta, 1, {"gear": ("free",)}, (Branch({"gear": "drive"}),)),
             Event("gear_hit_back", phi + P["s_g"] - beta, -1, {"gear": ("free",)}, (Branch({"gear": "back"}),)),
             Event("gear_lift_back", phi + P["s_g"] - beta, 1, {"gear": ("back",)}, (Branch({"gear": "free"}),)),
         ]
         # the massless wheel sits on a flank, or where the unloaded shaft leaves it (at beta)
-        outputs.append(Output("gear_gap", gear.select(drive=0, free=phi - beta, back=-P["s_g"]), "rad",
-                              "input minus gear output angle (6.1): 0 on the driving flank, -s_g on the other"))
-    else:  # squeeze film between the teeth (6.5)-(6.9)
-        params += [s_g, V_T]
-        P.update({"s_g": s_g.symbol, "V_T": V_T.symbol})
-        phir_s = FirstOrder("phir", "rad", "angle of the gear output wheel (6.1)", 0, scale=1.0)
-        phir = phir_s(t)
-        N = P["k"] * (phir - beta) + d_b * (phi_rate - beta.diff(t))
-        # as with the dry gear, the wheel lies in [phi, phi + s_g]: the film on the driving
-        # flank is phir - phi (AA, (6.7)), on the back flank phi + s_g - phir (BB, (6.8)),
-        # and either closes while it carries the torque N
-        gap_d = _clipped(phir - phi)
-        gap_b = _clipped(phi + P["s_g"] - phir)
-        W = P["V_T"] * sp.Piecewise((gap_d ** sp.Rational(-3, 2), N > 0), (gap_b ** sp.Rational(-3, 2), True))
-        M = N * W / (W + d_b)
-        first_order.append(FirstOrder("phir", phir_s.unit, phir_s.doc, phi_rate - N / (W + d_b),
-                                      scale=1.0))
-        outputs.append(Output("gear_gap", phi - phir, "rad", "input minus gear output angle (6.1): 0 on the driving flank, -s_g on the other"))
+        parts.outputs.append(Output("gear_gap", gear.select(drive=0, free=phi - beta, back=-P["s_g"]), "rad",
+                                    "input minus gear output angle (6.1): 0 on the driving flank, -s_g on the other"))
+        return gear.select(drive=M_drive, free=0, back=M_back)
+    # squeeze film between the teeth (6.5)-(6.9)
+    parts.use(s_g, V_T)
+    phir_s = FirstOrder("phir", "rad", "angle of the gear output wheel (6.1)", 0, scale=1.0)
+    phir = phir_s(t)
+    N = P["k"] * (phir - beta) + d_b * (phi_rate - beta.diff(t))
+    # as with the dry gear, the wheel lies in [phi, phi + s_g]: the film on the driving
+    # flank is phir - phi (AA, (6.7)), on the back flank phi + s_g - phir (BB, (6.8)),
+    # and either closes while it carries the torque N
+    gap_d = _clipped(phir - phi)
+    gap_b = _clipped(phi + P["s_g"] - phir)
+    W = P["V_T"] * sp.Piecewise((gap_d ** sp.Rational(-3, 2), N > 0), (gap_b ** sp.Rational(-3, 2), True))
+    parts.first_order.append(FirstOrder("phir", phir_s.unit, phir_s.doc, phi_rate - N / (W + d_b),
+                                        scale=1.0))
+    parts.outputs.append(Output("gear_gap", phi - phir, "rad", "input minus gear output angle (6.1): 0 on the driving flank, -s_g on the other"))
+    return N * W / (W + d_b)
 
-    # roller, linkage and cam contact: the force F_x between cam and follower
+
+def _roller(opts: Options, parts: _Parts, cam: _Cam, x):
+    """The force F_x between cam and follower linkage (6.42) through the roller: held on both
+    sides, in spring-held contact, in a groove with backlash, or with a squeeze film
+    (6.27)-(6.41)."""
+    P = parts.P
     d_x = 2 * P["q_x"] * sp.sqrt(P["m_x"] * P["c_x"])
-    delta = h_c - x
-    delta_rate = hc_rate - x.diff(t)
+    delta = cam.h_c - x
+    delta_rate = cam.hc_rate - x.diff(t)
     if opts.roller == "bilateral":
-        Fx = P["c_x"] * delta + d_x * delta_rate
-    elif opts.roller == "contact":
+        return P["c_x"] * delta + d_x * delta_rate
+    if opts.roller == "contact":
         roller = Mode("roller", ("contact", "free"), "roller on the cam or lifted off (follower jump)",
                       initial="contact")
-        modes.append(roller)
-        Fx = roller.select(contact=P["c_x"] * delta + d_x * delta_rate, free=0)
-        events += [
+        parts.modes.append(roller)
+        parts.events += [
             Event("roller_lift", delta, -1, {"roller": ("contact",)}, (Branch({"roller": "free"}),)),
             Event("roller_land", delta, 1, {"roller": ("free",)}, (Branch({"roller": "contact"}),)),
         ]
-        outputs.append(Output("roller_gap", -delta, "m", "gap between roller and cam (negative: pressed)"))
-    elif opts.roller == "groove":
-        params.append(s_r)
-        P["s_r"] = s_r.symbol
+        parts.outputs.append(Output("roller_gap", -delta, "m", "gap between roller and cam (negative: pressed)"))
+        return roller.select(contact=P["c_x"] * delta + d_x * delta_rate, free=0)
+    if opts.roller == "groove":
+        parts.use(s_r)
         roller = Mode("roller", ("lower", "free", "upper"), "groove wall the roller touches",
                       initial="lower")
-        modes.append(roller)
-        delta_u = x - h_c - P["s_r"]
-        Fx = roller.select(lower=P["c_x"] * delta + d_x * delta_rate, free=0,
-                           upper=-(P["c_x"] * delta_u - d_x * delta_rate))
-        events += [
+        parts.modes.append(roller)
+        delta_u = x - cam.h_c - P["s_r"]
+        parts.events += [
             Event("roller_leave_lower", delta, -1, {"roller": ("lower",)}, (Branch({"roller": "free"}),)),
             Event("roller_hit_lower", delta, 1, {"roller": ("free",)}, (Branch({"roller": "lower"}),)),
             Event("roller_hit_upper", delta_u, 1, {"roller": ("free",)}, (Branch({"roller": "upper"}),)),
             Event("roller_leave_upper", delta_u, -1, {"roller": ("upper",)}, (Branch({"roller": "free"}),)),
         ]
         # the massless roller sits on a wall, or where the unloaded linkage leaves it (at x)
-        outputs.append(Output("roller_gap", roller.select(lower=0, free=-delta, upper=P["s_r"]), "m",
-                              "roller position in the groove over the cam wall: 0 lower wall, s_r upper"))
-    else:  # groove with the squeeze film (6.37)-(6.41)
-        params += [s_r, V_R]
-        P.update({"s_r": s_r.symbol, "V_R": V_R.symbol})
-        hr_s = FirstOrder("hr", "m", "roller position (6.41)", 0, scale=0.01)
-        hr = hr_s(t)
-        N = P["c_x"] * (hr - x) + d_x * (hc_rate - x.diff(t))
-        gap_l = _clipped(hr - h_c)
-        gap_u = _clipped(h_c + P["s_r"] - hr)
-        W = P["V_R"] * sp.Piecewise((gap_l ** sp.Rational(-3, 2), N > 0), (gap_u ** sp.Rational(-3, 2), True))
-        Fx = N * W / (W + d_x)
-        first_order.append(FirstOrder("hr", "m", hr_s.doc, hc_rate - N / (W + d_x), scale=0.01))
-        outputs.append(Output("roller_gap", hr - h_c, "m", "roller over the cam wall: 0 lower wall, s_r upper"))
+        parts.outputs.append(Output("roller_gap", roller.select(lower=0, free=-delta, upper=P["s_r"]), "m",
+                                    "roller position in the groove over the cam wall: 0 lower wall, s_r upper"))
+        return roller.select(lower=P["c_x"] * delta + d_x * delta_rate, free=0,
+                             upper=-(P["c_x"] * delta_u - d_x * delta_rate))
+    # groove with the squeeze film (6.37)-(6.41)
+    parts.use(s_r, V_R)
+    hr_s = FirstOrder("hr", "m", "roller position (6.41)", 0, scale=0.01)
+    hr = hr_s(t)
+    N = P["c_x"] * (hr - x) + d_x * (cam.hc_rate - x.diff(t))
+    gap_l = _clipped(hr - cam.h_c)
+    gap_u = _clipped(cam.h_c + P["s_r"] - hr)
+    W = P["V_R"] * sp.Piecewise((gap_l ** sp.Rational(-3, 2), N > 0), (gap_u ** sp.Rational(-3, 2), True))
+    parts.first_order.append(FirstOrder("hr", "m", hr_s.doc, cam.hc_rate - N / (W + d_x), scale=0.01))
+    parts.outputs.append(Output("roller_gap", hr - cam.h_c, "m", "roller over the cam wall: 0 lower wall, s_r upper"))
+    return N * W / (W + d_x)
 
-    # generalized forces: contact, shaft torque, friction, spring, external
+
+def _forces(opts: Options, parts: _Parts, coords, cam: _Cam, Fx, M, beta, x) -> dict:
+    """Generalized forces per coordinate: the contact force's work, the shaft torque, the
+    external force and Coulomb friction on the cam (6.13) and in the linkage (6.43)."""
+    P = parts.P
     Q = {c.name: sp.Integer(0) for c in coords}
-    for c, g in zip(coords, dhc):
+    for c, g in zip(coords, cam.dhc):
         Q[c.name] += -Fx * g
     Q["x"] += Fx
     Q["beta"] += M
     F_s = 0
     if opts.spring:
-        params += [F_0, c_s]
-        P.update({"F_0": F_0.symbol, "c_s": c_s.symbol})
+        parts.use(F_0, c_s)
         F_s = P["F_0"] + P["c_s"] * x
     if opts.external:
-        params.append(F_ex)
-        P["F_ex"] = F_ex.symbol
+        parts.use(F_ex)
         Q["x"] += P["F_ex"]
     if opts.cam_friction:
-        params.append(nu_b)
-        P["nu_b"] = nu_b.symbol
-        limit = sp.Abs(Fx) * P["nu_b"] * R * sp.sqrt(1 + tan_a**2)             # (6.13)
-        mode, force, evs = _coulomb("camfric", b_c, beta.diff(t), limit, Q["beta"],
+        parts.use(nu_b)
+        limit = sp.Abs(Fx) * P["nu_b"] * cam.R * sp.sqrt(1 + cam.tan_a**2)     # (6.13)
+        mode, force, evs = _coulomb("camfric", coords[0], beta.diff(t), limit, Q["beta"],
                                     "friction on the cam: slipping forward, sticking, backward", "forward")
-        modes.append(mode)
-        events += evs
+        parts.modes.append(mode)
+        parts.events += evs
         Q["beta"] += force
     if opts.linkage_friction:
-        params.append(nu_x)
-        P["nu_x"] = nu_x.symbol
+        parts.use(nu_x)
         limit = sp.Abs(Fx) * P["nu_x"]                                           # (6.43)
-        mode, force, evs = _coulomb("linkfric", x_c, x.diff(t), limit, Q["x"] - F_s,
+        mode, force, evs = _coulomb("linkfric", coords[-1], x.diff(t), limit, Q["x"] - F_s,
                                     "friction in the follower linkage: forward, sticking, backward", "stick")
-        modes.append(mode)
-        events += evs
+        parts.modes.append(mode)
+        parts.events += evs
         Q["x"] += force
+    return Q
 
-    # the motor: its torque drives phi through the worm gear (6.71), (6.72)
-    if opts.motor != "constant":
-        worm = Mode("worm", ("drive", "driven"), "worm gear: motor driving or driven", initial="drive")
-        modes.append(worm)
-        ta = sp.tan(P["alpha_w"])
-        M_ma = worm.select(drive=M * sp.tan(P["alpha_w"] + P["mu_w"]) / ta,
-                           driven=M * sp.tan(P["alpha_w"] - P["mu_w"]) / ta)
-        events += [Event("worm_reverse", M, -1, {"worm": ("drive",)}, (Branch({"worm": "driven"}),)),
-                   Event("worm_forward", M, 1, {"worm": ("driven",)}, (Branch({"worm": "drive"}),))]
-        if opts.motor == "second":
-            Mea_s = FirstOrder("Mea", "N m", "electromagnetic torque, reduced (A.5.6)", 0, scale=1.0)
-            Mea = Mea_s(t)
-            first_order.append(FirstOrder("Mea", "N m", Mea_s.doc, (-P["G_a"] * dw - Mea) / P["T_el"]))
-        else:
-            Mea = -P["G_a"] * dw                                                   # T_el -> 0
-        first_order = [FirstOrder("phi", "rad", "input angle of the camshaft (motor side)", phi_rate),
-                       FirstOrder("dw", "rad/s", "speed deviation of the motor, reduced (A.5.8)",
-                                  (Mea - M_ma) / P["J_ma"], scale=0.1)] + first_order
-        outputs += [Output("motor_speed_var", dw / P["omega_s"], "1", "motor speed deviation over w_s"),
-                    Output("M_motor", Mea, "N m", "electromagnetic torque of the motor, reduced")]
 
+def _motor(opts: Options, parts: _Parts, M, phi_rate, dw) -> None:
+    """The asynchronous motor's states: its torque drives phi through the worm gear
+    (6.71), (6.72), (A.5.6)-(A.5.9).  Nothing at constant speed."""
+    if opts.motor == "constant":
+        return
+    P = parts.P
+    worm = Mode("worm", ("drive", "driven"), "worm gear: motor driving or driven", initial="drive")
+    parts.modes.append(worm)
+    ta = sp.tan(P["alpha_w"])
+    M_ma = worm.select(drive=M * sp.tan(P["alpha_w"] + P["mu_w"]) / ta,
+                       driven=M * sp.tan(P["alpha_w"] - P["mu_w"]) / ta)
+    parts.events += [Event("worm_reverse", M, -1, {"worm": ("drive",)}, (Branch({"worm": "driven"}),)),
+                     Event("worm_forward", M, 1, {"worm": ("driven",)}, (Branch({"worm": "drive"}),))]
+    if opts.motor == "second":
+        Mea_s = FirstOrder("Mea", "N m", "electromagnetic torque, reduced (A.5.6)", 0, scale=1.0)
+        Mea = Mea_s(t)
+        parts.first_order.append(FirstOrder("Mea", "N m", Mea_s.doc, (-P["G_a"] * dw - Mea) / P["T_el"]))
+    else:
+        Mea = -P["G_a"] * dw                                                       # T_el -> 0
+    # the drive's own states come first, before those of the squeeze films
+    parts.first_order[:0] = [
+        FirstOrder("phi", "rad", "input angle of the camshaft (motor side)", phi_rate),
+        FirstOrder("dw", "rad/s", "speed deviation of the motor, reduced (A.5.8)",
+                   (Mea - M_ma) / P["J_ma"], scale=0.1)]
+    parts.outputs += [Output("motor_speed_var", dw / P["omega_s"], "1", "motor speed deviation over w_s"),
+                      Output("M_motor", Mea, "N m", "electromagnetic torque of the motor, reduced")]
+
+
+def _energies(opts: Options, P: dict, beta, y, z, x):
+    """Kinetic and potential energy and Rayleigh's dissipation function (sec. 6.5, (6.45),
+    (6.47))."""
     kinetic = P["J"] * beta.diff(t) ** 2 / 2 + P["m_x"] * x.diff(t) ** 2 / 2
     potential = sp.Integer(0)
     dissipation = sp.Integer(0)
@@ -386,22 +469,39 @@ def build(opts: Options = Options()) -> Model:
         dissipation += 2 * P["q_z"] * sp.sqrt(P["m_z"] * P["c_z"]) * z.diff(t) ** 2 / 2
     if opts.spring:
         potential += P["F_0"] * x + P["c_s"] * x**2 / 2
+    return kinetic, potential, dissipation
 
+
+def _common_outputs(opts: Options, P: dict, cam: _Cam, M, Fx, beta, y, x) -> list:
+    """The outputs every variant has: dimensionless accelerations and error (sec. 8.2),
+    torque, contact force, speed variation (2.54) and slope."""
     t_m = P["beta_m"] / P["omega_s"]
-    outputs = [
-        Output("B", B, "1", "cam angle over the rise angle (6.17)"),
+    return [
+        Output("B", cam.B, "1", "cam angle over the rise angle (6.17)"),
         Output("Xdd", x.diff(t, 2) * t_m**2 / P["h_m"], "1", "follower acceleration x'' t_m^2/h_m"),
         Output("Bdd", beta.diff(t, 2) * t_m**2 / P["beta_m"], "1", "cam angular acceleration beta'' t_m^2/beta_m"),
-        Output("U", (x - h) / P["h_m"], "1", "positional error over the stroke, (x - h(beta))/h_m"),
+        Output("U", (x - cam.h) / P["h_m"], "1", "positional error over the stroke, (x - h(beta))/h_m"),
         Output("xdd", x.diff(t, 2), "m/s^2", "follower acceleration"),
         Output("torque", M, "N m", "shaft torque driving the cam (6.10)"),
         Output("Fx", Fx, "N", "force between cam and follower linkage (6.42)"),
-        Output("speed_var", (beta.diff(t) - (y.diff(t) / R if opts.shaft_y else 0)) / P["omega_s"] - 1,
+        Output("speed_var", (beta.diff(t) - (y.diff(t) / cam.R if opts.shaft_y else 0)) / P["omega_s"] - 1,
                "1", "variation of the fictitious angular velocity seen by the roller (2.54)"),
-        Output("tan_alpha", tan_a, "1", "cam slope (6.20)"),
-    ] + outputs
+        Output("tan_alpha", cam.tan_a, "1", "cam slope (6.20)"),
+    ]
 
-    forces = tuple(Q[c.name] for c in coords)
+
+def build(opts: Options = Options()) -> Model:
+    """The DYNACAM variant with the elements ``opts`` selects (thesis ch. 6)."""
+    coords, beta, y, z, x = _coordinates(opts)
+    parts = _Parts([h_m, beta_m, beta_0, R_b, omega_s, J, k, q_b, m_x, c_x, q_x]
+                   + ([m_y, c_y, q_y] if opts.shaft_y else []) + ([m_z, c_z, q_z] if opts.shaft_z else []))
+    cam = _cam(opts, parts.P, coords, beta, y, z)
+    phi, phi_rate, dw = _drive(opts, parts)
+    M = _gear(opts, parts, phi, phi_rate, beta)
+    Fx = _roller(opts, parts, cam, x)
+    Q = _forces(opts, parts, coords, cam, Fx, M, beta, x)
+    _motor(opts, parts, M, phi_rate, dw)
+    kinetic, potential, dissipation = _energies(opts, parts.P, beta, y, z, x)
     return Model(
         name=opts.name,
         title="DYNACAM, cam mechanism with four degrees of freedom and drive",
@@ -413,12 +513,13 @@ def build(opts: Options = Options()) -> Model:
         kinetic=kinetic,
         potential=potential,
         dissipation=dissipation,
-        forces=forces,
-        parameters=tuple(params),
-        outputs=tuple(outputs),
-        first_order=tuple(first_order),
-        modes=tuple(modes),
-        events=tuple(events),
+        forces=tuple(Q[c.name] for c in coords),
+        parameters=tuple(parts.params),
+        outputs=tuple(_common_outputs(opts, parts.P, cam, M, Fx, beta, y, x) + parts.outputs),
+        first_order=tuple(parts.first_order),
+        modes=tuple(parts.modes),
+        events=tuple(parts.events),
         residual=Residual(error="U", acceleration="Xdd", rise_end=1.0, rise_state="B"),
         options=opts.items(),
+        variant=opts.description(),
     )

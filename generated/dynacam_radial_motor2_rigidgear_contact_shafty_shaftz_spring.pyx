@@ -2,11 +2,23 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1d553bd07458d93b9c1a17a297cf9a5bd234991fdfec296be288adf02d4d8196
-# Text hash: sha256:adf92e5bcd77b8ca8d23e8b84fd6efa47fd122f16ef66f774cc9c1fd5023b1f2
+# Derivation key: sha256:0a84251afcc6935a3e0604f86397cccf4ccd26bd1b58dfb4c2efae63b144f6f4
+# Text hash: sha256:d264e11a7690befb378c348c6046c9be180cd6275ca6420ace164eeb9c65cd52
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:9da5b42e4e51c279f057e26d33dd05113cf11c1c0d44268a2b3d6ff333939eeb
+# Source hash: sha256:fa3d1a1bf50cc1826deae5f643df492e0ff929eac89b7cd3e1ea7b4a63d46d0a
+#
+# This variant:
+#   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
+#   motor = second: asynchronous motor with electrical lag T_el (A.5.6)-(A.5.9), worm gear (6.71), (6.72)
+#   gear = rigid: reduction gear without backlash: the shaft torsion k, d_b alone (6.10)
+#   roller = contact: roller held on the cam by the follower spring; it may lift off (6.42)
+#   shaft_y = yes: tangential shaft deflection y (6.12), (6.16)
+#   shaft_z = yes: shaft deflection z along the follower (6.11), (6.15)
+#   cam_friction = no: no friction on the cam
+#   linkage_friction = no: no friction in the linkage
+#   spring = yes: follower spring with preload F_0 (6.45)
+#   external = no: no external force
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -52,7 +64,7 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport sqrt
+from libc.math cimport sqrt, tan
 
 from camdyn.runtime.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
@@ -61,18 +73,20 @@ from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_
 # sizes, known when the integration loops (loops.pxi) are compiled into this module
 cdef enum:
     _NQ = 4                  # second-order coordinates
-    _NS = 8                  # states: q, q', first-order states
+    _NS = 11                  # states: q, q', first-order states
     _NCAM = 1                # cam input instances (one segment mode each)
-    _NM = 2                  # modes: cam segments, then the force elements' modes
-    _NE = 4                  # events
+    _NM = 3                  # modes: cam segments, then the force elements' modes
+    _NE = 6                  # events
     _NQ1 = 4                 # array sizes that must not be zero
-    _NE1 = 4
+    _NE1 = 6
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # roller_lift
 _EDIR[1] = 1  # roller_land
-_EDIR[2] = 1  # cam0_hi
-_EDIR[3] = -1  # cam0_lo
+_EDIR[2] = -1  # worm_reverse
+_EDIR[3] = 1  # worm_forward
+_EDIR[4] = 1  # cam0_hi
+_EDIR[5] = -1  # cam0_lo
 
 
 
@@ -95,8 +109,13 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
+    cdef double J_ma = ctx.p[17]
+    cdef double G_a = ctx.p[18]
+    cdef double alpha_w = ctx.p[19]
+    cdef double mu_w = ctx.p[20]
+    cdef double T_el = ctx.p[21]
+    cdef double F_0 = ctx.p[22]
+    cdef double c_s = ctx.p[23]
     cdef double _c0 = (1.0/J)
     cdef double _c1 = _c0*k
     cdef double _c2 = c_x*h_m
@@ -111,11 +130,18 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c11 = 2.0*sqrt(k)*q_b
     cdef double _c12 = _c11/_c10
     cdef double _c13 = (1.0/m_y)
-    cdef double _c14 = (1.0/h_m)
-    cdef double _c15 = (1.0/(omega_s*omega_s))
-    cdef double _c16 = (1.0/_c6)
-    ctx.k[0] = -_c1  # _k0
-    ctx.k[1] = _c1*omega_s  # _k1
+    cdef double _c14 = tan(alpha_w + mu_w)
+    cdef double _c15 = (1.0/tan(alpha_w))
+    cdef double _c16 = _c15*k
+    cdef double _c17 = _c10*_c11
+    cdef double _c18 = _c15*_c17
+    cdef double _c19 = tan(alpha_w - mu_w)
+    cdef double _c20 = (1.0/T_el)
+    cdef double _c21 = (1.0/h_m)
+    cdef double _c22 = (1.0/(omega_s*omega_s))
+    cdef double _c23 = (1.0/_c6)
+    ctx.k[0] = _c1  # _k0
+    ctx.k[1] = -_c1  # _k1
     ctx.k[2] = -c_x  # _k2
     ctx.k[3] = _c2  # _k3
     ctx.k[4] = -_c3  # _k4
@@ -132,34 +158,40 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[15] = _c3*_c8  # _k15
     ctx.k[16] = -_c4*_c9  # _k16
     ctx.k[17] = -_c12  # _k17
-    ctx.k[18] = _c12*omega_s  # _k18
-    ctx.k[19] = _c9  # _k19
-    ctx.k[20] = -_c0*_c8  # _k20
-    ctx.k[21] = -_c13*c_y  # _k21
-    ctx.k[22] = _c13*h_m  # _k22
-    ctx.k[23] = -2.0*sqrt(c_y)*q_y/sqrt(m_y)  # _k23
-    ctx.k[24] = -c_z  # _k24
-    ctx.k[25] = -2.0*sqrt(c_z)*sqrt(m_z)*q_z  # _k25
-    ctx.k[26] = (1.0/m_z)  # _k26
-    ctx.k[27] = -F_0  # _k27
-    ctx.k[28] = -c_s  # _k28
-    ctx.k[29] = (1.0/m_x)  # _k29
-    ctx.k[30] = -beta_0  # _k30
-    ctx.k[31] = _c4  # _k31
-    ctx.k[32] = _c14*_c15*_c6  # _k32
-    ctx.k[33] = _c15*beta_m  # _k33
-    ctx.k[34] = -h_m  # _k34
-    ctx.k[35] = _c14  # _k35
-    ctx.k[36] = -k  # _k36
-    ctx.k[37] = k*omega_s  # _k37
-    ctx.k[38] = _c10*_c11  # _k38
-    ctx.k[39] = -_c2*_c4  # _k39
-    ctx.k[40] = _c5  # _k40
-    ctx.k[41] = _c16*_c8  # _k41
-    ctx.k[42] = -_c16*h_m  # _k42
-    ctx.k[43] = -_c5  # _k43
-    ctx.k[44] = _c3  # _k44
-    ctx.k[45] = (1.0/omega_s)  # _k45
+    ctx.k[18] = _c12  # _k18
+    ctx.k[19] = _c12*omega_s  # _k19
+    ctx.k[20] = _c9  # _k20
+    ctx.k[21] = -_c0*_c8  # _k21
+    ctx.k[22] = -_c13*c_y  # _k22
+    ctx.k[23] = _c13*h_m  # _k23
+    ctx.k[24] = -2.0*sqrt(c_y)*q_y/sqrt(m_y)  # _k24
+    ctx.k[25] = -c_z  # _k25
+    ctx.k[26] = -2.0*sqrt(c_z)*sqrt(m_z)*q_z  # _k26
+    ctx.k[27] = (1.0/m_z)  # _k27
+    ctx.k[28] = -F_0  # _k28
+    ctx.k[29] = -c_s  # _k29
+    ctx.k[30] = (1.0/m_x)  # _k30
+    ctx.k[31] = _c14*_c16  # _k31
+    ctx.k[32] = _c14*_c18  # _k32
+    ctx.k[33] = _c16*_c19  # _k33
+    ctx.k[34] = _c18*_c19  # _k34
+    ctx.k[35] = (1.0/J_ma)  # _k35
+    ctx.k[36] = -_c20  # _k36
+    ctx.k[37] = -G_a*_c20  # _k37
+    ctx.k[38] = -beta_0  # _k38
+    ctx.k[39] = _c4  # _k39
+    ctx.k[40] = _c21*_c22*_c6  # _k40
+    ctx.k[41] = _c22*beta_m  # _k41
+    ctx.k[42] = -h_m  # _k42
+    ctx.k[43] = _c21  # _k43
+    ctx.k[44] = _c17  # _k44
+    ctx.k[45] = -_c2*_c4  # _k45
+    ctx.k[46] = _c5  # _k46
+    ctx.k[47] = _c23*_c8  # _k47
+    ctx.k[48] = -_c23*h_m  # _k48
+    ctx.k[49] = -_c5  # _k49
+    ctx.k[50] = _c3  # _k50
+    ctx.k[51] = (1.0/omega_s)  # _k51
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -181,8 +213,13 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
+    cdef double J_ma = ctx.p[17]
+    cdef double G_a = ctx.p[18]
+    cdef double alpha_w = ctx.p[19]
+    cdef double mu_w = ctx.p[20]
+    cdef double T_el = ctx.p[21]
+    cdef double F_0 = ctx.p[22]
+    cdef double c_s = ctx.p[23]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -229,6 +266,12 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k43 = ctx.k[43]
     cdef double _k44 = ctx.k[44]
     cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -237,6 +280,9 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double yd = _y[5]
     cdef double zd = _y[6]
     cdef double xd = _y[7]
+    cdef double phi = _y[8]
+    cdef double dw = _y[9]
+    cdef double Mea = _y[10]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     cdef int _v = ctx.variant
     cdef double* _c
@@ -254,7 +300,7 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
             camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], _a, _cam0)
             _c[0], _c[1], _c[2], _c[3], _c[4] = _a, _cam0[0], _cam0[1], _cam0[2], _cam0[3]
 
-    cdef double _s0_0, _s0_1, _s0_2, _s0_3, _s0_4, _s0_5, _s0_6, _s0_7, _s1_0
+    cdef double _s0_0, _s0_1, _s0_2, _s0_3, _s0_4, _s0_5, _s0_6, _s0_7, _s0_8, _s0_9, _s0_10, _s1_0, _s1_1, _s1_2, _s1_3
     _dy[0] = betad
     _dy[1] = yd
     _dy[2] = zd
@@ -268,21 +314,33 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
         _s0_5 = ((_cam0[0]*_k3 + _cam0[1]*_k9*betad + _k15*_s0_2*_s0_4 + _k2*x + _k2*z + _k4*xd + _k4*zd + _k7*_s0_1*y + _k8*_s0_1*yd + _k8*_s0_2*_s0_3) if ((ctx.mode[1] == 0.0)) else (0.0))
         _s0_6 = _cam0[1]*_s0_5
         _s0_7 = _s0_5*y
-        _dy[4] = _k0*beta + _k1*t + _k16*_s0_6 + _k17*betad + _k18 + _k19*_s0_3*_s0_7 + _k20*_s0_4*_s0_7
-        _dy[5] = _k21*y + _k22*_s0_0*_s0_6 + _k23*yd
-        _dy[6] = _k26*(_k24*z + _k25*zd + _s0_5)
-        _dy[7] = _k29*(_k27 + _k28*x + _s0_5)
+        _s0_8 = dw + omega_s
+        _s0_9 = beta - phi
+        _s0_10 = _s0_8 - betad
+        _dy[4] = _k0*phi + _k1*beta + _k16*_s0_6 + _k17*betad + _k18*dw + _k19 + _k20*_s0_3*_s0_7 + _k21*_s0_4*_s0_7
+        _dy[5] = _k22*y + _k23*_s0_0*_s0_6 + _k24*yd
+        _dy[6] = _k27*(_k25*z + _k26*zd + _s0_5)
+        _dy[7] = _k30*(_k28 + _k29*x + _s0_5)
+        _dy[8] = _s0_8
+        _dy[9] = _k35*(Mea - ((-_k31*_s0_9 + _k32*_s0_10) if ((ctx.mode[2] == 0.0)) else (-_k33*_s0_9 + _k34*_s0_10)))
+        _dy[10] = Mea*_k36 + _k37*dw
     elif _v == 1:  # in a dwell: 0
         _s1_0 = ((_cam0[0]*_k3 + _k2*x + _k2*z + _k4*xd + _k4*zd) if ((ctx.mode[1] == 0.0)) else (0.0))
-        _dy[4] = _k0*beta + _k1*t + _k17*betad + _k18
-        _dy[5] = _k21*y + _k23*yd
-        _dy[6] = _k26*(_k24*z + _k25*zd + _s1_0)
-        _dy[7] = _k29*(_k27 + _k28*x + _s1_0)
+        _s1_1 = dw + omega_s
+        _s1_2 = beta - phi
+        _s1_3 = _s1_1 - betad
+        _dy[4] = _k0*phi + _k1*beta + _k17*betad + _k18*dw + _k19
+        _dy[5] = _k22*y + _k24*yd
+        _dy[6] = _k27*(_k25*z + _k26*zd + _s1_0)
+        _dy[7] = _k30*(_k28 + _k29*x + _s1_0)
+        _dy[8] = _s1_1
+        _dy[9] = _k35*(Mea - ((-_k31*_s1_2 + _k32*_s1_3) if ((ctx.mode[2] == 0.0)) else (-_k33*_s1_2 + _k34*_s1_3)))
+        _dy[10] = Mea*_k36 + _k37*dw
 
 
 cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept nogil:
-    """The named outputs (B, Xdd, Bdd, U, xdd, torque, Fx, speed_var, tan_alpha, roller_gap)."""
-    cdef double _dy[8]
+    """The named outputs (B, Xdd, Bdd, U, xdd, torque, Fx, speed_var, tan_alpha, roller_gap, motor_speed_var, M_motor)."""
+    cdef double _dy[11]
     rhs(t, _y, _dy, ctx)
     cdef double h_m = ctx.p[0]
     cdef double beta_m = ctx.p[1]
@@ -301,8 +359,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
+    cdef double J_ma = ctx.p[17]
+    cdef double G_a = ctx.p[18]
+    cdef double alpha_w = ctx.p[19]
+    cdef double mu_w = ctx.p[20]
+    cdef double T_el = ctx.p[21]
+    cdef double F_0 = ctx.p[22]
+    cdef double c_s = ctx.p[23]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -349,6 +412,12 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k43 = ctx.k[43]
     cdef double _k44 = ctx.k[44]
     cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -357,6 +426,9 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double yd = _y[5]
     cdef double zd = _y[6]
     cdef double xd = _y[7]
+    cdef double phi = _y[8]
+    cdef double dw = _y[9]
+    cdef double Mea = _y[10]
     cdef double betadd = _dy[4]
     cdef double ydd = _dy[5]
     cdef double zdd = _dy[6]
@@ -364,23 +436,25 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
-    cdef double _o0 = _cam0[0]*_k34 + x
+    cdef double _o0 = _cam0[0]*_k42 + x
     cdef double _o1 = R_b + _cam0[0]*h_m
     cdef double _o2 = (1.0/_o1)
     cdef double _o3 = _o2*y
     cdef double _o4 = _o2*yd
-    cdef double _o5 = _cam0[1]*_k40
+    cdef double _o5 = _cam0[1]*_k46
     cdef double _o6 = _o2*_o5
-    _out[0] = _k31*(_k30 + beta)  # B
-    _out[1] = _k32*_dy[7]  # Xdd
-    _out[2] = _k33*_dy[4]  # Bdd
-    _out[3] = _k35*_o0  # U
+    _out[0] = _k39*(_k38 + beta)  # B
+    _out[1] = _k40*_dy[7]  # Xdd
+    _out[2] = _k41*_dy[4]  # Bdd
+    _out[3] = _k43*_o0  # U
     _out[4] = _dy[7]  # xdd
-    _out[5] = _k36*beta + _k37*t - _k38*(betad - omega_s)  # torque
-    _out[6] = ((_cam0[0]*_k3 + _cam0[1]*_k39*_o3 + _k2*x + _k2*z + _k44*(_cam0[1]*_k43*_o4 + betad*((_cam0[1]*_cam0[1])*_k41*y/(_o1*_o1) + _cam0[2]*_k42*_o3 + _o5) - xd - zd)) if ((ctx.mode[1] == 0.0)) else (0.0))  # Fx
-    _out[7] = _k45*(-_o4 + betad) - 1.0  # speed_var
+    _out[5] = _k44*(-betad + dw + omega_s) - k*(beta - phi)  # torque
+    _out[6] = ((_cam0[0]*_k3 + _cam0[1]*_k45*_o3 + _k2*x + _k2*z + _k50*(_cam0[1]*_k49*_o4 + betad*((_cam0[1]*_cam0[1])*_k47*y/(_o1*_o1) + _cam0[2]*_k48*_o3 + _o5) - xd - zd)) if ((ctx.mode[1] == 0.0)) else (0.0))  # Fx
+    _out[7] = _k51*(-_o4 + betad) - 1.0  # speed_var
     _out[8] = _o6  # tan_alpha
     _out[9] = _o0 + _o6*y + z  # roller_gap
+    _out[10] = _k51*dw  # motor_speed_var
+    _out[11] = Mea  # M_motor
 
 
 cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, Ctx* ctx) noexcept nogil:
@@ -402,8 +476,13 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
+    cdef double J_ma = ctx.p[17]
+    cdef double G_a = ctx.p[18]
+    cdef double alpha_w = ctx.p[19]
+    cdef double mu_w = ctx.p[20]
+    cdef double T_el = ctx.p[21]
+    cdef double F_0 = ctx.p[22]
+    cdef double c_s = ctx.p[23]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -450,6 +529,12 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k43 = ctx.k[43]
     cdef double _k44 = ctx.k[44]
     cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -458,6 +543,9 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double yd = _y[5]
     cdef double zd = _y[6]
     cdef double xd = _y[7]
+    cdef double phi = _y[8]
+    cdef double dw = _y[9]
+    cdef double Mea = _y[10]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
@@ -524,8 +612,13 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
+    cdef double J_ma = ctx.p[17]
+    cdef double G_a = ctx.p[18]
+    cdef double alpha_w = ctx.p[19]
+    cdef double mu_w = ctx.p[20]
+    cdef double T_el = ctx.p[21]
+    cdef double F_0 = ctx.p[22]
+    cdef double c_s = ctx.p[23]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -572,6 +665,12 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k43 = ctx.k[43]
     cdef double _k44 = ctx.k[44]
     cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -580,6 +679,9 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double yd = _y[5]
     cdef double zd = _y[6]
     cdef double xd = _y[7]
+    cdef double phi = _y[8]
+    cdef double dw = _y[9]
+    cdef double Mea = _y[10]
 
     ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], beta/beta_m - beta_0/beta_m)
     refresh(ctx)
@@ -604,8 +706,13 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
+    cdef double J_ma = ctx.p[17]
+    cdef double G_a = ctx.p[18]
+    cdef double alpha_w = ctx.p[19]
+    cdef double mu_w = ctx.p[20]
+    cdef double T_el = ctx.p[21]
+    cdef double F_0 = ctx.p[22]
+    cdef double c_s = ctx.p[23]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -652,6 +759,12 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double _k43 = ctx.k[43]
     cdef double _k44 = ctx.k[44]
     cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -660,13 +773,18 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double yd = _y[5]
     cdef double zd = _y[6]
     cdef double xd = _y[7]
+    cdef double phi = _y[8]
+    cdef double dw = _y[9]
+    cdef double Mea = _y[10]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     _g[0] = (_cam0[0]*h_m - _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) - x - z) if (ctx.mode[1] == 0.0) else 1.0  # roller_lift
     _g[1] = (_cam0[0]*h_m - _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) - x - z) if (ctx.mode[1] == 1.0) else 1.0  # roller_land
-    _g[2] = (beta/beta_m - beta_0/beta_m) - camlaw_hi(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_hi: next segment
-    _g[3] = (beta/beta_m - beta_0/beta_m) - camlaw_lo(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_lo: previous segment
+    _g[2] = (2.0*sqrt(J)*sqrt(k)*q_b*(-betad + dw + omega_s) + k*(-beta + phi)) if (ctx.mode[2] == 0.0) else 1.0  # worm_reverse
+    _g[3] = (2.0*sqrt(J)*sqrt(k)*q_b*(-betad + dw + omega_s) + k*(-beta + phi)) if (ctx.mode[2] == 1.0) else 1.0  # worm_forward
+    _g[4] = (beta/beta_m - beta_0/beta_m) - camlaw_hi(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_hi: next segment
+    _g[5] = (beta/beta_m - beta_0/beta_m) - camlaw_lo(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_lo: previous segment
 
 
 cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
@@ -688,8 +806,13 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
+    cdef double J_ma = ctx.p[17]
+    cdef double G_a = ctx.p[18]
+    cdef double alpha_w = ctx.p[19]
+    cdef double mu_w = ctx.p[20]
+    cdef double T_el = ctx.p[21]
+    cdef double F_0 = ctx.p[22]
+    cdef double c_s = ctx.p[23]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -736,6 +859,12 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k43 = ctx.k[43]
     cdef double _k44 = ctx.k[44]
     cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -744,6 +873,9 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double yd = _y[5]
     cdef double zd = _y[6]
     cdef double xd = _y[7]
+    cdef double phi = _y[8]
+    cdef double dw = _y[9]
+    cdef double Mea = _y[10]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
@@ -753,9 +885,15 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     elif _e == 1:  # roller_land
         if True:
             ctx.mode[1] = 0  # roller = contact
-    elif _e == 2:  # cam0_hi
+    elif _e == 2:  # worm_reverse
+        if True:
+            ctx.mode[2] = 1  # worm = driven
+    elif _e == 3:  # worm_forward
+        if True:
+            ctx.mode[2] = 0  # worm = drive
+    elif _e == 4:  # cam0_hi
         ctx.mode[0] += 1
-    elif _e == 3:  # cam0_lo
+    elif _e == 5:  # cam0_lo
         ctx.mode[0] += -1
     refresh(ctx)
 
@@ -787,9 +925,14 @@ def initial_state(p):
     cdef double m_z = p[14]
     cdef double c_z = p[15]
     cdef double q_z = p[16]
-    cdef double F_0 = p[17]
-    cdef double c_s = p[18]
-    return [0.0, 0.0, 0.0, 0.0, omega_s, 0.0, 0.0, 0.0]
+    cdef double J_ma = p[17]
+    cdef double G_a = p[18]
+    cdef double alpha_w = p[19]
+    cdef double mu_w = p[20]
+    cdef double T_el = p[21]
+    cdef double F_0 = p[22]
+    cdef double c_s = p[23]
+    return [0.0, 0.0, 0.0, 0.0, omega_s, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]
 
 
 def cam_time_affine(p):
@@ -811,8 +954,13 @@ def cam_time_affine(p):
     cdef double m_z = p[14]
     cdef double c_z = p[15]
     cdef double q_z = p[16]
-    cdef double F_0 = p[17]
-    cdef double c_s = p[18]
+    cdef double J_ma = p[17]
+    cdef double G_a = p[18]
+    cdef double alpha_w = p[19]
+    cdef double mu_w = p[20]
+    cdef double T_el = p[21]
+    cdef double F_0 = p[22]
+    cdef double c_s = p[23]
     return [None]
 
 
@@ -820,13 +968,13 @@ cdef ModelC _model
 _model.abi_version = CAMDYN_ABI
 _model.n_q = _NQ
 _model.n_states = _NS
-_model.n_params = 19
-_model.n_outputs = 10
+_model.n_params = 24
+_model.n_outputs = 12
 _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 46
+_model.n_const = 52
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -856,6 +1004,8 @@ _MANIFEST_JSON = """
  "events": [
   "roller_lift",
   "roller_land",
+  "worm_reverse",
+  "worm_forward",
   "cam0_hi",
   "cam0_lo"
  ],
@@ -868,10 +1018,19 @@ _MANIFEST_JSON = """
     "contact",
     "free"
    ]
+  },
+  {
+   "doc": "worm gear: motor driving or driven",
+   "initial": "drive",
+   "name": "worm",
+   "values": [
+    "drive",
+    "driven"
+   ]
   }
  ],
  "n_q": 4,
- "name": "dynacam_rcrc_yzs",
+ "name": "dynacam_radial_motor2_rigidgear_contact_shafty_shaftz_spring",
  "options": [
   [
    "cam",
@@ -895,7 +1054,7 @@ _MANIFEST_JSON = """
   ],
   [
    "motor",
-   "constant"
+   "second"
   ],
   [
    "roller",
@@ -964,6 +1123,16 @@ _MANIFEST_JSON = """
    "doc": "gap between roller and cam (negative: pressed)",
    "name": "roller_gap",
    "unit": "m"
+  },
+  {
+   "doc": "motor speed deviation over w_s",
+   "name": "motor_speed_var",
+   "unit": "1"
+  },
+  {
+   "doc": "electromagnetic torque of the motor, reduced",
+   "name": "M_motor",
+   "unit": "N m"
   }
  ],
  "parameters": [
@@ -1155,6 +1324,61 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
+   "default": 0.05,
+   "doc": "motor inertia reduced to the camshaft (A.5.7)",
+   "high": null,
+   "low": 0.0,
+   "name": "J_ma",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < J_ma",
+   "unit": "kg m^2"
+  },
+  {
+   "default": 5.0,
+   "doc": "slope of the motor's torque-speed line, reduced (A.5.4b)",
+   "high": null,
+   "low": 0.0,
+   "name": "G_a",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < G_a",
+   "unit": "N m s/rad"
+  },
+  {
+   "default": 0.36,
+   "doc": "lead angle of the worm (6.71)",
+   "high": 1.5,
+   "low": 0.0,
+   "name": "alpha_w",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < alpha_w <= 1.5",
+   "unit": "rad"
+  },
+  {
+   "default": 0.05,
+   "doc": "friction coefficient of the worm gear (6.71)",
+   "high": 1.0,
+   "low": 0.0,
+   "name": "mu_w",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= mu_w <= 1",
+   "unit": "1"
+  },
+  {
+   "default": 0.0086,
+   "doc": "electrical time constant of the motor (A.5.3)",
+   "high": null,
+   "low": 0.0,
+   "name": "T_el",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < T_el",
+   "unit": "s"
+  },
+  {
    "default": 100.0,
    "doc": "follower spring preload at x = 0 (6.45)",
    "high": null,
@@ -1184,7 +1408,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:9da5b42e4e51c279f057e26d33dd05113cf11c1c0d44268a2b3d6ff333939eeb",
+ "source_hash": "sha256:fa3d1a1bf50cc1826deae5f643df492e0ff929eac89b7cd3e1ea7b4a63d46d0a",
  "states": [
   {
    "doc": "cam angle",
@@ -1241,6 +1465,27 @@ _MANIFEST_JSON = """
    "name": "xd",
    "scale": 0.01,
    "unit": "m/s"
+  },
+  {
+   "doc": "input angle of the camshaft (motor side)",
+   "initial": 0.0,
+   "name": "phi",
+   "scale": 1.0,
+   "unit": "rad"
+  },
+  {
+   "doc": "speed deviation of the motor, reduced (A.5.8)",
+   "initial": 0.0,
+   "name": "dw",
+   "scale": 0.1,
+   "unit": "rad/s"
+  },
+  {
+   "doc": "electromagnetic torque, reduced (A.5.6)",
+   "initial": 0.0,
+   "name": "Mea",
+   "scale": 1.0,
+   "unit": "N m"
   }
  ],
  "time": {

@@ -2,11 +2,23 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f7af514d89d8b95e86d5dfe67b67022093c0fae942791e6ad7631802be20360b
-# Text hash: sha256:7b1de366033ce84f80c62b8b25f8f02e42a418c407eb0c70eaf6352c3c725f59
+# Derivation key: sha256:23af0a768a119c46fbabbbaf396641986b136900edda3d483ae509ee4e817c5d
+# Text hash: sha256:ce0d966860d4b7b88a8ed7f9e6069b401135f5b5d1af1ff488d2047281227265
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:38f51eea7b4df33419d505fefe9fecae0c92e3d2738852226abd4a73c87fa423
+# Source hash: sha256:a09c25acce6a3b6f62b515acd853dfcf6a5037bb852e5bcbd89ff4ea0a963cab
+#
+# This variant:
+#   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
+#   motor = constant: camshaft input turning at the constant speed omega_s (ideal drive)
+#   gear = rigid: reduction gear without backlash: the shaft torsion k, d_b alone (6.10)
+#   roller = bilateral: roller held on both sides: the linkage spring always carries (6.42)
+#   shaft_y = yes: tangential shaft deflection y (6.12), (6.16)
+#   shaft_z = yes: shaft deflection z along the follower (6.11), (6.15)
+#   cam_friction = no: no friction on the cam
+#   linkage_friction = no: no friction in the linkage
+#   spring = no: no follower spring
+#   external = no: no external force
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -52,7 +64,7 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport fabs, sqrt
+from libc.math cimport pow, sqrt
 
 from camdyn.runtime.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
@@ -63,22 +75,14 @@ cdef enum:
     _NQ = 4                  # second-order coordinates
     _NS = 8                  # states: q, q', first-order states
     _NCAM = 1                # cam input instances (one segment mode each)
-    _NM = 4                  # modes: cam segments, then the force elements' modes
-    _NE = 10                  # events
+    _NM = 1                  # modes: cam segments, then the force elements' modes
+    _NE = 2                  # events
     _NQ1 = 4                 # array sizes that must not be zero
-    _NE1 = 10
+    _NE1 = 2
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
-_EDIR[0] = -1  # roller_lift
-_EDIR[1] = 1  # roller_land
-_EDIR[2] = -1  # camfric_stop_fwd
-_EDIR[3] = 1  # camfric_stop_bwd
-_EDIR[4] = 1  # camfric_break
-_EDIR[5] = -1  # linkfric_stop_fwd
-_EDIR[6] = 1  # linkfric_stop_bwd
-_EDIR[7] = 1  # linkfric_break
-_EDIR[8] = 1  # cam0_hi
-_EDIR[9] = -1  # cam0_lo
+_EDIR[0] = 1  # cam0_hi
+_EDIR[1] = -1  # cam0_lo
 
 
 
@@ -101,77 +105,93 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
-    cdef double nu_b = ctx.p[19]
-    cdef double nu_x = ctx.p[20]
-    cdef double _c0 = k*omega_s
-    cdef double _c1 = c_x*h_m
-    cdef double _c2 = 2.0*sqrt(c_x)*sqrt(m_x)*q_x
-    cdef double _c3 = (1.0/beta_m)
-    cdef double _c4 = _c3*h_m
-    cdef double _c5 = (beta_m*beta_m)
-    cdef double _c6 = R_b*_c5
-    cdef double _c7 = (h_m*h_m)
-    cdef double _c8 = 2.0*sqrt(J)*sqrt(k)*q_b
-    cdef double _c9 = _c8*omega_s
-    cdef double _c10 = R_b*nu_b
-    cdef double _c11 = h_m*nu_b
-    cdef double _c12 = (1.0/m_y)
-    cdef double _c13 = (1.0/h_m)
-    cdef double _c14 = (1.0/(omega_s*omega_s))
-    cdef double _c15 = (1.0/_c5)
-    ctx.k[0] = -k  # _k0
-    ctx.k[1] = _c0  # _k1
-    ctx.k[2] = -c_x  # _k2
-    ctx.k[3] = _c1  # _k3
-    ctx.k[4] = -_c2  # _k4
-    ctx.k[5] = R_b*beta_m  # _k5
-    ctx.k[6] = beta_m*h_m  # _k6
-    ctx.k[7] = -_c1  # _k7
-    ctx.k[8] = -_c2*h_m  # _k8
-    ctx.k[9] = _c2*_c4  # _k9
-    ctx.k[10] = _c6  # _k10
-    ctx.k[11] = _c5*h_m  # _k11
-    ctx.k[12] = (R_b*R_b)*_c5  # _k12
-    ctx.k[13] = _c5*_c7  # _k13
-    ctx.k[14] = 2.0*_c6*h_m  # _k14
-    ctx.k[15] = _c2*_c7  # _k15
-    ctx.k[16] = -_c4  # _k16
-    ctx.k[17] = -_c8  # _k17
-    ctx.k[18] = _c9  # _k18
-    ctx.k[19] = -_c7  # _k19
-    ctx.k[20] = _c7  # _k20
-    ctx.k[21] = -_c10  # _k21
-    ctx.k[22] = -_c11  # _k22
-    ctx.k[23] = -_c0  # _k23
-    ctx.k[24] = _c4  # _k24
-    ctx.k[25] = -_c9  # _k25
-    ctx.k[26] = _c8  # _k26
-    ctx.k[27] = -h_m  # _k27
-    ctx.k[28] = _c10  # _k28
-    ctx.k[29] = _c11  # _k29
-    ctx.k[30] = (1.0/J)  # _k30
-    ctx.k[31] = -_c12*c_y  # _k31
-    ctx.k[32] = _c12*h_m  # _k32
-    ctx.k[33] = -2.0*sqrt(c_y)*q_y/sqrt(m_y)  # _k33
-    ctx.k[34] = -c_z  # _k34
-    ctx.k[35] = -2.0*sqrt(c_z)*sqrt(m_z)*q_z  # _k35
-    ctx.k[36] = (1.0/m_z)  # _k36
-    ctx.k[37] = -F_0  # _k37
-    ctx.k[38] = -c_s  # _k38
-    ctx.k[39] = -nu_x  # _k39
-    ctx.k[40] = (1.0/m_x)  # _k40
-    ctx.k[41] = _c2  # _k41
-    ctx.k[42] = -beta_0  # _k42
-    ctx.k[43] = _c3  # _k43
-    ctx.k[44] = _c13*_c14*_c5  # _k44
-    ctx.k[45] = _c14*beta_m  # _k45
-    ctx.k[46] = _c13  # _k46
-    ctx.k[47] = -_c1*_c3  # _k47
-    ctx.k[48] = _c15*_c7  # _k48
-    ctx.k[49] = -_c15*h_m  # _k49
-    ctx.k[50] = (1.0/omega_s)  # _k50
+    cdef double _c0 = (1.0/J)
+    cdef double _c1 = _c0*k
+    cdef double _c2 = sqrt(J)
+    cdef double _c3 = 2.0*sqrt(k)*q_b
+    cdef double _c4 = _c3/_c2
+    cdef double _c5 = (h_m*h_m)
+    cdef double _c6 = (1.0/R_b)
+    cdef double _c7 = (beta_m*beta_m)
+    cdef double _c8 = (1.0/_c7)
+    cdef double _c9 = _c6*_c8
+    cdef double _c10 = _c0*_c9
+    cdef double _c11 = _c10*_c5
+    cdef double _c12 = c_x*h_m
+    cdef double _c13 = _c9*h_m
+    cdef double _c14 = sqrt(c_x)
+    cdef double _c15 = sqrt(m_x)
+    cdef double _c16 = _c14*_c15*q_x
+    cdef double _c17 = 2.0*_c16
+    cdef double _c18 = _c0*_c17
+    cdef double _c19 = (1.0/beta_m)
+    cdef double _c20 = _c19*h_m
+    cdef double _c21 = (1.0/(beta_m*beta_m*beta_m))
+    cdef double _c22 = _c5/(R_b*R_b)
+    cdef double _c23 = _c0*_c22
+    cdef double _c24 = (1.0/m_y)
+    cdef double _c25 = _c22*_c24
+    cdef double _c26 = _c20*_c6
+    cdef double _c27 = (1.0/m_z)
+    cdef double _c28 = _c17*_c27
+    cdef double _c29 = (1.0/m_x)
+    cdef double _c30 = 2.0*_c14*q_x/_c15
+    cdef double _c31 = (1.0/h_m)
+    cdef double _c32 = (1.0/(omega_s*omega_s))
+    ctx.k[0] = -_c1  # _k0
+    ctx.k[1] = _c1*omega_s  # _k1
+    ctx.k[2] = -_c4  # _k2
+    ctx.k[3] = _c4*omega_s  # _k3
+    ctx.k[4] = _c11*c_x  # _k4
+    ctx.k[5] = -_c10*_c12  # _k5
+    ctx.k[6] = -_c13*_c18  # _k6
+    ctx.k[7] = _c11*_c17  # _k7
+    ctx.k[8] = -_c12  # _k8
+    ctx.k[9] = _c17  # _k9
+    ctx.k[10] = _c0*_c20  # _k10
+    ctx.k[11] = -_c21*_c23  # _k11
+    ctx.k[12] = -_c17*_c23/(beta_m*beta_m*beta_m*beta_m)  # _k12
+    ctx.k[13] = -_c18*_c5*_c8  # _k13
+    ctx.k[14] = 4.0*_c0*_c16*_c21*_c5*_c6  # _k14
+    ctx.k[15] = -_c24*c_y  # _k15
+    ctx.k[16] = -2.0*sqrt(c_y)*q_y/sqrt(m_y)  # _k16
+    ctx.k[17] = -_c25*_c8  # _k17
+    ctx.k[18] = -c_x  # _k18
+    ctx.k[19] = _c12  # _k19
+    ctx.k[20] = -_c17  # _k20
+    ctx.k[21] = _c24*_c26  # _k21
+    ctx.k[22] = -_c17*_c21*_c25  # _k22
+    ctx.k[23] = _c17*_c24*_c5*_c9  # _k23
+    ctx.k[24] = -_c27*c_x  # _k24
+    ctx.k[25] = -_c27*(c_x + c_z)  # _k25
+    ctx.k[26] = _c12*_c27  # _k26
+    ctx.k[27] = -_c28  # _k27
+    ctx.k[28] = -2.0*_c16*_c27 - 2.0*sqrt(c_z)*q_z/sqrt(m_z)  # _k28
+    ctx.k[29] = -_c26*_c27  # _k29
+    ctx.k[30] = -_c13*_c28  # _k30
+    ctx.k[31] = _c20*_c28  # _k31
+    ctx.k[32] = -_c29*c_x  # _k32
+    ctx.k[33] = _c12*_c29  # _k33
+    ctx.k[34] = -_c30  # _k34
+    ctx.k[35] = -_c26*_c29  # _k35
+    ctx.k[36] = -_c13*_c30  # _k36
+    ctx.k[37] = _c20*_c30  # _k37
+    ctx.k[38] = -beta_0  # _k38
+    ctx.k[39] = _c19  # _k39
+    ctx.k[40] = _c31*_c32*_c7  # _k40
+    ctx.k[41] = _c32*beta_m  # _k41
+    ctx.k[42] = -h_m  # _k42
+    ctx.k[43] = _c31  # _k43
+    ctx.k[44] = -k  # _k44
+    ctx.k[45] = k*omega_s  # _k45
+    ctx.k[46] = _c2*_c3  # _k46
+    ctx.k[47] = -_c12*_c19*_c6  # _k47
+    ctx.k[48] = _c20  # _k48
+    ctx.k[49] = -_c13  # _k49
+    ctx.k[50] = -_c26  # _k50
+    ctx.k[51] = -_c6  # _k51
+    ctx.k[52] = (1.0/omega_s)  # _k52
+    ctx.k[53] = _c26  # _k53
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -193,10 +213,6 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
-    cdef double nu_b = ctx.p[19]
-    cdef double nu_x = ctx.p[20]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -248,6 +264,9 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k48 = ctx.k[48]
     cdef double _k49 = ctx.k[49]
     cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -273,42 +292,36 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
             camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], _a, _cam0)
             _c[0], _c[1], _c[2], _c[3], _c[4] = _a, _cam0[0], _cam0[1], _cam0[2], _cam0[3]
 
-    cdef double _s0_0, _s0_1, _s0_2, _s0_3, _s0_4, _s0_5, _s0_6, _s0_7, _s0_8, _s0_9, _s0_10, _s0_11, _s0_12, _s0_13, _s1_0, _s1_1, _s1_2
+    cdef double _s0_0, _s0_1, _s0_2, _s0_3, _s0_4, _s0_5, _s0_6, _s0_7, _s0_8, _s0_9, _s0_10
     _dy[0] = betad
     _dy[1] = yd
     _dy[2] = zd
     _dy[3] = xd
     if _v == 0:
-        _s0_0 = (1.0/(_cam0[0]*_k6 + _k5))
-        _s0_1 = _cam0[1]*_s0_0
-        _s0_2 = betad*y
-        _s0_3 = _cam0[2]/(_cam0[0]*_k11 + _k10)
-        _s0_4 = (_cam0[1]*_cam0[1])/((_cam0[0]*_cam0[0])*_k13 + _cam0[0]*_k14 + _k12)
-        _s0_5 = _cam0[0]*_k3 + _cam0[1]*_k9*betad + _k15*_s0_2*_s0_4 + _k2*x + _k2*z + _k4*xd + _k4*zd + _k7*_s0_1*y + _k8*_s0_1*yd + _k8*_s0_2*_s0_3
-        _s0_6 = (ctx.mode[1] == 0.0)
-        _s0_7 = ((_s0_5) if (_s0_6) else (0.0))
-        _s0_8 = _cam0[1]*_s0_7
-        _s0_9 = _s0_7*y
-        _s0_10 = _s0_3*_s0_9
-        _s0_11 = ((sqrt((_s0_5*_s0_5))) if (_s0_6) else (0.0))
-        _s0_12 = _k20*_s0_4
-        _s0_13 = _s0_11*sqrt(_s0_12 + 1.0)
-        _dy[4] = _k30*(_k0*beta + _k1*t + _k16*_s0_8 + _k17*betad + _k18 + _k19*_s0_4*_s0_9 + _s0_10*h_m + ((_s0_13*(_cam0[0]*_k22 + _k21)) if ((ctx.mode[2] == 0.0)) else (((_k23*t + _k24*_s0_8 + _k25 + _k26*betad + _k27*_s0_10 + _s0_12*_s0_9 + beta*k) if ((ctx.mode[2] == 1.0)) else (_s0_13*(_cam0[0]*_k29 + _k28))))))
-        _dy[5] = _k31*y + _k32*_s0_0*_s0_8 + _k33*yd
-        _dy[6] = _k36*(_k34*z + _k35*zd + _s0_7)
-        _dy[7] = _k40*(_k37 + _k38*x + _s0_7 + ((_k39*_s0_11) if ((ctx.mode[3] == 0.0)) else (((F_0 - _s0_7 + c_s*x) if ((ctx.mode[3] == 1.0)) else (_s0_11*nu_x)))))
+        _s0_0 = _k4*y
+        _s0_1 = _cam0[2]*y
+        _s0_2 = _k5*_s0_1
+        _s0_3 = _k6*_s0_1
+        _s0_4 = (_cam0[1]*_cam0[1])
+        _s0_5 = _s0_4*betad
+        _s0_6 = _cam0[1]*betad
+        _s0_7 = _s0_1*_s0_6
+        _s0_8 = _k9*yd + c_x*y
+        _s0_9 = _cam0[1]*_s0_8
+        _s0_10 = _s0_1*betad
+        _dy[4] = _cam0[0]*_cam0[2]*_s0_0 + _cam0[1]*_k10*(_cam0[0]*_k8 + _k9*xd + _k9*zd + c_x*x + c_x*z) + (_cam0[2]*_cam0[2])*_k12*betad*(y*y) + _k0*beta + _k1*t + _k11*_s0_1*_s0_9 + _k13*_s0_5 + _k14*_s0_7 + _k2*betad + _k3 + _k7*_s0_4*yd + _s0_0*_s0_4 + _s0_2*x + _s0_2*z + _s0_3*xd + _s0_3*zd
+        _dy[5] = _cam0[1]*_k21*(_cam0[0]*_k19 + _k18*x + _k18*z + _k20*xd + _k20*zd) + _k15*y + _k16*yd + _k17*_s0_4*_s0_8 + _k22*_s0_7 + _k23*_s0_5
+        _dy[6] = _cam0[0]*_k26 + _k24*x + _k25*z + _k27*xd + _k28*zd + _k29*_s0_9 + _k30*_s0_10 + _k31*_s0_6
+        _dy[7] = _cam0[0]*_k33 + _k32*x + _k32*z + _k34*xd + _k34*zd + _k35*_s0_9 + _k36*_s0_10 + _k37*_s0_6
     elif _v == 1:  # in a dwell: 0
-        _s1_0 = (ctx.mode[1] == 0.0)
-        _s1_1 = ((fabs(_cam0[0]*_k7 + _k41*xd + _k41*zd + c_x*x + c_x*z)) if (_s1_0) else (0.0))
-        _s1_2 = ((_cam0[0]*_k3 + _k2*x + _k2*z + _k4*xd + _k4*zd) if (_s1_0) else (0.0))
-        _dy[4] = _k30*(_k0*beta + _k1*t + _k17*betad + _k18 + ((_s1_1*(_cam0[0]*_k22 + _k21)) if ((ctx.mode[2] == 0.0)) else (((_k23*t + _k25 + _k26*betad + beta*k) if ((ctx.mode[2] == 1.0)) else (_s1_1*(_cam0[0]*_k29 + _k28))))))
-        _dy[5] = _k31*y + _k33*yd
-        _dy[6] = _k36*(_k34*z + _k35*zd + _s1_2)
-        _dy[7] = _k40*(_k37 + _k38*x + _s1_2 + ((_k39*_s1_1) if ((ctx.mode[3] == 0.0)) else (((F_0 - _s1_2 + c_s*x) if ((ctx.mode[3] == 1.0)) else (_s1_1*nu_x)))))
+        _dy[4] = _k0*beta + _k1*t + _k2*betad + _k3
+        _dy[5] = _k15*y + _k16*yd
+        _dy[6] = _cam0[0]*_k26 + _k24*x + _k25*z + _k27*xd + _k28*zd
+        _dy[7] = _cam0[0]*_k33 + _k32*x + _k32*z + _k34*xd + _k34*zd
 
 
 cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept nogil:
-    """The named outputs (B, Xdd, Bdd, U, xdd, torque, Fx, speed_var, tan_alpha, roller_gap)."""
+    """The named outputs (B, Xdd, Bdd, U, xdd, torque, Fx, speed_var, tan_alpha)."""
     cdef double _dy[8]
     rhs(t, _y, _dy, ctx)
     cdef double h_m = ctx.p[0]
@@ -328,10 +341,6 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
-    cdef double nu_b = ctx.p[19]
-    cdef double nu_x = ctx.p[20]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -383,6 +392,9 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k48 = ctx.k[48]
     cdef double _k49 = ctx.k[49]
     cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -398,23 +410,15 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
-    cdef double _o0 = _cam0[0]*_k27 + x
-    cdef double _o1 = R_b + _cam0[0]*h_m
-    cdef double _o2 = (1.0/_o1)
-    cdef double _o3 = _o2*y
-    cdef double _o4 = _o2*yd
-    cdef double _o5 = _cam0[1]*_k24
-    cdef double _o6 = _o2*_o5
-    _out[0] = _k43*(_k42 + beta)  # B
-    _out[1] = _k44*_dy[7]  # Xdd
-    _out[2] = _k45*_dy[4]  # Bdd
-    _out[3] = _k46*_o0  # U
+    _out[0] = _k39*(_k38 + beta)  # B
+    _out[1] = _k40*_dy[7]  # Xdd
+    _out[2] = _k41*_dy[4]  # Bdd
+    _out[3] = _k43*(_cam0[0]*_k42 + x)  # U
     _out[4] = _dy[7]  # xdd
-    _out[5] = _k0*beta + _k1*t - _k26*(betad - omega_s)  # torque
-    _out[6] = ((_cam0[0]*_k3 + _cam0[1]*_k47*_o3 + _k2*x + _k2*z + _k41*(_cam0[1]*_k16*_o4 + betad*((_cam0[1]*_cam0[1])*_k48*y/(_o1*_o1) + _cam0[2]*_k49*_o3 + _o5) - xd - zd)) if ((ctx.mode[1] == 0.0)) else (0.0))  # Fx
-    _out[7] = _k50*(-_o4 + betad) - 1.0  # speed_var
-    _out[8] = _o6  # tan_alpha
-    _out[9] = _o0 + _o6*y + z  # roller_gap
+    _out[5] = _k44*beta + _k45*t - _k46*(betad - omega_s)  # torque
+    _out[6] = _cam0[0]*_k19 + _cam0[1]*_k47*y + _k18*x + _k18*z + _k9*(_cam0[1]*_k50*yd + betad*(_cam0[1]*_k48 + _cam0[2]*_k49*y) - xd - zd)  # Fx
+    _out[7] = _k52*(_k51*yd + betad) - 1.0  # speed_var
+    _out[8] = _cam0[1]*_k53  # tan_alpha
 
 
 cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, Ctx* ctx) noexcept nogil:
@@ -436,10 +440,6 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
-    cdef double nu_b = ctx.p[19]
-    cdef double nu_x = ctx.p[20]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -491,6 +491,9 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k48 = ctx.k[48]
     cdef double _k49 = ctx.k[49]
     cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -502,6 +505,64 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
+    cdef double _m0 = _cam0[2]*c_x
+    cdef double _m1 = _m0*x
+    cdef double _m2 = (1.0/(beta_m*beta_m))
+    cdef double _m3 = _m2*h_m
+    cdef double _m4 = _m0*z
+    cdef double _m5 = (h_m*h_m)
+    cdef double _m6 = _m2*_m5
+    cdef double _m7 = _cam0[0]*_m0
+    cdef double _m8 = (_cam0[1]*_cam0[1])*c_x
+    cdef double _m9 = _m6*_m8
+    cdef double _m10 = c_x*y
+    cdef double _m11 = _m10*h_m
+    cdef double _m12 = (1.0/R_b)
+    cdef double _m13 = (1.0/(beta_m*beta_m*beta_m))
+    cdef double _m14 = _m12*_m13
+    cdef double _m15 = _cam0[3]*_m14
+    cdef double _m16 = _m11*_m15
+    cdef double _m17 = _m10*_m5
+    cdef double _m18 = _cam0[1]*_cam0[2]
+    cdef double _m19 = _m14*_m18
+    cdef double _m20 = sqrt(c_x)*sqrt(m_x)*q_x
+    cdef double _m21 = 2.0*_m20
+    cdef double _m22 = _cam0[2]*_m21
+    cdef double _m23 = _m22*xd
+    cdef double _m24 = _m22*zd
+    cdef double _m25 = _cam0[1]*c_x
+    cdef double _m26 = (1.0/(R_b*R_b))
+    cdef double _m27 = _m26*_m5
+    cdef double _m28 = _m27*(y*y)
+    cdef double _m29 = (1.0/(beta_m*beta_m*beta_m*beta_m))
+    cdef double _m30 = _cam0[3]*_m29
+    cdef double _m31 = (_cam0[2]*_cam0[2])
+    cdef double _m32 = _m29*_m31
+    cdef double _m33 = 4.0*_m20
+    cdef double _m34 = _m33*_m5
+    cdef double _m35 = _m18*betad
+    cdef double _m36 = _m15*_m21*h_m*y
+    cdef double _m37 = _m21*yd
+    cdef double _m38 = _m27*_m37*y
+    cdef double _m39 = _cam0[1]*_m30
+    cdef double _m40 = betad*y
+    cdef double _m41 = _m12*_m34*_m40
+    cdef double _m42 = (1.0/beta_m)
+    cdef double _m43 = _m12*_m42
+    cdef double _m44 = _cam0[1]*_cam0[2]*_m43
+    cdef double _m45 = _m44*h_m
+    cdef double _m46 = _m12*_m3
+    cdef double _m47 = _m31*_m46
+    cdef double _m48 = _m42*h_m
+    cdef double _m49 = _m1 + 2.0*_m11*_m44 + _m23 + _m24 - _m33*_m35*_m48 + _m4 - _m7*h_m - _m8*h_m
+    cdef double _m50 = _m48*c_x*(-_cam0[1] + _cam0[2]*_m12*_m42*y)
+    cdef double _m51 = _m21*_m40
+    cdef double _m52 = _cam0[3]*_m51
+    cdef double _m53 = _m22*betad
+    cdef double _m54 = _m25*_m43*h_m
+    cdef double _m55 = _m25*beta_m
+    cdef double _m56 = -_m46*(R_b*_m53 + R_b*_m55 - _cam0[2]*(_m10 + _m37) - _m42*_m52)
+    cdef double _m57 = _m46*(_m53 + _m55)
     _Mm[0] = J
     _Mm[1] = 0.0
     _Mm[2] = 0.0
@@ -518,22 +579,22 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Mm[13] = 0.0
     _Mm[14] = 0.0
     _Mm[15] = m_x
-    _Km[0] = 0.0 / 0.0
-    _Km[1] = 0.0 / 0.0
-    _Km[2] = 0.0 / 0.0
-    _Km[3] = 0.0 / 0.0
-    _Km[4] = 0.0 / 0.0
-    _Km[5] = 0.0 / 0.0
-    _Km[6] = 0.0 / 0.0
-    _Km[7] = 0.0 / 0.0
-    _Km[8] = 0.0 / 0.0
-    _Km[9] = 0.0 / 0.0
-    _Km[10] = 0.0 / 0.0
-    _Km[11] = 0.0 / 0.0
-    _Km[12] = 0.0 / 0.0
-    _Km[13] = 0.0 / 0.0
-    _Km[14] = 0.0 / 0.0
-    _Km[15] = 0.0 / 0.0
+    _Km[0] = -_cam0[0]*_m15*_m17 + _cam0[2]*_cam0[3]*_m28*_m33*betad/pow(beta_m, 5.0) - _m1*_m3 + _m13*_m34*_m35 + _m16*x + _m16*z - 3.0*_m17*_m19 - _m19*_m34*yd - _m23*_m3 - _m24*_m3 + _m25*_m28*_m30 + _m28*_m32*c_x - _m3*_m4 + _m32*_m38 - _m32*_m41 + _m36*xd + _m36*zd + _m38*_m39 - _m39*_m41 + _m6*_m7 + _m9 + k
+    _Km[1] = _m46*(_m33*_m40*_m47 + _m37*_m45 + _m49)
+    _Km[2] = _m50
+    _Km[3] = _m50
+    _Km[4] = _m46*(_cam0[1]*_m46*_m52 + _m33*_m45*yd + _m47*_m51 + _m49)
+    _Km[5] = _cam0[1]*_m13*_m27*_m53 + _m26*_m9 + c_y
+    _Km[6] = _m54
+    _Km[7] = _m54
+    _Km[8] = _m56
+    _Km[9] = _m57
+    _Km[10] = c_x + c_z
+    _Km[11] = c_x
+    _Km[12] = _m56
+    _Km[13] = _m57
+    _Km[14] = c_x
+    _Km[15] = c_x
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -565,10 +626,6 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
-    cdef double nu_b = ctx.p[19]
-    cdef double nu_x = ctx.p[20]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -620,6 +677,9 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k48 = ctx.k[48]
     cdef double _k49 = ctx.k[49]
     cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -652,10 +712,6 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
-    cdef double nu_b = ctx.p[19]
-    cdef double nu_x = ctx.p[20]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -707,6 +763,9 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double _k48 = ctx.k[48]
     cdef double _k49 = ctx.k[49]
     cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -718,16 +777,8 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
-    _g[0] = (_cam0[0]*h_m - _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) - x - z) if (ctx.mode[1] == 0.0) else 1.0  # roller_lift
-    _g[1] = (_cam0[0]*h_m - _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) - x - z) if (ctx.mode[1] == 1.0) else 1.0  # roller_land
-    _g[2] = (betad) if (ctx.mode[2] == 0.0) else 1.0  # camfric_stop_fwd
-    _g[3] = (betad) if (ctx.mode[2] == 2.0) else 1.0  # camfric_stop_bwd
-    _g[4] = (-1.001*nu_b*(R_b + _cam0[0]*h_m)*sqrt((_cam0[1]*_cam0[1])*(h_m*h_m)/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + 1.0)*((sqrt(((_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)*(_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)))) if ((ctx.mode[1] == 0.0)) else (0.0)) + fabs(2.0*sqrt(J)*sqrt(k)*q_b*(betad - omega_s) + k*(beta - omega_s*t) + ((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m)))*((-2.0*sqrt(c_x)*sqrt(m_x)*q_x*(_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) - betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) + xd + zd) - c_x*(-_cam0[0]*h_m + _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) + x + z)) if ((ctx.mode[1] == 0.0)) else (0.0)))) if (ctx.mode[2] == 1.0) else 1.0  # camfric_break
-    _g[5] = (xd) if (ctx.mode[3] == 0.0) else 1.0  # linkfric_stop_fwd
-    _g[6] = (xd) if (ctx.mode[3] == 2.0) else 1.0  # linkfric_stop_bwd
-    _g[7] = (-1.001*nu_x*((sqrt(((_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)*(_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)))) if ((ctx.mode[1] == 0.0)) else (0.0)) + fabs(F_0 + c_s*x - ((-2.0*sqrt(c_x)*sqrt(m_x)*q_x*(_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) - betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) + xd + zd) - c_x*(-_cam0[0]*h_m + _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) + x + z)) if ((ctx.mode[1] == 0.0)) else (0.0)))) if (ctx.mode[3] == 1.0) else 1.0  # linkfric_break
-    _g[8] = (beta/beta_m - beta_0/beta_m) - camlaw_hi(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_hi: next segment
-    _g[9] = (beta/beta_m - beta_0/beta_m) - camlaw_lo(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_lo: previous segment
+    _g[0] = (beta/beta_m - beta_0/beta_m) - camlaw_hi(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_hi: next segment
+    _g[1] = (beta/beta_m - beta_0/beta_m) - camlaw_lo(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_lo: previous segment
 
 
 cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
@@ -749,10 +800,6 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double F_0 = ctx.p[17]
-    cdef double c_s = ctx.p[18]
-    cdef double nu_b = ctx.p[19]
-    cdef double nu_x = ctx.p[20]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -804,6 +851,9 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k48 = ctx.k[48]
     cdef double _k49 = ctx.k[49]
     cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -815,49 +865,9 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
-    if _e == 0:  # roller_lift
-        if True:
-            ctx.mode[1] = 1  # roller = free
-    elif _e == 1:  # roller_land
-        if True:
-            ctx.mode[1] = 0  # roller = contact
-    elif _e == 2:  # camfric_stop_fwd
-        if (fabs(2.0*sqrt(J)*sqrt(k)*q_b*(betad - omega_s) + k*(beta - omega_s*t) + ((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m)))*((-2.0*sqrt(c_x)*sqrt(m_x)*q_x*(_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) - betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) + xd + zd) - c_x*(-_cam0[0]*h_m + _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) + x + z)) if ((ctx.mode[1] == 0.0)) else (0.0))) <= 1.001*nu_b*(R_b + _cam0[0]*h_m)*sqrt((_cam0[1]*_cam0[1])*(h_m*h_m)/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + 1.0)*((sqrt(((_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)*(_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)))) if ((ctx.mode[1] == 0.0)) else (0.0))):
-            _y[4] = 0.0  # betad
-            ctx.mode[2] = 1  # camfric = stick
-        elif True:
-            ctx.mode[2] = 2  # camfric = backward
-    elif _e == 3:  # camfric_stop_bwd
-        if (fabs(2.0*sqrt(J)*sqrt(k)*q_b*(betad - omega_s) + k*(beta - omega_s*t) + ((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m)))*((-2.0*sqrt(c_x)*sqrt(m_x)*q_x*(_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) - betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) + xd + zd) - c_x*(-_cam0[0]*h_m + _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) + x + z)) if ((ctx.mode[1] == 0.0)) else (0.0))) <= 1.001*nu_b*(R_b + _cam0[0]*h_m)*sqrt((_cam0[1]*_cam0[1])*(h_m*h_m)/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + 1.0)*((sqrt(((_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)*(_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)))) if ((ctx.mode[1] == 0.0)) else (0.0))):
-            _y[4] = 0.0  # betad
-            ctx.mode[2] = 1  # camfric = stick
-        elif True:
-            ctx.mode[2] = 0  # camfric = forward
-    elif _e == 4:  # camfric_break
-        if (2.0*sqrt(J)*sqrt(k)*q_b*(-betad + omega_s) + k*(-beta + omega_s*t) - ((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m)))*((2.0*sqrt(c_x)*sqrt(m_x)*q_x*(-_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) + betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) - xd - zd) + c_x*(_cam0[0]*h_m - _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) - x - z)) if ((ctx.mode[1] == 0.0)) else (0.0)) > 0.0):
-            ctx.mode[2] = 0  # camfric = forward
-        elif True:
-            ctx.mode[2] = 2  # camfric = backward
-    elif _e == 5:  # linkfric_stop_fwd
-        if (fabs(F_0 + c_s*x - ((-2.0*sqrt(c_x)*sqrt(m_x)*q_x*(_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) - betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) + xd + zd) - c_x*(-_cam0[0]*h_m + _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) + x + z)) if ((ctx.mode[1] == 0.0)) else (0.0))) <= 1.001*nu_x*((sqrt(((_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)*(_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)))) if ((ctx.mode[1] == 0.0)) else (0.0))):
-            _y[7] = 0.0  # xd
-            ctx.mode[3] = 1  # linkfric = stick
-        elif True:
-            ctx.mode[3] = 2  # linkfric = backward
-    elif _e == 6:  # linkfric_stop_bwd
-        if (fabs(F_0 + c_s*x - ((-2.0*sqrt(c_x)*sqrt(m_x)*q_x*(_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) - betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) + xd + zd) - c_x*(-_cam0[0]*h_m + _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) + x + z)) if ((ctx.mode[1] == 0.0)) else (0.0))) <= 1.001*nu_x*((sqrt(((_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)*(_cam0[0]*c_x*h_m + 2.0*(_cam0[1]*_cam0[1])*betad*sqrt(c_x)*(h_m*h_m)*sqrt(m_x)*q_x*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) - 2.0*_cam0[1]*sqrt(c_x)*h_m*sqrt(m_x)*q_x*yd/(R_b*beta_m + _cam0[0]*beta_m*h_m) - _cam0[1]*c_x*h_m*y/(R_b*beta_m + _cam0[0]*beta_m*h_m) + 2.0*_cam0[1]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x/beta_m - 2.0*_cam0[2]*betad*sqrt(c_x)*h_m*sqrt(m_x)*q_x*y/(R_b*(beta_m*beta_m) + _cam0[0]*(beta_m*beta_m)*h_m) - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*xd - 2.0*sqrt(c_x)*sqrt(m_x)*q_x*zd - c_x*x - c_x*z)))) if ((ctx.mode[1] == 0.0)) else (0.0))):
-            _y[7] = 0.0  # xd
-            ctx.mode[3] = 1  # linkfric = stick
-        elif True:
-            ctx.mode[3] = 0  # linkfric = forward
-    elif _e == 7:  # linkfric_break
-        if (-F_0 - c_s*x + ((2.0*sqrt(c_x)*sqrt(m_x)*q_x*(-_cam0[1]*h_m*yd/(beta_m*(R_b + _cam0[0]*h_m)) + betad*((_cam0[1]*_cam0[1])*(h_m*h_m)*y/((beta_m*beta_m)*((R_b + _cam0[0]*h_m)*(R_b + _cam0[0]*h_m))) + _cam0[1]*h_m/beta_m - _cam0[2]*h_m*y/((beta_m*beta_m)*(R_b + _cam0[0]*h_m))) - xd - zd) + c_x*(_cam0[0]*h_m - _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) - x - z)) if ((ctx.mode[1] == 0.0)) else (0.0)) > 0.0):
-            ctx.mode[3] = 0  # linkfric = forward
-        elif True:
-            ctx.mode[3] = 2  # linkfric = backward
-    elif _e == 8:  # cam0_hi
+    if _e == 0:  # cam0_hi
         ctx.mode[0] += 1
-    elif _e == 9:  # cam0_lo
+    elif _e == 1:  # cam0_lo
         ctx.mode[0] += -1
     refresh(ctx)
 
@@ -889,10 +899,6 @@ def initial_state(p):
     cdef double m_z = p[14]
     cdef double c_z = p[15]
     cdef double q_z = p[16]
-    cdef double F_0 = p[17]
-    cdef double c_s = p[18]
-    cdef double nu_b = p[19]
-    cdef double nu_x = p[20]
     return [0.0, 0.0, 0.0, 0.0, omega_s, 0.0, 0.0, 0.0]
 
 
@@ -915,10 +921,6 @@ def cam_time_affine(p):
     cdef double m_z = p[14]
     cdef double c_z = p[15]
     cdef double q_z = p[16]
-    cdef double F_0 = p[17]
-    cdef double c_s = p[18]
-    cdef double nu_b = p[19]
-    cdef double nu_x = p[20]
     return [None]
 
 
@@ -926,13 +928,13 @@ cdef ModelC _model
 _model.abi_version = CAMDYN_ABI
 _model.n_q = _NQ
 _model.n_states = _NS
-_model.n_params = 21
-_model.n_outputs = 10
+_model.n_params = 17
+_model.n_outputs = 9
 _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 51
+_model.n_const = 54
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -960,58 +962,20 @@ _MANIFEST_JSON = """
   }
  ],
  "events": [
-  "roller_lift",
-  "roller_land",
-  "camfric_stop_fwd",
-  "camfric_stop_bwd",
-  "camfric_break",
-  "linkfric_stop_fwd",
-  "linkfric_stop_bwd",
-  "linkfric_break",
   "cam0_hi",
   "cam0_lo"
  ],
- "modes": [
-  {
-   "doc": "roller on the cam or lifted off (follower jump)",
-   "initial": "contact",
-   "name": "roller",
-   "values": [
-    "contact",
-    "free"
-   ]
-  },
-  {
-   "doc": "friction on the cam: slipping forward, sticking, backward",
-   "initial": "forward",
-   "name": "camfric",
-   "values": [
-    "forward",
-    "stick",
-    "backward"
-   ]
-  },
-  {
-   "doc": "friction in the follower linkage: forward, sticking, backward",
-   "initial": "stick",
-   "name": "linkfric",
-   "values": [
-    "forward",
-    "stick",
-    "backward"
-   ]
-  }
- ],
+ "modes": [],
  "n_q": 4,
- "name": "dynacam_rcrc_yzfls",
+ "name": "dynacam_axial_ideal_rigidgear_bilateral_shafty_shaftz",
  "options": [
   [
    "cam",
-   "radial"
+   "axial"
   ],
   [
    "cam_friction",
-   true
+   false
   ],
   [
    "external",
@@ -1023,7 +987,7 @@ _MANIFEST_JSON = """
   ],
   [
    "linkage_friction",
-   true
+   false
   ],
   [
    "motor",
@@ -1031,7 +995,7 @@ _MANIFEST_JSON = """
   ],
   [
    "roller",
-   "contact"
+   "bilateral"
   ],
   [
    "shaft_y",
@@ -1043,7 +1007,7 @@ _MANIFEST_JSON = """
   ],
   [
    "spring",
-   true
+   false
   ]
  ],
  "outputs": [
@@ -1091,11 +1055,6 @@ _MANIFEST_JSON = """
    "doc": "cam slope (6.20)",
    "name": "tan_alpha",
    "unit": "1"
-  },
-  {
-   "doc": "gap between roller and cam (negative: pressed)",
-   "name": "roller_gap",
-   "unit": "m"
   }
  ],
  "parameters": [
@@ -1285,50 +1244,6 @@ _MANIFEST_JSON = """
    "open_low": false,
    "range": "0 <= q_z <= 1",
    "unit": "1"
-  },
-  {
-   "default": 100.0,
-   "doc": "follower spring preload at x = 0 (6.45)",
-   "high": null,
-   "low": 0.0,
-   "name": "F_0",
-   "open_high": false,
-   "open_low": false,
-   "range": "0 <= F_0",
-   "unit": "N"
-  },
-  {
-   "default": 10000.0,
-   "doc": "follower spring stiffness (6.45)",
-   "high": null,
-   "low": 0.0,
-   "name": "c_s",
-   "open_high": false,
-   "open_low": false,
-   "range": "0 <= c_s",
-   "unit": "N/m"
-  },
-  {
-   "default": 0.01,
-   "doc": "friction coefficient on the cam (6.13)",
-   "high": 1.0,
-   "low": 0.0,
-   "name": "nu_b",
-   "open_high": false,
-   "open_low": false,
-   "range": "0 <= nu_b <= 1",
-   "unit": "1"
-  },
-  {
-   "default": 0.01,
-   "doc": "friction coefficient of the follower linkage (6.43)",
-   "high": 1.0,
-   "low": 0.0,
-   "name": "nu_x",
-   "open_high": false,
-   "open_low": false,
-   "range": "0 <= nu_x <= 1",
-   "unit": "1"
   }
  ],
  "reference": "thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18",
@@ -1338,7 +1253,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:38f51eea7b4df33419d505fefe9fecae0c92e3d2738852226abd4a73c87fa423",
+ "source_hash": "sha256:a09c25acce6a3b6f62b515acd853dfcf6a5037bb852e5bcbd89ff4ea0a963cab",
  "states": [
   {
    "doc": "cam angle",

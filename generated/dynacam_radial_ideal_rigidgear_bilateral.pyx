@@ -2,11 +2,23 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:194493a963127fcad7f16d3d5c8b22cd9d3e6ed65ddcb2c88b3f93da450cfbaa
-# Text hash: sha256:a3a878af99703c734fd9cc9c440dba066adbfee2483a0db785b811ca17ca7480
+# Derivation key: sha256:9328a703037410ecf44a11c1b26996afd4dd71124b2672145bdd894413792468
+# Text hash: sha256:6e2d6bee21cad99dac890f133bd9f4c7aacb5fbc63c64aba8d1e8986eb205ccc
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:fdeb028669c58701329cc774e76d6089faff93726321283bdb9ab572fe71789a
+# Source hash: sha256:3530b33f52fe8d2d9d942359b69c0b5737e71e5208b29c33ff6978958f119911
+#
+# This variant:
+#   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
+#   motor = constant: camshaft input turning at the constant speed omega_s (ideal drive)
+#   gear = rigid: reduction gear without backlash: the shaft torsion k, d_b alone (6.10)
+#   roller = bilateral: roller held on both sides: the linkage spring always carries (6.42)
+#   shaft_y = no: shaft rigid tangentially
+#   shaft_z = no: shaft rigid along the follower
+#   cam_friction = no: no friction on the cam
+#   linkage_friction = no: no friction in the linkage
+#   spring = no: no follower spring
+#   external = no: no external force
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -577,7 +589,7 @@ _MANIFEST_JSON = """
  ],
  "modes": [],
  "n_q": 2,
- "name": "dynacam_rcrb_n",
+ "name": "dynacam_radial_ideal_rigidgear_bilateral",
  "options": [
   [
    "cam",
@@ -797,7 +809,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:fdeb028669c58701329cc774e76d6089faff93726321283bdb9ab572fe71789a",
+ "source_hash": "sha256:3530b33f52fe8d2d9d942359b69c0b5737e71e5208b29c33ff6978958f119911",
  "states": [
   {
    "doc": "cam angle",

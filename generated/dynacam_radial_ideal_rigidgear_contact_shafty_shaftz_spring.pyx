@@ -2,11 +2,23 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f20d4a151edf378a29e335c9cc5c41dc89a10b39f1d17430fa88c1b0746f8cef
-# Text hash: sha256:f88b0307812079ecc6b0a6cd59e5b72e1c631a922d108535629255d7c481af63
+# Derivation key: sha256:008ac34607a74caa060c86048ed718c986212e92d03cde6ec3d9fe21e6cbabd0
+# Text hash: sha256:660b5c41ebdcc42ca16aad33e3523bae921d8d22af4a8e87f512941867633579
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:347f5e213ab558582dc4001d4fefee5ca7cff535c2a92098389a5ca7d391cd67
+# Source hash: sha256:7f58decc9cfef69affba9dbc66d6cbef86b828d17c757a297e7f17381ee2f025
+#
+# This variant:
+#   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
+#   motor = constant: camshaft input turning at the constant speed omega_s (ideal drive)
+#   gear = rigid: reduction gear without backlash: the shaft torsion k, d_b alone (6.10)
+#   roller = contact: roller held on the cam by the follower spring; it may lift off (6.42)
+#   shaft_y = yes: tangential shaft deflection y (6.12), (6.16)
+#   shaft_z = yes: shaft deflection z along the follower (6.11), (6.15)
+#   cam_friction = no: no friction on the cam
+#   linkage_friction = no: no friction in the linkage
+#   spring = yes: follower spring with preload F_0 (6.45)
+#   external = no: no external force
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -63,22 +75,16 @@ cdef enum:
     _NQ = 4                  # second-order coordinates
     _NS = 8                  # states: q, q', first-order states
     _NCAM = 1                # cam input instances (one segment mode each)
-    _NM = 3                  # modes: cam segments, then the force elements' modes
-    _NE = 10                  # events
+    _NM = 2                  # modes: cam segments, then the force elements' modes
+    _NE = 4                  # events
     _NQ1 = 4                 # array sizes that must not be zero
-    _NE1 = 10
+    _NE1 = 4
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
-_EDIR[0] = -1  # gear_lift_drive
-_EDIR[1] = 1  # gear_hit_drive
-_EDIR[2] = -1  # gear_hit_back
-_EDIR[3] = 1  # gear_lift_back
-_EDIR[4] = -1  # roller_leave_lower
-_EDIR[5] = 1  # roller_hit_lower
-_EDIR[6] = 1  # roller_hit_upper
-_EDIR[7] = -1  # roller_leave_upper
-_EDIR[8] = 1  # cam0_hi
-_EDIR[9] = -1  # cam0_lo
+_EDIR[0] = -1  # roller_lift
+_EDIR[1] = 1  # roller_land
+_EDIR[2] = 1  # cam0_hi
+_EDIR[3] = -1  # cam0_lo
 
 
 
@@ -101,60 +107,71 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double s_r = ctx.p[18]
-    cdef double _c0 = c_x*h_m
-    cdef double _c1 = 2.0*sqrt(c_x)*sqrt(m_x)*q_x
-    cdef double _c2 = (1.0/beta_m)
-    cdef double _c3 = (1.0/R_b)
-    cdef double _c4 = _c2*h_m
-    cdef double _c5 = _c3*_c4
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
+    cdef double _c0 = (1.0/J)
+    cdef double _c1 = _c0*k
+    cdef double _c2 = c_x*h_m
+    cdef double _c3 = 2.0*sqrt(c_x)*sqrt(m_x)*q_x
+    cdef double _c4 = (1.0/beta_m)
+    cdef double _c5 = _c4*h_m
     cdef double _c6 = (beta_m*beta_m)
-    cdef double _c7 = _c3*h_m/_c6
-    cdef double _c8 = 2.0*sqrt(J)*sqrt(k)*q_b
-    cdef double _c9 = _c8*omega_s
-    cdef double _c10 = (1.0/m_y)
-    cdef double _c11 = (1.0/h_m)
-    cdef double _c12 = (1.0/(omega_s*omega_s))
-    ctx.k[0] = -c_x  # _k0
-    ctx.k[1] = _c0  # _k1
-    ctx.k[2] = -_c1  # _k2
-    ctx.k[3] = -_c0*_c2*_c3  # _k3
-    ctx.k[4] = _c1*_c4  # _k4
-    ctx.k[5] = -_c1*_c5  # _k5
-    ctx.k[6] = -_c1*_c7  # _k6
-    ctx.k[7] = c_x*s_r  # _k7
-    ctx.k[8] = -_c4  # _k8
-    ctx.k[9] = _c7  # _k9
-    ctx.k[10] = -k  # _k10
-    ctx.k[11] = k*omega_s  # _k11
-    ctx.k[12] = -_c8  # _k12
-    ctx.k[13] = _c9  # _k13
-    ctx.k[14] = _c9 + k*s_g  # _k14
-    ctx.k[15] = (1.0/J)  # _k15
-    ctx.k[16] = -_c10*c_y  # _k16
-    ctx.k[17] = -2.0*sqrt(c_y)*q_y/sqrt(m_y)  # _k17
-    ctx.k[18] = _c10*_c5  # _k18
-    ctx.k[19] = -c_z  # _k19
-    ctx.k[20] = -2.0*sqrt(c_z)*sqrt(m_z)*q_z  # _k20
-    ctx.k[21] = (1.0/m_z)  # _k21
-    ctx.k[22] = (1.0/m_x)  # _k22
-    ctx.k[23] = -beta_0  # _k23
-    ctx.k[24] = _c2  # _k24
-    ctx.k[25] = _c11*_c12*_c6  # _k25
-    ctx.k[26] = _c12*beta_m  # _k26
-    ctx.k[27] = -h_m  # _k27
-    ctx.k[28] = _c11  # _k28
-    ctx.k[29] = _c8  # _k29
-    ctx.k[30] = _c4  # _k30
-    ctx.k[31] = -_c7  # _k31
-    ctx.k[32] = -_c5  # _k32
-    ctx.k[33] = _c1  # _k33
-    ctx.k[34] = -s_r  # _k34
-    ctx.k[35] = _c5  # _k35
-    ctx.k[36] = -_c3  # _k36
-    ctx.k[37] = (1.0/omega_s)  # _k37
-    ctx.k[38] = -s_g  # _k38
+    cdef double _c7 = R_b*_c6
+    cdef double _c8 = (h_m*h_m)
+    cdef double _c9 = _c0*h_m
+    cdef double _c10 = sqrt(J)
+    cdef double _c11 = 2.0*sqrt(k)*q_b
+    cdef double _c12 = _c11/_c10
+    cdef double _c13 = (1.0/m_y)
+    cdef double _c14 = (1.0/h_m)
+    cdef double _c15 = (1.0/(omega_s*omega_s))
+    cdef double _c16 = (1.0/_c6)
+    ctx.k[0] = -_c1  # _k0
+    ctx.k[1] = _c1*omega_s  # _k1
+    ctx.k[2] = -c_x  # _k2
+    ctx.k[3] = _c2  # _k3
+    ctx.k[4] = -_c3  # _k4
+    ctx.k[5] = R_b*beta_m  # _k5
+    ctx.k[6] = beta_m*h_m  # _k6
+    ctx.k[7] = -_c2  # _k7
+    ctx.k[8] = -_c3*h_m  # _k8
+    ctx.k[9] = _c3*_c5  # _k9
+    ctx.k[10] = _c7  # _k10
+    ctx.k[11] = _c6*h_m  # _k11
+    ctx.k[12] = (R_b*R_b)*_c6  # _k12
+    ctx.k[13] = _c6*_c8  # _k13
+    ctx.k[14] = 2.0*_c7*h_m  # _k14
+    ctx.k[15] = _c3*_c8  # _k15
+    ctx.k[16] = -_c4*_c9  # _k16
+    ctx.k[17] = -_c12  # _k17
+    ctx.k[18] = _c12*omega_s  # _k18
+    ctx.k[19] = _c9  # _k19
+    ctx.k[20] = -_c0*_c8  # _k20
+    ctx.k[21] = -_c13*c_y  # _k21
+    ctx.k[22] = _c13*h_m  # _k22
+    ctx.k[23] = -2.0*sqrt(c_y)*q_y/sqrt(m_y)  # _k23
+    ctx.k[24] = -c_z  # _k24
+    ctx.k[25] = -2.0*sqrt(c_z)*sqrt(m_z)*q_z  # _k25
+    ctx.k[26] = (1.0/m_z)  # _k26
+    ctx.k[27] = -F_0  # _k27
+    ctx.k[28] = -c_s  # _k28
+    ctx.k[29] = (1.0/m_x)  # _k29
+    ctx.k[30] = -beta_0  # _k30
+    ctx.k[31] = _c4  # _k31
+    ctx.k[32] = _c14*_c15*_c6  # _k32
+    ctx.k[33] = _c15*beta_m  # _k33
+    ctx.k[34] = -h_m  # _k34
+    ctx.k[35] = _c14  # _k35
+    ctx.k[36] = -k  # _k36
+    ctx.k[37] = k*omega_s  # _k37
+    ctx.k[38] = _c10*_c11  # _k38
+    ctx.k[39] = -_c2*_c4  # _k39
+    ctx.k[40] = _c5  # _k40
+    ctx.k[41] = _c16*_c8  # _k41
+    ctx.k[42] = -_c16*h_m  # _k42
+    ctx.k[43] = -_c5  # _k43
+    ctx.k[44] = _c3  # _k44
+    ctx.k[45] = (1.0/omega_s)  # _k45
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -176,8 +193,8 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double s_r = ctx.p[18]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -217,6 +234,13 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
     cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -242,33 +266,34 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
             camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], _a, _cam0)
             _c[0], _c[1], _c[2], _c[3], _c[4] = _a, _cam0[0], _cam0[1], _cam0[2], _cam0[3]
 
-    cdef double _s0_0, _s0_1, _s0_2, _s0_3, _s0_4, _s1_0, _s1_1, _s1_2
+    cdef double _s0_0, _s0_1, _s0_2, _s0_3, _s0_4, _s0_5, _s0_6, _s0_7, _s1_0
     _dy[0] = betad
     _dy[1] = yd
     _dy[2] = zd
     _dy[3] = xd
     if _v == 0:
-        _s0_0 = _k10*beta + _k11*t + _k12*betad
-        _s0_1 = _cam0[2]*y
-        _s0_2 = _cam0[0]*_k1 + _cam0[1]*_k3*y + _cam0[1]*_k4*betad + _cam0[1]*_k5*yd + _k0*x + _k0*z + _k2*xd + _k2*zd + _k6*_s0_1*betad
-        _s0_3 = ((_s0_2) if ((ctx.mode[2] == 0.0)) else (((0.0) if ((ctx.mode[2] == 1.0)) else (_k7 + _s0_2))))
-        _s0_4 = _cam0[1]*_s0_3
-        _dy[4] = _k15*(_k8*_s0_4 + _k9*_s0_1*_s0_3 + ((_k13 + _s0_0) if ((ctx.mode[1] == 0.0)) else (((0.0) if ((ctx.mode[1] == 1.0)) else (_k14 + _s0_0)))))
-        _dy[5] = _k16*y + _k17*yd + _k18*_s0_4
-        _dy[6] = _k21*(_k19*z + _k20*zd + _s0_3)
-        _dy[7] = _k22*_s0_3
+        _s0_0 = (1.0/(_cam0[0]*_k6 + _k5))
+        _s0_1 = _cam0[1]*_s0_0
+        _s0_2 = betad*y
+        _s0_3 = _cam0[2]/(_cam0[0]*_k11 + _k10)
+        _s0_4 = (_cam0[1]*_cam0[1])/((_cam0[0]*_cam0[0])*_k13 + _cam0[0]*_k14 + _k12)
+        _s0_5 = ((_cam0[0]*_k3 + _cam0[1]*_k9*betad + _k15*_s0_2*_s0_4 + _k2*x + _k2*z + _k4*xd + _k4*zd + _k7*_s0_1*y + _k8*_s0_1*yd + _k8*_s0_2*_s0_3) if ((ctx.mode[1] == 0.0)) else (0.0))
+        _s0_6 = _cam0[1]*_s0_5
+        _s0_7 = _s0_5*y
+        _dy[4] = _k0*beta + _k1*t + _k16*_s0_6 + _k17*betad + _k18 + _k19*_s0_3*_s0_7 + _k20*_s0_4*_s0_7
+        _dy[5] = _k21*y + _k22*_s0_0*_s0_6 + _k23*yd
+        _dy[6] = _k26*(_k24*z + _k25*zd + _s0_5)
+        _dy[7] = _k29*(_k27 + _k28*x + _s0_5)
     elif _v == 1:  # in a dwell: 0
-        _s1_0 = _k10*beta + _k11*t + _k12*betad
-        _s1_1 = _cam0[0]*_k1 + _k0*x + _k0*z + _k2*xd + _k2*zd
-        _s1_2 = ((_s1_1) if ((ctx.mode[2] == 0.0)) else (((0.0) if ((ctx.mode[2] == 1.0)) else (_k7 + _s1_1))))
-        _dy[4] = _k15*((_k13 + _s1_0) if ((ctx.mode[1] == 0.0)) else (((0.0) if ((ctx.mode[1] == 1.0)) else (_k14 + _s1_0))))
-        _dy[5] = _k16*y + _k17*yd
-        _dy[6] = _k21*(_k19*z + _k20*zd + _s1_2)
-        _dy[7] = _k22*_s1_2
+        _s1_0 = ((_cam0[0]*_k3 + _k2*x + _k2*z + _k4*xd + _k4*zd) if ((ctx.mode[1] == 0.0)) else (0.0))
+        _dy[4] = _k0*beta + _k1*t + _k17*betad + _k18
+        _dy[5] = _k21*y + _k23*yd
+        _dy[6] = _k26*(_k24*z + _k25*zd + _s1_0)
+        _dy[7] = _k29*(_k27 + _k28*x + _s1_0)
 
 
 cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept nogil:
-    """The named outputs (B, Xdd, Bdd, U, xdd, torque, Fx, speed_var, tan_alpha, gear_gap, roller_gap)."""
+    """The named outputs (B, Xdd, Bdd, U, xdd, torque, Fx, speed_var, tan_alpha, roller_gap)."""
     cdef double _dy[8]
     rhs(t, _y, _dy, ctx)
     cdef double h_m = ctx.p[0]
@@ -288,8 +313,8 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double s_r = ctx.p[18]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -329,6 +354,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
     cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -344,26 +376,23 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
-    cdef double _o0 = _cam0[0]*_k27 + x
-    cdef double _o1 = _k29*(betad - omega_s)
-    cdef double _o2 = (ctx.mode[1] == 0.0)
-    cdef double _o3 = (ctx.mode[1] == 1.0)
-    cdef double _o4 = _k33*(_cam0[1]*_k32*yd + betad*(_cam0[1]*_k30 + _cam0[2]*_k31*y) - xd - zd)
-    cdef double _o5 = (ctx.mode[2] == 0.0)
-    cdef double _o6 = (ctx.mode[2] == 1.0)
-    cdef double _o7 = _cam0[1]*_k35
-    cdef double _o8 = _o0 + _o7*y + z
-    _out[0] = _k24*(_k23 + beta)  # B
-    _out[1] = _k25*_dy[7]  # Xdd
-    _out[2] = _k26*_dy[4]  # Bdd
-    _out[3] = _k28*_o0  # U
+    cdef double _o0 = _cam0[0]*_k34 + x
+    cdef double _o1 = R_b + _cam0[0]*h_m
+    cdef double _o2 = (1.0/_o1)
+    cdef double _o3 = _o2*y
+    cdef double _o4 = _o2*yd
+    cdef double _o5 = _cam0[1]*_k40
+    cdef double _o6 = _o2*_o5
+    _out[0] = _k31*(_k30 + beta)  # B
+    _out[1] = _k32*_dy[7]  # Xdd
+    _out[2] = _k33*_dy[4]  # Bdd
+    _out[3] = _k35*_o0  # U
     _out[4] = _dy[7]  # xdd
-    _out[5] = ((_k10*beta + _k11*t - _o1) if (_o2) else (((0.0) if (_o3) else (-_o1 + k*(-beta + omega_s*t + s_g)))))  # torque
-    _out[6] = ((_cam0[0]*_k1 + _cam0[1]*_k3*y + _k0*x + _k0*z + _o4) if (_o5) else (((0.0) if (_o6) else (_k0*(_k34 + _o8) + _o4))))  # Fx
-    _out[7] = _k37*(_k36*yd + betad) - 1.0  # speed_var
-    _out[8] = _o7  # tan_alpha
-    _out[9] = ((0.0) if (_o2) else (((-beta + omega_s*t) if (_o3) else (_k38))))  # gear_gap
-    _out[10] = ((0.0) if (_o5) else (((_o8) if (_o6) else (s_r))))  # roller_gap
+    _out[5] = _k36*beta + _k37*t - _k38*(betad - omega_s)  # torque
+    _out[6] = ((_cam0[0]*_k3 + _cam0[1]*_k39*_o3 + _k2*x + _k2*z + _k44*(_cam0[1]*_k43*_o4 + betad*((_cam0[1]*_cam0[1])*_k41*y/(_o1*_o1) + _cam0[2]*_k42*_o3 + _o5) - xd - zd)) if ((ctx.mode[1] == 0.0)) else (0.0))  # Fx
+    _out[7] = _k45*(-_o4 + betad) - 1.0  # speed_var
+    _out[8] = _o6  # tan_alpha
+    _out[9] = _o0 + _o6*y + z  # roller_gap
 
 
 cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, Ctx* ctx) noexcept nogil:
@@ -385,8 +414,8 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double s_r = ctx.p[18]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -426,6 +455,13 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
     cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -500,8 +536,8 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double s_r = ctx.p[18]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -541,6 +577,13 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
     cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -573,8 +616,8 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double s_r = ctx.p[18]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -614,6 +657,13 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
     cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -625,16 +675,10 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
-    _g[0] = (-beta + omega_s*t) if (ctx.mode[1] == 0.0) else 1.0  # gear_lift_drive
-    _g[1] = (-beta + omega_s*t) if (ctx.mode[1] == 1.0) else 1.0  # gear_hit_drive
-    _g[2] = (-beta + omega_s*t + s_g) if (ctx.mode[1] == 1.0) else 1.0  # gear_hit_back
-    _g[3] = (-beta + omega_s*t + s_g) if (ctx.mode[1] == 2.0) else 1.0  # gear_lift_back
-    _g[4] = (_cam0[0]*h_m - x - z - _cam0[1]*h_m*y/(R_b*beta_m)) if (ctx.mode[2] == 0.0) else 1.0  # roller_leave_lower
-    _g[5] = (_cam0[0]*h_m - x - z - _cam0[1]*h_m*y/(R_b*beta_m)) if (ctx.mode[2] == 1.0) else 1.0  # roller_hit_lower
-    _g[6] = (-_cam0[0]*h_m - s_r + x + z + _cam0[1]*h_m*y/(R_b*beta_m)) if (ctx.mode[2] == 1.0) else 1.0  # roller_hit_upper
-    _g[7] = (-_cam0[0]*h_m - s_r + x + z + _cam0[1]*h_m*y/(R_b*beta_m)) if (ctx.mode[2] == 2.0) else 1.0  # roller_leave_upper
-    _g[8] = (beta/beta_m - beta_0/beta_m) - camlaw_hi(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_hi: next segment
-    _g[9] = (beta/beta_m - beta_0/beta_m) - camlaw_lo(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_lo: previous segment
+    _g[0] = (_cam0[0]*h_m - _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) - x - z) if (ctx.mode[1] == 0.0) else 1.0  # roller_lift
+    _g[1] = (_cam0[0]*h_m - _cam0[1]*h_m*y/(beta_m*(R_b + _cam0[0]*h_m)) - x - z) if (ctx.mode[1] == 1.0) else 1.0  # roller_land
+    _g[2] = (beta/beta_m - beta_0/beta_m) - camlaw_hi(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_hi: next segment
+    _g[3] = (beta/beta_m - beta_0/beta_m) - camlaw_lo(ctx.law[0], ctx.law_par[0], ctx.mode[0])  # cam0_lo: previous segment
 
 
 cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
@@ -656,8 +700,8 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double s_r = ctx.p[18]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -697,6 +741,13 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
     cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -708,33 +759,15 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
-    if _e == 0:  # gear_lift_drive
+    if _e == 0:  # roller_lift
         if True:
-            ctx.mode[1] = 1  # gear = free
-    elif _e == 1:  # gear_hit_drive
+            ctx.mode[1] = 1  # roller = free
+    elif _e == 1:  # roller_land
         if True:
-            ctx.mode[1] = 0  # gear = drive
-    elif _e == 2:  # gear_hit_back
-        if True:
-            ctx.mode[1] = 2  # gear = back
-    elif _e == 3:  # gear_lift_back
-        if True:
-            ctx.mode[1] = 1  # gear = free
-    elif _e == 4:  # roller_leave_lower
-        if True:
-            ctx.mode[2] = 1  # roller = free
-    elif _e == 5:  # roller_hit_lower
-        if True:
-            ctx.mode[2] = 0  # roller = lower
-    elif _e == 6:  # roller_hit_upper
-        if True:
-            ctx.mode[2] = 2  # roller = upper
-    elif _e == 7:  # roller_leave_upper
-        if True:
-            ctx.mode[2] = 1  # roller = free
-    elif _e == 8:  # cam0_hi
+            ctx.mode[1] = 0  # roller = contact
+    elif _e == 2:  # cam0_hi
         ctx.mode[0] += 1
-    elif _e == 9:  # cam0_lo
+    elif _e == 3:  # cam0_lo
         ctx.mode[0] += -1
     refresh(ctx)
 
@@ -766,8 +799,8 @@ def initial_state(p):
     cdef double m_z = p[14]
     cdef double c_z = p[15]
     cdef double q_z = p[16]
-    cdef double s_g = p[17]
-    cdef double s_r = p[18]
+    cdef double F_0 = p[17]
+    cdef double c_s = p[18]
     return [0.0, 0.0, 0.0, 0.0, omega_s, 0.0, 0.0, 0.0]
 
 
@@ -790,8 +823,8 @@ def cam_time_affine(p):
     cdef double m_z = p[14]
     cdef double c_z = p[15]
     cdef double q_z = p[16]
-    cdef double s_g = p[17]
-    cdef double s_r = p[18]
+    cdef double F_0 = p[17]
+    cdef double c_s = p[18]
     return [None]
 
 
@@ -800,12 +833,12 @@ _model.abi_version = CAMDYN_ABI
 _model.n_q = _NQ
 _model.n_states = _NS
 _model.n_params = 19
-_model.n_outputs = 11
+_model.n_outputs = 10
 _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 39
+_model.n_const = 46
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -833,45 +866,28 @@ _MANIFEST_JSON = """
   }
  ],
  "events": [
-  "gear_lift_drive",
-  "gear_hit_drive",
-  "gear_hit_back",
-  "gear_lift_back",
-  "roller_leave_lower",
-  "roller_hit_lower",
-  "roller_hit_upper",
-  "roller_leave_upper",
+  "roller_lift",
+  "roller_land",
   "cam0_hi",
   "cam0_lo"
  ],
  "modes": [
   {
-   "doc": "flank of the reduction gear in contact",
-   "initial": "drive",
-   "name": "gear",
-   "values": [
-    "drive",
-    "free",
-    "back"
-   ]
-  },
-  {
-   "doc": "groove wall the roller touches",
-   "initial": "lower",
+   "doc": "roller on the cam or lifted off (follower jump)",
+   "initial": "contact",
    "name": "roller",
    "values": [
-    "lower",
-    "free",
-    "upper"
+    "contact",
+    "free"
    ]
   }
  ],
  "n_q": 4,
- "name": "dynacam_acbg_yz",
+ "name": "dynacam_radial_ideal_rigidgear_contact_shafty_shaftz_spring",
  "options": [
   [
    "cam",
-   "axial"
+   "radial"
   ],
   [
    "cam_friction",
@@ -883,7 +899,7 @@ _MANIFEST_JSON = """
   ],
   [
    "gear",
-   "backlash"
+   "rigid"
   ],
   [
    "linkage_friction",
@@ -895,7 +911,7 @@ _MANIFEST_JSON = """
   ],
   [
    "roller",
-   "groove"
+   "contact"
   ],
   [
    "shaft_y",
@@ -907,7 +923,7 @@ _MANIFEST_JSON = """
   ],
   [
    "spring",
-   false
+   true
   ]
  ],
  "outputs": [
@@ -957,12 +973,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "input minus gear output angle (6.1): 0 on the driving flank, -s_g on the other",
-   "name": "gear_gap",
-   "unit": "rad"
-  },
-  {
-   "doc": "roller position in the groove over the cam wall: 0 lower wall, s_r upper",
+   "doc": "gap between roller and cam (negative: pressed)",
    "name": "roller_gap",
    "unit": "m"
   }
@@ -1156,26 +1167,26 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "default": 0.01,
-   "doc": "backlash of the reduction gear, reduced to the camshaft (6.1)",
+   "default": 100.0,
+   "doc": "follower spring preload at x = 0 (6.45)",
    "high": null,
    "low": 0.0,
-   "name": "s_g",
+   "name": "F_0",
    "open_high": false,
-   "open_low": true,
-   "range": "0 < s_g",
-   "unit": "rad"
+   "open_low": false,
+   "range": "0 <= F_0",
+   "unit": "N"
   },
   {
-   "default": 0.00013,
-   "doc": "backlash of the roller in its groove (6.27)",
+   "default": 10000.0,
+   "doc": "follower spring stiffness (6.45)",
    "high": null,
    "low": 0.0,
-   "name": "s_r",
+   "name": "c_s",
    "open_high": false,
-   "open_low": true,
-   "range": "0 < s_r",
-   "unit": "m"
+   "open_low": false,
+   "range": "0 <= c_s",
+   "unit": "N/m"
   }
  ],
  "reference": "thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18",
@@ -1185,7 +1196,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:347f5e213ab558582dc4001d4fefee5ca7cff535c2a92098389a5ca7d391cd67",
+ "source_hash": "sha256:7f58decc9cfef69affba9dbc66d6cbef86b828d17c757a297e7f17381ee2f025",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,23 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b91899b75e6ec3275501fe3080a856f62254cb4d45180e7aa5ff6e9b6ec90cb2
-# Text hash: sha256:58509d0436095ae37d1b0ab8ed2be9a753b0d0fa72aa8de240243ef9039eac0b
+# Derivation key: sha256:7cdd70f2b3465131712c9f684493cb36826bf352da0944c32fec90a563986400
+# Text hash: sha256:8d78cef9a5cf3a2bacb45403ad6e3c374751f6c321d38eb93a82e77989654154
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:38dc387b316e062cdefa30ad3ba79e35b33ea1730e89a4b484fe60f461f3142e
+# Source hash: sha256:95f560bc26df0b9131daa169377ace69bae787bab28a16fe54f257920927c69b
+#
+# This variant:
+#   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
+#   motor = constant: camshaft input turning at the constant speed omega_s (ideal drive)
+#   gear = rigid: reduction gear without backlash: the shaft torsion k, d_b alone (6.10)
+#   roller = bilateral: roller held on both sides: the linkage spring always carries (6.42)
+#   shaft_y = yes: tangential shaft deflection y (6.12), (6.16)
+#   shaft_z = yes: shaft deflection z along the follower (6.11), (6.15)
+#   cam_friction = no: no friction on the cam
+#   linkage_friction = no: no friction in the linkage
+#   spring = no: no follower spring
+#   external = no: no external force
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -52,7 +64,7 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport pow, sqrt
+from libc.math cimport sqrt
 
 from camdyn.runtime.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
@@ -61,7 +73,7 @@ from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_
 # sizes, known when the integration loops (loops.pxi) are compiled into this module
 cdef enum:
     _NQ = 4                  # second-order coordinates
-    _NS = 10                  # states: q, q', first-order states
+    _NS = 8                  # states: q, q', first-order states
     _NCAM = 1                # cam input instances (one segment mode each)
     _NM = 1                  # modes: cam segments, then the force elements' modes
     _NE = 2                  # events
@@ -93,126 +105,124 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double V_T = ctx.p[18]
-    cdef double s_r = ctx.p[19]
-    cdef double V_R = ctx.p[20]
-    cdef double _c0 = sqrt(J)
-    cdef double _c1 = 2.0*sqrt(k)*q_b
-    cdef double _c2 = _c0*_c1
-    cdef double _c3 = (1.0/J)
-    cdef double _c4 = V_T*_c3*k
-    cdef double _c5 = (1.0/R_b)
-    cdef double _c6 = (1.0/beta_m)
-    cdef double _c7 = _c6*h_m
-    cdef double _c8 = _c5*_c7
+    cdef double _c0 = (R_b*R_b)
+    cdef double _c1 = (h_m*h_m)
+    cdef double _c2 = 2.0*h_m
+    cdef double _c3 = (R_b*R_b*R_b)
+    cdef double _c4 = (h_m*h_m*h_m)
+    cdef double _c5 = (h_m*h_m*h_m*h_m)
+    cdef double _c6 = 4.0*h_m
+    cdef double _c7 = 4.0*_c4
+    cdef double _c8 = c_x*h_m
     cdef double _c9 = sqrt(m_x)
-    cdef double _c10 = sqrt(c_x)
-    cdef double _c11 = 2.0*_c10*q_x
-    cdef double _c12 = _c11*_c9
-    cdef double _c13 = (beta_m*beta_m)
-    cdef double _c14 = _c5*h_m/_c13
-    cdef double _c15 = V_R*beta_m
-    cdef double _c16 = _c12*beta_m
-    cdef double _c17 = V_R*c_x
-    cdef double _c18 = _c17*h_m
-    cdef double _c19 = _c18*_c3
-    cdef double _c20 = V_T*_c1/_c0
-    cdef double _c21 = V_R*_c13
-    cdef double _c22 = _c12*_c13
-    cdef double _c23 = (h_m*h_m)
-    cdef double _c24 = V_R*_c12
-    cdef double _c25 = _c24*_c3
-    cdef double _c26 = _c23*_c25
-    cdef double _c27 = _c25*h_m
-    cdef double _c28 = (beta_m*beta_m*beta_m*beta_m)
-    cdef double _c29 = (R_b*R_b)
-    cdef double _c30 = V_R*_c29
-    cdef double _c31 = _c12*_c29
-    cdef double _c32 = (beta_m*beta_m*beta_m)
-    cdef double _c33 = R_b*_c32
-    cdef double _c34 = (1.0/m_y)
-    cdef double _c35 = _c18*_c34
-    cdef double _c36 = _c24*_c34
-    cdef double _c37 = _c23*_c36
-    cdef double _c38 = (1.0/m_z)
-    cdef double _c39 = _c17*_c38
-    cdef double _c40 = _c24*_c38
-    cdef double _c41 = _c40*h_m
-    cdef double _c42 = _c17/m_x
-    cdef double _c43 = V_R*_c11/_c9
-    cdef double _c44 = _c43*h_m
-    cdef double _c45 = (1.0/h_m)
-    cdef double _c46 = (1.0/(omega_s*omega_s))
-    ctx.k[0] = -omega_s  # _k0
-    ctx.k[1] = -k  # _k1
-    ctx.k[2] = -_c2*omega_s  # _k2
-    ctx.k[3] = _c2  # _k3
+    cdef double _c10 = sqrt(c_x)*q_x
+    cdef double _c11 = _c10*_c9
+    cdef double _c12 = 2.0*_c11
+    cdef double _c13 = _c11*_c2
+    cdef double _c14 = (beta_m*beta_m)
+    cdef double _c15 = _c14*h_m
+    cdef double _c16 = k*omega_s
+    cdef double _c17 = sqrt(J)
+    cdef double _c18 = 2.0*sqrt(k)*q_b
+    cdef double _c19 = _c17*_c18
+    cdef double _c20 = (beta_m*beta_m*beta_m*beta_m)
+    cdef double _c21 = (beta_m*beta_m*beta_m)
+    cdef double _c22 = _c1*_c14
+    cdef double _c23 = _c1*beta_m
+    cdef double _c24 = _c1*_c12
+    cdef double _c25 = (1.0/J)
+    cdef double _c26 = sqrt(m_y)
+    cdef double _c27 = 2.0*sqrt(c_y)*q_y
+    cdef double _c28 = (1.0/m_y)
+    cdef double _c29 = c_x + c_z
+    cdef double _c30 = sqrt(m_z)
+    cdef double _c31 = sqrt(c_z)*q_z
+    cdef double _c32 = beta_m*h_m
+    cdef double _c33 = (1.0/_c14)
+    cdef double _c34 = (1.0/m_z)
+    cdef double _c35 = (1.0/m_x)
+    cdef double _c36 = _c18/_c17
+    cdef double _c37 = (1.0/beta_m)
+    cdef double _c38 = (1.0/h_m)
+    cdef double _c39 = (1.0/(omega_s*omega_s))
+    cdef double _c40 = _c37*h_m
+    ctx.k[0] = _c0  # _k0
+    ctx.k[1] = _c1  # _k1
+    ctx.k[2] = R_b*_c2  # _k2
+    ctx.k[3] = _c3  # _k3
     ctx.k[4] = _c4  # _k4
-    ctx.k[5] = -_c4  # _k5
-    ctx.k[6] = -h_m  # _k6
-    ctx.k[7] = _c8  # _k7
-    ctx.k[8] = -c_x  # _k8
-    ctx.k[9] = _c12  # _k9
-    ctx.k[10] = -_c12*_c7  # _k10
-    ctx.k[11] = _c12*_c8  # _k11
-    ctx.k[12] = _c12*_c14  # _k12
-    ctx.k[13] = -_c8  # _k13
-    ctx.k[14] = -s_r  # _k14
-    ctx.k[15] = _c15  # _k15
-    ctx.k[16] = _c16  # _k16
-    ctx.k[17] = _c19  # _k17
-    ctx.k[18] = -_c19  # _k18
-    ctx.k[19] = -_c20  # _k19
-    ctx.k[20] = _c20*omega_s  # _k20
-    ctx.k[21] = R_b*_c21  # _k21
-    ctx.k[22] = R_b*_c22  # _k22
-    ctx.k[23] = _c21  # _k23
-    ctx.k[24] = _c22  # _k24
-    ctx.k[25] = -_c26  # _k25
-    ctx.k[26] = _c27  # _k26
-    ctx.k[27] = _c26  # _k27
-    ctx.k[28] = -_c27  # _k28
-    ctx.k[29] = _c28*_c30  # _k29
-    ctx.k[30] = _c28*_c31  # _k30
-    ctx.k[31] = _c30*_c32  # _k31
-    ctx.k[32] = _c31*_c32  # _k32
-    ctx.k[33] = V_R*_c33  # _k33
-    ctx.k[34] = _c12*_c33  # _k34
-    ctx.k[35] = 4.0*V_R*_c10*_c23*_c3*_c9*q_x  # _k35
-    ctx.k[36] = -_c34*c_y  # _k36
-    ctx.k[37] = -2.0*sqrt(c_y)*q_y/sqrt(m_y)  # _k37
-    ctx.k[38] = R_b*_c15  # _k38
-    ctx.k[39] = R_b*_c16  # _k39
-    ctx.k[40] = _c35  # _k40
-    ctx.k[41] = -_c35  # _k41
-    ctx.k[42] = -_c36*h_m  # _k42
-    ctx.k[43] = _c21*_c29  # _k43
-    ctx.k[44] = _c22*_c29  # _k44
-    ctx.k[45] = -_c37  # _k45
-    ctx.k[46] = _c37  # _k46
-    ctx.k[47] = -_c38*c_z  # _k47
-    ctx.k[48] = -2.0*sqrt(c_z)*q_z/sqrt(m_z)  # _k48
-    ctx.k[49] = _c39  # _k49
-    ctx.k[50] = -_c39  # _k50
-    ctx.k[51] = -_c40  # _k51
-    ctx.k[52] = -_c41  # _k52
-    ctx.k[53] = _c41  # _k53
-    ctx.k[54] = _c42  # _k54
-    ctx.k[55] = -_c42  # _k55
-    ctx.k[56] = -_c43  # _k56
-    ctx.k[57] = -_c44  # _k57
-    ctx.k[58] = _c44  # _k58
-    ctx.k[59] = _c7  # _k59
-    ctx.k[60] = -_c14  # _k60
-    ctx.k[61] = -_c12  # _k61
-    ctx.k[62] = -beta_0  # _k62
-    ctx.k[63] = _c6  # _k63
-    ctx.k[64] = _c13*_c45*_c46  # _k64
-    ctx.k[65] = _c46*beta_m  # _k65
-    ctx.k[66] = _c45  # _k66
-    ctx.k[67] = -_c5  # _k67
-    ctx.k[68] = (1.0/omega_s)  # _k68
+    ctx.k[5] = 3.0*_c0*h_m  # _k5
+    ctx.k[6] = 3.0*R_b*_c1  # _k6
+    ctx.k[7] = (R_b*R_b*R_b*R_b)  # _k7
+    ctx.k[8] = _c5  # _k8
+    ctx.k[9] = _c3*_c6  # _k9
+    ctx.k[10] = R_b*_c7  # _k10
+    ctx.k[11] = 6.0*_c0*_c1  # _k11
+    ctx.k[12] = _c8  # _k12
+    ctx.k[13] = -c_x  # _k13
+    ctx.k[14] = -_c12  # _k14
+    ctx.k[15] = _c13  # _k15
+    ctx.k[16] = _c15  # _k16
+    ctx.k[17] = -k  # _k17
+    ctx.k[18] = _c16  # _k18
+    ctx.k[19] = -_c19  # _k19
+    ctx.k[20] = _c19*omega_s  # _k20
+    ctx.k[21] = _c20  # _k21
+    ctx.k[22] = -_c8  # _k22
+    ctx.k[23] = _c12  # _k23
+    ctx.k[24] = _c21*h_m  # _k24
+    ctx.k[25] = _c4*beta_m  # _k25
+    ctx.k[26] = _c22  # _k26
+    ctx.k[27] = _c11*_c6  # _k27
+    ctx.k[28] = -_c23  # _k28
+    ctx.k[29] = -_c12*_c5  # _k29
+    ctx.k[30] = -_c24  # _k30
+    ctx.k[31] = -_c12*_c22  # _k31
+    ctx.k[32] = _c11*_c7  # _k32
+    ctx.k[33] = 4.0*_c11*_c23  # _k33
+    ctx.k[34] = _c25/_c20  # _k34
+    ctx.k[35] = _c26*_c27  # _k35
+    ctx.k[36] = -_c21  # _k36
+    ctx.k[37] = -_c15  # _k37
+    ctx.k[38] = _c12*_c4  # _k38
+    ctx.k[39] = _c12*_c23  # _k39
+    ctx.k[40] = _c28/_c21  # _k40
+    ctx.k[41] = _c29  # _k41
+    ctx.k[42] = 2.0*_c11 + 2.0*_c30*_c31  # _k42
+    ctx.k[43] = -_c14  # _k43
+    ctx.k[44] = -_c32  # _k44
+    ctx.k[45] = -_c13  # _k45
+    ctx.k[46] = _c24  # _k46
+    ctx.k[47] = _c12*_c32  # _k47
+    ctx.k[48] = _c33*_c34  # _k48
+    ctx.k[49] = _c33*_c35  # _k49
+    ctx.k[50] = -_c25*k  # _k50
+    ctx.k[51] = _c16*_c25  # _k51
+    ctx.k[52] = -_c36  # _k52
+    ctx.k[53] = _c36*omega_s  # _k53
+    ctx.k[54] = -_c28*c_y  # _k54
+    ctx.k[55] = -_c27/_c26  # _k55
+    ctx.k[56] = -_c34*c_x  # _k56
+    ctx.k[57] = -_c29*_c34  # _k57
+    ctx.k[58] = _c34*_c8  # _k58
+    ctx.k[59] = -_c12*_c34  # _k59
+    ctx.k[60] = -2.0*_c11*_c34 - 2.0*_c31/_c30  # _k60
+    ctx.k[61] = -_c35*c_x  # _k61
+    ctx.k[62] = _c35*_c8  # _k62
+    ctx.k[63] = -2.0*_c10/_c9  # _k63
+    ctx.k[64] = -beta_0  # _k64
+    ctx.k[65] = _c37  # _k65
+    ctx.k[66] = _c14*_c38*_c39  # _k66
+    ctx.k[67] = _c39*beta_m  # _k67
+    ctx.k[68] = -h_m  # _k68
+    ctx.k[69] = _c38  # _k69
+    ctx.k[70] = _c19  # _k70
+    ctx.k[71] = -_c37*_c8  # _k71
+    ctx.k[72] = _c40  # _k72
+    ctx.k[73] = _c1*_c33  # _k73
+    ctx.k[74] = -_c33*h_m  # _k74
+    ctx.k[75] = -_c40  # _k75
+    ctx.k[76] = (1.0/omega_s)  # _k76
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -234,10 +244,6 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double V_T = ctx.p[18]
-    cdef double s_r = ctx.p[19]
-    cdef double V_R = ctx.p[20]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -307,6 +313,14 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k66 = ctx.k[66]
     cdef double _k67 = ctx.k[67]
     cdef double _k68 = ctx.k[68]
+    cdef double _k69 = ctx.k[69]
+    cdef double _k70 = ctx.k[70]
+    cdef double _k71 = ctx.k[71]
+    cdef double _k72 = ctx.k[72]
+    cdef double _k73 = ctx.k[73]
+    cdef double _k74 = ctx.k[74]
+    cdef double _k75 = ctx.k[75]
+    cdef double _k76 = ctx.k[76]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -315,8 +329,6 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double yd = _y[5]
     cdef double zd = _y[6]
     cdef double xd = _y[7]
-    cdef double phir = _y[8]
-    cdef double hr = _y[9]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     cdef int _v = ctx.variant
     cdef double* _c
@@ -334,116 +346,63 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
             camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], _a, _cam0)
             _c[0], _c[1], _c[2], _c[3], _c[4] = _a, _cam0[0], _cam0[1], _cam0[2], _cam0[3]
 
-    cdef double _s0_0, _s0_1, _s0_2, _s0_3, _s0_4, _s0_5, _s0_6, _s0_7, _s0_8, _s0_9, _s0_10, _s0_11, _s0_12, _s0_13, _s0_14, _s0_15, _s0_16, _s0_17, _s0_18, _s0_19, _s0_20, _s0_21, _s0_22, _s0_23, _s0_24, _s0_25, _s0_26, _s0_27, _s0_28, _s0_29, _s0_30, _s0_31, _s0_32, _s0_33, _s0_34, _s0_35, _s0_36, _s0_37, _s0_38, _s0_39, _s0_40, _s0_41, _s0_42, _s0_43, _s0_44, _s0_45, _s0_46, _s0_47, _s0_48, _s0_49, _s0_50, _s0_51, _s0_52, _s0_53, _s0_54, _s0_55, _s0_56, _s0_57, _s1_0, _s1_1, _s1_2, _s1_3, _s1_4, _s1_5, _s1_6, _s1_7, _s1_8, _s1_9, _s1_10, _s1_11, _s1_12, _s1_13, _s1_14, _s1_15, _s1_16, _s1_17, _s1_18, _s1_19, _s1_20, _s1_21, _s1_22, _s1_23, _s1_24, _s1_25, _s1_26, _s1_27
+    cdef double _s0_0, _s0_1, _s0_2, _s0_3, _s0_4, _s0_5, _s0_6, _s0_7, _s0_8, _s0_9, _s0_10, _s0_11, _s0_12, _s0_13, _s0_14, _s0_15, _s0_16, _s0_17, _s0_18, _s0_19, _s0_20, _s0_21, _s0_22, _s0_23, _s0_24, _s0_25, _s0_26, _s0_27, _s0_28, _s0_29, _s0_30, _s0_31, _s0_32, _s0_33, _s0_34, _s0_35, _s0_36
     _dy[0] = betad
     _dy[1] = yd
     _dy[2] = zd
     _dy[3] = xd
     if _v == 0:
-        _s0_0 = _k0*t
-        _s0_1 = _s0_0 + phir
-        _s0_2 = sqrt(_s0_1)
-        _s0_3 = -phir
-        _s0_4 = omega_s*t
-        _s0_5 = _s0_3 + _s0_4
-        _s0_6 = (_s0_5 < -1.0/1000000000000.0)
-        _s0_7 = _s0_5 + s_g
-        _s0_8 = sqrt(_s0_7)
-        _s0_9 = (_s0_7 > 1.0/1000000000000.0)
-        _s0_10 = (((((1.0/(_s0_0*_s0_2 + _s0_2*phir))) if (_s0_6) else (1e+18))) if ((_k1*phir + _k2 + _k3*betad + beta*k < 0.0)) else ((((1.0/(_s0_4*_s0_8 - _s0_8*phir + _s0_8*s_g))) if (_s0_9) else (1e+18))))
-        _s0_11 = _s0_10/(V_T*_s0_10 + _k3)
-        _s0_12 = _cam0[0]*_k6
-        _s0_13 = _cam0[1]*y
-        _s0_14 = _k7*_s0_13
-        _s0_15 = _s0_12 + _s0_14 + hr + z
-        _s0_16 = sqrt(_s0_15)
-        _s0_17 = (_s0_15 > 1.0/1000000000000.0)
-        _s0_18 = _cam0[1]*betad
-        _s0_19 = _cam0[1]*yd
-        _s0_20 = _cam0[2]*y
-        _s0_21 = _s0_20*betad
-        _s0_22 = _cam0[0]*h_m
-        _s0_23 = _k13*_s0_13
-        _s0_24 = _s0_22 + _s0_23 - hr + s_r - z
-        _s0_25 = sqrt(_s0_24)
-        _s0_26 = (_k14 + _s0_15 < -1.0/1000000000000.0)
-        _s0_27 = (((((1.0/(_s0_12*_s0_16 + _s0_14*_s0_16 + _s0_16*hr + _s0_16*z))) if (_s0_17) else (1e+18))) if ((_k10*_s0_18 + _k11*_s0_19 + _k12*_s0_21 + _k8*hr + _k9*xd + _k9*zd + c_x*x < 0.0)) else ((((1.0/(_s0_22*_s0_25 + _s0_23*_s0_25 - _s0_25*hr + _s0_25*s_r - _s0_25*z))) if (_s0_26) else (1e+18))))
-        _s0_28 = (1.0/(_k15*_s0_27 + _k16))
-        _s0_29 = _cam0[1]*_s0_27
-        _s0_30 = _s0_28*_s0_29
-        _s0_31 = _k26*_s0_30
-        _s0_32 = (1.0/(_k21*_s0_27 + _k22))
-        _s0_33 = _s0_20*_s0_27*_s0_32
-        _s0_34 = _k28*_s0_33
-        _s0_35 = (_cam0[1]*_cam0[1])*_s0_27
-        _s0_36 = _s0_35*betad
-        _s0_37 = _s0_35*yd
-        _s0_38 = _k25*_s0_27
-        _s0_39 = _cam0[2]*_s0_13
-        _s0_40 = _s0_39/(_k31*_s0_27 + _k32)
-        _s0_41 = _s0_27*betad
-        _s0_42 = (1.0/(_k38*_s0_27 + _k39))
-        _s0_43 = _s0_29*_s0_42
-        _s0_44 = _k42*_s0_43
-        _s0_45 = _s0_27/(V_R*_s0_27 + _k9)
-        _s0_46 = _s0_45*hr
-        _s0_47 = _s0_45*x
-        _s0_48 = _k51*_s0_45
-        _s0_49 = _k52*_s0_27
-        _s0_50 = _s0_19*_s0_42
-        _s0_51 = _s0_18*_s0_27*_s0_28
-        _s0_52 = _s0_21*_s0_32
-        _s0_53 = _k56*_s0_45
-        _s0_54 = _k57*_s0_27
-        _s0_55 = _k3*(-betad + omega_s) + k*(-_s0_3 - beta)
-        _s0_56 = _k13*_s0_19 + betad*(_cam0[1]*_k59 + _k60*_s0_20) - zd
-        _s0_57 = _k9*(_s0_56 - xd) + c_x*(hr - x)
-        _dy[4] = (_cam0[2]*_cam0[2])*_s0_38*betad*(y*y)/(_k29*_s0_27 + _k30) + _k17*_s0_30*x + _k17*_s0_33*hr + _k18*_s0_30*hr + _k18*_s0_33*x + _k19*_s0_11*betad + _k20*_s0_11 + _k25*_s0_36/(_k23*_s0_27 + _k24) + _k27*_s0_32*_s0_37 + _k35*_s0_39*_s0_41/(_k33*_s0_27 + _k34) + _k4*_s0_11*phir + _k5*_s0_11*beta + _s0_31*xd + _s0_31*zd + _s0_34*xd + _s0_34*zd + _s0_38*_s0_40*yd
-        _dy[5] = _k36*y + _k37*yd + _k40*_s0_43*hr + _k41*_s0_43*x + _k45*_s0_37/(_k43*_s0_27 + _k44) + _k45*_s0_40*_s0_41 + _k46*_s0_32*_s0_36 + _s0_44*xd + _s0_44*zd
-        _dy[6] = _k47*z + _k48*zd + _k49*_s0_46 + _k50*_s0_47 + _k53*_s0_51 + _s0_48*xd + _s0_48*zd + _s0_49*_s0_50 + _s0_49*_s0_52
-        _dy[7] = _k54*_s0_46 + _k55*_s0_47 + _k58*_s0_51 + _s0_50*_s0_54 + _s0_52*_s0_54 + _s0_53*xd + _s0_53*zd
-        _dy[8] = -_s0_55/(V_T*((((pow(_s0_1, -3.0/2.0)) if (_s0_6) else (1e+18))) if ((_s0_55 > 0.0)) else (((pow(_s0_7, -3.0/2.0)) if (_s0_9) else (1e+18)))) + _k3) + omega_s
-        _dy[9] = _s0_56 - _s0_57/(V_R*((((pow(_s0_15, -3.0/2.0)) if (_s0_17) else (1e+18))) if ((_s0_57 > 0.0)) else (((pow(_s0_24, -3.0/2.0)) if (_s0_26) else (1e+18)))) + _k9)
+        _s0_0 = (_cam0[0]*_cam0[0])
+        _s0_1 = (_cam0[0]*_cam0[0]*_cam0[0])
+        _s0_2 = (_cam0[0]*_cam0[0]*_cam0[0]*_cam0[0])*_k8 + _cam0[0]*_k9 + _k10*_s0_1 + _k11*_s0_0 + _k7
+        _s0_3 = (y*y)
+        _s0_4 = _cam0[0]*_k5 + _k3 + _k4*_s0_1 + _k6*_s0_0
+        _s0_5 = _cam0[0]*_k2 + _k0 + _k1*_s0_0
+        _s0_6 = R_b + _cam0[0]*h_m
+        _s0_7 = _s0_5*_s0_6
+        _s0_8 = _s0_4*_s0_7
+        _s0_9 = (_cam0[1]*_cam0[1])
+        _s0_10 = _s0_9*betad
+        _s0_11 = _k23*yd
+        _s0_12 = c_x*y
+        _s0_13 = _s0_11 + _s0_12
+        _s0_14 = (_cam0[1]*_cam0[1]*_cam0[1])*_s0_7*y
+        _s0_15 = _s0_2*_s0_4
+        _s0_16 = _s0_6*betad
+        _s0_17 = _k30*_s0_16
+        _s0_18 = _cam0[1]*_s0_5
+        _s0_19 = _cam0[2]*y
+        _s0_20 = _s0_19*betad
+        _s0_21 = _s0_2*_s0_8
+        _s0_22 = _k28*_s0_4
+        _s0_23 = _s0_6*y
+        _s0_24 = _cam0[0]*_k22 + _k23*xd + c_x*x
+        _s0_25 = _k23*zd + _s0_24 + c_x*z
+        _s0_26 = _s0_25*_s0_4
+        _s0_27 = _s0_6*_s0_9
+        _s0_28 = _s0_18*_s0_26
+        _s0_29 = _k12*y
+        _s0_30 = _k13*_s0_19
+        _s0_31 = _k14*_s0_19
+        _s0_32 = _s0_4*_s0_5
+        _s0_33 = 1.0/(_s0_5*_s0_6)
+        _s0_34 = _s0_33/_s0_4
+        _s0_35 = _k43*_s0_7
+        _s0_36 = _k44*_s0_13*_s0_18 + _k45*_s0_20*_s0_5 + _k46*_s0_10*_s0_23 + _k47*_s0_16*_s0_18
+        _dy[4] = _k34*_s0_34*((_cam0[1]*_cam0[1]*_cam0[1]*_cam0[1])*_k29*_s0_3*_s0_8*betad + _cam0[1]*_s0_2*_s0_22*_s0_23*(_cam0[2]*_s0_11 + _cam0[2]*_s0_12 + _k27*_s0_10) + (_cam0[2]*_cam0[2])*_s0_15*_s0_17*_s0_3 + _cam0[2]*_k32*_s0_10*_s0_2*_s0_3*_s0_7 + _k16*_s0_2*_s0_32*(_cam0[0]*_cam0[2]*_s0_29 + _k15*_s0_9*yd + _s0_29*_s0_9 + _s0_30*x + _s0_30*z + _s0_31*xd + _s0_31*zd) + _k21*_s0_21*(_k17*beta + _k18*t + _k19*betad + _k20) + _k24*_s0_2*_s0_28*_s0_6 + _k25*_s0_13*_s0_14*_s0_2 + _k26*_s0_2*_s0_26*_s0_27*y + _k31*_s0_10*_s0_21 + _k33*_s0_15*_s0_18*_s0_20)/_s0_2
+        _dy[5] = _k40*_s0_34*(_cam0[1]*_s0_17*_s0_19*_s0_4 + _k36*_s0_8*(_k35*yd + c_y*y) + _k37*_s0_28 + _k38*_s0_14*betad + _k39*_s0_10*_s0_32 + _s0_13*_s0_22*_s0_27)
+        _dy[6] = _k48*_s0_33*(_s0_35*(_k41*z + _k42*zd + _s0_24) + _s0_36)
+        _dy[7] = _k49*_s0_33*(_s0_25*_s0_35 + _s0_36)
     elif _v == 1:  # in a dwell: 0
-        _s1_0 = _k0*t
-        _s1_1 = _s1_0 + phir
-        _s1_2 = sqrt(_s1_1)
-        _s1_3 = -phir
-        _s1_4 = omega_s*t
-        _s1_5 = _s1_3 + _s1_4
-        _s1_6 = (_s1_5 < -1.0/1000000000000.0)
-        _s1_7 = _s1_5 + s_g
-        _s1_8 = sqrt(_s1_7)
-        _s1_9 = (_s1_7 > 1.0/1000000000000.0)
-        _s1_10 = (((((1.0/(_s1_0*_s1_2 + _s1_2*phir))) if (_s1_6) else (1e+18))) if ((_k1*phir + _k2 + _k3*betad + beta*k < 0.0)) else ((((1.0/(_s1_4*_s1_8 - _s1_8*phir + _s1_8*s_g))) if (_s1_9) else (1e+18))))
-        _s1_11 = _s1_10/(V_T*_s1_10 + _k3)
-        _s1_12 = _cam0[0]*_k6
-        _s1_13 = _s1_12 + hr + z
-        _s1_14 = sqrt(_s1_13)
-        _s1_15 = (_s1_13 > 1.0/1000000000000.0)
-        _s1_16 = _cam0[0]*h_m
-        _s1_17 = _s1_16 - hr + s_r - z
-        _s1_18 = sqrt(_s1_17)
-        _s1_19 = (_s1_17 > 1.0/1000000000000.0)
-        _s1_20 = (((((1.0/(_s1_12*_s1_14 + _s1_14*hr + _s1_14*z))) if (_s1_15) else (1e+18))) if ((_k8*hr + _k9*xd + _k9*zd + c_x*x < 0.0)) else ((((1.0/(_s1_16*_s1_18 - _s1_18*hr + _s1_18*s_r - _s1_18*z))) if (_s1_19) else (1e+18))))
-        _s1_21 = _s1_20/(V_R*_s1_20 + _k9)
-        _s1_22 = _s1_21*hr
-        _s1_23 = _s1_21*x
-        _s1_24 = _k51*_s1_21
-        _s1_25 = _k56*_s1_21
-        _s1_26 = _k3*(-betad + omega_s) + k*(-_s1_3 - beta)
-        _s1_27 = _k61*xd + _k61*zd + c_x*(hr - x)
-        _dy[4] = _k19*_s1_11*betad + _k20*_s1_11 + _k4*_s1_11*phir + _k5*_s1_11*beta
-        _dy[5] = _k36*y + _k37*yd
-        _dy[6] = _k47*z + _k48*zd + _k49*_s1_22 + _k50*_s1_23 + _s1_24*xd + _s1_24*zd
-        _dy[7] = _k54*_s1_22 + _k55*_s1_23 + _s1_25*xd + _s1_25*zd
-        _dy[8] = -_s1_26/(V_T*((((pow(_s1_1, -3.0/2.0)) if (_s1_6) else (1e+18))) if ((_s1_26 > 0.0)) else (((pow(_s1_7, -3.0/2.0)) if (_s1_9) else (1e+18)))) + _k3) + omega_s
-        _dy[9] = -_s1_27/(V_R*((((pow(_s1_13, -3.0/2.0)) if (_s1_15) else (1e+18))) if ((_s1_27 > 0.0)) else (((pow(_s1_17, -3.0/2.0)) if (_s1_19) else (1e+18)))) + _k9) - zd
+        _dy[4] = _k50*beta + _k51*t + _k52*betad + _k53
+        _dy[5] = _k54*y + _k55*yd
+        _dy[6] = _cam0[0]*_k58 + _k56*x + _k57*z + _k59*xd + _k60*zd
+        _dy[7] = _cam0[0]*_k62 + _k61*x + _k61*z + _k63*xd + _k63*zd
 
 
 cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept nogil:
-    """The named outputs (B, Xdd, Bdd, U, xdd, torque, Fx, speed_var, tan_alpha, gear_gap, roller_gap)."""
-    cdef double _dy[10]
+    """The named outputs (B, Xdd, Bdd, U, xdd, torque, Fx, speed_var, tan_alpha)."""
+    cdef double _dy[8]
     rhs(t, _y, _dy, ctx)
     cdef double h_m = ctx.p[0]
     cdef double beta_m = ctx.p[1]
@@ -462,10 +421,6 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double V_T = ctx.p[18]
-    cdef double s_r = ctx.p[19]
-    cdef double V_R = ctx.p[20]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -535,6 +490,14 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k66 = ctx.k[66]
     cdef double _k67 = ctx.k[67]
     cdef double _k68 = ctx.k[68]
+    cdef double _k69 = ctx.k[69]
+    cdef double _k70 = ctx.k[70]
+    cdef double _k71 = ctx.k[71]
+    cdef double _k72 = ctx.k[72]
+    cdef double _k73 = ctx.k[73]
+    cdef double _k74 = ctx.k[74]
+    cdef double _k75 = ctx.k[75]
+    cdef double _k76 = ctx.k[76]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -543,8 +506,6 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double yd = _y[5]
     cdef double zd = _y[6]
     cdef double xd = _y[7]
-    cdef double phir = _y[8]
-    cdef double hr = _y[9]
     cdef double betadd = _dy[4]
     cdef double ydd = _dy[5]
     cdef double zdd = _dy[6]
@@ -552,28 +513,20 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
-    cdef double _o0 = _cam0[0]*_k6
-    cdef double _o1 = -phir
-    cdef double _o2 = _o1 + omega_s*t
-    cdef double _o3 = _k3*(betad - omega_s) + k*(_o1 + beta)
-    cdef double _o4 = _o2 + s_g
-    cdef double _o5 = V_T*((((pow(_k0*t + phir, -3.0/2.0)) if ((_o2 < -1.0/1000000000000.0)) else (1e+18))) if ((_o3 < 0.0)) else (((pow(_o4, -3.0/2.0)) if ((_o4 > 1.0/1000000000000.0)) else (1e+18))))
-    cdef double _o6 = _cam0[1]*_k7
-    cdef double _o7 = _o0 + _o6*y + hr + z
-    cdef double _o8 = _cam0[1]*_k13
-    cdef double _o9 = _k9*(_o8*yd + betad*(_cam0[1]*_k59 + _cam0[2]*_k60*y) - xd - zd) + c_x*(hr - x)
-    cdef double _o10 = V_R*((((pow(_o7, -3.0/2.0)) if ((_o7 > 1.0/1000000000000.0)) else (1e+18))) if ((_o9 > 0.0)) else (((pow(_cam0[0]*h_m + _o8*y - hr + s_r - z, -3.0/2.0)) if ((_k14 + _o7 < -1.0/1000000000000.0)) else (1e+18))))
-    _out[0] = _k63*(_k62 + beta)  # B
-    _out[1] = _k64*_dy[7]  # Xdd
-    _out[2] = _k65*_dy[4]  # Bdd
-    _out[3] = _k66*(_o0 + x)  # U
+    cdef double _o0 = R_b + _cam0[0]*h_m
+    cdef double _o1 = (1.0/_o0)
+    cdef double _o2 = _o1*y
+    cdef double _o3 = _o1*yd
+    cdef double _o4 = _cam0[1]*_k72
+    _out[0] = _k65*(_k64 + beta)  # B
+    _out[1] = _k66*_dy[7]  # Xdd
+    _out[2] = _k67*_dy[4]  # Bdd
+    _out[3] = _k69*(_cam0[0]*_k68 + x)  # U
     _out[4] = _dy[7]  # xdd
-    _out[5] = -_o3*_o5/(_k3 + _o5)  # torque
-    _out[6] = _o10*_o9/(_k9 + _o10)  # Fx
-    _out[7] = _k68*(_k67*yd + betad) - 1.0  # speed_var
-    _out[8] = _o6  # tan_alpha
-    _out[9] = _o2  # gear_gap
-    _out[10] = _o7  # roller_gap
+    _out[5] = _k17*beta + _k18*t - _k70*(betad - omega_s)  # torque
+    _out[6] = _cam0[0]*_k12 + _cam0[1]*_k71*_o2 + _k13*x + _k13*z + _k23*(_cam0[1]*_k75*_o3 + betad*((_cam0[1]*_cam0[1])*_k73*y/(_o0*_o0) + _cam0[2]*_k74*_o2 + _o4) - xd - zd)  # Fx
+    _out[7] = _k76*(-_o3 + betad) - 1.0  # speed_var
+    _out[8] = _o1*_o4  # tan_alpha
 
 
 cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, Ctx* ctx) noexcept nogil:
@@ -595,10 +548,6 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double V_T = ctx.p[18]
-    cdef double s_r = ctx.p[19]
-    cdef double V_R = ctx.p[20]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -668,6 +617,14 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k66 = ctx.k[66]
     cdef double _k67 = ctx.k[67]
     cdef double _k68 = ctx.k[68]
+    cdef double _k69 = ctx.k[69]
+    cdef double _k70 = ctx.k[70]
+    cdef double _k71 = ctx.k[71]
+    cdef double _k72 = ctx.k[72]
+    cdef double _k73 = ctx.k[73]
+    cdef double _k74 = ctx.k[74]
+    cdef double _k75 = ctx.k[75]
+    cdef double _k76 = ctx.k[76]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -676,262 +633,163 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double yd = _y[5]
     cdef double zd = _y[6]
     cdef double xd = _y[7]
-    cdef double phir = _y[8]
-    cdef double hr = _y[9]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
-    cdef double _m0 = 2.0*sqrt(J)*sqrt(k)*q_b
-    cdef double _m1 = omega_s*t
-    cdef double _m2 = _m1 - phir
-    cdef double _m3 = sqrt(-_m2)
-    cdef double _m4 = _m2 + s_g
-    cdef double _m5 = sqrt(_m4)
-    cdef double _m6 = V_T*(((((1.0/(-_m1*_m3 + _m3*phir))) if ((_m2 < -1.0/1000000000000.0)) else (1e+18))) if ((_m0*betad - _m0*omega_s + beta*k - k*phir < 0.0)) else ((((1.0/(_m1*_m5 - _m5*phir + _m5*s_g))) if ((_m4 > 1.0/1000000000000.0)) else (1e+18))))
-    cdef double _m7 = c_x*hr
-    cdef double _m8 = sqrt(c_x)
-    cdef double _m9 = sqrt(m_x)
-    cdef double _m10 = _m8*_m9*q_x
-    cdef double _m11 = 2.0*_m10
-    cdef double _m12 = _m11*beta_m
-    cdef double _m13 = _cam0[0]*h_m
+    cdef double _m0 = (beta_m*beta_m)
+    cdef double _m1 = (1.0/_m0)
+    cdef double _m2 = _cam0[2]*_m1*c_x*h_m
+    cdef double _m3 = (h_m*h_m)
+    cdef double _m4 = (_cam0[1]*_cam0[1])
+    cdef double _m5 = sqrt(c_x)
+    cdef double _m6 = sqrt(m_x)
+    cdef double _m7 = _m5*_m6*q_x
+    cdef double _m8 = 2.0*_m7
+    cdef double _m9 = _m8*xd
+    cdef double _m10 = _cam0[2]*h_m
+    cdef double _m11 = _m1*_m10
+    cdef double _m12 = _m8*zd
+    cdef double _m13 = (beta_m*beta_m*beta_m)
     cdef double _m14 = (1.0/beta_m)
-    cdef double _m15 = _cam0[1]*_m14
-    cdef double _m16 = _m15*h_m
-    cdef double _m17 = (1.0/R_b)
-    cdef double _m18 = _m17*y
-    cdef double _m19 = _m16*_m18
-    cdef double _m20 = -_m13 + _m19 + hr + z
-    cdef double _m21 = sqrt(_m20)
-    cdef double _m22 = _m16*_m21
-    cdef double _m23 = -_m13*_m21 + _m18*_m22 + _m21*hr + _m21*z
-    cdef double _m24 = (_m20 > 1.0/1000000000000.0)
-    cdef double _m25 = c_x*x
-    cdef double _m26 = _m11*xd
-    cdef double _m27 = _m11*zd
-    cdef double _m28 = _m11*betad
-    cdef double _m29 = _m16*_m17
-    cdef double _m30 = _m11*yd
-    cdef double _m31 = (beta_m*beta_m)
-    cdef double _m32 = (1.0/_m31)
-    cdef double _m33 = _cam0[2]*_m18*_m32*h_m
-    cdef double _m34 = (-_m16*_m28 + _m25 + _m26 + _m27 + _m28*_m33 + _m29*_m30 - _m7 < 0.0)
-    cdef double _m35 = _m20 - s_r
-    cdef double _m36 = sqrt(-_m35)
-    cdef double _m37 = _m16*_m36
-    cdef double _m38 = _cam0[0]*_m36*h_m - _m18*_m37 - _m36*hr + _m36*s_r - _m36*z
-    cdef double _m39 = (_m35 < -1.0/1000000000000.0)
-    cdef double _m40 = (((((1.0/_m23)) if (_m24) else (1e+18))) if (_m34) else ((((1.0/_m38)) if (_m39) else (1e+18))))
-    cdef double _m41 = V_R*_m40
-    cdef double _m42 = _m41*beta_m
-    cdef double _m43 = _m12 + _m42
-    cdef double _m44 = (1.0/_m43)
-    cdef double _m45 = _m44*h_m
-    cdef double _m46 = _m14*_m41
-    cdef double _m47 = _cam0[2]*_m46
-    cdef double _m48 = _m45*_m47
-    cdef double _m49 = _m25*h_m
-    cdef double _m50 = _m49*y
-    cdef double _m51 = _m11*_m31
-    cdef double _m52 = R_b*_m51
-    cdef double _m53 = _m31*_m41
-    cdef double _m54 = R_b*_m53 + _m52
-    cdef double _m55 = (1.0/_m54)
-    cdef double _m56 = _cam0[3]*_m46*_m55
-    cdef double _m57 = _m7*h_m
-    cdef double _m58 = _m57*y
-    cdef double _m59 = _m51 + _m53
-    cdef double _m60 = (1.0/_m59)
-    cdef double _m61 = (h_m*h_m)
-    cdef double _m62 = _m61*betad
-    cdef double _m63 = _cam0[2]*_m41
-    cdef double _m64 = 4.0*_m10
-    cdef double _m65 = _m15*_m64
-    cdef double _m66 = _m63*_m65
-    cdef double _m67 = _m26*h_m
-    cdef double _m68 = _m56*y
-    cdef double _m69 = _m27*h_m
-    cdef double _m70 = _m61*yd
-    cdef double _m71 = _cam0[2]*_m55
-    cdef double _m72 = _m41*_m71
-    cdef double _m73 = _m65*_m72
-    cdef double _m74 = (beta_m*beta_m*beta_m)
-    cdef double _m75 = R_b*_m74
-    cdef double _m76 = _m11*_m75 + _m41*_m75
-    cdef double _m77 = _m64/_m76
-    cdef double _m78 = _m62*y
-    cdef double _m79 = _m41*_m78
-    cdef double _m80 = _cam0[3]*_m15
-    cdef double _m81 = (_cam0[2]*_cam0[2])
-    cdef double _m82 = _m46*_m81
-    cdef double _m83 = (R_b*R_b)
-    cdef double _m84 = _m11*_m83
-    cdef double _m85 = _m74*_m84
-    cdef double _m86 = _m41*_m83
-    cdef double _m87 = _m74*_m86 + _m85
-    cdef double _m88 = (1.0/_m87)
-    cdef double _m89 = _m61*_m88
-    cdef double _m90 = _m30*_m89
-    cdef double _m91 = _m41*_m80*y
-    cdef double _m92 = _m82*y
-    cdef double _m93 = (y*y)
-    cdef double _m94 = (beta_m*beta_m*beta_m*beta_m)
-    cdef double _m95 = _m84*_m94
-    cdef double _m96 = _m86*_m94 + _m95
-    cdef double _m97 = (1.0/_m96)
-    cdef double _m98 = (1.0/(_m23*_m23))
-    cdef double _m99 = (1.0/_m21)
-    cdef double _m100 = -0.5*_cam0[2]*_m17*_m32*h_m*y + 0.5*_m15*h_m
-    cdef double _m101 = -_m100
-    cdef double _m102 = _m101*_m99
-    cdef double _m103 = (1.0/(_m38*_m38))
-    cdef double _m104 = (1.0/_m36)
-    cdef double _m105 = _m100*_m104
-    cdef double _m106 = ((((_m98*(_cam0[0]*_m101*_m99*h_m + _cam0[1]*_m14*_m21*h_m - _m102*_m19 - _m102*hr - _m102*z - _m21*_m33)) if (_m24) else (0.0))) if (_m34) else (((_m103*(-_m105*_m13 + _m105*_m19 + _m105*hr - _m105*s_r + _m105*z + _m33*_m36 - _m37)) if (_m39) else (0.0))))
-    cdef double _m107 = _m106*_m7
-    cdef double _m108 = V_R*_cam0[1]
-    cdef double _m109 = _m108*_m45
-    cdef double _m110 = _m106*_m25
-    cdef double _m111 = _m110*h_m
-    cdef double _m112 = V_R*_m71*y
-    cdef double _m113 = _m106*_m109
-    cdef double _m114 = _m107*h_m
-    cdef double _m115 = _m106*_m112
-    cdef double _m116 = _m106*_m28
-    cdef double _m117 = (_cam0[1]*_cam0[1])
-    cdef double _m118 = V_R*_m61
-    cdef double _m119 = _m117*_m118
-    cdef double _m120 = _m119*_m60
-    cdef double _m121 = _m106*_m30
-    cdef double _m122 = _m119*_m55
-    cdef double _m123 = _m106*_m62
-    cdef double _m124 = _cam0[2]*y
-    cdef double _m125 = _m108*_m124
-    cdef double _m126 = _m125*_m77
-    cdef double _m127 = _m125*_m89
-    cdef double _m128 = _m81*_m97
-    cdef double _m129 = _m118*_m128*_m93
-    cdef double _m130 = (V_R*V_R)
-    cdef double _m131 = _m130*_m40
-    cdef double _m132 = _m111*_m131
-    cdef double _m133 = (1.0/(_m43*_m43))
-    cdef double _m134 = _cam0[1]*beta_m
-    cdef double _m135 = _m133*_m134
-    cdef double _m136 = _m131*_m135
-    cdef double _m137 = _m106*_m136
-    cdef double _m138 = R_b*_m131
-    cdef double _m139 = _m114*_m138
-    cdef double _m140 = (1.0/(_m54*_m54))
-    cdef double _m141 = _m140*_m31
-    cdef double _m142 = _m124*_m141
-    cdef double _m143 = R_b*_m132
-    cdef double _m144 = _m117*_m131
-    cdef double _m145 = _m123*_m144
-    cdef double _m146 = _m51/(_m59*_m59)
-    cdef double _m147 = _m142*_m67
-    cdef double _m148 = _m106*_m138
-    cdef double _m149 = _m142*_m69
-    cdef double _m150 = _m140*_m52
-    cdef double _m151 = _m144*_m70
-    cdef double _m152 = _m106*_m151
-    cdef double _m153 = _m106*_m131
-    cdef double _m154 = _m124*_m153
-    cdef double _m155 = (1.0/(_m76*_m76))
-    cdef double _m156 = _cam0[1]*_m62
-    cdef double _m157 = _m155*_m156*_m64*_m75
-    cdef double _m158 = _m85/(_m87*_m87)
-    cdef double _m159 = _m154*_m158
-    cdef double _m160 = _cam0[1]*_m70
-    cdef double _m161 = _m131*_m81*_m93*_m95/(_m96*_m96)
-    cdef double _m162 = _m72*h_m
-    cdef double _m163 = _cam0[1]*_m63
-    cdef double _m164 = 0.5*_m99
-    cdef double _m165 = _m164*hr
-    cdef double _m166 = _m164*z
-    cdef double _m167 = _m117*_m32*y/_m83
-    cdef double _m168 = 0.5*_m104
-    cdef double _m169 = _m168*hr
-    cdef double _m170 = _m168*s_r
-    cdef double _m171 = _m168*z
-    cdef double _m172 = _m168*_m61
-    cdef double _m173 = ((((_m98*(0.5*_cam0[0]*_cam0[1]*_m14*_m17*_m61*_m99 - _m164*_m167*_m61 - _m165*_m29 - _m166*_m29 - _m17*_m22)) if (_m24) else (0.0))) if (_m34) else (((_m103*(_cam0[0]*_m15*_m17*_m172 - _m167*_m172 - _m169*_m29 + _m17*_m37 + _m170*_m29 - _m171*_m29)) if (_m39) else (0.0))))
-    cdef double _m174 = _m109*_m173
-    cdef double _m175 = _m112*_m173
-    cdef double _m176 = _m122*_m30
-    cdef double _m177 = _m173*_m62
-    cdef double _m178 = _m136*_m173
-    cdef double _m179 = _m138*_m173
-    cdef double _m180 = _cam0[2]*_m141
-    cdef double _m181 = _m179*_m180
-    cdef double _m182 = _m144*_m146
-    cdef double _m183 = _m124*_m131
-    cdef double _m184 = _m173*_m183
-    cdef double _m185 = _m158*_m160
-    cdef double _m186 = ((((_m98*(0.5*_cam0[0]*_m99*h_m - _m164*_m19 - _m165 - _m166 - _m21)) if (_m24) else (0.0))) if (_m34) else (((_m103*(_m13*_m168 - _m168*_m19 - _m169 + _m170 - _m171 + _m36)) if (_m39) else (0.0))))
-    cdef double _m187 = _m109*_m186
-    cdef double _m188 = _m112*_m186
-    cdef double _m189 = _m186*_m62
-    cdef double _m190 = _m138*_m186
-    cdef double _m191 = _m183*_m186
-    cdef double _m192 = _m41*c_x
-    cdef double _m193 = _cam0[1]*_m192*h_m
-    cdef double _m194 = R_b*_m12
-    cdef double _m195 = R_b*_m42 + _m194
-    cdef double _m196 = (1.0/_m195)
-    cdef double _m197 = _m196*_m47
-    cdef double _m198 = _m51*_m83
-    cdef double _m199 = _m198 + _m53*_m83
-    cdef double _m200 = (1.0/_m199)
-    cdef double _m201 = _m28*_m89
-    cdef double _m202 = _m108*_m196
-    cdef double _m203 = _m106*_m202
-    cdef double _m204 = _m119*_m200
-    cdef double _m205 = (1.0/(_m195*_m195))
-    cdef double _m206 = _m134*_m205
-    cdef double _m207 = _m138*_m206
-    cdef double _m208 = _m106*_m207
-    cdef double _m209 = _m198/(_m199*_m199)
-    cdef double _m210 = _m173*_m202
-    cdef double _m211 = _m122*_m28
-    cdef double _m212 = _m173*_m207
-    cdef double _m213 = _m151*_m209
-    cdef double _m214 = _m156*_m158
-    cdef double _m215 = _m186*_m202
-    cdef double _m216 = _m186*_m207
-    cdef double _m217 = _m30*h_m
-    cdef double _m218 = _m28*h_m
-    cdef double _m219 = _m11 + _m41
-    cdef double _m220 = (1.0/_m219)
-    cdef double _m221 = V_R*_m220
-    cdef double _m222 = _m221*_m7
-    cdef double _m223 = _m106*_m221
-    cdef double _m224 = (1.0/(_m219*_m219))
-    cdef double _m225 = _m131*_m224
-    cdef double _m226 = _m106*_m225
-    cdef double _m227 = _cam0[1]*h_m
-    cdef double _m228 = _m153*_m227
-    cdef double _m229 = _m12*_m133*betad
-    cdef double _m230 = _m194*_m205*yd
-    cdef double _m231 = _m150*betad*h_m
-    cdef double _m232 = -_m106*_m222 + _m107*_m225 + _m110*_m221 - _m110*_m225 + _m112*_m116*h_m - _m113*_m28 + _m121*_m202*h_m - _m154*_m231 + _m197*_m217 + _m218*_m68 + _m223*_m26 + _m223*_m27 - _m226*_m26 - _m226*_m27 + _m228*_m229 - _m228*_m230 - _m28*_m48
-    cdef double _m233 = _m221*_m25
-    cdef double _m234 = _m173*_m221
-    cdef double _m235 = _m173*_m225
-    cdef double _m236 = _m131*_m227
-    cdef double _m237 = _m229*_m236
-    cdef double _m238 = _m230*_m236
-    cdef double _m239 = _m183*_m231
-    cdef double _m240 = _m162*_m28 - _m173*_m222 + _m173*_m233 + _m173*_m237 - _m173*_m238 - _m173*_m239 - _m174*_m28 + _m175*_m218 + _m210*_m217 + _m234*_m26 + _m234*_m27 - _m235*_m25 - _m235*_m26 - _m235*_m27 + _m235*_m7
-    cdef double _m241 = _m186*_m222
-    cdef double _m242 = _m186*_m221
-    cdef double _m243 = _m187*_m28
-    cdef double _m244 = _m186*_m225
-    cdef double _m245 = _m244*_m25
-    cdef double _m246 = _m244*_m26
-    cdef double _m247 = _m244*_m27
-    cdef double _m248 = _m186*_m238
-    cdef double _m249 = _m186*_m239
-    cdef double _m250 = _m192*_m220
+    cdef double _m15 = R_b*_m0
+    cdef double _m16 = _cam0[0]*h_m
+    cdef double _m17 = _m0*_m16 + _m15
+    cdef double _m18 = (1.0/_m17)
+    cdef double _m19 = x*y
+    cdef double _m20 = _cam0[2]*_m3*c_x
+    cdef double _m21 = (1.0/(_m17*_m17))
+    cdef double _m22 = _cam0[1]*beta_m
+    cdef double _m23 = _m21*_m22
+    cdef double _m24 = _m20*_m23
+    cdef double _m25 = y*z
+    cdef double _m26 = (_cam0[1]*_cam0[1]*_cam0[1])
+    cdef double _m27 = (h_m*h_m*h_m)
+    cdef double _m28 = _cam0[0]*_m3
+    cdef double _m29 = _m14*c_x
+    cdef double _m30 = _m18*_m29
+    cdef double _m31 = _cam0[2]*y
+    cdef double _m32 = _cam0[1]*_m3
+    cdef double _m33 = _m31*_m32
+    cdef double _m34 = 2.0*y
+    cdef double _m35 = _m7*xd
+    cdef double _m36 = _cam0[2]*_m23*_m3
+    cdef double _m37 = _m7*zd
+    cdef double _m38 = _m34*_m36
+    cdef double _m39 = _m14*_m18
+    cdef double _m40 = _m7*yd
+    cdef double _m41 = _cam0[2]*_m32
+    cdef double _m42 = 4.0*_m40*_m41
+    cdef double _m43 = _m7*betad
+    cdef double _m44 = 4.0*_m43
+    cdef double _m45 = _m44*y
+    cdef double _m46 = R_b*_m13
+    cdef double _m47 = _m13*_m16 + _m46
+    cdef double _m48 = (1.0/_m47)
+    cdef double _m49 = _m14*_m48
+    cdef double _m50 = (_cam0[2]*_cam0[2])
+    cdef double _m51 = _m3*_m50
+    cdef double _m52 = _m45*_m51
+    cdef double _m53 = (R_b*R_b)
+    cdef double _m54 = _m0*_m53
+    cdef double _m55 = 2.0*_m16
+    cdef double _m56 = (_cam0[0]*_cam0[0])
+    cdef double _m57 = _m3*_m56
+    cdef double _m58 = _m0*_m57 + _m15*_m55 + _m54
+    cdef double _m59 = (1.0/_m58)
+    cdef double _m60 = _cam0[2]*_m29*_m59
+    cdef double _m61 = 2.0*_m32*_m60
+    cdef double _m62 = (y*y)
+    cdef double _m63 = _m13*_m53
+    cdef double _m64 = _m13*_m57 + _m46*_m55 + _m63
+    cdef double _m65 = (1.0/_m64)
+    cdef double _m66 = _m14*_m59
+    cdef double _m67 = _m33*_m66
+    cdef double _m68 = 4.0*_m67
+    cdef double _m69 = (beta_m*beta_m*beta_m*beta_m)
+    cdef double _m70 = _m53*_m69
+    cdef double _m71 = _m57*_m69
+    cdef double _m72 = R_b*_m55*_m69 + _m70 + _m71
+    cdef double _m73 = (1.0/_m72)
+    cdef double _m74 = _m3*_m4
+    cdef double _m75 = _m74*c_x
+    cdef double _m76 = (1.0/(_m58*_m58))
+    cdef double _m77 = R_b*beta_m
+    cdef double _m78 = _cam0[1]*h_m
+    cdef double _m79 = 2.0*_m78
+    cdef double _m80 = 2.0*_m28
+    cdef double _m81 = -_m22*_m80 - _m77*_m79
+    cdef double _m82 = _m76*_m81
+    cdef double _m83 = _m82*y
+    cdef double _m84 = _m75*_m83
+    cdef double _m85 = _cam0[1]*_m0
+    cdef double _m86 = -_m15*_m79 - _m80*_m85
+    cdef double _m87 = (1.0/(_m64*_m64))
+    cdef double _m88 = 3.0*_m27
+    cdef double _m89 = (R_b*R_b*R_b)
+    cdef double _m90 = _m13*_m89
+    cdef double _m91 = (_cam0[0]*_cam0[0]*_cam0[0])
+    cdef double _m92 = _m27*_m91
+    cdef double _m93 = 3.0*_m16
+    cdef double _m94 = _m13*_m92 + 3.0*_m46*_m57 + _m63*_m93 + _m90
+    cdef double _m95 = (1.0/_m94)
+    cdef double _m96 = _m4*_m95
+    cdef double _m97 = _cam0[2]*_m62
+    cdef double _m98 = _m74*_m83
+    cdef double _m99 = _m27*_m31
+    cdef double _m100 = 6.0*_m96*_m99
+    cdef double _m101 = _cam0[1]*_m27
+    cdef double _m102 = _m69*_m89
+    cdef double _m103 = _m69*_m92
+    cdef double _m104 = 3.0*R_b*_m71 + _m102 + _m103 + _m70*_m93
+    cdef double _m105 = (1.0/_m104)
+    cdef double _m106 = 8.0*_m105*_m43
+    cdef double _m107 = _m14*_m62
+    cdef double _m108 = _m27*_m4*_m44
+    cdef double _m109 = _cam0[1]*_m13
+    cdef double _m110 = (h_m*h_m*h_m*h_m)
+    cdef double _m111 = (R_b*R_b*R_b*R_b)*_m69 + 4.0*R_b*_m103 + (_cam0[0]*_cam0[0]*_cam0[0]*_cam0[0])*_m110*_m69 + 4.0*_m102*_m16 + 6.0*_m57*_m70
+    cdef double _m112 = (1.0/_m111)
+    cdef double _m113 = _m27*c_x
+    cdef double _m114 = 3.0*_m78
+    cdef double _m115 = _cam0[1]*_m28
+    cdef double _m116 = 6.0*_m115
+    cdef double _m117 = _m56*_m88
+    cdef double _m118 = (-_m114*_m54 - _m116*_m15 - _m117*_m85)/(_m94*_m94)
+    cdef double _m119 = _m8*yd
+    cdef double _m120 = _m26*y
+    cdef double _m121 = _m118*_m120*_m27
+    cdef double _m122 = (_cam0[1]*_cam0[1]*_cam0[1]*_cam0[1])
+    cdef double _m123 = 4.0*_m110
+    cdef double _m124 = _m18*c_x
+    cdef double _m125 = _m10*x
+    cdef double _m126 = _cam0[2]*_m28
+    cdef double _m127 = _m10*_m18
+    cdef double _m128 = _m41*_m44
+    cdef double _m129 = _cam0[0]*_m113*_m4
+    cdef double _m130 = _cam0[1]*_m34
+    cdef double _m131 = _m130*_m65
+    cdef double _m132 = _m59*_m75
+    cdef double _m133 = _m41*_m65
+    cdef double _m134 = _m59*_m74
+    cdef double _m135 = _m26*_m27
+    cdef double _m136 = 2.0*_m95
+    cdef double _m137 = _m135*_m136
+    cdef double _m138 = _m29*_m78
+    cdef double _m139 = _cam0[2]*_m18*c_x*h_m*y - _m132*y - _m138
+    cdef double _m140 = _m16*beta_m + _m77
+    cdef double _m141 = (1.0/_m140)
+    cdef double _m142 = _m141*_m29
+    cdef double _m143 = (1.0/(_m140*_m140))
+    cdef double _m144 = _m143*_m75
+    cdef double _m145 = _m14*_m141
+    cdef double _m146 = _m10*_m145
+    cdef double _m147 = _m143*_m74
+    cdef double _m148 = _m8*betad
+    cdef double _m149 = _m130*_m3
+    cdef double _m150 = _m14*_m43
+    cdef double _m151 = _m141*_m78*c_x
+    cdef double _m152 = 2.0*_cam0[2]*_m14*_m141*_m5*_m6*h_m*q_x*yd + _cam0[2]*_m14*_m141*c_x*h_m*y + 2.0*_cam0[3]*_m14*_m18*_m5*_m6*betad*h_m*q_x*y - _m11*_m148 - _m119*_m147 - _m138 - _m144*y - _m148*_m98 - _m38*_m43 - _m44*_m67
+    cdef double _m153 = _m127*_m148 - _m134*_m148 + _m151
     _Mm[0] = J
     _Mm[1] = 0.0
     _Mm[2] = 0.0
@@ -948,22 +806,22 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Mm[13] = 0.0
     _Mm[14] = 0.0
     _Mm[15] = m_x
-    _Km[0] = _cam0[3]*_m47*_m62*_m64*_m93*_m97 + _m107*_m109 - _m109*_m110 + _m111*_m112 - _m112*_m114 - _m113*_m26 - _m113*_m27 - _m114*_m136 + _m115*_m67 + _m115*_m69 + _m116*_m120 + _m116*_m129 - _m121*_m122 + _m121*_m127 - _m123*_m126 - _m123*_m161 + _m132*_m135 + _m137*_m67 + _m137*_m69 + _m139*_m142 - _m142*_m143 - _m145*_m146 - _m147*_m148 - _m148*_m149 + _m150*_m152 + _m154*_m157 - _m159*_m160 - _m25*_m48 - _m26*_m48 - _m27*_m48 + _m48*_m7 + _m50*_m56 - _m56*_m58 + _m6*k/(_m0 + _m6) + _m60*_m62*_m66 + _m67*_m68 + _m68*_m69 - _m70*_m73 - _m77*_m78*_m82 - _m77*_m79*_m80 + _m90*_m91 + _m90*_m92
-    _Km[1] = _m120*_m173*_m28 + _m125*_m173*_m90 - _m126*_m177 + _m128*_m64*_m79 + _m129*_m173*_m28 - _m147*_m179 - _m149*_m179 + _m150*_m151*_m173 - _m156*_m63*_m77 + _m157*_m184 - _m161*_m177 + _m162*_m26 + _m162*_m27 + _m163*_m90 - _m173*_m176 - _m174*_m25 - _m174*_m26 - _m174*_m27 + _m174*_m7 + _m175*_m49 - _m175*_m57 + _m175*_m67 + _m175*_m69 - _m177*_m182 + _m178*_m49 - _m178*_m57 + _m178*_m67 + _m178*_m69 - _m181*_m50 + _m181*_m58 - _m184*_m185 + _m49*_m72 - _m57*_m72
-    _Km[2] = 4.0*R_b*_cam0[1]*_cam0[2]*_m130*_m155*_m186*_m40*_m61*_m74*_m8*_m9*betad*q_x*y + R_b*_cam0[2]*_m130*_m140*_m186*_m31*_m40*c_x*h_m*hr*y + 2.0*R_b*_m117*_m130*_m140*_m186*_m31*_m40*_m61*_m8*_m9*q_x*yd + 2.0*V_R*_cam0[1]*_cam0[2]*_m186*_m61*_m8*_m88*_m9*q_x*y*yd + V_R*_cam0[1]*_m186*_m44*c_x*h_m*hr + 2.0*V_R*_cam0[2]*_m186*_m55*_m8*_m9*h_m*q_x*xd*y + 2.0*V_R*_cam0[2]*_m186*_m55*_m8*_m9*h_m*q_x*y*zd + V_R*_cam0[2]*_m186*_m55*c_x*h_m*x*y + 2.0*V_R*_m117*_m186*_m60*_m61*_m8*_m9*betad*q_x + 2.0*V_R*_m186*_m61*_m8*_m81*_m9*_m93*_m97*betad*q_x + 2.0*_cam0[1]*_m130*_m133*_m186*_m40*_m8*_m9*beta_m*h_m*q_x*xd + 2.0*_cam0[1]*_m130*_m133*_m186*_m40*_m8*_m9*beta_m*h_m*q_x*zd + _cam0[1]*_m130*_m133*_m186*_m40*beta_m*c_x*h_m*x - _m126*_m189 - _m136*_m186*_m57 - _m147*_m190 - _m149*_m190 - _m161*_m189 - _m176*_m186 - _m180*_m190*_m50 - _m182*_m189 - _m185*_m191 - _m187*_m25 - _m187*_m26 - _m187*_m27 - _m188*_m57
-    _Km[3] = V_R*_cam0[2]*_m40*_m55*c_x*h_m*y - _m193*_m44
-    _Km[4] = _m111*_m202 - _m114*_m202 - _m116*_m122 + _m116*_m127 + _m121*_m204 + _m139*_m206 - _m143*_m206 + _m145*_m150 - _m152*_m209 - _m156*_m159 + _m197*_m49 - _m197*_m57 + _m197*_m67 + _m197*_m69 + _m200*_m66*_m70 + _m201*_m91 + _m201*_m92 + _m203*_m67 + _m203*_m69 - _m208*_m67 - _m208*_m69 - _m62*_m73
-    _Km[5] = _m125*_m173*_m201 + _m144*_m150*_m177 + _m163*_m201 + _m173*_m204*_m30 - _m173*_m211 - _m173*_m213 - _m184*_m214 + _m210*_m49 - _m210*_m57 + _m210*_m67 + _m210*_m69 - _m212*_m49 + _m212*_m57 - _m212*_m67 - _m212*_m69 + c_y
-    _Km[6] = R_b*_cam0[1]*_m130*_m186*_m205*_m40*beta_m*c_x*h_m*hr + 2.0*R_b*_m117*_m130*_m140*_m186*_m31*_m40*_m61*_m8*_m9*betad*q_x + 2.0*V_R*_cam0[1]*_cam0[2]*_m186*_m61*_m8*_m88*_m9*betad*q_x*y + 2.0*V_R*_cam0[1]*_m186*_m196*_m8*_m9*h_m*q_x*xd + 2.0*V_R*_cam0[1]*_m186*_m196*_m8*_m9*h_m*q_x*zd + V_R*_cam0[1]*_m186*_m196*c_x*h_m*x + 2.0*V_R*_m117*_m186*_m200*_m61*_m8*_m9*q_x*yd - _m186*_m211 - _m186*_m213 - _m191*_m214 - _m215*_m57 - _m216*_m49 - _m216*_m67 - _m216*_m69
-    _Km[7] = _m193*_m196
-    _Km[8] = _m232
-    _Km[9] = _m240
-    _Km[10] = _m186*_m233 + _m186*_m237 + _m188*_m218 + _m215*_m217 - _m241 + _m242*_m26 + _m242*_m27 - _m243 + _m244*_m7 - _m245 - _m246 - _m247 - _m248 - _m249 + c_z
-    _Km[11] = _m250
-    _Km[12] = _m232
-    _Km[13] = _m240
-    _Km[14] = 2.0*V_R*_cam0[1]*_m186*_m196*_m8*_m9*h_m*q_x*yd + 2.0*V_R*_cam0[2]*_m186*_m55*_m8*_m9*betad*h_m*q_x*y + 2.0*V_R*_m186*_m220*_m8*_m9*q_x*xd + 2.0*V_R*_m186*_m220*_m8*_m9*q_x*zd + V_R*_m186*_m220*c_x*x + 2.0*_cam0[1]*_m130*_m133*_m186*_m40*_m8*_m9*beta_m*betad*h_m*q_x + _m130*_m186*_m224*_m40*c_x*hr - _m241 - _m243 - _m245 - _m246 - _m247 - _m248 - _m249
-    _Km[15] = _m250
+    _Km[0] = 2.0*_cam0[0]*_cam0[1]*_cam0[2]*_m14*_m27*_m59*c_x*y + _cam0[0]*_cam0[1]*_cam0[2]*_m21*_m27*beta_m*c_x*y + _cam0[0]*_cam0[2]*_m1*_m3*c_x + _cam0[0]*_m27*_m4*_m76*_m81*c_x*y + 2.0*_cam0[1]*_cam0[2]*_m3*_m5*_m6*_m86*_m87*q_x*y*yd + _cam0[1]*_cam0[2]*_m3*_m62*_m86*_m87*c_x + 4.0*_cam0[1]*_cam0[2]*_m3*_m5*_m6*betad*q_x/_m13 + 2.0*_cam0[1]*_cam0[3]*_m14*_m3*_m5*_m6*_m65*q_x*y*yd + _cam0[1]*_cam0[3]*_m14*_m3*_m62*_m65*c_x + 4.0*_cam0[2]*_cam0[3]*_m14*_m3*_m5*_m6*_m62*_m73*betad*q_x + 4.0*_cam0[2]*_m0*_m27*_m4*_m5*_m6*betad*q_x*y/(_m47*_m47) + 8.0*_cam0[2]*_m110*_m112*_m14*_m26*_m5*_m6*_m62*betad*q_x + 12.0*_cam0[2]*_m14*_m27*_m4*_m5*_m6*_m65*betad*q_x*y - _cam0[3]*_m105*_m107*_m108 + 2.0*_cam0[3]*_m14*_m18*_m5*_m6*h_m*q_x*xd*y + 2.0*_cam0[3]*_m14*_m18*_m5*_m6*h_m*q_x*y*zd + _cam0[3]*_m14*_m18*c_x*h_m*x*y + _cam0[3]*_m14*_m18*c_x*h_m*y*z - _cam0[3]*_m28*_m30*y - _cam0[3]*_m32*_m45*_m49 + _m1*_m3*_m4*c_x - _m100*_m14*_m40 - _m101*_m106*_m107*_m50 - _m11*_m12 - _m11*_m9 + 2.0*_m110*_m122*_m5*_m6*_m62*betad*q_x*(-12.0*_m101*_m46*_m56 - _m109*_m123*_m91 - 12.0*_m115*_m63 - 4.0*_m78*_m90)/(_m111*_m111) - _m113*_m118*_m26*_m62 - _m119*_m121 - _m12*_m98 + _m14*_m26*_m27*_m59*c_x*y + 2.0*_m14*_m3*_m5*_m50*_m6*_m65*q_x*y*yd + _m14*_m3*_m50*_m62*_m65*c_x - _m19*_m24 - _m19*_m61 - _m2*x - _m2*z + 2.0*_m21*_m26*_m27*_m5*_m6*beta_m*q_x*yd + _m21*_m26*_m27*beta_m*c_x*y - _m24*_m25 - _m25*_m61 + 4.0*_m26*_m27*_m5*_m6*_m86*_m87*betad*q_x*y - _m29*_m88*_m96*_m97 + 2.0*_m3*_m5*_m50*_m6*_m62*betad*q_x*(-_m109*_m80 - _m46*_m79)/(_m72*_m72) - 3.0*_m30*_m33 - _m34*_m35*_m36 - _m35*_m68 - _m37*_m38 - _m37*_m68 - _m39*_m42 - _m49*_m52 - _m84*x - _m84*z - _m9*_m98 + k - _m108*_m97*(-_m109*_m117 - _m114*_m63 - _m116*_m46)/(_m104*_m104)
+    _Km[1] = _m10*_m124*z - _m106*_m4*_m99 + _m112*_m122*_m123*_m43*y - _m113*_m120*_m136 + _m119*_m133 + _m12*_m127 - _m12*_m134 + _m124*_m125 - _m124*_m126 + _m127*_m9 - _m128*_m48 + _m129*_m59 + _m131*_m20 - _m132*x - _m132*z - _m134*_m9 + _m135*_m44*_m65 - _m137*_m40 - _m18*_m75 + _m52*_m73
+    _Km[2] = _m139
+    _Km[3] = _m139
+    _Km[4] = _cam0[2]*_m149*_m43*_m86*_m87 + _cam0[3]*_m131*_m150*_m3 + _m10*_m142*z - _m100*_m150 + _m119*_m74*_m82 + _m12*_m146 - _m12*_m147 - _m121*_m148 + _m125*_m142 - _m126*_m142 - _m128*_m39 + _m129*_m143 + _m135*_m148*_m21*beta_m - _m144*x - _m144*z - _m145*_m75 + _m146*_m9 - _m147*_m9 + _m149*_m60 + _m150*_m34*_m51*_m65 + _m42*_m66 + _m84
+    _Km[5] = _m132 + _m133*_m148 - _m137*_m43 + c_y
+    _Km[6] = _m151
+    _Km[7] = _m151
+    _Km[8] = _m152
+    _Km[9] = _m153
+    _Km[10] = c_x + c_z
+    _Km[11] = c_x
+    _Km[12] = _m152
+    _Km[13] = _m153
+    _Km[14] = c_x
+    _Km[15] = c_x
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -995,10 +853,6 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double V_T = ctx.p[18]
-    cdef double s_r = ctx.p[19]
-    cdef double V_R = ctx.p[20]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -1068,6 +922,14 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k66 = ctx.k[66]
     cdef double _k67 = ctx.k[67]
     cdef double _k68 = ctx.k[68]
+    cdef double _k69 = ctx.k[69]
+    cdef double _k70 = ctx.k[70]
+    cdef double _k71 = ctx.k[71]
+    cdef double _k72 = ctx.k[72]
+    cdef double _k73 = ctx.k[73]
+    cdef double _k74 = ctx.k[74]
+    cdef double _k75 = ctx.k[75]
+    cdef double _k76 = ctx.k[76]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -1076,8 +938,6 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double yd = _y[5]
     cdef double zd = _y[6]
     cdef double xd = _y[7]
-    cdef double phir = _y[8]
-    cdef double hr = _y[9]
 
     ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], beta/beta_m - beta_0/beta_m)
     refresh(ctx)
@@ -1102,10 +962,6 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double V_T = ctx.p[18]
-    cdef double s_r = ctx.p[19]
-    cdef double V_R = ctx.p[20]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -1175,6 +1031,14 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double _k66 = ctx.k[66]
     cdef double _k67 = ctx.k[67]
     cdef double _k68 = ctx.k[68]
+    cdef double _k69 = ctx.k[69]
+    cdef double _k70 = ctx.k[70]
+    cdef double _k71 = ctx.k[71]
+    cdef double _k72 = ctx.k[72]
+    cdef double _k73 = ctx.k[73]
+    cdef double _k74 = ctx.k[74]
+    cdef double _k75 = ctx.k[75]
+    cdef double _k76 = ctx.k[76]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -1183,8 +1047,6 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double yd = _y[5]
     cdef double zd = _y[6]
     cdef double xd = _y[7]
-    cdef double phir = _y[8]
-    cdef double hr = _y[9]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
@@ -1211,10 +1073,6 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double s_g = ctx.p[17]
-    cdef double V_T = ctx.p[18]
-    cdef double s_r = ctx.p[19]
-    cdef double V_R = ctx.p[20]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
@@ -1284,6 +1142,14 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k66 = ctx.k[66]
     cdef double _k67 = ctx.k[67]
     cdef double _k68 = ctx.k[68]
+    cdef double _k69 = ctx.k[69]
+    cdef double _k70 = ctx.k[70]
+    cdef double _k71 = ctx.k[71]
+    cdef double _k72 = ctx.k[72]
+    cdef double _k73 = ctx.k[73]
+    cdef double _k74 = ctx.k[74]
+    cdef double _k75 = ctx.k[75]
+    cdef double _k76 = ctx.k[76]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -1292,8 +1158,6 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double yd = _y[5]
     cdef double zd = _y[6]
     cdef double xd = _y[7]
-    cdef double phir = _y[8]
-    cdef double hr = _y[9]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
@@ -1331,11 +1195,7 @@ def initial_state(p):
     cdef double m_z = p[14]
     cdef double c_z = p[15]
     cdef double q_z = p[16]
-    cdef double s_g = p[17]
-    cdef double V_T = p[18]
-    cdef double s_r = p[19]
-    cdef double V_R = p[20]
-    return [0.0, 0.0, 0.0, 0.0, omega_s, 0.0, 0.0, 0.0, 0.0, 0.0]
+    return [0.0, 0.0, 0.0, 0.0, omega_s, 0.0, 0.0, 0.0]
 
 
 def cam_time_affine(p):
@@ -1357,10 +1217,6 @@ def cam_time_affine(p):
     cdef double m_z = p[14]
     cdef double c_z = p[15]
     cdef double q_z = p[16]
-    cdef double s_g = p[17]
-    cdef double V_T = p[18]
-    cdef double s_r = p[19]
-    cdef double V_R = p[20]
     return [None]
 
 
@@ -1368,13 +1224,13 @@ cdef ModelC _model
 _model.abi_version = CAMDYN_ABI
 _model.n_q = _NQ
 _model.n_states = _NS
-_model.n_params = 21
-_model.n_outputs = 11
+_model.n_params = 17
+_model.n_outputs = 9
 _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 69
+_model.n_const = 77
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -1407,11 +1263,11 @@ _MANIFEST_JSON = """
  ],
  "modes": [],
  "n_q": 4,
- "name": "dynacam_acss_yz",
+ "name": "dynacam_radial_ideal_rigidgear_bilateral_shafty_shaftz",
  "options": [
   [
    "cam",
-   "axial"
+   "radial"
   ],
   [
    "cam_friction",
@@ -1423,7 +1279,7 @@ _MANIFEST_JSON = """
   ],
   [
    "gear",
-   "squeeze"
+   "rigid"
   ],
   [
    "linkage_friction",
@@ -1435,7 +1291,7 @@ _MANIFEST_JSON = """
   ],
   [
    "roller",
-   "groove-squeeze"
+   "bilateral"
   ],
   [
    "shaft_y",
@@ -1495,16 +1351,6 @@ _MANIFEST_JSON = """
    "doc": "cam slope (6.20)",
    "name": "tan_alpha",
    "unit": "1"
-  },
-  {
-   "doc": "input minus gear output angle (6.1): 0 on the driving flank, -s_g on the other",
-   "name": "gear_gap",
-   "unit": "rad"
-  },
-  {
-   "doc": "roller over the cam wall: 0 lower wall, s_r upper",
-   "name": "roller_gap",
-   "unit": "m"
   }
  ],
  "parameters": [
@@ -1694,50 +1540,6 @@ _MANIFEST_JSON = """
    "open_low": false,
    "range": "0 <= q_z <= 1",
    "unit": "1"
-  },
-  {
-   "default": 0.01,
-   "doc": "backlash of the reduction gear, reduced to the camshaft (6.1)",
-   "high": null,
-   "low": 0.0,
-   "name": "s_g",
-   "open_high": false,
-   "open_low": true,
-   "range": "0 < s_g",
-   "unit": "rad"
-  },
-  {
-   "default": 0.001,
-   "doc": "squeeze coefficient of the gear teeth (6.6), with R_b^(1/2)",
-   "high": null,
-   "low": 0.0,
-   "name": "V_T",
-   "open_high": false,
-   "open_low": true,
-   "range": "0 < V_T",
-   "unit": "N m s rad^(1/2)"
-  },
-  {
-   "default": 0.00013,
-   "doc": "backlash of the roller in its groove (6.27)",
-   "high": null,
-   "low": 0.0,
-   "name": "s_r",
-   "open_high": false,
-   "open_low": true,
-   "range": "0 < s_r",
-   "unit": "m"
-  },
-  {
-   "default": 1e-05,
-   "doc": "squeeze coefficient of the roller (6.38)",
-   "high": null,
-   "low": 0.0,
-   "name": "V_R",
-   "open_high": false,
-   "open_low": true,
-   "range": "0 < V_R",
-   "unit": "N s m^(1/2)"
   }
  ],
  "reference": "thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18",
@@ -1747,7 +1549,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:38dc387b316e062cdefa30ad3ba79e35b33ea1730e89a4b484fe60f461f3142e",
+ "source_hash": "sha256:95f560bc26df0b9131daa169377ace69bae787bab28a16fe54f257920927c69b",
  "states": [
   {
    "doc": "cam angle",
@@ -1804,20 +1606,6 @@ _MANIFEST_JSON = """
    "name": "xd",
    "scale": 0.01,
    "unit": "m/s"
-  },
-  {
-   "doc": "angle of the gear output wheel (6.1)",
-   "initial": 0.0,
-   "name": "phir",
-   "scale": 1.0,
-   "unit": "rad"
-  },
-  {
-   "doc": "roller position (6.41)",
-   "initial": 0.0,
-   "name": "hr",
-   "scale": 0.01,
-   "unit": "m"
   }
  ],
  "time": {
