@@ -22,27 +22,41 @@ N_MAX = max(int(m.name[4:]) for m in pkgutil.iter_modules(generated.__path__)
 """Largest number of assumed modes: the beam<N> modules that camdyn derive generated."""
 
 
+def _declared_defaults() -> dict:
+    """The model's parameter defaults (the paper's data, sec. 4) as its manifest declares
+    them: the declaration (camdyn/derive/models/beam.py) is their one home."""
+    from importlib import import_module
+
+    manifest = import_module("camdyn.generated.beam1").MANIFEST
+    return {p["name"]: p["default"] for p in manifest["parameters"]}
+
+
+_D = _declared_defaults()
+
+
 @dataclass(frozen=True)
 class Case:
-    """One Rayleigh-beam follower run.  Paper data (sec. 4) by default."""
+    """One Rayleigh-beam follower run.  Paper data (sec. 4) by default, read from the
+    model's manifest; the run's own settings (modes, revolutions, formulation, law, rtol)
+    are defaults of the case."""
 
-    omega: float = 240.0            # rad/s, cam speed (paper: 120, 240, 360)
+    omega: float = _D["Omega"]      # rad/s, cam speed (paper: 120, 240, 360)
     modes: int = 3                  # N assumed modes (paper: 2, 3, 4; converged at 3)
-    rod_radius: float = 0.005       # m (paper: 3, 5, 7 mm)
-    distance: float = 0.112         # m, cam centre to guide exit, d (paper: 102, 112, 122 mm)
-    base_radius: float = 0.026      # m, r_b
-    rise: float = 0.015             # m, S_T (paper: 8, 15, 22 mm)
+    rod_radius: float = _D["a_rod"]     # m (paper: 3, 5, 7 mm)
+    distance: float = _D["d"]       # m, cam centre to guide exit, d (paper: 102, 112, 122 mm)
+    base_radius: float = _D["r_b"]  # m, r_b
+    rise: float = _D["S_T"]         # m, S_T (paper: 8, 15, 22 mm)
     revolutions: float = 1.0
-    rayleigh: bool = True           # rotary inertia of the rod
+    rayleigh: bool = _D["rayleigh"] > 0.5   # rotary inertia of the rod
     roller_inertia: float | None = None   # kg m^2; None: uniform disc m_r r_r^2/2
     formulation: str = "augmented"
     law: str = "cycloidal"
-    roller_radius: float = 0.005    # m, r_r
-    roller_mass: float = 0.05       # kg, m_r
-    E: float = 2.1e11               # Pa
-    rho: float = 7800.0             # kg/m^3
+    roller_radius: float = _D["r_r"]    # m, r_r
+    roller_mass: float = _D["m_r"]      # kg, m_r
+    E: float = _D["E"]              # Pa
+    rho: float = _D["rho"]          # kg/m^3
     rtol: float = 1e-9
-    w_B: float = 2.0e3              # rad/s, Baumgarte rate (augmented form)
+    w_B: float = _D["w_B"]          # rad/s, Baumgarte rate (augmented form)
 
     @property
     def model(self) -> str:
