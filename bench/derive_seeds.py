@@ -69,6 +69,7 @@ def main(argv=None) -> int:
     ap.add_argument("--seeds", nargs="+", default=["0", "1", "12345", "random", "random", "random"],
                     help="PYTHONHASHSEED values; 'random' draws one (printed in the table)")
     ap.add_argument("--timeout", type=float, default=180.0, help="seconds per run (default 180)")
+    ap.add_argument("--out", type=Path, default=ROOT / "BENCHMARKS-derive-seeds.md")
     args = ap.parse_args(argv)
 
     models = args.models
@@ -78,7 +79,8 @@ def main(argv=None) -> int:
         models = sorted(REGISTRY) + ["camlaws"]
     seeds = [random.randrange(2**32) if s == "random" else int(s) for s in args.seeds]
 
-    print(f"{'seed':>10}  {'model':<20} {'wall s':>8} {'CPU s':>7}  text sha256")
+    w = max(len(m) for m in models)
+    print(f"{'seed':>10}  {'model':<{w}} {'wall s':>8} {'CPU s':>7}  text sha256")
     times: dict[str, list] = {m: [] for m in models}
     digests: dict[str, set] = {m: set() for m in models}
     over = False
@@ -87,18 +89,27 @@ def main(argv=None) -> int:
             wall, cpu, digest = run_one(model, seed, args.timeout)
             if wall is None:
                 over = True
-                print(f"{seed:>10}  {model:<20} {'> ' + format(args.timeout, 'g'):>8}", flush=True)
+                print(f"{seed:>10}  {model:<{w}} {'> ' + format(args.timeout, 'g'):>8}", flush=True)
                 continue
             times[model].append(cpu)
             digests[model].add(digest)
-            print(f"{seed:>10}  {model:<20} {wall:8.1f} {cpu:7.1f}  {digest}", flush=True)
+            print(f"{seed:>10}  {model:<{w}} {wall:8.1f} {cpu:7.1f}  {digest}", flush=True)
     print()
-    print(f"{'model':<20} {'CPU s: min':>10} {'median':>7} {'max':>7}  distinct texts")
+    print(f"{'model':<{w}} {'CPU s: min':>10} {'median':>7} {'max':>7}  distinct texts")
+    rows = []
     for model in models:
         ts = times[model]
         if ts:
-            print(f"{model:<20} {min(ts):10.1f} {statistics.median(ts):7.1f} {max(ts):7.1f}  "
+            print(f"{model:<{w}} {min(ts):10.1f} {statistics.median(ts):7.1f} {max(ts):7.1f}  "
                   f"{len(digests[model])}")
+            rows.append(f"| {model} | {min(ts):.1f} | {statistics.median(ts):.1f} | {max(ts):.1f} | "
+                        f"{len(ts)} | {len(digests[model])} |")
+    args.out.write_text("\n".join([
+        "# Derivation time under different hash seeds (`python bench/derive_seeds.py`, issue 12, item 7)",
+        "", f"Seeds: {', '.join(map(str, seeds))}; CPU seconds of one derivation in a fresh process.",
+        "", "| model | CPU s min | median | max | runs | distinct texts |",
+        "|---|---:|---:|---:|---:|---:|", *rows]) + "\n")
+    print(f"wrote {args.out}")
     differing = [m for m in models if len(digests[m]) > 1]
     if differing:
         print("different text under different seeds: " + ", ".join(differing))

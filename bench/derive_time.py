@@ -7,8 +7,8 @@ Each figure is the median of ``--repeat`` runs, each in a fresh process (imports
   check-full   `camdyn derive --check --full` (everything derived again; the old check), once;
   edit MODEL   a copy of generated/, MODEL's declaration edited (its title), `derive` over the
                whole registry into the copy: that model alone is derived.  Done for the
-               costliest model (the DYNACAM variant with squeeze film and backlash) and a
-               small one.
+               two costliest models (the DYNACAM variant with both squeeze films, the beam
+               follower with six modes) and a small one.
 Written to BENCHMARKS-derive.md.
 
     python bench/derive_time.py [--repeat 3] [--no-full]
@@ -53,7 +53,7 @@ def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=3)
     ap.add_argument("--no-full", action="store_true", help="skip the full check (about a minute)")
-    ap.add_argument("--models", nargs="+", default=["dynacam_axial_ideal_backlash_groove_shafty_shaftz", "camshaft1"])
+    ap.add_argument("--models", nargs="+", default=["dynacam_axial_ideal_gearsqueeze_groovesqueeze_shafty_shaftz", "beam6", "camshaft1"])
     ap.add_argument("--out", type=Path, default=ROOT / "BENCHMARKS-derive.md")
     args = ap.parse_args(argv)
     py = sys.executable
@@ -88,8 +88,9 @@ def main(argv=None) -> int:
     for what, med, lo, hi, n in rows:
         goal = "" if "full" in what else ("yes" if med < GOAL else "**no**")
         lines.append(f"| {what} | {med:.1f} | {lo:.1f} | {hi:.1f} | {n} | {goal} |")
-    lines += ["", "Before issue 12 every check derived every model: 83 s on two cores, and "
-              "up to 17+ min under an unlucky PYTHONHASHSEED (see `bench/derive_seeds.py`)."]
+    lines += ["", "Before issue 12 every check derived every model (83 s on two cores); the spread "
+              "of derivation times over hash seeds is in BENCHMARKS-derive-seeds.md "
+              "(`bench/derive_seeds.py`)."]
     args.out.write_text("\n".join(lines) + "\n")
     print(f"wrote {args.out}", file=sys.stderr)
     return 0 if all(med < GOAL for what, med, *_ in rows if "full" not in what) else 1
