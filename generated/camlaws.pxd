@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:05bc3d57e7330981e2fbe47a6e7739923ba53fa3f463e745f9e0c8591377907e
-# Text hash: sha256:41311fbdf6aceeb431effa67666be001286fc9b5a3e51554c61fa79d6f8b5acc
+# Derivation key: sha256:afaef538b63701e7673a1f4faaa2efa4f13e80059fb3c065ed323a0d2a5c20ec
+# Text hash: sha256:1db4fe743e43b28738806af55215fe7067403b555106895a22afe2918117927a
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:05bc3d57e7330981e2fbe47a6e7739923ba53fa3f463e745f9e0c8591377907e
-# Text hash: sha256:2e78f7134b617744986cc4107a2723be0656276bea916de4f269348caf5ed6b5
+# Derivation key: sha256:afaef538b63701e7673a1f4faaa2efa4f13e80059fb3c065ed323a0d2a5c20ec
+# Text hash: sha256:c63180163aec56b0a6ff75c9bf7e6c13414f4574b3c01d28fca32bddef30ca43
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fa6581bab0adfed678eb09abc06f34576584d3933062c60fd2d8dfc6238f58cb
-# Text hash: sha256:0bb6c8b1e448e7b6bf95ad37c8df09025388e3aa6be0d07bb5e279b12c9ec0ed
+# Derivation key: sha256:954c791df63dd217627ebe022d8cb0d62c5b8c0b0c909de05ee8da5b9ebeced8
+# Text hash: sha256:ae0fcaa1200ef539fbe1f0492664737e2e479718122b407cad9588c822b88a02
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:11095417643cf9097a3900ed13598f188b7a3cfe598b6ca63a6411c1f013edca

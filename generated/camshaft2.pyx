@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ae444e3308ade2d6c0fd9799d070773bce8ca6e5adc8a6cfe25add126dcd4067
-# Text hash: sha256:936f152151252f07a36975984cae6d43ab72d8b4b1cbe432400d2e932ff755a7
+# Derivation key: sha256:2ede0961fe0d16aceda20f6cb2b2264d1e5d41f1561283e68aa6ee1c145fb0b3
+# Text hash: sha256:05a2b475d67e8b908fbf8058ad7c559380fbc84098ccd3b079da6d7c5031cc8d
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:7ff133aa9f410e0fe4c5f6a1d8576149a68eeec6de62eafebd892efe8aa84d00

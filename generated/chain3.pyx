@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:24f02c9217a70b02e7388570b1a071d6059fd6ce3a37bb392a901356e1bf78cb
-# Text hash: sha256:121d96b7684e755e1e7fe87a00bee26bc4a881545db24f6322e440a92aa5f35f
+# Derivation key: sha256:f6e01fbceb2e949332e5ad33aadad8cb33b858c2f39b5ebc6d8f5dd4cfa8e856
+# Text hash: sha256:03c1d73ca625f311a9495b6b6467e40423291bf1b6d80992703d4b981d192244
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:e1c62cc1d141de24664a5c402adec44384d1978e0cde22eb2e227011884d378e

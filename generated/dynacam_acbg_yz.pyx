@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f20d4a151edf378a29e335c9cc5c41dc89a10b39f1d17430fa88c1b0746f8cef
-# Text hash: sha256:f88b0307812079ecc6b0a6cd59e5b72e1c631a922d108535629255d7c481af63
+# Derivation key: sha256:fd7ebc63c959954a835d70f77fda47869f236dd954d4fb3fd7d1538cb58eb27a
+# Text hash: sha256:e02acd9cc753b5db2a27361ddaec7954393253be1ee0c23a63f88a5be911d220
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:347f5e213ab558582dc4001d4fefee5ca7cff535c2a92098389a5ca7d391cd67

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a82e47caf0dccf091fd1c60f2f91662a1627246d7872ffa67a885f2c156cc23c
-# Text hash: sha256:c5b07d5c677ec417b73b20b493b74de54707cded351e3b2b63801dd95023a991
+# Derivation key: sha256:28668b16e5954dc3027963a45150fc6585c4c0c40cd42b868d2157d16004c8e2
+# Text hash: sha256:27d5765128f16d693a9ac0b59c1b7686623ca29d578f91405b1c4d8ba88a48a5
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:ae168ebf14a2966d0ec160ac887db98fecd7ba159cd23b280a94c2f410dff6cd

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b91899b75e6ec3275501fe3080a856f62254cb4d45180e7aa5ff6e9b6ec90cb2
-# Text hash: sha256:58509d0436095ae37d1b0ab8ed2be9a753b0d0fa72aa8de240243ef9039eac0b
+# Derivation key: sha256:5a15b6570a656911bc7db161ff648364e20ce6c166a279e953af08790bb2d90d
+# Text hash: sha256:c9ed726e3df23f7f7a6240f4a72f737c60a603707fd2ef76e8870c50597d6ecf
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:38dc387b316e062cdefa30ad3ba79e35b33ea1730e89a4b484fe60f461f3142e

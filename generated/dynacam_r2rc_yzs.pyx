@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1341cd2151e20b56cdba42fafe87c9846c2937dd53a02c2f85290faf3287798b
-# Text hash: sha256:4f77dcc23feb8e312b70b5fbf5574d52a970cc3508aee33f5f0e7ed6e61b80e3
+# Derivation key: sha256:babe445dbf296e2c234588ba7fbbd3ff5cc5e127d6f24474bcb91c1d02441d70
+# Text hash: sha256:046d00587f388ada61a411df63e7b30d5bce39e91fd8ed623d6779199c270193
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:fbb4ad29c85e59bb3c0a9ac3171a9d293aea47a82c4453c7bc0190d46bd83b02

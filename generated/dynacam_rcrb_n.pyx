@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:194493a963127fcad7f16d3d5c8b22cd9d3e6ed65ddcb2c88b3f93da450cfbaa
-# Text hash: sha256:a3a878af99703c734fd9cc9c440dba066adbfee2483a0db785b811ca17ca7480
+# Derivation key: sha256:966e1fa14e83073b475eb906231c0afc35aa54bd8dee7bd61e97a9534767d11e
+# Text hash: sha256:545b4c9d74df42e9b39bf603ca8f540cb2457ba812e7f9d05c811f0d93d60c33
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:fdeb028669c58701329cc774e76d6089faff93726321283bdb9ab572fe71789a

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7d4941e09aac658338e4352ccc14b58fec437fd787dd8e19ac7a1cb75f306c31
-# Text hash: sha256:d4499b4ece60015428cfa3a1f4713e0e0df37f606493969b9b2c21a168c5bb79
+# Derivation key: sha256:42adfaaaa44b9c986547f317ba5dca839bce199d50a0e43961574031ab073fe7
+# Text hash: sha256:f494a0757c486f86302462b25ccef447b5963ca573adcc8a801e24a48fe652c9
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:b251e82fc0696c497fb166f48f71bcd83673d34f01a4f15db21ad285efd95b27

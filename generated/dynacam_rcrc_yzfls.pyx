@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f7af514d89d8b95e86d5dfe67b67022093c0fae942791e6ad7631802be20360b
-# Text hash: sha256:7b1de366033ce84f80c62b8b25f8f02e42a418c407eb0c70eaf6352c3c725f59
+# Derivation key: sha256:4a4f00dd1c86567457c5e52aa2c5585c754f19ec1f7df25a21fb62b0f638e2e7
+# Text hash: sha256:cb39a4dec39c78d83b20670d3eead474652ee3148eb3743d29ead99bde1d933e
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:38f51eea7b4df33419d505fefe9fecae0c92e3d2738852226abd4a73c87fa423

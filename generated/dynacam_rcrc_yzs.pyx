@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1d553bd07458d93b9c1a17a297cf9a5bd234991fdfec296be288adf02d4d8196
-# Text hash: sha256:adf92e5bcd77b8ca8d23e8b84fd6efa47fd122f16ef66f774cc9c1fd5023b1f2
+# Derivation key: sha256:c439bba3625cd1d7eb91c924db33c4862f5c51710e596ce3834e14269f336d17
+# Text hash: sha256:bb014c2958b2eede1c4f556b4402971d71410a786b97ea8477973e97a5e9ac96
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:9da5b42e4e51c279f057e26d33dd05113cf11c1c0d44268a2b3d6ff333939eeb

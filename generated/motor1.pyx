@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:816572612c4886de049e8d53975c63c799e085c12bf0c30bb90fbbd9b37d34ed
-# Text hash: sha256:73c491079076f24de6bab2b545a7dd65a26fca5036c8befe1082c48eef051852
+# Derivation key: sha256:f9aa185fa45a7c0e9d17472f06d6c45f765dc2c67f5e573c79a2faef78b7bcb8
+# Text hash: sha256:c34a5404095434a433e9e1128228ffe01a3c2763989a09e0fcac7ef3c9969ae1
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:d2982da34d717e81e23fa41761bafe1a5697842fe6b4ba3f99fe71c7426e0cf7

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ce9b45a644ef3dfd949939d688942fdb37817fa9f870dfb7c57c50212a8bb7dd
-# Text hash: sha256:a0511dbcaaea3988457f76947f1f4f3e5b0dd20b9f44b0cf55c090e214fe93fa
+# Derivation key: sha256:f94d4ac680cf3108a3c2fc09f848291ee8c7c4533a9bf11d23875b73a3d1183b
+# Text hash: sha256:6682ac0d492b5e54b825cadeba8a1a2985c52fae755c006c32adb51ee80a9755
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2c1f555639a7d49b92ea7d665e9a0369046a7aa9f18b7ac380d975c265d508a4

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b4a7995639d62796e078f13ea2f6959f24cc6972ce3d15bacf4eca76e0f3a29f
-# Text hash: sha256:f32ca16144b62c634a3a4bd0ddddcba4df2823dc7339ecd5b155ce55e7c65579
+# Derivation key: sha256:78b9ab9a522653c657314b13feb63a6d769a444225bcf1f41db71778f116e0a0
+# Text hash: sha256:6785d9736229883eb2097163705e8da8e0b12636b23e88ef22d49dcc9c1b48d3
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:bde9b5f7c474d0716c188e5f532573ed637e339597b233fbceaf43fad1df1210
