@@ -3,20 +3,24 @@
 The generated module has the same C interface as every other model (runtime/abi.pxd), so
 the compiled integrators of runtime/loops.pxi run it unchanged; what differs is how its
 right-hand side finds Q'' (template ``constrained.pyx.j2``), in one of two formulations
-chosen by the model's parameter ``formulation``:
+chosen at run time by the parameter the model's :class:`~camdyn.derive.model.ConstraintSolver`
+names as ``formulation``:
 
 0. augmented: the index-1 system [[M, Phi_Q^T], [Phi_Q, 0]] [Q''; lambda] = [f; gamma_B],
-   gamma_B = gamma - 2 w_B Phi' - w_B^2 Phi (Baumgarte stabilization with the critically
-   damped rate w_B), one dense LU with partial pivoting per evaluation (paper (20));
+   gamma_B = gamma - 2 w Phi' - w^2 Phi (Baumgarte stabilization with the critically
+   damped rate w, the solver's ``baumgarte_rate``), one dense LU with partial pivoting per
+   evaluation;
 1. partitioned: the last n_c coordinates are dependent; at every evaluation they are
    recovered from the independent ones by Newton's method on Phi = 0 (started from the
    values carried in the state), their rates from Phi_Q Q' = -Phi_t, and the same
-   augmented system then gives Q'' (the ODE of paper (25)-(27) in the independent
-   coordinates: eliminating lambda and the dependent accelerations gives exactly this).
+   augmented system then gives Q'' (eliminating lambda and the dependent accelerations
+   from it gives the ODE in the independent coordinates).
 
-The cam input of such a model is the periodic profile R(theta) of its cam parameter (a
-state), evaluated by ``_profile`` in the template; its segment ends are the model's events,
-pure breakpoints: nothing switches, the step just ends there.
+Everything model-specific comes from the declaration: the multipliers are outputs named by
+the :class:`~camdyn.derive.model.Constraint` s, after the model's own outputs; a model with a
+cam declares its profile (``Model.profile``), whose template prints ``_profile`` and whose
+rise angle the call passes; a model without one has no cam input.  The profile's segment
+ends are the model's events, pure breakpoints: nothing switches, the step just ends there.
 """
 from __future__ import annotations
 
@@ -31,15 +35,11 @@ from .model import Model
 from .optimize import ConstantTable
 from .printer import MATH_FUNCTIONS, CythonPrinter, cse_block
 
-EXTRA_OUTPUTS = (("lambda1", "N", "multiplier of the first constraint (transverse, (6))"),
-                 ("lambda2", "N", "multiplier of the second constraint (axial, (7))"))
-
-
 def constrained_context(eq: Equations) -> dict:
     """Everything ``constrained.pyx.j2`` needs, printed as Cython strings.
 
     The model's events must be pure breakpoints (no mode changes, no resets): the profile's
-    segment ends.
+    segment ends.  Its cam inputs must be those of its profile: one family, one argument.
     """
     m = eq.model
     t = m.time
@@ -56,8 +56,13 @@ def constrained_context(eq: Equations) -> dict:
     exprs = (list(eq.M) + list(eq.f) + list(eq.Phi) + list(eq.Phi_q) + list(eq.gamma)
              + list(Phi_t) + [o.expr for o in m.outputs] + [e.g for e in m.events])
     plain = _plainer(m, exprs)
-    if len({fam for fam, _ in plain.instances}) > 1 or len(plain.instances) > 1:
-        raise NotImplementedError(f"{m.name}: one cam profile of one argument")
+    if m.profile is None and plain.instances:
+        raise ValueError(f"{m.name}: cam input {plain.instances[0][0]} is used but no profile "
+                         "is declared (Model.profile)")
+    if m.profile is not None and [fam for fam, _ in plain.instances] != [m.profile.family]:
+        raise NotImplementedError(f"{m.name}: one cam input, the profile's "
+                                  f"{m.profile.family}, of one argument; found "
+                                  f"{[str(fam) for fam, _ in plain.instances] or 'none'}")
     consts = ConstantTable({p.symbol for p in m.parameters})
 
     def prep(es):
@@ -70,7 +75,7 @@ def constrained_context(eq: Equations) -> dict:
     outs = prep([o.expr for o in m.outputs])
     gs = prep([e.g for e in m.events])
     names = dict(plain.names)
-    # the profile is evaluated into _cam0[k] by _profile() (see the template)
+    # a profile is evaluated into _cam0[k] by _profile() (see the template)
     names.update({k: k.name for k, _ in consts.items})
     used = set()
     sys_lines, sys_code, u = cse_block(system, names, prefix="_s")
@@ -84,22 +89,35 @@ def constrained_context(eq: Equations) -> dict:
     printer = CythonPrinter(names)
     events = [{"name": e.name, "direction": e.direction, "g": printer.doprint(g)}
               for e, g in zip(m.events, gs)]
+    # the initial state may call math functions the equations do not: cimport those too
+    initial = [c.initial for c in m.coordinates] + [c.initial_rate for c in m.coordinates]
+    initial_code = [printer.doprint(sp.sympify(v)) for v in initial]
     used |= printer.used
     used = sorted(used & (set(MATH_FUNCTIONS) | {"M_PI"}))
-    family, arg = plain.instances[0]
-    arg_code = CythonPrinter(names).doprint(arg)
+    profile, cam_profile = None, None
+    if m.profile is not None:
+        family, arg = plain.instances[0]
+        profile = {"template": m.profile.template,
+                   "arg": CythonPrinter(names).doprint(arg),
+                   "rise": CythonPrinter(names).doprint(plain(m.profile.rise))}
+        cam_profile = {"family": family, "argument": str(arg), "kind": m.profile.kind}
+    params = [p.name for p in m.parameters]
+    solver = {role: params.index(getattr(m.solver, role).name)
+              for role in ("baumgarte_rate", "formulation")}
 
     outputs = [{"name": o.name, "unit": o.unit, "doc": o.doc} for o in m.outputs]
-    outputs += [{"name": nme, "unit": unit, "doc": doc} for nme, unit, doc in EXTRA_OUTPUTS[:nc]]
+    outputs += [{"name": c.multiplier, "unit": c.unit, "doc": c.doc} for c in m.constraints]
     manifest = {
         **manifest_common(m),
         "n_constraints": nc,
         "dependent": [c.name for c in m.coordinates[n - nc:]],
         "states": _state_entries(m),
         "outputs": outputs,
-        "cam_families": [family],
+        "constraints": [{"name": c.name, "multiplier": c.multiplier} for c in m.constraints],
+        "solver": {role: params[k] for role, k in solver.items()},
+        "cam_families": [] if cam_profile is None else [cam_profile["family"]],
         "cam_instances": [],
-        "cam_profile": {"family": family, "argument": str(arg), "kind": "RDFD, periodic in 2 pi"},
+        "cam_profile": cam_profile,
         "modes": [],
         "events": [e.name for e in m.events],
         "residual": None,
@@ -110,7 +128,6 @@ def constrained_context(eq: Equations) -> dict:
                             "outputs": [sp.srepr(o.expr) for o in m.outputs],
                             "manifest": manifest}, sort_keys=True)
     manifest["source_hash"] = "sha256:" + hashlib.sha256(canonical.encode()).hexdigest()
-    initial = [c.initial for c in m.coordinates] + [c.initial_rate for c in m.coordinates]
     return {
         "name": m.name,
         "title": m.title,
@@ -120,7 +137,7 @@ def constrained_context(eq: Equations) -> dict:
         "nc": nc,
         "na": n + nc,
         "n_states": 2 * n,
-        "params": [p.name for p in m.parameters],
+        "params": params,
         "coords": [c.name for c in m.coordinates],
         "outputs": [o["name"] for o in outputs],
         "n_model_outputs": len(m.outputs),
@@ -134,9 +151,10 @@ def constrained_context(eq: Equations) -> dict:
         "out_lines": out_lines,
         "out_code": out_code,
         "events": events,
-        "arg_code": arg_code,
+        "profile": profile,
+        "solver": solver,
         "math": used,
-        "initial_code": [CythonPrinter(names).doprint(sp.sympify(v)) for v in initial],
+        "initial_code": initial_code,
         "manifest_json": json.dumps(manifest, indent=1, sort_keys=True),
         "source_hash": manifest["source_hash"],
     }

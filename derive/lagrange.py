@@ -109,7 +109,7 @@ def derive(model: Model) -> Equations:
                 raise ValueError(f"{model.name}: coordinate {q[i].func} has no inertia (the "
                                  f"kinetic energy has no term in its rate), so M is singular")
 
-    Phi = sp.Matrix(list(model.constraints))
+    Phi = sp.Matrix([c.expr for c in model.constraints])
     if Phi.rows:
         Phi_q = Phi.jacobian(q)
         # d2Phi/dt2 = Phi_q q'' - gamma: gamma is minus the part free of q''

@@ -11,6 +11,7 @@ import keyword
 import math
 import re
 from dataclasses import dataclass, field
+from typing import ClassVar
 
 import sympy as sp
 
@@ -268,6 +269,68 @@ class Residual:
 
 
 @dataclass(frozen=True)
+class Constraint:
+    """A holonomic constraint Phi(Q, t) = 0 and the output of its Lagrange multiplier.
+
+    The equations are M Q'' + Phi_Q^T lambda = f, so the multiplier's sign and unit follow
+    from how ``expr`` is written: lambda times dPhi/dq is a generalized force, and its unit
+    is (force of q) / (unit of Phi).  ``name`` labels the constraint in the manifest and in
+    messages (it may equal an output that reports the residual); ``multiplier``, ``unit``
+    and ``doc`` declare the output through which the generated code reports lambda.
+    """
+
+    name: str
+    expr: sp.Expr
+    multiplier: str
+    unit: str
+    doc: str
+
+    def __post_init__(self):
+        _check_name(self.name, "constraint")
+        _check_name(self.multiplier, "multiplier")
+
+
+@dataclass(frozen=True)
+class RDFDProfile:
+    """The cam input of a constrained model: a rise-dwell-fall-dwell profile, periodic in 2 pi.
+
+    The normalized displacement R(theta) of cam input ``family`` rises by the chosen cam law
+    over [0, rise), dwells at 1 to pi, falls by the same law over [pi, pi + rise) and dwells
+    at 0 to 2 pi.  ``rise`` is an expression of the parameters (usually one parameter's
+    symbol); the model uses R(theta) and its derivatives through ``cam_input(family, k)``.
+    The segment ends are breakpoints the model declares as events.
+    """
+
+    family: str
+    rise: sp.Expr
+    kind: ClassVar[str] = "RDFD, periodic in 2 pi"
+    """What the manifest says the profile is."""
+    template: ClassVar[str] = "profile_rdfd.j2"
+    """The template that prints ``_profile(ctx, theta, rise, out)`` for the generated module."""
+
+    def __post_init__(self):
+        _check_name(self.family, "cam input")
+
+
+@dataclass(frozen=True)
+class ConstraintSolver:
+    """How the generated code solves a constrained model: two of its parameters, read at run time.
+
+    ``formulation`` < 0.5 selects the augmented index-1 system [[M, Phi_Q^T], [Phi_Q, 0]]
+    [Q''; lambda] = [f; gamma - 2 w Phi' - w^2 Phi], stabilized by Baumgarte's terms with
+    the critically damped rate w = ``baumgarte_rate`` (w = 0: no stabilization, the residual
+    drifts); > 0.5 selects coordinate partitioning: the last n_c coordinates are dependent,
+    recovered from the others by Newton's method on Phi = 0 at every evaluation, their
+    rates from Phi_Q Q' = -Phi_t; the same augmented system (without Baumgarte's terms) then
+    gives Q''.  Both are parameter symbols of the model, so a run chooses without
+    regenerating.
+    """
+
+    baumgarte_rate: sp.Symbol
+    formulation: sp.Symbol
+
+
+@dataclass(frozen=True)
 class Model:
     """A cam-mechanism model as the thesis sets one up (energies and forces).
 
@@ -275,7 +338,9 @@ class Model:
     equations from kinetic energy ``kinetic``, potential energy ``potential``,
     Rayleigh dissipation ``dissipation`` and generalized forces ``forces``
     (one per coordinate, not derivable from a potential).  ``constraints``
-    are holonomic, Phi(q, t) = 0.
+    are holonomic, Phi(q, t) = 0 (:class:`Constraint`); a model with constraints declares
+    its ``solver`` (:class:`ConstraintSolver`) and, when a cam drives it, its ``profile``
+    (:class:`RDFDProfile`); without a profile it has no cam input.
     """
 
     name: str
@@ -297,6 +362,8 @@ class Model:
     first_order: tuple = ()
     modes: tuple = ()
     events: tuple = ()
+    profile: RDFDProfile | None = None
+    solver: ConstraintSolver | None = None
     variant: tuple = ()
     """Lines saying in words what this member of a model family contains (the options of a
     DYNACAM variant), printed in the generated file's header."""
@@ -308,11 +375,14 @@ class Model:
         names += [z.name for z in self.first_order] + [m.name for m in self.modes]
         names += [p.name for p in self.parameters] + [o.name for o in self.outputs]
         names += [e.name for e in self.events]
+        names += [c.multiplier for c in self.constraints if isinstance(c, Constraint)]
         dup = {n for n in names if names.count(n) > 1}
         if dup:
             raise ValueError(f"model {self.name}: names used twice: {sorted(dup)}")
         if self.forces and len(self.forces) != len(self.coordinates):
             raise ValueError(f"model {self.name}: one generalized force per coordinate")
+
+        self._check_constraints()
 
         modes = {m.name: m for m in self.modes}
         for e in self.events:
@@ -321,6 +391,34 @@ class Model:
                     raise ValueError(f"event {e.name}: unknown mode {name!r}")
                 for v in values:
                     modes[name].index(v)
+
+    def _check_constraints(self):
+        for k, c in enumerate(self.constraints):
+            if not isinstance(c, Constraint):
+                raise ValueError(f"model {self.name}: constraint {k + 1} is a {type(c).__name__}; "
+                                 "declare it as Constraint(name, expr, multiplier, unit, doc)")
+        if not self.constraints:
+            if self.profile is not None or self.solver is not None:
+                raise ValueError(f"model {self.name}: a profile or a constraint solver is "
+                                 "declared but no constraints")
+            return
+        if self.solver is None:
+            raise ValueError(f"model {self.name}: constrained, but no solver declared; give "
+                             "solver=ConstraintSolver(baumgarte_rate=..., formulation=...) "
+                             "with two of its parameters")
+        if len(self.constraints) >= len(self.coordinates):
+            raise ValueError(f"model {self.name}: {len(self.constraints)} constraints on "
+                             f"{len(self.coordinates)} coordinates leave no motion")
+        params = {p.name for p in self.parameters}
+        for role in ("baumgarte_rate", "formulation"):
+            sym = getattr(self.solver, role)
+            if not isinstance(sym, sp.Symbol) or sym.name not in params:
+                raise ValueError(f"model {self.name}: solver {role}={sym!r} is not one of its "
+                                 f"parameters ({', '.join(sorted(params))})")
+        if self.profile is not None and not sp.sympify(self.profile.rise).free_symbols <= {
+                p.symbol for p in self.parameters}:
+            raise ValueError(f"model {self.name}: profile rise {self.profile.rise} is not an "
+                             "expression of its parameters")
 
     @property
     def q(self) -> list:

@@ -2,16 +2,16 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fd8a1a85f370ec35d922832d305a10277e87629caf6adb237497b27e2a0dd146
-# Text hash: sha256:b04186b8dcf1735ec948db82875168ed758c7bf7a4df38ee87e38a72e50d8e4d
+# Derivation key: sha256:08240aff501e26fa2fbf10a193c00acde904d95ecd37d8c8ab40def757c5d5a5
+# Text hash: sha256:7b5ba263c41c9a7ec72cf53014e52c8aa6d2d61f45d94dd1db0554f9afc2ebcb
 #
-# Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20); MODELS.md 'The Rayleigh-beam follower')
-# Source hash: sha256:e0f4b05900b06a83b9fa7841d5815088d1cb9f50ab65127b014fac737cd82d5b
+# Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
+# Source hash: sha256:2c812b90b5d3d4392cbec852df0038b773e69365986cbc7a44e9395861c2b9c4
 #
 # The Rayleigh-beam follower: a translating roller follower in the groove of a rigid disk cam,
 # its rod a Rayleigh beam whose free length changes as the cam turns (second source paper,
 # "Transverse vibration analysis of a translating roller-follower cam using cycloidal profile
-# for RDFD motion"; MODELS.md, "The Rayleigh-beam follower").
+# for RDFD motion", cited as "paper (n)").
 #
 # Frames and coordinates (paper figs 1, 3; SI units).  Fixed frame: origin at the cam centre,
 # Y along the follower axis towards the guide, whose exit is at Y = d.  The rod's free part
@@ -63,7 +63,13 @@
 # * RDFD motion (paper (1), fig. 2): rise over [0, beta_r], outer dwell to pi, fall over
 #   [pi, pi + beta_r], inner dwell to 2 pi, repeated every revolution; S = S_T R(theta) with R
 #   the normalized RDFD profile of the chosen cam law (cycloidal by default, any law of the
-#   library).  The segment ends are located as events.
+#   library), declared as the model's RDFDProfile with the rise beta_r.  The segment ends are
+#   located as events.
+#
+# How the constraints are solved (augmented with Baumgarte's rate w_B, paper (20), or
+# partitioned, the last two coordinates x_E and theta dependent, paper (21)-(27)) is the
+# parameter ``formulation``, declared as the model's ConstraintSolver; the multipliers are the
+# outputs lambda1 (transverse, (6)) and lambda2 (axial, (7)), in N.
 
 import json
 
@@ -94,9 +100,9 @@ _EDIR[1] = -1  # segment_down
 
 
 cdef inline void _profile(Ctx* ctx, double th, double beta, double* out) noexcept nogil:
-    """R(theta) and its derivatives dR/dtheta^k, k = 1..3, of the RDFD motion with the cam law
-    ctx.law[0], period 2 pi: rise on [0, beta), outer dwell to pi, fall on [pi, pi + beta),
-    inner dwell to 2 pi (paper (1), fig. 2)."""
+    """R(theta) and its derivatives dR/dtheta^k, k = 1..3, of the rise-dwell-fall-dwell (RDFD)
+    motion with the cam law ctx.law[0], period 2 pi: rise on [0, beta), outer dwell to pi,
+    fall on [pi, pi + beta), inner dwell to 2 pi."""
     cdef double u = fmod(th, 2.0 * M_PI)
     cdef double h[4]
     cdef double s = 1.0, T
@@ -822,7 +828,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
 cdef inline void _system(double t, const double* _y, double* _A, double* _b, double* _ph,
                          double* _phd, Ctx* ctx) noexcept nogil:
     """The augmented matrix [[M, Phi_Q^T], [Phi_Q, 0]] (row-major, _NA x _NA), the right side
-    [f; gamma] (paper (20)), and Phi, Phi' at (t, Q, Q')."""
+    [f; gamma], and Phi, Phi' at (t, Q, Q')."""
     cdef double Omega = ctx.p[0]
     cdef double d = ctx.p[1]
     cdef double r_b = ctx.p[2]
@@ -2223,9 +2229,9 @@ cdef inline void _constraints(double t, const double* _y, double* _g, double* _J
 
 
 cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noexcept nogil:
-    """Coordinate partitioning (paper (21)-(27)): the state with its dependent coordinates
-    recovered from the independent ones by Newton's method on Phi = 0, started from the values
-    the state carries, and their rates from Phi_Q Q' = -dPhi/dt.  0, or 1 without convergence."""
+    """Coordinate partitioning: the state with its dependent coordinates recovered from the
+    independent ones by Newton's method on Phi = 0, started from the values the state carries,
+    and their rates from Phi_Q Q' = -dPhi/dt.  0, or 1 without convergence."""
     cdef double _g[_NC]
     cdef double _J[_NC * _NQ]
     cdef double _gt[_NC]
@@ -2270,9 +2276,9 @@ cdef inline int _solve(double t, double* _yc, const double* _y, double* _acc, Ct
     cdef double _A[_NA * _NA]
     cdef double _ph[_NC]
     cdef double _phd[_NC]
-    cdef double w = ctx.p[13]
+    cdef double w = ctx.p[13]  # w_B
     cdef int i
-    cdef bint partitioned = ctx.p[14] > 0.5
+    cdef bint partitioned = ctx.p[14] > 0.5  # formulation
     if partitioned:
         if _recover(t, _y, _yc, ctx) != 0:
             return 1
@@ -2287,7 +2293,7 @@ cdef inline int _solve(double t, double* _yc, const double* _y, double* _acc, Ct
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
-    """dy/dt = [Q', Q''] from the augmented system (paper (20))."""
+    """dy/dt = [Q', Q''] from the augmented system."""
     cdef double _yc[_NS]
     cdef double _acc[_NA]
     cdef int i
@@ -2856,7 +2862,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
-    """No modes: the profile is evaluated afresh at every call."""
+    """No modes: a cam profile is evaluated afresh at every call."""
     ctx.variant = 0
 
 
@@ -2865,7 +2871,7 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
 
 
 cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogil:
-    """Breakpoints: the profile's segment ends."""
+    """Breakpoints: the segment ends of a cam profile, when the model declares them."""
     cdef double Omega = ctx.p[0]
     cdef double d = ctx.p[1]
     cdef double r_b = ctx.p[2]
@@ -3420,7 +3426,7 @@ def initial_state(p):
 
 
 def cam_time_affine(p):
-    """No cam input with a time-affine argument: the profile follows the state theta."""
+    """No cam input with a time-affine argument: a profile follows a state of the model."""
     return []
 
 
@@ -3460,6 +3466,16 @@ _MANIFEST_JSON = """
   "family": "R",
   "kind": "RDFD, periodic in 2 pi"
  },
+ "constraints": [
+  {
+   "multiplier": "lambda1",
+   "name": "Phi1"
+  },
+  {
+   "multiplier": "lambda2",
+   "name": "Phi2"
+  }
+ ],
  "dependent": [
   "xE",
   "theta"
@@ -3687,9 +3703,13 @@ _MANIFEST_JSON = """
    "unit": "1"
   }
  ],
- "reference": "paper (1)-(20); MODELS.md 'The Rayleigh-beam follower'",
+ "reference": "paper (1)-(20)",
  "residual": null,
- "source_hash": "sha256:e0f4b05900b06a83b9fa7841d5815088d1cb9f50ab65127b014fac737cd82d5b",
+ "solver": {
+  "baumgarte_rate": "w_B",
+  "formulation": "formulation"
+ },
+ "source_hash": "sha256:2c812b90b5d3d4392cbec852df0038b773e69365986cbc7a44e9395861c2b9c4",
  "states": [
   {
    "doc": "amplitude of the assumed mode (x/d)^2 (13)",

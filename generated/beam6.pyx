@@ -2,16 +2,16 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e936a3b9ffaa8596c18d4a29aff2863c24b9861f235064418640666f20a8e05b
-# Text hash: sha256:319e4634ebe497ca7dc1811c5082ea53db2ad66ad5a3e030a587d080de1351bd
+# Derivation key: sha256:a1c4912aaa2b1b4e7919b9b5b1570452b6d018b38989a83ae246aa3240356bcb
+# Text hash: sha256:e25a235dc137fce5047ee7134b4d56b4b0865716b815e96e48e13c78a7bfd547
 #
-# Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20); MODELS.md 'The Rayleigh-beam follower')
-# Source hash: sha256:403a38ecdf10bcd02e78806a6ee165271d00c3f14591424b590cc0310053401c
+# Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
+# Source hash: sha256:d60f78337cacc85ab2715ff223f24bab4eb7a5330354c7322853fc2211c7796e
 #
 # The Rayleigh-beam follower: a translating roller follower in the groove of a rigid disk cam,
 # its rod a Rayleigh beam whose free length changes as the cam turns (second source paper,
 # "Transverse vibration analysis of a translating roller-follower cam using cycloidal profile
-# for RDFD motion"; MODELS.md, "The Rayleigh-beam follower").
+# for RDFD motion", cited as "paper (n)").
 #
 # Frames and coordinates (paper figs 1, 3; SI units).  Fixed frame: origin at the cam centre,
 # Y along the follower axis towards the guide, whose exit is at Y = d.  The rod's free part
@@ -63,7 +63,13 @@
 # * RDFD motion (paper (1), fig. 2): rise over [0, beta_r], outer dwell to pi, fall over
 #   [pi, pi + beta_r], inner dwell to 2 pi, repeated every revolution; S = S_T R(theta) with R
 #   the normalized RDFD profile of the chosen cam law (cycloidal by default, any law of the
-#   library).  The segment ends are located as events.
+#   library), declared as the model's RDFDProfile with the rise beta_r.  The segment ends are
+#   located as events.
+#
+# How the constraints are solved (augmented with Baumgarte's rate w_B, paper (20), or
+# partitioned, the last two coordinates x_E and theta dependent, paper (21)-(27)) is the
+# parameter ``formulation``, declared as the model's ConstraintSolver; the multipliers are the
+# outputs lambda1 (transverse, (6)) and lambda2 (axial, (7)), in N.
 
 import json
 
@@ -94,9 +100,9 @@ _EDIR[1] = -1  # segment_down
 
 
 cdef inline void _profile(Ctx* ctx, double th, double beta, double* out) noexcept nogil:
-    """R(theta) and its derivatives dR/dtheta^k, k = 1..3, of the RDFD motion with the cam law
-    ctx.law[0], period 2 pi: rise on [0, beta), outer dwell to pi, fall on [pi, pi + beta),
-    inner dwell to 2 pi (paper (1), fig. 2)."""
+    """R(theta) and its derivatives dR/dtheta^k, k = 1..3, of the rise-dwell-fall-dwell (RDFD)
+    motion with the cam law ctx.law[0], period 2 pi: rise on [0, beta), outer dwell to pi,
+    fall on [pi, pi + beta), inner dwell to 2 pi."""
     cdef double u = fmod(th, 2.0 * M_PI)
     cdef double h[4]
     cdef double s = 1.0, T
@@ -1030,7 +1036,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
 cdef inline void _system(double t, const double* _y, double* _A, double* _b, double* _ph,
                          double* _phd, Ctx* ctx) noexcept nogil:
     """The augmented matrix [[M, Phi_Q^T], [Phi_Q, 0]] (row-major, _NA x _NA), the right side
-    [f; gamma] (paper (20)), and Phi, Phi' at (t, Q, Q')."""
+    [f; gamma], and Phi, Phi' at (t, Q, Q')."""
     cdef double Omega = ctx.p[0]
     cdef double d = ctx.p[1]
     cdef double r_b = ctx.p[2]
@@ -2872,9 +2878,9 @@ cdef inline void _constraints(double t, const double* _y, double* _g, double* _J
 
 
 cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noexcept nogil:
-    """Coordinate partitioning (paper (21)-(27)): the state with its dependent coordinates
-    recovered from the independent ones by Newton's method on Phi = 0, started from the values
-    the state carries, and their rates from Phi_Q Q' = -dPhi/dt.  0, or 1 without convergence."""
+    """Coordinate partitioning: the state with its dependent coordinates recovered from the
+    independent ones by Newton's method on Phi = 0, started from the values the state carries,
+    and their rates from Phi_Q Q' = -dPhi/dt.  0, or 1 without convergence."""
     cdef double _g[_NC]
     cdef double _J[_NC * _NQ]
     cdef double _gt[_NC]
@@ -2919,9 +2925,9 @@ cdef inline int _solve(double t, double* _yc, const double* _y, double* _acc, Ct
     cdef double _A[_NA * _NA]
     cdef double _ph[_NC]
     cdef double _phd[_NC]
-    cdef double w = ctx.p[13]
+    cdef double w = ctx.p[13]  # w_B
     cdef int i
-    cdef bint partitioned = ctx.p[14] > 0.5
+    cdef bint partitioned = ctx.p[14] > 0.5  # formulation
     if partitioned:
         if _recover(t, _y, _yc, ctx) != 0:
             return 1
@@ -2936,7 +2942,7 @@ cdef inline int _solve(double t, double* _yc, const double* _y, double* _acc, Ct
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
-    """dy/dt = [Q', Q''] from the augmented system (paper (20))."""
+    """dy/dt = [Q', Q''] from the augmented system."""
     cdef double _yc[_NS]
     cdef double _acc[_NA]
     cdef int i
@@ -3684,7 +3690,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
-    """No modes: the profile is evaluated afresh at every call."""
+    """No modes: a cam profile is evaluated afresh at every call."""
     ctx.variant = 0
 
 
@@ -3693,7 +3699,7 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
 
 
 cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogil:
-    """Breakpoints: the profile's segment ends."""
+    """Breakpoints: the segment ends of a cam profile, when the model declares them."""
     cdef double Omega = ctx.p[0]
     cdef double d = ctx.p[1]
     cdef double r_b = ctx.p[2]
@@ -4426,7 +4432,7 @@ def initial_state(p):
 
 
 def cam_time_affine(p):
-    """No cam input with a time-affine argument: the profile follows the state theta."""
+    """No cam input with a time-affine argument: a profile follows a state of the model."""
     return []
 
 
@@ -4466,6 +4472,16 @@ _MANIFEST_JSON = """
   "family": "R",
   "kind": "RDFD, periodic in 2 pi"
  },
+ "constraints": [
+  {
+   "multiplier": "lambda1",
+   "name": "Phi1"
+  },
+  {
+   "multiplier": "lambda2",
+   "name": "Phi2"
+  }
+ ],
  "dependent": [
   "xE",
   "theta"
@@ -4693,9 +4709,13 @@ _MANIFEST_JSON = """
    "unit": "1"
   }
  ],
- "reference": "paper (1)-(20); MODELS.md 'The Rayleigh-beam follower'",
+ "reference": "paper (1)-(20)",
  "residual": null,
- "source_hash": "sha256:403a38ecdf10bcd02e78806a6ee165271d00c3f14591424b590cc0310053401c",
+ "solver": {
+  "baumgarte_rate": "w_B",
+  "formulation": "formulation"
+ },
+ "source_hash": "sha256:d60f78337cacc85ab2715ff223f24bab4eb7a5330354c7322853fc2211c7796e",
  "states": [
   {
    "doc": "amplitude of the assumed mode (x/d)^2 (13)",

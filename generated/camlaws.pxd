@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:bf3875c577225265baccc097e35b9f07d7c463c61f5c6169d5bb5e485d85ef35
-# Text hash: sha256:d67d8f7f112330770ec282b93b1fb305766512c11ed5f0833e49de7648b202e8
+# Derivation key: sha256:a4422733091eb47d63705f60f1b24311e81dba46aa1a94062958d80231283926
+# Text hash: sha256:e24f25eaab93afbac3dcd36b19c86b509cb8d0f2ca88afa2e571e61688b68441
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),

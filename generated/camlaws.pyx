@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:bf3875c577225265baccc097e35b9f07d7c463c61f5c6169d5bb5e485d85ef35
-# Text hash: sha256:2bc73d4441173aeea467334208cd15e0d63e0f7669c9b748dd672e4ca8abe494
+# Derivation key: sha256:a4422733091eb47d63705f60f1b24311e81dba46aa1a94062958d80231283926
+# Text hash: sha256:3f6ca2b24a6603e6e42d9485718d20bb2d41b992fa846a1a546044669eb267fa
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

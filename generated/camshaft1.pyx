@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b8f0815daf7eb68f53ed2831f189a929873a30fac7faedc6a1052fbfb77aa7b0
-# Text hash: sha256:7f56012a07dd92f91857e1e0c1cd496fcb256862224868cb7e4c57a78015cadf
+# Derivation key: sha256:fbd933de7f636f4f01ddae2dfd34dba41ee9aa9523e2e4fad8e8b06676ad07de
+# Text hash: sha256:5f5f45107b3ed08ee708e50314548b4226993875aafafbdbf23afc02a86e3b14
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:11095417643cf9097a3900ed13598f188b7a3cfe598b6ca63a6411c1f013edca

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:17445e8a6069c5b33fddb7910a5fb78d068faad26587a198aa74512e9cd4e256
-# Text hash: sha256:7888b7443a491489ae955e3e176b2f0145f8a8a5fd46bb3d41ad721189d31810
+# Derivation key: sha256:7f8aef885994a4df45fc07e9d9b01ee5da0d2b778d977da62fccba80ad7c8687
+# Text hash: sha256:a0a354c1de23572ffc86e7a32c428830c7a04ddde15fbc987b179ef94b9f90ac
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:7ff133aa9f410e0fe4c5f6a1d8576149a68eeec6de62eafebd892efe8aa84d00

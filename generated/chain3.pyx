@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f652d5a340a03a1b5621d7c16d368f2629fa8da17e99ce784be8dd2ea9104eda
-# Text hash: sha256:4f36db6324fcfe4e9ce597d61e8f162c06d183513be477427c9e35cef44e85e5
+# Derivation key: sha256:d338f033080acbb92029eeacd7cdcb8b5bbdef667886d174c8c41631d8a9f94e
+# Text hash: sha256:6675093bba16f14624e559535ed23967be555bc157b642216edf3c8d057d4ada
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:e1c62cc1d141de24664a5c402adec44384d1978e0cde22eb2e227011884d378e

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:215e288e9610f2216cac193ca5fa4f5f84bb149c1e011f4b841a5f87dd6a5f11
-# Text hash: sha256:986113d04e3a0de7ebf8b0932b1d2853117f92fca998b8448c0c94a0c5e828f8
+# Derivation key: sha256:6edb4f79d9b6370a2ed4dfad13f23225d61cdfa75fc6cc9f117d3dfcd6d6b721
+# Text hash: sha256:1f47e7bdc51da23ee529bae846f81f6dfa2c49a091d44f5d3db6b97ad306a88f
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:82cb91462f5d01afa094cef50cff2640730911c258542d9a4d4313ff02efac50

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7f53cc576e0fdf30a06058a2a1d51373970f3ac42ae459e69e95f4b367b1efab
-# Text hash: sha256:6c754ea67196a90a48eba500c71c308c12d234c87bfc25f4ff2b64c4ed7d01ac
+# Derivation key: sha256:f393de2206c02e14542e5129f246729fcf79549010b67efa96b8c916a6141290
+# Text hash: sha256:b2be667e49931d01d92f5ebe836203c730387d422e54157693b318196f5be93b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:6e5cc4fd73776ccce4a07e340dc102e9d47fc9c6a37e33bc8908b20584635f74

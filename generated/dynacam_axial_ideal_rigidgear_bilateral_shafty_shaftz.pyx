@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:23af0a768a119c46fbabbbaf396641986b136900edda3d483ae509ee4e817c5d
-# Text hash: sha256:ce0d966860d4b7b88a8ed7f9e6069b401135f5b5d1af1ff488d2047281227265
+# Derivation key: sha256:e5ce7923bd4af3309edaf02e2ac9b800f783b1f66ce50f7ad159ce0565b229e2
+# Text hash: sha256:a9dec2cbe542f56e7499d8ca5c3c6a7a77c9bbdb0a36604b00d0011d75d7117b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:a09c25acce6a3b6f62b515acd853dfcf6a5037bb852e5bcbd89ff4ea0a963cab

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:9328a703037410ecf44a11c1b26996afd4dd71124b2672145bdd894413792468
-# Text hash: sha256:6e2d6bee21cad99dac890f133bd9f4c7aacb5fbc63c64aba8d1e8986eb205ccc
+# Derivation key: sha256:39e7dcb99e3fc953f0e2787c22e7881d75eb0036b69bf5bf5ffaa3af13ca1527
+# Text hash: sha256:f3c0267baf5591cbeda173e5e1cb01bdcd3cdd8d22b47e2645870b46bf6c5107
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:3530b33f52fe8d2d9d942359b69c0b5737e71e5208b29c33ff6978958f119911

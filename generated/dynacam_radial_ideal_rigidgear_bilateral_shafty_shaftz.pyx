@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7cdd70f2b3465131712c9f684493cb36826bf352da0944c32fec90a563986400
-# Text hash: sha256:8d78cef9a5cf3a2bacb45403ad6e3c374751f6c321d38eb93a82e77989654154
+# Derivation key: sha256:3858f28d24a40708c257e770c105ac736f6aa912a61bf51cbfaa201613892f97
+# Text hash: sha256:597af33716e346c0777308d3b48a9d1f010f6263998ac6690e1ecbd981d61ef8
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:95f560bc26df0b9131daa169377ace69bae787bab28a16fe54f257920927c69b

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7f0067bf2602c7887fba7d24839e48566a57daf230460b7ca682fff4ffb7d605
-# Text hash: sha256:43a816a9a789815a44d132c65adf0d8a066c1782ffdd2fefc18b06fec6e6d854
+# Derivation key: sha256:ad9dbcc4f0daa13417e37a02fb3071c91a4bcf30797c771019528521f8bc7bb4
+# Text hash: sha256:601f07940ca1f61067b5b5df2e02c1e1f5200f108a47db3496412ea9aaf55322
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:d015b9c1c2021ce52f78f0b1015bfe9dc3b73974572825ea5ef82519ffd8ae4a

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:008ac34607a74caa060c86048ed718c986212e92d03cde6ec3d9fe21e6cbabd0
-# Text hash: sha256:660b5c41ebdcc42ca16aad33e3523bae921d8d22af4a8e87f512941867633579
+# Derivation key: sha256:96b43096f006537918ee2be454257337562c603b43041d4eade67e24165e6d3a
+# Text hash: sha256:eee59e00953f773a9dfff405c3248c27e3be001c4b777d671844dc8facaad5a5
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7f58decc9cfef69affba9dbc66d6cbef86b828d17c757a297e7f17381ee2f025

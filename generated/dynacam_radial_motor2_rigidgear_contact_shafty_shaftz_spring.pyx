@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0a84251afcc6935a3e0604f86397cccf4ccd26bd1b58dfb4c2efae63b144f6f4
-# Text hash: sha256:d264e11a7690befb378c348c6046c9be180cd6275ca6420ace164eeb9c65cd52
+# Derivation key: sha256:d8dc326f1ca83a4584940ee42825df9a1384b8de0004bdcf98a250046bbbf803
+# Text hash: sha256:3db2999539039b59e943b98d5236380f9bcfcbc33a4f7c93ad8ce9c74fd5c0f3
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:fa3d1a1bf50cc1826deae5f643df492e0ff929eac89b7cd3e1ea7b4a63d46d0a

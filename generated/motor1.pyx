@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ff7834aba1858955063a125f7105e5ffba795f9d03aeee5ce4d5754d6677b4f1
-# Text hash: sha256:9e3b3db4d14d9e86661b9abb6664fd9f146999bd4e462fe38288ef061405aa66
+# Derivation key: sha256:861f92b717c62f950e5eb71987ab082267fa9ef1076ce06010a9f231b5d158f4
+# Text hash: sha256:cf7d6dfdc0fa775e1f2c6d1eb213b4a06920c947b7d9f16b56a3ddb14bedb790
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:d2982da34d717e81e23fa41761bafe1a5697842fe6b4ba3f99fe71c7426e0cf7

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f91e5108ff206b1ca4f4705bda3de1e9bd115ed8f8f4e54aecb25bb11b88fa67
-# Text hash: sha256:2905af32262f346b512a4efa498fa457d9790880e7582e643112e3f6da9a871d
+# Derivation key: sha256:94c4ef11db2c56556dadc66f822b1e1fd29858d39d27ecdf64a94e7c8f3e3966
+# Text hash: sha256:41d6945fba779893e8d53179ec5ae751a49d21499a19ae7d3e17cdf9f3d23fba
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2c1f555639a7d49b92ea7d665e9a0369046a7aa9f18b7ac380d975c265d508a4

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ac85741690d4b9e8e59b8f014f015003019fc910316bb26d0652605b5cbe5ccd
-# Text hash: sha256:99d24085a20539f6bc078bba85b41d24dee2f29053e7cce5db0b93af9bc70cd6
+# Derivation key: sha256:43453b34a10992a1be5a49010fd3a3c56d1cce336b1be077a058dcc152944b17
+# Text hash: sha256:644a7479e787eb0ec4108090852148207fb786b4ced8ffddb7b37f07d39e93ff
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:bde9b5f7c474d0716c188e5f532573ed637e339597b233fbceaf43fad1df1210

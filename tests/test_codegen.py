@@ -58,8 +58,9 @@ def _lambdified(model_name: str, law_key: str, par):
     return f_dy, f_out, model
 
 
-# the constrained beam models solve an augmented system: tests/test_beam.py checks them
-_CASES = [(m, law) for m in sorted(REGISTRY) if not m.startswith(("dynacam_", "beam"))
+# the constrained models solve an augmented system: tests/test_beam.py and
+# tests/test_pendulum_xy.py check them
+_CASES = [(m, law) for m in sorted(REGISTRY) if not m.startswith(("dynacam_", "beam", "pendulum"))
           for law in sorted(camlaws.LAWS)]
 # the DYNACAM variants are large: one law each, and fewer points (see _POINTS)
 # lambdify of the variants with contact modes and squeeze films takes minutes each (the

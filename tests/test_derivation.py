@@ -3,7 +3,8 @@ import pytest
 import sympy as sp
 
 from camdyn.derive.lagrange import derive
-from camdyn.derive.model import Coordinate, Model, Output, Parameter, cam_input, time
+from camdyn.derive.model import (Constraint, ConstraintSolver, Coordinate, Model, Output, Parameter,
+                                 cam_input, time)
 from camdyn.derive.models import REGISTRY, camshaft1, one_dof
 
 pi = sp.pi
@@ -95,23 +96,46 @@ def test_averaged_stiffness_4_21():
     assert sp.simplify(sp.integrate(1 + Hd**2 * Fa, (T, 0, 1)) - (1 + sp.Rational(3, 2) * Fa)) == 0
 
 
-def test_constraint_multiplier_form():
-    """A pendulum in Cartesian coordinates: Phi_q and gamma of the multiplier form."""
+def _pendulum(**changes):
     t = time("t")
     x, y = Coordinate("xp", "m", "x"), Coordinate("yp", "m", "y")
     L, g = Parameter("L", 1.0, "m", "length", low=0, open_low=True), Parameter("g", 9.81, "m/s^2", "gravity")
+    w, form = Parameter("w", 0.0, "1/s", "Baumgarte rate"), Parameter("form", 0.0, "1", "formulation")
     X, Y = x(t), y(t)
-    model = Model(name="pendulum", title="pendulum", reference="test", doc="", time=t, time_unit="s",
-                  coordinates=(x, y), kinetic=(X.diff(t) ** 2 + Y.diff(t) ** 2) / 2,
-                  potential=g.symbol * Y, parameters=(L, g),
-                  outputs=(Output("yy", Y, "m", "y"),),
-                  constraints=(X**2 + Y**2 - L.symbol**2,))
+    decl = dict(name="pendulum", title="pendulum", reference="test", doc="", time=t, time_unit="s",
+                coordinates=(x, y), kinetic=(X.diff(t) ** 2 + Y.diff(t) ** 2) / 2,
+                potential=g.symbol * Y, parameters=(L, g, w, form),
+                outputs=(Output("yy", Y, "m", "y"),),
+                constraints=(Constraint("rod", X**2 + Y**2 - L.symbol**2, "lam", "N/m", "rod"),),
+                solver=ConstraintSolver(w.symbol, form.symbol))
+    return Model(**(decl | changes)), X, Y, t, g, L
+
+
+def test_constraint_multiplier_form():
+    """A pendulum in Cartesian coordinates: Phi_q and gamma of the multiplier form."""
+    model, X, Y, t, g, L = _pendulum()
     eq = derive(model)
     assert eq.M == sp.eye(2)
     assert sp.simplify(eq.f - sp.Matrix([0, -g.symbol])) == sp.zeros(2, 1)
     assert sp.simplify(eq.Phi_q - sp.Matrix([[2 * X, 2 * Y]])) == sp.zeros(1, 2)
     # d2/dt2 (x^2 + y^2) = 2 x x'' + 2 y y'' + 2 x'^2 + 2 y'^2  ->  gamma = -2 (x'^2 + y'^2)
     assert sp.simplify(eq.gamma[0] + 2 * (X.diff(t) ** 2 + Y.diff(t) ** 2)) == 0
+
+
+def test_constrained_declarations_are_checked():
+    """A bare expression as constraint, a constrained model without a solver, a solver naming
+    no parameter, a multiplier clashing with an output: refused by name."""
+    model, X, Y, t, g, L = _pendulum()
+    with pytest.raises(ValueError, match="pendulum: constraint 1 is a .*Constraint\\(name"):
+        _pendulum(constraints=(X**2 + Y**2 - L.symbol**2,))
+    with pytest.raises(ValueError, match="pendulum: constrained, but no solver"):
+        _pendulum(solver=None)
+    with pytest.raises(ValueError, match="pendulum: solver formulation=.* is not one of its parameters"):
+        _pendulum(solver=ConstraintSolver(model.solver.baumgarte_rate, sp.Symbol("nope")))
+    with pytest.raises(ValueError, match="pendulum: names used twice: \\['yy'\\]"):
+        _pendulum(constraints=(Constraint("rod", X**2 + Y**2 - L.symbol**2, "yy", "N/m", "rod"),))
+    with pytest.raises(ValueError, match="pendulum: a profile or a constraint solver is declared"):
+        _pendulum(constraints=())
 
 
 def test_cam_input_chain_rule():

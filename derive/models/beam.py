@@ -1,7 +1,7 @@
 """The Rayleigh-beam follower: a translating roller follower in the groove of a rigid disk cam,
 its rod a Rayleigh beam whose free length changes as the cam turns (second source paper,
 "Transverse vibration analysis of a translating roller-follower cam using cycloidal profile
-for RDFD motion"; MODELS.md, "The Rayleigh-beam follower").
+for RDFD motion", cited as "paper (n)").
 
 Frames and coordinates (paper figs 1, 3; SI units).  Fixed frame: origin at the cam centre,
 Y along the follower axis towards the guide, whose exit is at Y = d.  The rod's free part
@@ -53,7 +53,13 @@ Modelling choices the paper leaves open (each a parameter where it can be):
 * RDFD motion (paper (1), fig. 2): rise over [0, beta_r], outer dwell to pi, fall over
   [pi, pi + beta_r], inner dwell to 2 pi, repeated every revolution; S = S_T R(theta) with R
   the normalized RDFD profile of the chosen cam law (cycloidal by default, any law of the
-  library).  The segment ends are located as events.
+  library), declared as the model's RDFDProfile with the rise beta_r.  The segment ends are
+  located as events.
+
+How the constraints are solved (augmented with Baumgarte's rate w_B, paper (20), or
+partitioned, the last two coordinates x_E and theta dependent, paper (21)-(27)) is the
+parameter ``formulation``, declared as the model's ConstraintSolver; the multipliers are the
+outputs lambda1 (transverse, (6)) and lambda2 (axial, (7)), in N.
 """
 from __future__ import annotations
 
@@ -61,7 +67,8 @@ import math
 
 import sympy as sp
 
-from ..model import Branch, Coordinate, Event, Model, Output, Parameter, cam_input, time
+from ..model import (Branch, Constraint, ConstraintSolver, Coordinate, Event, Model, Output,
+                     Parameter, RDFDProfile, cam_input, time)
 
 t = time("t")
 R = cam_input("R")       # normalized RDFD displacement of the cam law, S = S_T R(theta)
@@ -157,7 +164,7 @@ def build(n: int) -> Model:
     return Model(
         name=f"beam{n}",
         title=f"Rayleigh-beam follower in a grooved disk cam, N = {n} assumed modes",
-        reference="paper (1)-(20); MODELS.md 'The Rayleigh-beam follower'",
+        reference="paper (1)-(20)",
         doc=__doc__,
         time=t,
         time_unit="s",
@@ -165,7 +172,14 @@ def build(n: int) -> Model:
         kinetic=T_rod + T_roller + T_guide,
         potential=U_rod,
         parameters=PARAMETERS,
-        constraints=(Phi1, Phi2),
+        constraints=(
+            Constraint("Phi1", Phi1, "lambda1", "N",
+                       "multiplier of the first constraint (transverse, (6))"),
+            Constraint("Phi2", Phi2, "lambda2", "N",
+                       "multiplier of the second constraint (axial, (7))"),
+        ),
+        profile=RDFDProfile(family="R", rise=P["beta_r"]),
+        solver=ConstraintSolver(baumgarte_rate=P["w_B"], formulation=P["formulation"]),
         events=(Event("segment_up", ends, 1, {}, (Branch({}),)),
                 Event("segment_down", ends, -1, {}, (Branch({}),))),
         outputs=(

@@ -1,0 +1,519 @@
+# cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
+#
+# GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
+# edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
+# Derivation key: sha256:532976de8d6d8df4a020da90d1df99743f6b611babc483f42f56b49dd37ec23a
+# Text hash: sha256:a482dc95a161d2b1c943f46b42b5875c3f7fd4784ad52d6888fd9021b6881ae3
+#
+# Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
+# Source hash: sha256:2078d808034e109b6d5041c180f07c5c08ac383302ff8d707638b4e68587f436
+#
+# A planar pendulum in Cartesian coordinates: the constraint layer's second model.
+#
+# A point mass m on a massless rigid rod of length L, hinged at the origin, in the vertical
+# plane; x horizontal, y vertically up (gravity g points to -y), so the mass hangs at
+# (0, -L).  The coordinates Q = [x, y] are dependent, tied by the rod's length:
+#
+#     Phi = x^2 + y^2 - L^2 = 0
+#
+#     kinetic energy     T = m (x'^2 + y'^2)/2
+#     potential energy   V = m g y
+#     dissipation        D = c (x'^2 + y'^2)/2     viscous damping of the mass (c = 0: none)
+#
+# Lagrange's equations of the first kind, M Q'' + Phi_Q^T lambda = f with M = m I,
+# Phi_Q = [2 x, 2 y] and f = [-c x', -m g - c y']:
+#
+#     m x'' + 2 x lambda = -c x',     m y'' + 2 y lambda = -m g - c y'.
+#
+# The rod's tension T_rod (positive when the rod pulls the mass towards the hinge) acts on
+# the mass as -T_rod (x, y)/L, so the multiplier is lambda = T_rod/(2 L), in N/m (a force
+# per unit of Phi's m^2 over the m^2/m of Phi_Q).  For the undamped pendulum at the angle
+# theta from the downward vertical, T_rod = m L theta'^2 + m g cos theta.
+#
+# The start is the rod at the angle theta0 at rest: x = L sin theta0, y = -L cos theta0,
+# on the constraint, with consistent (zero) rates.
+#
+# Solving the constraint (parameter ``formulation``): 0 is the augmented index-1 system with
+# Baumgarte's stabilization at the rate w_B; 1 is coordinate partitioning with y, the last
+# coordinate, dependent: y is recovered from x by Newton's method on Phi = 0 (the branch of
+# the sign y carries), and y' = -x x'/y.  That fails near y = 0, the horizontal rod, where
+# Phi_y = 2 y vanishes: use the augmented form (formulation 0) for swings that reach the
+# horizontal (|theta0| >= pi/2).
+
+import json
+
+from cpython.pycapsule cimport PyCapsule_New
+from libc.math cimport atan2, cos, fabs, sin
+
+from camdyn.runtime.abi cimport *
+from camdyn.runtime.linalg cimport solve_inplace
+
+# sizes, known when the integration loops (loops.pxi) are compiled into this module
+cdef enum:
+    _NQ = 2                  # coordinates Q
+    _NC = 1                  # constraints Phi
+    _NA = 3                  # unknowns of the augmented system: Q'', lambda
+    _ND = 1                  # first dependent coordinate (the last _NC are dependent)
+    _NS = 4                 # states: Q, Q'
+    _NCAM = 0
+    _NM = 0
+    _NE = 0
+    _NQ1 = 2
+    _NE1 = 1
+
+cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
+
+
+
+cdef void prepare(Ctx* ctx) noexcept nogil:
+    """Parameter-only subexpressions, once per run, into ctx.k."""
+    cdef double m = ctx.p[0]
+    cdef double L = ctx.p[1]
+    cdef double g = ctx.p[2]
+    cdef double c = ctx.p[3]
+    cdef double theta0 = ctx.p[4]
+    cdef double w_B = ctx.p[5]
+    cdef double formulation = ctx.p[6]
+    cdef double _c0 = g*m
+    ctx.k[0] = -c  # _k0
+    ctx.k[1] = -_c0  # _k1
+    ctx.k[2] = -(L*L)  # _k2
+    ctx.k[3] = 0.5*m  # _k3
+    ctx.k[4] = _c0  # _k4
+    ctx.k[5] = -L  # _k5
+
+
+cdef inline void _system(double t, const double* _y, double* _A, double* _b, double* _ph,
+                         double* _phd, Ctx* ctx) noexcept nogil:
+    """The augmented matrix [[M, Phi_Q^T], [Phi_Q, 0]] (row-major, _NA x _NA), the right side
+    [f; gamma], and Phi, Phi' at (t, Q, Q')."""
+    cdef double m = ctx.p[0]
+    cdef double L = ctx.p[1]
+    cdef double g = ctx.p[2]
+    cdef double c = ctx.p[3]
+    cdef double theta0 = ctx.p[4]
+    cdef double w_B = ctx.p[5]
+    cdef double formulation = ctx.p[6]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double x = _y[0]
+    cdef double y = _y[1]
+    cdef double xd = _y[2]
+    cdef double yd = _y[3]
+
+    _A[0] = m
+    _A[1] = 0.0
+    _A[2] = 2.0*x
+    _A[3] = 0.0
+    _A[4] = m
+    _A[5] = 2.0*y
+    _A[6] = 2.0*x
+    _A[7] = 2.0*y
+    _A[8] = 0.0
+    _b[0] = _k0*xd
+    _b[1] = _k0*yd + _k1
+    _b[2] = -2.0*((xd*xd) + (yd*yd))
+    _ph[0] = _k2 + (x*x) + (y*y)
+    _phd[0] = 0.0 + _A[6] * xd + _A[7] * yd
+
+
+cdef inline void _constraints(double t, const double* _y, double* _g, double* _J, double* _gt,
+                              Ctx* ctx) noexcept nogil:
+    """Phi, Phi_Q (row-major, _NC x _NQ) and dPhi/dt at (t, Q)."""
+    cdef double m = ctx.p[0]
+    cdef double L = ctx.p[1]
+    cdef double g = ctx.p[2]
+    cdef double c = ctx.p[3]
+    cdef double theta0 = ctx.p[4]
+    cdef double w_B = ctx.p[5]
+    cdef double formulation = ctx.p[6]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double x = _y[0]
+    cdef double y = _y[1]
+    cdef double xd = _y[2]
+    cdef double yd = _y[3]
+
+    _g[0] = _k2 + (x*x) + (y*y)
+    _J[0] = 2.0*x
+    _J[1] = 2.0*y
+    _gt[0] = 0.0
+
+
+cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noexcept nogil:
+    """Coordinate partitioning: the state with its dependent coordinates recovered from the
+    independent ones by Newton's method on Phi = 0, started from the values the state carries,
+    and their rates from Phi_Q Q' = -dPhi/dt.  0, or 1 without convergence."""
+    cdef double _g[_NC]
+    cdef double _J[_NC * _NQ]
+    cdef double _gt[_NC]
+    cdef double _D[_NC * _NC]
+    cdef int i, j, it
+    cdef double step
+    for i in range(_NS):
+        _yc[i] = _y[i]
+    for it in range(30):
+        _constraints(t, _yc, _g, _J, _gt, ctx)
+        for i in range(_NC):
+            _g[i] = -_g[i]
+            for j in range(_NC):
+                _D[i * _NC + j] = _J[i * _NQ + _ND + j]
+        if solve_inplace(_NC, _D, _g) != 0:
+            return 1
+        step = 0.0
+        for j in range(_NC):
+            _yc[_ND + j] += _g[j]
+            step = max(step, fabs(_g[j]) / (1.0 + fabs(_yc[_ND + j])))
+        if step < 1e-15:
+            break
+    else:
+        return 1
+    _constraints(t, _yc, _g, _J, _gt, ctx)
+    for i in range(_NC):
+        _g[i] = -_gt[i]
+        for j in range(_ND):
+            _g[i] -= _J[i * _NQ + j] * _yc[_NQ + j]
+        for j in range(_NC):
+            _D[i * _NC + j] = _J[i * _NQ + _ND + j]
+    if solve_inplace(_NC, _D, _g) != 0:
+        return 1
+    for j in range(_NC):
+        _yc[_NQ + _ND + j] = _g[j]
+    return 0
+
+
+cdef inline int _solve(double t, double* _yc, const double* _y, double* _acc, Ctx* ctx) noexcept nogil:
+    """Q'' and lambda into _acc, and in _yc the state they belong to: the state itself with
+    Baumgarte's terms (formulation 0), or its partitioned recovery (formulation 1)."""
+    cdef double _A[_NA * _NA]
+    cdef double _ph[_NC]
+    cdef double _phd[_NC]
+    cdef double w = ctx.p[5]  # w_B
+    cdef int i
+    cdef bint partitioned = ctx.p[6] > 0.5  # formulation
+    if partitioned:
+        if _recover(t, _y, _yc, ctx) != 0:
+            return 1
+    else:
+        for i in range(_NS):
+            _yc[i] = _y[i]
+    _system(t, _yc, _A, _acc, _ph, _phd, ctx)
+    if not partitioned:
+        for i in range(_NC):
+            _acc[_NQ + i] -= 2.0 * w * _phd[i] + w * w * _ph[i]
+    return solve_inplace(_NA, _A, _acc)
+
+
+cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
+    """dy/dt = [Q', Q''] from the augmented system."""
+    cdef double _yc[_NS]
+    cdef double _acc[_NA]
+    cdef int i
+    if _solve(t, _yc, _y, _acc, ctx) != 0:
+        for i in range(_NS):
+            _dy[i] = 0.0 / 0.0  # the integrator reports non-finite values
+        return
+    for i in range(_NQ):
+        _dy[i] = _yc[_NQ + i]
+        _dy[_NQ + i] = _acc[i]
+
+
+cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept nogil:
+    """The named outputs (theta, E, Phi, tension, lambda_rod), at the recovered state when partitioned."""
+    cdef double _yc[_NS]
+    cdef double _acc[_NA]
+    cdef int i
+    if _solve(t, _yc, _y, _acc, ctx) != 0:
+        for i in range(_NA):
+            _acc[i] = 0.0 / 0.0
+    cdef double m = ctx.p[0]
+    cdef double L = ctx.p[1]
+    cdef double g = ctx.p[2]
+    cdef double c = ctx.p[3]
+    cdef double theta0 = ctx.p[4]
+    cdef double w_B = ctx.p[5]
+    cdef double formulation = ctx.p[6]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double x = _yc[0]
+    cdef double y = _yc[1]
+    cdef double xd = _yc[2]
+    cdef double yd = _yc[3]
+
+    cdef double _o0 = _k4*y
+    cdef double _o1 = (x*x) + (y*y)
+    _out[0] = atan2(x, -y)  # theta
+    _out[1] = _k3*((xd*xd) + (yd*yd)) + _o0  # E
+    _out[2] = _k2 + _o1  # Phi
+    _out[3] = _k5*(_o0 + c*(x*xd + y*yd) + m*(x*_acc[0] + y*_acc[1]))/_o1  # tension
+    _out[4] = _acc[2]  # lambda_rod
+
+
+cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, Ctx* ctx) noexcept nogil:
+    """Mass matrix M at (t, y); K is not formed for constrained models (NaN): frozen analyses
+    linearize the constrained right-hand side instead."""
+    cdef double _A[_NA * _NA]
+    cdef double _b[_NA]
+    cdef double _ph[_NC]
+    cdef double _phd[_NC]
+    cdef int i, j
+    _system(t, _y, _A, _b, _ph, _phd, ctx)
+    for i in range(_NQ):
+        for j in range(_NQ):
+            _Mm[i * _NQ + j] = _A[i * _NA + j]
+            _Km[i * _NQ + j] = 0.0 / 0.0
+
+
+cdef void refresh(Ctx* ctx) noexcept nogil:
+    """No modes: a cam profile is evaluated afresh at every call."""
+    ctx.variant = 0
+
+
+cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
+    refresh(ctx)
+
+
+cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogil:
+    """Breakpoints: the segment ends of a cam profile, when the model declares them."""
+    pass
+
+
+cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
+    """A segment end switches nothing: the step just ends there."""
+    refresh(ctx)
+
+
+cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
+    rhs(t, _y, _dy, ctx)
+
+
+# the integration loops of camdyn.runtime, compiled here with rhs() inlined
+include "camdyn/runtime/loops.pxi"
+
+
+def initial_state(p):
+    """The default initial state for the parameter vector p (manifest order)."""
+    cdef double m = p[0]
+    cdef double L = p[1]
+    cdef double g = p[2]
+    cdef double c = p[3]
+    cdef double theta0 = p[4]
+    cdef double w_B = p[5]
+    cdef double formulation = p[6]
+    return [L*sin(theta0), -L*cos(theta0), 0.0, 0.0]
+
+
+def cam_time_affine(p):
+    """No cam input with a time-affine argument: a profile follows a state of the model."""
+    return []
+
+
+cdef ModelC _model
+_model.abi_version = CAMDYN_ABI
+_model.n_q = _NQ
+_model.n_states = _NS
+_model.n_params = 7
+_model.n_outputs = 5
+_model.n_families = 0
+_model.n_instances = _NCAM
+_model.n_modes = _NM
+_model.n_events = _NE
+_model.n_const = 6
+_model.n_cache = 0
+_model.prepare = prepare
+_model.rhs = rhs_ptr
+_model.outputs = outputs
+_model.update_modes = update_modes
+_model.refresh = refresh
+_model.events = events
+_model.on_event = on_event
+_model.mass_stiffness = mass_stiffness
+_model.run = run_loops
+
+MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
+"""The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""
+
+_MANIFEST_JSON = """
+{
+ "cam_families": [],
+ "cam_instances": [],
+ "cam_profile": null,
+ "constraints": [
+  {
+   "multiplier": "lambda_rod",
+   "name": "rod"
+  }
+ ],
+ "dependent": [
+  "y"
+ ],
+ "events": [],
+ "modes": [],
+ "n_constraints": 1,
+ "n_q": 2,
+ "name": "pendulum_xy",
+ "options": [],
+ "outputs": [
+  {
+   "doc": "angle of the rod from the downward vertical",
+   "name": "theta",
+   "unit": "rad"
+  },
+  {
+   "doc": "mechanical energy T + V (V = 0 at the hinge)",
+   "name": "E",
+   "unit": "J"
+  },
+  {
+   "doc": "constraint residual x^2 + y^2 - L^2",
+   "name": "Phi",
+   "unit": "m^2"
+  },
+  {
+   "doc": "rod tension from the accelerations, equal to 2 L lambda_rod",
+   "name": "tension",
+   "unit": "N"
+  },
+  {
+   "doc": "multiplier of the rod constraint, T_rod/(2 L) (positive when the rod pulls the bob towards the hinge)",
+   "name": "lambda_rod",
+   "unit": "N/m"
+  }
+ ],
+ "parameters": [
+  {
+   "default": 1.0,
+   "doc": "mass of the bob",
+   "high": null,
+   "low": 0.0,
+   "name": "m",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < m",
+   "unit": "kg"
+  },
+  {
+   "default": 1.0,
+   "doc": "length of the rod, hinge to bob",
+   "high": null,
+   "low": 0.0,
+   "name": "L",
+   "open_high": false,
+   "open_low": true,
+   "range": "0 < L",
+   "unit": "m"
+  },
+  {
+   "default": 9.81,
+   "doc": "gravitational acceleration, along -y",
+   "high": null,
+   "low": 0.0,
+   "name": "g",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= g",
+   "unit": "m/s^2"
+  },
+  {
+   "default": 0.0,
+   "doc": "viscous damping of the bob's velocity (0: conservative)",
+   "high": null,
+   "low": 0.0,
+   "name": "c",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= c",
+   "unit": "N s/m"
+  },
+  {
+   "default": 1.0,
+   "doc": "initial angle of the rod from the downward vertical (released at rest)",
+   "high": 3.141592653589793,
+   "low": -3.141592653589793,
+   "name": "theta0",
+   "open_high": true,
+   "open_low": true,
+   "range": "-3.14159 < theta0 < 3.14159",
+   "unit": "rad"
+  },
+  {
+   "default": 10.0,
+   "doc": "Baumgarte rate: Phi'' + 2 w_B Phi' + w_B^2 Phi = 0 (augmented form)",
+   "high": null,
+   "low": 0.0,
+   "name": "w_B",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= w_B",
+   "unit": "rad/s"
+  },
+  {
+   "default": 0.0,
+   "doc": "0: augmented index-1 system with Baumgarte stabilization; 1: coordinate partitioning with y dependent (not near the horizontal rod, y = 0)",
+   "high": 1.0,
+   "low": 0.0,
+   "name": "formulation",
+   "open_high": false,
+   "open_low": false,
+   "range": "0 <= formulation <= 1",
+   "unit": "1"
+  }
+ ],
+ "reference": "Lagrange's equations of the first kind; the pendulum's closed forms",
+ "residual": null,
+ "solver": {
+  "baumgarte_rate": "w_B",
+  "formulation": "formulation"
+ },
+ "source_hash": "sha256:2078d808034e109b6d5041c180f07c5c08ac383302ff8d707638b4e68587f436",
+ "states": [
+  {
+   "doc": "horizontal position of the bob",
+   "initial": "L*sin(theta0)",
+   "name": "x",
+   "scale": 1.0,
+   "unit": "m"
+  },
+  {
+   "doc": "vertical position of the bob, up (dependent when partitioned)",
+   "initial": "-L*cos(theta0)",
+   "name": "y",
+   "scale": 1.0,
+   "unit": "m"
+  },
+  {
+   "doc": "rate of x",
+   "initial": 0.0,
+   "name": "xd",
+   "scale": 1.0,
+   "unit": "m/s"
+  },
+  {
+   "doc": "rate of y",
+   "initial": 0.0,
+   "name": "yd",
+   "scale": 1.0,
+   "unit": "m/s"
+  }
+ ],
+ "time": {
+  "name": "t",
+  "unit": "s"
+ },
+ "title": "Planar pendulum in Cartesian coordinates with its length constraint"
+}
+"""
+MANIFEST = json.loads(_MANIFEST_JSON)
+"""States, parameters (defaults, units, ranges), outputs, the cam profile, events, source hash."""
