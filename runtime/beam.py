@@ -110,6 +110,15 @@ def run(case: Case, progress=None) -> tuple[dict, object]:
     return summarize(case, res, cpu), res
 
 
+def errors(case: Case, summary: dict) -> dict:
+    """``max_abs_tip_deflection_error``: the case run again at rtol/10 (runtime/accuracy.py)."""
+    from . import accuracy
+
+    rtol = case.rtol / 10
+    tight = None if rtol < accuracy.RTOL_MIN else run(replace(case, rtol=rtol))[0]
+    return accuracy.errors(summary, tight, ("max_abs_tip_deflection",), "dp54")
+
+
 def summarize(case: Case, res, cpu: float) -> dict:
     t0, t1 = float(res.t[0]), float(res.t[-1])
     # one dense sampling (4 points a step) serves all three maxima; the tip's is then refined

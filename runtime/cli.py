@@ -158,13 +158,34 @@ def _cmd_residual(args) -> int:
         return fail(prog, name_argument(str(exc)))
     except SimulationError as exc:
         return fail(prog, str(exc))
+    if not args.no_error_estimate:
+        try:
+            out.update(residual_errors(args, out))
+        except SimulationError as exc:
+            return fail(prog, f"the error estimate's second run failed: {exc}")
     if args.json:
         print(json.dumps(out))
     else:
-        width = max(len(k) for k in out)
-        for k, v in out.items():
-            print(f"{k:<{width}}  {v:.6g}" if isinstance(v, float) else f"{k:<{width}}  {v}")
+        from .accuracy import with_errors
+
+        print("\n".join(with_errors(out)))
     return 0
+
+
+RESIDUAL_FIGURES = ("U0", "U0dd", "Xdd_min_rise", "T_at_Xdd_min", "Bdot_dev_max", "windup_max")
+"""The headline figures of `camdyn residual` that get an error estimate."""
+
+
+def residual_errors(args, out: dict) -> dict:
+    """``<figure>_error`` for the residual figures of ``out`` (runtime/accuracy.py): the same
+    run at rtol/10 or half the step."""
+    from . import accuracy
+
+    settings = accuracy.tighter_settings(args.method, out["rtol"], out["step"])
+    tight = None if settings is None else residual_run(
+        args.model, args.tau, args.fa, args.law, args.theta, args.method, settings[0],
+        settings[1], args.q, args.t_end, fv=args.fv)
+    return accuracy.errors(out, tight, RESIDUAL_FIGURES, args.method)
 
 
 def name_argument(message: str) -> str:
@@ -256,6 +277,22 @@ def integrate_run(model_arg: str, params: dict, initial: dict, t_end: float, met
     return summary, res
 
 
+def integrate_errors(args, params: dict, initial: dict, summary: dict) -> dict:
+    """State name -> estimate of its error at t_end (runtime/accuracy.py): the same run at
+    rtol/10 (dp54; rtol 1e-8 when not given) or half the step."""
+    from . import accuracy
+
+    rtol = (1e-8 if args.rtol is None else args.rtol) if args.method == "dp54" else None
+    settings = accuracy.tighter_settings(args.method, rtol, args.step)
+    tight = None
+    if settings is not None:
+        tight, _ = integrate_run(args.model, params, initial, args.t_end, args.method,
+                                 settings[0], settings[1], args.law, args.theta)
+    errs = accuracy.errors(summary["state"], None if tight is None else tight["state"],
+                           summary["state"], args.method)
+    return {name: errs.get(f"{name}_error") for name in summary["state"]}
+
+
 def write_series(res, out_dir) -> list:
     """states and outputs against time: <model>.csv and <model>.png in ``out_dir``."""
     import matplotlib
@@ -304,6 +341,8 @@ def _cmd_integrate(args) -> int:
                                    "for rk4 and koster)")
         summary, res = integrate_run(args.model, params, initial, args.t_end, args.method,
                                      args.rtol, args.step, args.law, args.theta, say)
+        if not args.no_error_estimate:
+            summary["state_error"] = integrate_errors(args, params, initial, summary)
         if args.out:
             summary["files"] = write_series(res, args.out)
     except CamdynInputError as exc:
@@ -317,8 +356,10 @@ def _cmd_integrate(args) -> int:
     print(f"{summary['model']}: {summary['method']} to {summary['t_end']:g} "
           f"{summary['time_unit']}, {summary['n_steps']} steps, {summary['n_rhs']} rhs calls, "
           f"{summary['cpu_seconds']:.3g} s CPU")
+    errs = summary.get("state_error", {})
     for name, value in summary["state"].items():
-        print(f"  {name:12s} {value:.10g}")
+        e = errs.get(name)
+        print(f"  {name:12s} {value:.10g}" + (f" ± {e:.2g}" if e is not None else ""))
     for f in summary.get("files", []):
         print(f"wrote {f}")
     return 0
@@ -388,6 +429,8 @@ def _cmd_simulate(args) -> int:
     try:
         sc = scenes.load(args.scene)
         summary, res = dynacam.run(sc, progress=progress)
+        if not args.no_error_estimate:
+            summary.update(dynacam.errors(sc, summary))
         if args.out:
             summary["figures"] = dynacam.plot(sc, res, summary, args.out)
     except CamdynInputError as exc:
@@ -411,7 +454,9 @@ def _print_dynacam(sc, summary) -> None:
         if key == "jump":
             v = summary["jump"]
             v = f"from T = {v['T']:.4g}" if v["occurs"] else "no"
-        print(f"  {key:26s} {v if isinstance(v, str) else fmt(v)}")
+        e = summary.get(f"{key}_error")
+        note = f" ± {e:.2g}" if isinstance(e, float) else ""
+        print(f"  {key:26s} {v if isinstance(v, str) else fmt(v)}{note}")
     for f in summary.get("figures", []):
         print(f"wrote {f}")
 
@@ -511,6 +556,8 @@ def _cmd_beam_follower(args) -> int:
     try:
         # the main run's line only without --json; the 18 figure runs report in any case
         out = beam_follower_run(case, args.out, progress, announce_run=not args.json)
+        if not args.no_error_estimate:
+            out.update(beam.errors(case, out))
     except CamdynInputError as exc:
         return fail(prog, _beam_argument(str(exc)))
     except SimulationError as exc:
@@ -532,12 +579,15 @@ def _warn_undercut(prog, out) -> None:
 
 def _print_beam(prog, out) -> None:
     _warn_undercut(prog, out)
-    rows = [(k, v) for k, v in out.items() if k != "figures"]
+    rows = [(k, v) for k, v in out.items() if k != "figures" and not k.endswith("_error")]
     rows = [(k, ("yes, see the warning" if v else "no") if k == "undercut" else v) for k, v in rows]
     width = max(len(k) for k, _ in rows)
     for k, v in rows:
         text = f"{v:.6g}" if isinstance(v, float) else str(v)
         unit = _BEAM_UNITS.get(k, "")
+        e = out.get(f"{k}_error")
+        if isinstance(e, float):
+            text += f" ± {e:.2g}"
         print(f"{k:<{width}}  {text} {unit}".rstrip())
     for f in out.get("figures", []):
         print(f"wrote {f}")
@@ -574,6 +624,8 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--step", type=float, default=None, help="rk4/koster step in T (default tau/100)")
     r.add_argument("--t-end", type=float, default=3.0, help="end of the dwell, in T (default 3)")
     r.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    r.add_argument("--no-error-estimate", action="store_true",
+                    help="skip the second, more accurate run that estimates each headline figure's error (sweeps)")
     r.set_defaults(func=_cmd_residual)
 
     c = sub.add_parser("check", help="every comparison with the thesis, as a table")
@@ -617,12 +669,16 @@ def build_parser() -> argparse.ArgumentParser:
     ig.add_argument("--law", default="cycloidal", choices=laws.NAMES, help="cam law of the inputs")
     ig.add_argument("--theta", type=float, default=None, help="shape parameter of the law")
     ig.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    ig.add_argument("--no-error-estimate", action="store_true",
+                     help="skip the second, more accurate run that estimates each headline figure's error (sweeps)")
     ig.add_argument("--out", default=None, help="folder for <model>.csv and <model>.png")
     ig.set_defaults(func=_cmd_integrate)
 
     sm = sub.add_parser("simulate", help="a DYNACAM scene (thesis ch. 6, 7): summary and diagrams")
     sm.add_argument("scene", help="scene TOML, or a built-in scene: indexing, spring_loaded")
     sm.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    sm.add_argument("--no-error-estimate", action="store_true",
+                     help="skip the second, more accurate run that estimates each headline figure's error (sweeps)")
     sm.add_argument("--out", default=None, help="folder for the diagrams (PNG)")
     sm.set_defaults(func=_cmd_simulate)
 
@@ -676,6 +732,8 @@ def _add_beam_follower(sub) -> None:
                    help=f"augmented (multipliers, Baumgarte) or partitioned (coordinate "
                         f"partitioning, paper (21)-(27)); default {dflt['formulation']}")
     b.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    b.add_argument("--no-error-estimate", action="store_true",
+                    help="skip the second, more accurate run that estimates each headline figure's error (sweeps)")
     b.add_argument("--out", default=None, metavar="DIR",
                    help="also write the paper's figs 4-9 (tip deflection against cam angle, one "
                         "parameter varied; 18 runs) as PNG into DIR")

@@ -140,6 +140,26 @@ def run(scene: Scene, progress=None, method=None) -> tuple[dict, object]:
     return summary, res
 
 
+FIGURES = ("Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_rise", "U0dd", "U0", "speed_variation_max",
+           "motor_speed_variation_max")
+"""The headline figures of a scene's summary that get an error estimate."""
+
+
+def errors(scene: Scene, summary: dict) -> dict:
+    """``<figure>_error`` for the headline figures of ``summary`` (and ``jump_T_error``): the
+    scene run again at rtol/10 (runtime/accuracy.py)."""
+    from . import accuracy
+
+    method = accuracy.tighter_method(DP54(rtol=scene.rtol))
+    tight = None if method is None else run(scene, method=method)[0]
+    out = accuracy.errors(summary, tight, FIGURES, "dp54")
+    jump = summary["jump"]
+    if jump["occurs"]:
+        T_t = None if tight is None else tight["jump"]["T"]
+        out["jump_T_error"] = None if T_t is None else abs(jump["T"] - T_t)
+    return out
+
+
 def nominal_T(scene: Scene, res) -> np.ndarray:
     """Dimensionless time of the nominal motion, T = w_s t/beta_m + T_start."""
     t_m = res.params["beta_m"] / res.params["omega_s"]
