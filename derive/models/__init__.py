@@ -5,7 +5,7 @@ Each entry maps the generated module name to a function returning the
 """
 from functools import partial
 
-from . import beam, camshaft1, camshaft2, chain3, dynacam, motor, one_dof, pendulum
+from . import beam, camshaft1, camshaft2, chain3, dynacam, motor, one_dof, roller, pendulum
 
 REGISTRY = {
     "one_dof": one_dof.build,
@@ -14,6 +14,7 @@ REGISTRY = {
     "chain3": chain3.build,
     "motor1": motor.build_first_order,
     "motor2": motor.build_second_order,
+    "roller": roller.build,
     # the second constrained model, a pendulum in dependent coordinates: the constraint layer
     # (dae.py) serves any declaration, not the beam follower only
     "pendulum_xy": pendulum.build,
