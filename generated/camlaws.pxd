@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a4422733091eb47d63705f60f1b24311e81dba46aa1a94062958d80231283926
-# Text hash: sha256:e24f25eaab93afbac3dcd36b19c86b509cb8d0f2ca88afa2e571e61688b68441
+# Derivation key: sha256:cbe8e072b9a8970144e7d10a199da146abc02cf8bee61f7e3eeb640e219d2ad5
+# Text hash: sha256:af77e3992643e8ae847e30111f90042e4703b8c220ecc99f54467adf7f092253
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),

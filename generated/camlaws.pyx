@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a4422733091eb47d63705f60f1b24311e81dba46aa1a94062958d80231283926
-# Text hash: sha256:3f6ca2b24a6603e6e42d9485718d20bb2d41b992fa846a1a546044669eb267fa
+# Derivation key: sha256:cbe8e072b9a8970144e7d10a199da146abc02cf8bee61f7e3eeb640e219d2ad5
+# Text hash: sha256:57e5c8510f658f7d6a12ccb770c146cb9c30d1fd78be5b62925321db15c0a51e
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.
