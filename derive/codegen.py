@@ -197,6 +197,102 @@ def _rhs_expressions(m: Model, eq: Equations, plain: _Plain):
     return list(M) + list(f) + rates, False
 
 
+def _state_symbols(m: Model) -> list:
+    """Plain symbols of the states in their order y = [q, q', z]."""
+    return ([sp.Symbol(c.name, real=True) for c in m.coordinates]
+            + [sp.Symbol(c.name + "d", real=True) for c in m.coordinates]
+            + [sp.Symbol(z.name, real=True) for z in m.first_order])
+
+
+def _cam_symbol(i: int, k: int) -> sp.Symbol:
+    return sp.Symbol(f"_cam{i}_{k}", real=True)
+
+
+def jacobian_plain(exprs, plain: _Plain, ys: list) -> list:
+    """Rows d e/d y of the plain expressions ``exprs`` with respect to the plain states ``ys``.
+
+    A cam input value ``_cam{i}_{k}`` = d^k H/darg^k at the instance's argument a_i depends on a
+    state through a_i: its derivative is ``_cam{i}_{k+1}`` * d a_i/d y (the chain rule the
+    plain symbols hide), so the rows may use one derivative order more than the expressions;
+    its name is added to ``plain.names``.  The cam-law library evaluates H up to H''': an
+    order above that is refused.  Piecewise expressions (modes, squeeze gaps, friction)
+    differentiate branch by branch: the Jacobian of the current mode, modes being switched by
+    events.  d sign(x)/dx (a Dirac delta at the switching surface) is 0: the Jacobian away
+    from it."""
+    cams = [[_cam_symbol(i, k) for k in range(CamFunction.max_order + 1)]
+            for i in range(len(plain.instances))]
+    dargs = [[sp.diff(arg, y) for y in ys] for _, arg in plain.instances]
+    rows = []
+    for e in exprs:
+        e = sp.sympify(e)
+        free = e.free_symbols
+        chain = []   # (d e/d cam_ik, i, k) for the cam values e uses
+        for i, syms in enumerate(cams):
+            for k, s in enumerate(syms):
+                if s in free:
+                    chain.append((sp.diff(e, s), i, k))
+        row = []
+        for j, y in enumerate(ys):
+            d = sp.diff(e, y) if y in free else sp.S.Zero
+            for de, i, k in chain:
+                if dargs[i][j] == 0 or de == 0:
+                    continue
+                if k + 1 > CamFunction.max_order:
+                    raise NotImplementedError(
+                        f"{plain.model.name}: the Jacobian needs d^{k + 1}H/darg^{k + 1} of cam "
+                        f"input {i}, above the order {CamFunction.max_order} the cam-law "
+                        "library evaluates")
+                up = cams[i][k + 1]
+                plain.names.setdefault(up, f"_cam{i}[{k + 1}]")
+                d += de * up * dargs[i][j]
+            if d.has(sp.DiracDelta):
+                d = d.replace(sp.DiracDelta, lambda *a: sp.S.Zero)
+            if d.has(sp.Derivative, sp.Subs):
+                raise NotImplementedError(f"{plain.model.name}: an unevaluated derivative in "
+                                          f"the Jacobian: {d}")
+            row.append(d)
+        rows.append(row)
+    return rows
+
+
+def _jacobian_context(m: Model, plain: _Plain, diagonal: bool, rhs_exprs: list,
+                      consts: ConstantTable):
+    """(sparse Jacobian entries (row, column, expr), the entries R of the non-diagonal
+    correction) of the general (not dwell-specialised) right-hand side.
+
+    Diagonal M: rows n.. of d(dy/dt)/dy differentiate q'' = f/M and z' directly.  Else
+    q'' = M^-1 f and d q''/dy_j = M^-1 (df/dy_j - dM/dy_j q''): the template solves M (the
+    entries of ``rhs_exprs``) for q'', evaluates R_ij = df_i/dy_j - sum_k dM_ik/dy_j q''_k
+    (row-major n x n_states) with q'' as the symbols ``Xdd`` and solves M X = R column by
+    column.  Rows 0..n-1 (d q'/dy, the identity block) are written by the template.
+    """
+    n = len(m.coordinates)
+    ys = _state_symbols(m)
+    ns = len(ys)
+    entries = []
+    if diagonal:
+        for i, row in enumerate(jacobian_plain(rhs_exprs, plain, ys)):
+            for j, d in enumerate(row):
+                if d != 0:
+                    entries.append((n + i, j, consts.hoist(d)))
+        return entries, []
+    qdd = [sp.Symbol(c.name + "dd", real=True) for c in m.coordinates]
+    M = rhs_exprs[:n * n]
+    f = rhs_exprs[n * n:n * n + n]
+    rates = rhs_exprs[n * n + n:]
+    dM = jacobian_plain(M, plain, ys)
+    df = jacobian_plain(f, plain, ys)
+    R = []
+    for i in range(n):
+        for j in range(ns):
+            R.append(consts.hoist(df[i][j] - sum(dM[i * n + k][j] * qdd[k] for k in range(n))))
+    for i, row in enumerate(jacobian_plain(rates, plain, ys)):
+        for j, d in enumerate(row):
+            if d != 0:
+                entries.append((2 * n + i, j, consts.hoist(d)))
+    return entries, R
+
+
 def _event_entries(m: Model, plain: _Plain, printer: CythonPrinter) -> list:
     """The model's own events, with their arming condition and branches (modes, resets)."""
     modes = {mode.name: mode for mode in m.modes}
@@ -254,6 +350,8 @@ def _model_manifest(m: Model, eq: Equations, instances: list, events: list) -> d
             "error": m.residual.error, "acceleration": m.residual.acceleration,
             "rise_end": m.residual.rise_end, "rise_state": m.residual.rise_state},
         "options": [list(o) if isinstance(o, tuple) else o for o in m.options],
+        # d(dy/dt)/dy (ModelC.jac): derived symbolically with the equations
+        "jacobian": "symbolic",
     }
     canonical = json.dumps({"M": sp.srepr(eq.M), "f": sp.srepr(eq.f), "Phi": sp.srepr(eq.Phi),
                             "rates": [sp.srepr(z.rate) for z in m.first_order],
@@ -296,6 +394,8 @@ def model_context(eq: Equations) -> dict:
     if all(v == variants[0] for v in variants[1:]):   # the dwell changes nothing here
         specialise, variants = False, variants[:1]
     out_exprs = [consts.hoist(plain(o.expr)) for o in m.outputs]
+    # the Jacobian of the general right-hand side (it may add cam derivative names)
+    jac_entries, jac_R = _jacobian_context(m, plain, diagonal, rhs_exprs, consts)
     names = dict(plain.names)
     names.update({k: k.name for k, _ in consts.items})
 
@@ -308,6 +408,20 @@ def model_context(eq: Equations) -> dict:
     qdd_names = {s: f"_dy[{n + i}]" for i, s in enumerate(qdd_syms)}
     out_lines, out_code, u = cse_block(out_exprs, names | qdd_names, prefix="_o")
     used |= u
+    if diagonal:
+        jac_sys_lines, jac_sys_code = [], []
+    else:   # M and f, solved for q'' before the correction R is evaluated
+        jac_sys_lines, jac_sys_code, u = cse_block(
+            [consts.hoist(e) for e in rhs_exprs[:n * n + n]], names, prefix="_a")
+        used |= u
+    jac_lines, jac_code, u = cse_block(jac_R + [e for _, _, e in jac_entries],
+                                       names | {s: f"_qdd[{i}]" for i, s in enumerate(qdd_syms)},
+                                       prefix="_j")
+    used |= u
+    jac = {"sys_lines": jac_sys_lines, "sys_code": jac_sys_code, "lines": jac_lines,
+           "R": jac_code[:len(jac_R)],
+           "entries": [(r * (2 * n + nz) + c, code)
+                       for (r, c, _), code in zip(jac_entries, jac_code[len(jac_R):])]}
     const_lines, const_code, u = cse_block([e for _, e in consts.items], names, prefix="_c")
     used |= u
     ms_lines, ms_code, u = cse_block(list(eq.M.applyfunc(plain)) + list(K_raw.applyfunc(plain)),
@@ -357,6 +471,7 @@ def model_context(eq: Equations) -> dict:
         "out_code": out_code,
         "ms_lines": ms_lines,
         "ms_code": ms_code,
+        "jac": jac,
         "events": events,
         "math": used,
         "manifest_json": json.dumps(manifest, indent=1, sort_keys=True),

@@ -122,6 +122,8 @@ def constrained_context(eq: Equations) -> dict:
         "events": [e.name for e in m.events],
         "residual": None,
         "options": [list(o) if isinstance(o, tuple) else o for o in m.options],
+        # d(dy/dt)/dy (ModelC.jac): central differences of the compiled rhs (template)
+        "jacobian": "finite-difference",
     }
     canonical = json.dumps({"M": sp.srepr(eq.M), "f": sp.srepr(eq.f), "Phi": sp.srepr(eq.Phi),
                             "events": [sp.srepr(e.g) for e in m.events],
@@ -155,6 +157,7 @@ def constrained_context(eq: Equations) -> dict:
         "solver": solver,
         "math": used,
         "initial_code": initial_code,
+        "scales": [repr(float(c.scale)) for c in m.coordinates] * 2,
         "manifest_json": json.dumps(manifest, indent=1, sort_keys=True),
         "source_hash": manifest["source_hash"],
     }

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:08904cbb780c55f239282c37664537aa35b50e67a02c06da59571c09f164028a
-# Text hash: sha256:bc45a758e2397b592feb5f93282e7388a4aa5ac7558d4616fcd57be1349b9162
+# Derivation key: sha256:011c00720fa19ab195747cb6e107f7764153d9b99709641581237c67ec5974e9
+# Text hash: sha256:09341b90acfa09c12b146c16326f5a6a3b74245e7ee715c6e4bad2fc270322d7
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
-# Source hash: sha256:160cad58c6b9acf14d533c22d9cb47736cc569bdcad675d0bd7590b43794dd60
+# Source hash: sha256:78f7890af05f0d7cbc1a97f2df27b3a223fc1176389818e93d00f4462115a453
 #
 # The Rayleigh-beam follower: a translating roller follower in the groove of a rigid disk cam,
 # its rod a Rayleigh beam whose free length changes as the cam turns (second source paper,
@@ -1141,6 +1141,54 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
             _Km[i * _NQ + j] = 0.0 / 0.0
 
 
+cdef double _SCALE[_NS]  # typical magnitude of each state (manifest "scale"): the difference steps
+_SCALE[0] = 1e-05
+_SCALE[1] = 1e-05
+_SCALE[2] = 0.05
+_SCALE[3] = 1.0
+_SCALE[4] = 1e-05
+_SCALE[5] = 1e-05
+_SCALE[6] = 0.05
+_SCALE[7] = 1.0
+
+
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, by central differences of rhs() in C (the
+    manifest says "finite-difference"), extrapolated (Richardson) from the steps h_j and h_j/2,
+    h_j = 1e-3 scale_j: truncation O(h^4), rounding O(eps |f|/h), both far below 1e-6 relative
+    where the right-hand side is smooth over the step (a step across a cam breakpoint sees its
+    kink).  The symbolic Jacobian of the augmented system (A^-1 (db/dy - dA/dy x)) is not
+    generated: it needs one derivative more of a cam profile than the cam-law library gives
+    (order 4), the partitioned formulation recovers the dependent coordinates by Newton's
+    method, and the systems are large; differences are what the implicit method's iteration
+    matrix needs."""
+    cdef double _yp[_NS]
+    cdef double _f1[_NS]
+    cdef double _f2[_NS]
+    cdef double _f3[_NS]
+    cdef double _f4[_NS]
+    cdef double _h, _a1, _b1, _a2, _b2
+    cdef int i, j
+    for i in range(_NS):
+        _yp[i] = _y[i]
+    for j in range(_NS):
+        _h = 1e-3 * _SCALE[j]
+        _a1, _b1 = _y[j] + _h, _y[j] - _h
+        _a2, _b2 = _y[j] + 0.5 * _h, _y[j] - 0.5 * _h
+        _yp[j] = _a1
+        rhs(t, _yp, _f1, ctx)
+        _yp[j] = _b1
+        rhs(t, _yp, _f2, ctx)
+        _yp[j] = _a2
+        rhs(t, _yp, _f3, ctx)
+        _yp[j] = _b2
+        rhs(t, _yp, _f4, ctx)
+        _yp[j] = _y[j]
+        for i in range(_NS):
+            _J[i * _NS + j] = (4.0 * (_f3[i] - _f4[i]) / (_a2 - _b2)
+                               - (_f1[i] - _f2[i]) / (_a1 - _b1)) / 3.0
+
+
 cdef void refresh(Ctx* ctx) noexcept nogil:
     """No modes: a cam profile is evaluated afresh at every call."""
     ctx.variant = 0
@@ -1381,6 +1429,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -1415,6 +1464,7 @@ _MANIFEST_JSON = """
   "segment_up",
   "segment_down"
  ],
+ "jacobian": "finite-difference",
  "modes": [],
  "n_constraints": 2,
  "n_q": 4,
@@ -1640,7 +1690,7 @@ _MANIFEST_JSON = """
   "baumgarte_rate": "w_B",
   "formulation": "formulation"
  },
- "source_hash": "sha256:160cad58c6b9acf14d533c22d9cb47736cc569bdcad675d0bd7590b43794dd60",
+ "source_hash": "sha256:78f7890af05f0d7cbc1a97f2df27b3a223fc1176389818e93d00f4462115a453",
  "states": [
   {
    "doc": "amplitude of the assumed mode (x/d)^2 (13)",

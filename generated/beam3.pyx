@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:dd48680d896baeaad41058683d19e126d9dab86f765f9fdbf027b1a28133494b
-# Text hash: sha256:5e4d48d630074baa3a62841dbfc8d964a6bbd01e8aea1ac0d26c9e4679f4d00b
+# Derivation key: sha256:a604f85e49d2d177fa5c7de3432993c6a72a4977fb3fdf4952129243bb3adf4f
+# Text hash: sha256:fdd4c06f000ccca2598cbbee488c21187994155016c2ffe5a894ca9f4deb36fe
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
-# Source hash: sha256:8071791453c5c8c577f1faa2eee4b01800761f0b7f78c672731cc8a4f2307789
+# Source hash: sha256:1995514ee23bf2a387c3e316d939e577766058354c944b09ea000874730d2f77
 #
 # The Rayleigh-beam follower: a translating roller follower in the groove of a rigid disk cam,
 # its rod a Rayleigh beam whose free length changes as the cam turns (second source paper,
@@ -1592,6 +1592,56 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
             _Km[i * _NQ + j] = 0.0 / 0.0
 
 
+cdef double _SCALE[_NS]  # typical magnitude of each state (manifest "scale"): the difference steps
+_SCALE[0] = 1e-05
+_SCALE[1] = 1e-05
+_SCALE[2] = 1e-05
+_SCALE[3] = 0.05
+_SCALE[4] = 1.0
+_SCALE[5] = 1e-05
+_SCALE[6] = 1e-05
+_SCALE[7] = 1e-05
+_SCALE[8] = 0.05
+_SCALE[9] = 1.0
+
+
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, by central differences of rhs() in C (the
+    manifest says "finite-difference"), extrapolated (Richardson) from the steps h_j and h_j/2,
+    h_j = 1e-3 scale_j: truncation O(h^4), rounding O(eps |f|/h), both far below 1e-6 relative
+    where the right-hand side is smooth over the step (a step across a cam breakpoint sees its
+    kink).  The symbolic Jacobian of the augmented system (A^-1 (db/dy - dA/dy x)) is not
+    generated: it needs one derivative more of a cam profile than the cam-law library gives
+    (order 4), the partitioned formulation recovers the dependent coordinates by Newton's
+    method, and the systems are large; differences are what the implicit method's iteration
+    matrix needs."""
+    cdef double _yp[_NS]
+    cdef double _f1[_NS]
+    cdef double _f2[_NS]
+    cdef double _f3[_NS]
+    cdef double _f4[_NS]
+    cdef double _h, _a1, _b1, _a2, _b2
+    cdef int i, j
+    for i in range(_NS):
+        _yp[i] = _y[i]
+    for j in range(_NS):
+        _h = 1e-3 * _SCALE[j]
+        _a1, _b1 = _y[j] + _h, _y[j] - _h
+        _a2, _b2 = _y[j] + 0.5 * _h, _y[j] - 0.5 * _h
+        _yp[j] = _a1
+        rhs(t, _yp, _f1, ctx)
+        _yp[j] = _b1
+        rhs(t, _yp, _f2, ctx)
+        _yp[j] = _a2
+        rhs(t, _yp, _f3, ctx)
+        _yp[j] = _b2
+        rhs(t, _yp, _f4, ctx)
+        _yp[j] = _y[j]
+        for i in range(_NS):
+            _J[i * _NS + j] = (4.0 * (_f3[i] - _f4[i]) / (_a2 - _b2)
+                               - (_f1[i] - _f2[i]) / (_a1 - _b1)) / 3.0
+
+
 cdef void refresh(Ctx* ctx) noexcept nogil:
     """No modes: a cam profile is evaluated afresh at every call."""
     ctx.variant = 0
@@ -1924,6 +1974,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -1958,6 +2009,7 @@ _MANIFEST_JSON = """
   "segment_up",
   "segment_down"
  ],
+ "jacobian": "finite-difference",
  "modes": [],
  "n_constraints": 2,
  "n_q": 5,
@@ -2183,7 +2235,7 @@ _MANIFEST_JSON = """
   "baumgarte_rate": "w_B",
   "formulation": "formulation"
  },
- "source_hash": "sha256:8071791453c5c8c577f1faa2eee4b01800761f0b7f78c672731cc8a4f2307789",
+ "source_hash": "sha256:1995514ee23bf2a387c3e316d939e577766058354c944b09ea000874730d2f77",
  "states": [
   {
    "doc": "amplitude of the assumed mode (x/d)^2 (13)",

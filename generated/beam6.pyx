@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a1c4912aaa2b1b4e7919b9b5b1570452b6d018b38989a83ae246aa3240356bcb
-# Text hash: sha256:e25a235dc137fce5047ee7134b4d56b4b0865716b815e96e48e13c78a7bfd547
+# Derivation key: sha256:a57fba212ed3bf50abe337a21031617bed2047edfdf3f0972f3b3d3d62560041
+# Text hash: sha256:8159eae7c719dc2e2824d8cfdc011b8269b0ae545b062405cd30720ab3bd99cf
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
-# Source hash: sha256:d60f78337cacc85ab2715ff223f24bab4eb7a5330354c7322853fc2211c7796e
+# Source hash: sha256:0fe486664fd6bf30c39722ff29faf89fc0ef2fe2dafedd250fc815b51f862f63
 #
 # The Rayleigh-beam follower: a translating roller follower in the groove of a rigid disk cam,
 # its rod a Rayleigh beam whose free length changes as the cam turns (second source paper,
@@ -3689,6 +3689,62 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
             _Km[i * _NQ + j] = 0.0 / 0.0
 
 
+cdef double _SCALE[_NS]  # typical magnitude of each state (manifest "scale"): the difference steps
+_SCALE[0] = 1e-05
+_SCALE[1] = 1e-05
+_SCALE[2] = 1e-05
+_SCALE[3] = 1e-05
+_SCALE[4] = 1e-05
+_SCALE[5] = 1e-05
+_SCALE[6] = 0.05
+_SCALE[7] = 1.0
+_SCALE[8] = 1e-05
+_SCALE[9] = 1e-05
+_SCALE[10] = 1e-05
+_SCALE[11] = 1e-05
+_SCALE[12] = 1e-05
+_SCALE[13] = 1e-05
+_SCALE[14] = 0.05
+_SCALE[15] = 1.0
+
+
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, by central differences of rhs() in C (the
+    manifest says "finite-difference"), extrapolated (Richardson) from the steps h_j and h_j/2,
+    h_j = 1e-3 scale_j: truncation O(h^4), rounding O(eps |f|/h), both far below 1e-6 relative
+    where the right-hand side is smooth over the step (a step across a cam breakpoint sees its
+    kink).  The symbolic Jacobian of the augmented system (A^-1 (db/dy - dA/dy x)) is not
+    generated: it needs one derivative more of a cam profile than the cam-law library gives
+    (order 4), the partitioned formulation recovers the dependent coordinates by Newton's
+    method, and the systems are large; differences are what the implicit method's iteration
+    matrix needs."""
+    cdef double _yp[_NS]
+    cdef double _f1[_NS]
+    cdef double _f2[_NS]
+    cdef double _f3[_NS]
+    cdef double _f4[_NS]
+    cdef double _h, _a1, _b1, _a2, _b2
+    cdef int i, j
+    for i in range(_NS):
+        _yp[i] = _y[i]
+    for j in range(_NS):
+        _h = 1e-3 * _SCALE[j]
+        _a1, _b1 = _y[j] + _h, _y[j] - _h
+        _a2, _b2 = _y[j] + 0.5 * _h, _y[j] - 0.5 * _h
+        _yp[j] = _a1
+        rhs(t, _yp, _f1, ctx)
+        _yp[j] = _b1
+        rhs(t, _yp, _f2, ctx)
+        _yp[j] = _a2
+        rhs(t, _yp, _f3, ctx)
+        _yp[j] = _b2
+        rhs(t, _yp, _f4, ctx)
+        _yp[j] = _y[j]
+        for i in range(_NS):
+            _J[i * _NS + j] = (4.0 * (_f3[i] - _f4[i]) / (_a2 - _b2)
+                               - (_f1[i] - _f2[i]) / (_a1 - _b1)) / 3.0
+
+
 cdef void refresh(Ctx* ctx) noexcept nogil:
     """No modes: a cam profile is evaluated afresh at every call."""
     ctx.variant = 0
@@ -4456,6 +4512,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -4490,6 +4547,7 @@ _MANIFEST_JSON = """
   "segment_up",
   "segment_down"
  ],
+ "jacobian": "finite-difference",
  "modes": [],
  "n_constraints": 2,
  "n_q": 8,
@@ -4715,7 +4773,7 @@ _MANIFEST_JSON = """
   "baumgarte_rate": "w_B",
   "formulation": "formulation"
  },
- "source_hash": "sha256:d60f78337cacc85ab2715ff223f24bab4eb7a5330354c7322853fc2211c7796e",
+ "source_hash": "sha256:0fe486664fd6bf30c39722ff29faf89fc0ef2fe2dafedd250fc815b51f862f63",
  "states": [
   {
    "doc": "amplitude of the assumed mode (x/d)^2 (13)",

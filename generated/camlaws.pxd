@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a4422733091eb47d63705f60f1b24311e81dba46aa1a94062958d80231283926
-# Text hash: sha256:e24f25eaab93afbac3dcd36b19c86b509cb8d0f2ca88afa2e571e61688b68441
+# Derivation key: sha256:8e729db1f85020c12b9f7f5693e4b2f64fdd8a31ca4a9008b6d0d4ab693a1a81
+# Text hash: sha256:216994944a5bb2a406c6c20bedadac5b3f83378bee0565b88558eca58a40fa0e
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a4422733091eb47d63705f60f1b24311e81dba46aa1a94062958d80231283926
-# Text hash: sha256:3f6ca2b24a6603e6e42d9485718d20bb2d41b992fa846a1a546044669eb267fa
+# Derivation key: sha256:8e729db1f85020c12b9f7f5693e4b2f64fdd8a31ca4a9008b6d0d4ab693a1a81
+# Text hash: sha256:c72e99c8053045ec5e65943ad061b06bd5b8781a43be3a5bcf7691bbf6191fbc
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fbd933de7f636f4f01ddae2dfd34dba41ee9aa9523e2e4fad8e8b06676ad07de
-# Text hash: sha256:5f5f45107b3ed08ee708e50314548b4226993875aafafbdbf23afc02a86e3b14
+# Derivation key: sha256:6af487520ee1aa93313d9e13ad951d4af8de996534d0c8dda301ded744c8630d
+# Text hash: sha256:3fa37091711fe57b3a86b3dc2d618c5d87a764e19b5b812d8ef0ce5aca8a2c66
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
-# Source hash: sha256:11095417643cf9097a3900ed13598f188b7a3cfe598b6ca63a6411c1f013edca
+# Source hash: sha256:f01a70f6e6b79e15c5fd2d981c5804e2cb64ac4ef41c2bf10add43b5b1e57712
 #
 # CAMSHAFT-1: one DOF with variable fictitious angular velocity, thesis ch. 4.
 #
@@ -55,7 +55,9 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     """Parameter-only subexpressions, once per run, into ctx.k."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
-    ctx.k[0] = 39.47841760435743*(1.0/(tau*tau))  # _k0
+    cdef double _c0 = 39.47841760435743*(1.0/(tau*tau))
+    ctx.k[0] = _c0  # _k0
+    ctx.k[1] = -_c0  # _k1
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -63,6 +65,7 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
     cdef double _cam0[4]  # H(T) and its derivatives
@@ -96,6 +99,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
     cdef double Xdd = _dy[1]
@@ -115,6 +119,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
     cdef double _cam0[4]  # H(T) and its derivatives
@@ -122,6 +127,27 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
 
     _Mm[0] = 1.0
     _Km[0] = 39.47841760435743*1.0/((tau*tau)*(Fa*(_cam0[1]*_cam0[1]) + 1.0))
+
+
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
+    of the general right-hand side in the current modes, a cam input in a dwell taking its
+    dwell values."""
+    cdef double tau = ctx.p[0]
+    cdef double Fa = ctx.p[1]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double X = _y[0]
+    cdef double Xd = _y[1]
+    cdef double _cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
+
+    cdef int _k
+    for _k in range(4):
+        _J[_k] = 0.0
+    for _k in range(1):
+        _J[_k * 3 + 1] = 1.0  # d q'/d q'
+    _J[2] = _k1/(Fa*(_cam0[1]*_cam0[1]) + 1.0)
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -139,6 +165,7 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
 
@@ -188,7 +215,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 1
+_model.n_const = 2
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -198,6 +225,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -216,6 +244,7 @@ _MANIFEST_JSON = """
   }
  ],
  "events": [],
+ "jacobian": "symbolic",
  "modes": [],
  "n_q": 1,
  "name": "camshaft1",
@@ -283,7 +312,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:11095417643cf9097a3900ed13598f188b7a3cfe598b6ca63a6411c1f013edca",
+ "source_hash": "sha256:f01a70f6e6b79e15c5fd2d981c5804e2cb64ac4ef41c2bf10add43b5b1e57712",
  "states": [
   {
    "doc": "follower position over the stroke, X = x/h_m'",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7f8aef885994a4df45fc07e9d9b01ee5da0d2b778d977da62fccba80ad7c8687
-# Text hash: sha256:a0a354c1de23572ffc86e7a32c428830c7a04ddde15fbc987b179ef94b9f90ac
+# Derivation key: sha256:c77e13e6f4dbc863af55c6b3a064955ab95931a02afd8d872dca091773064309
+# Text hash: sha256:a82d3d409ac69a46888be82410f83cfabbe43e875b2cb716006345d1926ceab8
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
-# Source hash: sha256:7ff133aa9f410e0fe4c5f6a1d8576149a68eeec6de62eafebd892efe8aa84d00
+# Source hash: sha256:30c2e2c54135369bb66802da83c9643f2cf13c9f8ba5b79248ab4f2224fd099d
 #
 # CAMSHAFT-2: follower and cam angle, thesis ch. 5, figs 5.1-5.3.
 #
@@ -60,8 +60,14 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double Fa = ctx.p[1]
     cdef double Fv = ctx.p[2]
     cdef double _c0 = 39.47841760435743*(1.0/(tau*tau))
+    cdef double _c1 = Fv*_c0
+    cdef double _c2 = _c1/Fa
     ctx.k[0] = _c0  # _k0
-    ctx.k[1] = Fv*_c0/Fa  # _k1
+    ctx.k[1] = _c2  # _k1
+    ctx.k[2] = -_c0  # _k2
+    ctx.k[3] = _c1  # _k3
+    ctx.k[4] = -_c1  # _k4
+    ctx.k[5] = -_c2  # _k5
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -71,6 +77,10 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double Fv = ctx.p[2]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
     cdef double X = _y[0]
     cdef double B = _y[1]
     cdef double Xd = _y[2]
@@ -113,6 +123,10 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double Fv = ctx.p[2]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
     cdef double X = _y[0]
     cdef double B = _y[1]
     cdef double Xd = _y[2]
@@ -138,6 +152,10 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double Fv = ctx.p[2]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
     cdef double X = _y[0]
     cdef double B = _y[1]
     cdef double Xd = _y[2]
@@ -157,6 +175,37 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[3] = _m0*(Fa*(_cam0[1]*_cam0[1]) - Fa*_cam0[2]*(X - _cam0[0]) + 1.0)/Fa
 
 
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
+    of the general right-hand side in the current modes, a cam input in a dwell taking its
+    dwell values."""
+    cdef double tau = ctx.p[0]
+    cdef double Fa = ctx.p[1]
+    cdef double Fv = ctx.p[2]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double X = _y[0]
+    cdef double B = _y[1]
+    cdef double Xd = _y[2]
+    cdef double Bd = _y[3]
+    cdef double _cam0[4]  # H(B) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], B, _cam0)
+
+    cdef int _k
+    for _k in range(16):
+        _J[_k] = 0.0
+    for _k in range(2):
+        _J[_k * 5 + 2] = 1.0  # d q'/d q'
+    _J[8] = _k2
+    _J[9] = _cam0[1]*_k0
+    _J[12] = _cam0[1]*_k3
+    _J[13] = (_cam0[1]*_cam0[1])*_k4 + _cam0[2]*_k3*(X - _cam0[0]) + _k5
+
+
 cdef void refresh(Ctx* ctx) noexcept nogil:
     """ctx.variant from the modes (bit i set when cam input i sits in a dwell); the cam
     cache is emptied, its entries belong to the old segments."""
@@ -174,6 +223,10 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double Fv = ctx.p[2]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
     cdef double X = _y[0]
     cdef double B = _y[1]
     cdef double Xd = _y[2]
@@ -190,6 +243,10 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double Fv = ctx.p[2]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
     cdef double X = _y[0]
     cdef double B = _y[1]
     cdef double Xd = _y[2]
@@ -208,6 +265,10 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double Fv = ctx.p[2]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
     cdef double X = _y[0]
     cdef double B = _y[1]
     cdef double Xd = _y[2]
@@ -256,7 +317,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 2
+_model.n_const = 6
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -266,6 +327,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -287,6 +349,7 @@ _MANIFEST_JSON = """
   "cam0_hi",
   "cam0_lo"
  ],
+ "jacobian": "symbolic",
  "modes": [],
  "n_q": 2,
  "name": "camshaft2",
@@ -370,7 +433,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:7ff133aa9f410e0fe4c5f6a1d8576149a68eeec6de62eafebd892efe8aa84d00",
+ "source_hash": "sha256:30c2e2c54135369bb66802da83c9643f2cf13c9f8ba5b79248ab4f2224fd099d",
  "states": [
   {
    "doc": "follower position over the stroke, X = x/h_m'",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d338f033080acbb92029eeacd7cdcb8b5bbdef667886d174c8c41631d8a9f94e
-# Text hash: sha256:6675093bba16f14624e559535ed23967be555bc157b642216edf3c8d057d4ada
+# Derivation key: sha256:a4742da95942ea73bde63e4eb821fc701f77ebd5f4a8b16e0f01ba8cf93232ce
+# Text hash: sha256:42b7fd32be02db4db7981d003f00d062267fd783c43debfb15734841e00715ca
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
-# Source hash: sha256:e1c62cc1d141de24664a5c402adec44384d1978e0cde22eb2e227011884d378e
+# Source hash: sha256:806a3b93fbc8a678464e19f0ad6c91940cc12473a197026e892f70a5be2771f5
 #
 # Three-DOF chain at constant fictitious angular velocity, thesis sec. 3.7, figs 3.6 and 3.7.
 #
@@ -58,14 +58,20 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double c3 = ctx.p[6]
     cdef double _c0 = 39.47841760435743*(1.0/(tau*tau))
     cdef double _c1 = _c0/m1
-    cdef double _c2 = _c0/m2
+    cdef double _c2 = -_c1*(c1 + c2)
+    cdef double _c3 = _c0/m2
+    cdef double _c4 = -_c3*(c2 + c3)
+    cdef double _c5 = _c0*c3/m3
     ctx.k[0] = _c1*c2  # _k0
     ctx.k[1] = _c1*c1  # _k1
-    ctx.k[2] = -_c1*(c1 + c2)  # _k2
-    ctx.k[3] = _c2*c2  # _k3
-    ctx.k[4] = _c2*c3  # _k4
-    ctx.k[5] = -_c2*(c2 + c3)  # _k5
-    ctx.k[6] = _c0*c3/m3  # _k6
+    ctx.k[2] = _c2  # _k2
+    ctx.k[3] = _c3*c2  # _k3
+    ctx.k[4] = _c3*c3  # _k4
+    ctx.k[5] = _c4  # _k5
+    ctx.k[6] = _c5  # _k6
+    ctx.k[7] = _c2  # _k7
+    ctx.k[8] = _c4  # _k8
+    ctx.k[9] = -_c5  # _k9
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -84,6 +90,9 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k4 = ctx.k[4]
     cdef double _k5 = ctx.k[5]
     cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
     cdef double X1 = _y[0]
     cdef double X2 = _y[1]
     cdef double X3 = _y[2]
@@ -119,6 +128,9 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k4 = ctx.k[4]
     cdef double _k5 = ctx.k[5]
     cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
     cdef double X1 = _y[0]
     cdef double X2 = _y[1]
     cdef double X3 = _y[2]
@@ -155,6 +167,9 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k4 = ctx.k[4]
     cdef double _k5 = ctx.k[5]
     cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
     cdef double X1 = _y[0]
     cdef double X2 = _y[1]
     cdef double X3 = _y[2]
@@ -188,6 +203,50 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[8] = _m2
 
 
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
+    of the general right-hand side in the current modes, a cam input in a dwell taking its
+    dwell values."""
+    cdef double tau = ctx.p[0]
+    cdef double m1 = ctx.p[1]
+    cdef double m2 = ctx.p[2]
+    cdef double m3 = ctx.p[3]
+    cdef double c1 = ctx.p[4]
+    cdef double c2 = ctx.p[5]
+    cdef double c3 = ctx.p[6]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
+    cdef double X1 = _y[0]
+    cdef double X2 = _y[1]
+    cdef double X3 = _y[2]
+    cdef double X1d = _y[3]
+    cdef double X2d = _y[4]
+    cdef double X3d = _y[5]
+    cdef double _cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
+
+    cdef int _k
+    for _k in range(36):
+        _J[_k] = 0.0
+    for _k in range(3):
+        _J[_k * 7 + 3] = 1.0  # d q'/d q'
+    _J[18] = _k7
+    _J[19] = _k0
+    _J[24] = _k3
+    _J[25] = _k8
+    _J[26] = _k4
+    _J[31] = _k6
+    _J[32] = _k9
+
+
 cdef void refresh(Ctx* ctx) noexcept nogil:
     """ctx.variant from the modes (bit i set when cam input i sits in a dwell); the cam
     cache is emptied, its entries belong to the old segments."""
@@ -212,6 +271,9 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k4 = ctx.k[4]
     cdef double _k5 = ctx.k[5]
     cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
     cdef double X1 = _y[0]
     cdef double X2 = _y[1]
     cdef double X3 = _y[2]
@@ -275,7 +337,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 7
+_model.n_const = 10
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -285,6 +347,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -303,6 +366,7 @@ _MANIFEST_JSON = """
   }
  ],
  "events": [],
+ "jacobian": "symbolic",
  "modes": [],
  "n_q": 3,
  "name": "chain3",
@@ -420,7 +484,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:e1c62cc1d141de24664a5c402adec44384d1978e0cde22eb2e227011884d378e",
+ "source_hash": "sha256:806a3b93fbc8a678464e19f0ad6c91940cc12473a197026e892f70a5be2771f5",
  "states": [
   {
    "doc": "position of mass 1 over the stroke",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6edb4f79d9b6370a2ed4dfad13f23225d61cdfa75fc6cc9f117d3dfcd6d6b721
-# Text hash: sha256:1f47e7bdc51da23ee529bae846f81f6dfa2c49a091d44f5d3db6b97ad306a88f
+# Derivation key: sha256:aa52323558bf35c61eb104e92d6bbd347d768ba2b6cfc5da28614c16dcb4452d
+# Text hash: sha256:168f6fd5ee115e6fd40efcec1512ccedca83985f94256ef247dccbe7be8d23a1
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:82cb91462f5d01afa094cef50cff2640730911c258542d9a4d4313ff02efac50
+# Source hash: sha256:f088bfd9d8d2b4bc1fc4d262d063949d46169006a69df9b54facca0bec628623
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -125,9 +125,12 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c7 = _c3*h_m/_c6
     cdef double _c8 = 2.0*sqrt(J)*sqrt(k)*q_b
     cdef double _c9 = _c8*omega_s
-    cdef double _c10 = (1.0/m_y)
-    cdef double _c11 = (1.0/h_m)
-    cdef double _c12 = (1.0/(omega_s*omega_s))
+    cdef double _c10 = (1.0/J)
+    cdef double _c11 = (1.0/m_y)
+    cdef double _c12 = (1.0/m_z)
+    cdef double _c13 = (1.0/m_x)
+    cdef double _c14 = (1.0/h_m)
+    cdef double _c15 = (1.0/(omega_s*omega_s))
     ctx.k[0] = -c_x  # _k0
     ctx.k[1] = _c0  # _k1
     ctx.k[2] = -_c1  # _k2
@@ -143,20 +146,20 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[12] = -_c8  # _k12
     ctx.k[13] = _c9  # _k13
     ctx.k[14] = _c9 + k*s_g  # _k14
-    ctx.k[15] = (1.0/J)  # _k15
-    ctx.k[16] = -_c10*c_y  # _k16
+    ctx.k[15] = _c10  # _k15
+    ctx.k[16] = -_c11*c_y  # _k16
     ctx.k[17] = -2.0*sqrt(c_y)*q_y/sqrt(m_y)  # _k17
-    ctx.k[18] = _c10*_c5  # _k18
+    ctx.k[18] = _c11*_c5  # _k18
     ctx.k[19] = -c_z  # _k19
     ctx.k[20] = -2.0*sqrt(c_z)*sqrt(m_z)*q_z  # _k20
-    ctx.k[21] = (1.0/m_z)  # _k21
-    ctx.k[22] = (1.0/m_x)  # _k22
+    ctx.k[21] = _c12  # _k21
+    ctx.k[22] = _c13  # _k22
     ctx.k[23] = -beta_0  # _k23
     ctx.k[24] = _c2  # _k24
-    ctx.k[25] = _c11*_c12*_c6  # _k25
-    ctx.k[26] = _c12*beta_m  # _k26
+    ctx.k[25] = _c14*_c15*_c6  # _k25
+    ctx.k[26] = _c15*beta_m  # _k26
     ctx.k[27] = -h_m  # _k27
-    ctx.k[28] = _c11  # _k28
+    ctx.k[28] = _c14  # _k28
     ctx.k[29] = _c8  # _k29
     ctx.k[30] = _c4  # _k30
     ctx.k[31] = -_c7  # _k31
@@ -167,6 +170,13 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[36] = -_c3  # _k36
     ctx.k[37] = (1.0/omega_s)  # _k37
     ctx.k[38] = -s_g  # _k38
+    ctx.k[39] = _c10*_c2  # _k39
+    ctx.k[40] = -_c10*_c4  # _k40
+    ctx.k[41] = _c10*_c7  # _k41
+    ctx.k[42] = _c11*_c2  # _k42
+    ctx.k[43] = _c11*_c7  # _k43
+    ctx.k[44] = _c12*_c2  # _k44
+    ctx.k[45] = _c13*_c2  # _k45
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -229,6 +239,13 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
     cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -341,6 +358,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
     cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -438,6 +462,13 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
     cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -481,6 +512,166 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[13] = 0.0 / 0.0
     _Km[14] = 0.0 / 0.0
     _Km[15] = 0.0 / 0.0
+
+
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
+    of the general right-hand side in the current modes, a cam input in a dwell taking its
+    dwell values."""
+    cdef double h_m = ctx.p[0]
+    cdef double beta_m = ctx.p[1]
+    cdef double beta_0 = ctx.p[2]
+    cdef double R_b = ctx.p[3]
+    cdef double omega_s = ctx.p[4]
+    cdef double J = ctx.p[5]
+    cdef double k = ctx.p[6]
+    cdef double q_b = ctx.p[7]
+    cdef double m_x = ctx.p[8]
+    cdef double c_x = ctx.p[9]
+    cdef double q_x = ctx.p[10]
+    cdef double m_y = ctx.p[11]
+    cdef double c_y = ctx.p[12]
+    cdef double q_y = ctx.p[13]
+    cdef double m_z = ctx.p[14]
+    cdef double c_z = ctx.p[15]
+    cdef double q_z = ctx.p[16]
+    cdef double s_g = ctx.p[17]
+    cdef double s_r = ctx.p[18]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
+    cdef double _k10 = ctx.k[10]
+    cdef double _k11 = ctx.k[11]
+    cdef double _k12 = ctx.k[12]
+    cdef double _k13 = ctx.k[13]
+    cdef double _k14 = ctx.k[14]
+    cdef double _k15 = ctx.k[15]
+    cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
+    cdef double _k21 = ctx.k[21]
+    cdef double _k22 = ctx.k[22]
+    cdef double _k23 = ctx.k[23]
+    cdef double _k24 = ctx.k[24]
+    cdef double _k25 = ctx.k[25]
+    cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
+    cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
+    cdef double beta = _y[0]
+    cdef double y = _y[1]
+    cdef double z = _y[2]
+    cdef double x = _y[3]
+    cdef double betad = _y[4]
+    cdef double yd = _y[5]
+    cdef double zd = _y[6]
+    cdef double xd = _y[7]
+    cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
+
+    cdef int _k
+    for _k in range(64):
+        _J[_k] = 0.0
+    for _k in range(4):
+        _J[_k * 9 + 4] = 1.0  # d q'/d q'
+    cdef double _j0 = (ctx.mode[1] == 0.0)
+    cdef double _j1 = (ctx.mode[1] == 1.0)
+    cdef double _j2 = _cam0[1]*_k8
+    cdef double _j3 = _k9*y
+    cdef double _j4 = _cam0[2]*_j3
+    cdef double _j5 = (ctx.mode[2] == 0.0)
+    cdef double _j6 = (ctx.mode[2] == 1.0)
+    cdef double _j7 = ((_k1) if (_j5) else (((0.0) if (_j6) else (_k1))))
+    cdef double _j8 = _cam0[1]*_j7
+    cdef double _j9 = _k6*betad
+    cdef double _j10 = _j9*y
+    cdef double _j11 = ((_j10) if (_j5) else (((0.0) if (_j6) else (_j10))))
+    cdef double _j12 = _k3*y
+    cdef double _j13 = _k4*betad
+    cdef double _j14 = _k5*yd
+    cdef double _j15 = _cam0[0]*_k1 + _cam0[1]*_j12 + _cam0[1]*_j13 + _cam0[1]*_j14 + _cam0[2]*_j10 + _k0*x + _k0*z + _k2*xd + _k2*zd
+    cdef double _j16 = ((_j15) if (_j5) else (((0.0) if (_j6) else (_j15 + _k7))))
+    cdef double _j17 = _j12 + _j13 + _j14
+    cdef double _j18 = ((_j17) if (_j5) else (((0.0) if (_j6) else (_j17))))
+    cdef double _j19 = _cam0[2]*_j18
+    cdef double _j20 = _cam0[1]*_k3 + _cam0[2]*_j9
+    cdef double _j21 = ((_j20) if (_j5) else (((0.0) if (_j6) else (_j20))))
+    cdef double _j22 = _cam0[1]*_k40
+    cdef double _j23 = _cam0[2]*_k41
+    cdef double _j24 = _j23*y
+    cdef double _j25 = _j22 + _j24
+    cdef double _j26 = ((_k0) if (_j5) else (((0.0) if (_j6) else (_k0))))
+    cdef double _j27 = _j25*_j26
+    cdef double _j28 = _cam0[1]*_k4 + _cam0[2]*_k6*y
+    cdef double _j29 = ((_j28) if (_j5) else (((0.0) if (_j6) else (_j28))))
+    cdef double _j30 = _cam0[1]*_k5
+    cdef double _j31 = ((_j30) if (_j5) else (((0.0) if (_j6) else (_j30))))
+    cdef double _j32 = ((_k2) if (_j5) else (((0.0) if (_j6) else (_k2))))
+    cdef double _j33 = _j25*_j32
+    cdef double _j34 = _cam0[3]*_j11
+    cdef double _j35 = _cam0[1]*_k18
+    cdef double _j36 = _j26*_j35
+    cdef double _j37 = _j32*_j35
+    cdef double _j38 = _j19 + _j34 + _j8
+    cdef double _j39 = _j26*_k22
+    cdef double _j40 = _j32*_k22
+    _J[32] = _cam0[2]*_k39*(_j16*_k8 + _j18*_j2 + _j19*_j3) + _cam0[3]*_k39*(_j11*_j2 + _j11*_j4 + _j16*_j3) + _j8*_k39*(_j2 + _j4) + _k15*((_k10) if (_j0) else (((0.0) if (_j1) else (_k10))))
+    _J[33] = _j16*_j23 + _j21*_j22 + _j21*_j24
+    _J[34] = _j27
+    _J[35] = _j27
+    _J[36] = _k15*(_j2*_j29 + _j29*_j4 + ((_k12) if (_j0) else (((0.0) if (_j1) else (_k12)))))
+    _J[37] = _j25*_j31
+    _J[38] = _j33
+    _J[39] = _j33
+    _J[40] = (_cam0[1]*_cam0[1])*_j7*_k43 + _cam0[1]*_j34*_k43 + _cam0[2]*_k35*_k42*(_cam0[1]*_j18 + _j16)
+    _J[41] = _j21*_j35 + _k16
+    _J[42] = _j36
+    _J[43] = _j36
+    _J[44] = _j29*_j35
+    _J[45] = _j31*_j35 + _k17
+    _J[46] = _j37
+    _J[47] = _j37
+    _J[48] = _j38*_k44
+    _J[49] = _j21*_k21
+    _J[50] = _k21*(_j26 + _k19)
+    _J[51] = _j26*_k21
+    _J[52] = _j29*_k21
+    _J[53] = _j31*_k21
+    _J[54] = _k21*(_j32 + _k20)
+    _J[55] = _j32*_k21
+    _J[56] = _j38*_k45
+    _J[57] = _j21*_k22
+    _J[58] = _j39
+    _J[59] = _j39
+    _J[60] = _j29*_k22
+    _J[61] = _j31*_k22
+    _J[62] = _j40
+    _J[63] = _j40
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -553,6 +744,13 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
     cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -626,6 +824,13 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
     cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -709,6 +914,13 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k36 = ctx.k[36]
     cdef double _k37 = ctx.k[37]
     cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -817,7 +1029,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 39
+_model.n_const = 46
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -827,6 +1039,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -856,6 +1069,7 @@ _MANIFEST_JSON = """
   "cam0_hi",
   "cam0_lo"
  ],
+ "jacobian": "symbolic",
  "modes": [
   {
    "doc": "flank of the reduction gear in contact",
@@ -1197,7 +1411,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:82cb91462f5d01afa094cef50cff2640730911c258542d9a4d4313ff02efac50",
+ "source_hash": "sha256:f088bfd9d8d2b4bc1fc4d262d063949d46169006a69df9b54facca0bec628623",
  "states": [
   {
    "doc": "cam angle",

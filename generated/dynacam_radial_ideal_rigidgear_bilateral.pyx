@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:39e7dcb99e3fc953f0e2787c22e7881d75eb0036b69bf5bf5ffaa3af13ca1527
-# Text hash: sha256:f3c0267baf5591cbeda173e5e1cb01bdcd3cdd8d22b47e2645870b46bf6c5107
+# Derivation key: sha256:14ec5053b5b216c79a8ba50670991c1bd992d42777d7cfde4963ca414666f56a
+# Text hash: sha256:aa2c30d05f450e22256010091f47a2564fb0e85463fca36b9ade546eb03e3b0b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:3530b33f52fe8d2d9d942359b69c0b5737e71e5208b29c33ff6978958f119911
+# Source hash: sha256:70928959783656eafba925845d46bb159bc6f2bca0ef34805d7213adff3aa751
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -106,42 +106,59 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c4 = _c3/_c2
     cdef double _c5 = c_x*h_m
     cdef double _c6 = sqrt(m_x)
-    cdef double _c7 = 2.0*sqrt(c_x)*q_x
-    cdef double _c8 = _c6*_c7
-    cdef double _c9 = (1.0/beta_m)
-    cdef double _c10 = _c9*h_m
-    cdef double _c11 = (beta_m*beta_m)
-    cdef double _c12 = (1.0/m_x)
-    cdef double _c13 = _c7/_c6
-    cdef double _c14 = (1.0/h_m)
-    cdef double _c15 = (1.0/(omega_s*omega_s))
+    cdef double _c7 = sqrt(c_x)
+    cdef double _c8 = 2.0*_c7*q_x
+    cdef double _c9 = _c6*_c8
+    cdef double _c10 = (1.0/beta_m)
+    cdef double _c11 = _c10*h_m
+    cdef double _c12 = _c0*_c11
+    cdef double _c13 = (h_m*h_m)
+    cdef double _c14 = (beta_m*beta_m)
+    cdef double _c15 = (1.0/_c14)
+    cdef double _c16 = _c0*_c15
+    cdef double _c17 = (1.0/m_x)
+    cdef double _c18 = _c17*_c5
+    cdef double _c19 = _c8/_c6
+    cdef double _c20 = (1.0/h_m)
+    cdef double _c21 = (1.0/(omega_s*omega_s))
+    cdef double _c22 = _c13*c_x
     ctx.k[0] = -_c1  # _k0
     ctx.k[1] = _c1*omega_s  # _k1
     ctx.k[2] = -_c4  # _k2
     ctx.k[3] = _c4*omega_s  # _k3
     ctx.k[4] = -_c5  # _k4
-    ctx.k[5] = _c8  # _k5
-    ctx.k[6] = _c0*_c10  # _k6
-    ctx.k[7] = -_c0*_c8*(h_m*h_m)/_c11  # _k7
-    ctx.k[8] = -_c12*c_x  # _k8
-    ctx.k[9] = _c12*_c5  # _k9
-    ctx.k[10] = -_c13  # _k10
-    ctx.k[11] = _c10*_c13  # _k11
+    ctx.k[5] = _c9  # _k5
+    ctx.k[6] = _c12  # _k6
+    ctx.k[7] = -_c13*_c16*_c9  # _k7
+    ctx.k[8] = -_c17*c_x  # _k8
+    ctx.k[9] = _c18  # _k9
+    ctx.k[10] = -_c19  # _k10
+    ctx.k[11] = _c11*_c19  # _k11
     ctx.k[12] = -beta_0  # _k12
-    ctx.k[13] = _c9  # _k13
-    ctx.k[14] = _c11*_c14*_c15  # _k14
-    ctx.k[15] = _c15*beta_m  # _k15
+    ctx.k[13] = _c10  # _k13
+    ctx.k[14] = _c14*_c20*_c21  # _k14
+    ctx.k[15] = _c21*beta_m  # _k15
     ctx.k[16] = -h_m  # _k16
-    ctx.k[17] = _c14  # _k17
+    ctx.k[17] = _c20  # _k17
     ctx.k[18] = -k  # _k18
     ctx.k[19] = k*omega_s  # _k19
     ctx.k[20] = _c2*_c3  # _k20
     ctx.k[21] = -c_x  # _k21
     ctx.k[22] = _c5  # _k22
-    ctx.k[23] = -_c8  # _k23
-    ctx.k[24] = _c10*_c8  # _k24
+    ctx.k[23] = -_c9  # _k23
+    ctx.k[24] = _c11*_c9  # _k24
     ctx.k[25] = (1.0/omega_s)  # _k25
-    ctx.k[26] = _c10  # _k26
+    ctx.k[26] = _c11  # _k26
+    ctx.k[27] = _c5*beta_m  # _k27
+    ctx.k[28] = -_c22*beta_m  # _k28
+    ctx.k[29] = _c9*beta_m*h_m  # _k29
+    ctx.k[30] = -4.0*_c13*_c6*_c7*q_x  # _k30
+    ctx.k[31] = _c0/(beta_m*beta_m*beta_m)  # _k31
+    ctx.k[32] = -_c16*_c22  # _k32
+    ctx.k[33] = _c0*_c10*_c5  # _k33
+    ctx.k[34] = _c12*_c9  # _k34
+    ctx.k[35] = _c10*_c18  # _k35
+    ctx.k[36] = _c15*_c19*h_m  # _k36
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -184,6 +201,16 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k24 = ctx.k[24]
     cdef double _k25 = ctx.k[25]
     cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
     cdef double beta = _y[0]
     cdef double x = _y[1]
     cdef double betad = _y[2]
@@ -257,6 +284,16 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k24 = ctx.k[24]
     cdef double _k25 = ctx.k[25]
     cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
     cdef double beta = _y[0]
     cdef double x = _y[1]
     cdef double betad = _y[2]
@@ -317,6 +354,16 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k24 = ctx.k[24]
     cdef double _k25 = ctx.k[25]
     cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
     cdef double beta = _y[0]
     cdef double x = _y[1]
     cdef double betad = _y[2]
@@ -340,6 +387,81 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[1] = -_m6*_m7
     _Km[2] = -_m7*(_m4*_m5 + _m6)
     _Km[3] = c_x
+
+
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
+    of the general right-hand side in the current modes, a cam input in a dwell taking its
+    dwell values."""
+    cdef double h_m = ctx.p[0]
+    cdef double beta_m = ctx.p[1]
+    cdef double beta_0 = ctx.p[2]
+    cdef double R_b = ctx.p[3]
+    cdef double omega_s = ctx.p[4]
+    cdef double J = ctx.p[5]
+    cdef double k = ctx.p[6]
+    cdef double q_b = ctx.p[7]
+    cdef double m_x = ctx.p[8]
+    cdef double c_x = ctx.p[9]
+    cdef double q_x = ctx.p[10]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
+    cdef double _k10 = ctx.k[10]
+    cdef double _k11 = ctx.k[11]
+    cdef double _k12 = ctx.k[12]
+    cdef double _k13 = ctx.k[13]
+    cdef double _k14 = ctx.k[14]
+    cdef double _k15 = ctx.k[15]
+    cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
+    cdef double _k21 = ctx.k[21]
+    cdef double _k22 = ctx.k[22]
+    cdef double _k23 = ctx.k[23]
+    cdef double _k24 = ctx.k[24]
+    cdef double _k25 = ctx.k[25]
+    cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
+    cdef double beta = _y[0]
+    cdef double x = _y[1]
+    cdef double betad = _y[2]
+    cdef double xd = _y[3]
+    cdef double _cam0[4]  # H((beta - beta_0)/beta_m) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], (beta - beta_0)/beta_m, _cam0)
+
+    cdef int _k
+    for _k in range(16):
+        _J[_k] = 0.0
+    for _k in range(2):
+        _J[_k * 5 + 2] = 1.0  # d q'/d q'
+    cdef double _j0 = (_cam0[1]*_cam0[1])
+    _J[8] = _cam0[2]*_k31*(_cam0[0]*_k28 + _cam0[1]*_k30*betad + _k27*x + _k29*xd) + _j0*_k32 + _k0
+    _J[9] = _cam0[1]*_k33
+    _J[10] = _j0*_k7 + _k2
+    _J[11] = _cam0[1]*_k34
+    _J[12] = _cam0[1]*_k35 + _cam0[2]*_k36*betad
+    _J[13] = _k8
+    _J[14] = _cam0[1]*_k11
+    _J[15] = _k10
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -392,6 +514,16 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k24 = ctx.k[24]
     cdef double _k25 = ctx.k[25]
     cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
     cdef double beta = _y[0]
     cdef double x = _y[1]
     cdef double betad = _y[2]
@@ -441,6 +573,16 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double _k24 = ctx.k[24]
     cdef double _k25 = ctx.k[25]
     cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
     cdef double beta = _y[0]
     cdef double x = _y[1]
     cdef double betad = _y[2]
@@ -492,6 +634,16 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k24 = ctx.k[24]
     cdef double _k25 = ctx.k[25]
     cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
     cdef double beta = _y[0]
     cdef double x = _y[1]
     cdef double betad = _y[2]
@@ -556,7 +708,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 27
+_model.n_const = 37
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -566,6 +718,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -587,6 +740,7 @@ _MANIFEST_JSON = """
   "cam0_hi",
   "cam0_lo"
  ],
+ "jacobian": "symbolic",
  "modes": [],
  "n_q": 2,
  "name": "dynacam_radial_ideal_rigidgear_bilateral",
@@ -809,7 +963,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:3530b33f52fe8d2d9d942359b69c0b5737e71e5208b29c33ff6978958f119911",
+ "source_hash": "sha256:70928959783656eafba925845d46bb159bc6f2bca0ef34805d7213adff3aa751",
  "states": [
   {
    "doc": "cam angle",

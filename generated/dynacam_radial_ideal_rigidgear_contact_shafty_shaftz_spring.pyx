@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:96b43096f006537918ee2be454257337562c603b43041d4eade67e24165e6d3a
-# Text hash: sha256:eee59e00953f773a9dfff405c3248c27e3be001c4b777d671844dc8facaad5a5
+# Derivation key: sha256:83af78661866406d5061184226d5d431c3c264ac85271e1bfd65567959e98ae2
+# Text hash: sha256:d5e3caba2d4e80ba139865047875184ef684fd7014b1776a006961e83f38ebe2
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:7f58decc9cfef69affba9dbc66d6cbef86b828d17c757a297e7f17381ee2f025
+# Source hash: sha256:a8a5f5eb70ce0d4783c335f2e573e44029f576fba812eeec73b924997a7c92ba
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -112,66 +112,91 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c0 = (1.0/J)
     cdef double _c1 = _c0*k
     cdef double _c2 = c_x*h_m
-    cdef double _c3 = 2.0*sqrt(c_x)*sqrt(m_x)*q_x
-    cdef double _c4 = (1.0/beta_m)
-    cdef double _c5 = _c4*h_m
-    cdef double _c6 = (beta_m*beta_m)
-    cdef double _c7 = R_b*_c6
-    cdef double _c8 = (h_m*h_m)
-    cdef double _c9 = _c0*h_m
-    cdef double _c10 = sqrt(J)
-    cdef double _c11 = 2.0*sqrt(k)*q_b
-    cdef double _c12 = _c11/_c10
-    cdef double _c13 = (1.0/m_y)
-    cdef double _c14 = (1.0/h_m)
-    cdef double _c15 = (1.0/(omega_s*omega_s))
-    cdef double _c16 = (1.0/_c6)
+    cdef double _c3 = sqrt(c_x)*sqrt(m_x)*q_x
+    cdef double _c4 = 2.0*_c3
+    cdef double _c5 = (1.0/beta_m)
+    cdef double _c6 = _c5*h_m
+    cdef double _c7 = (beta_m*beta_m)
+    cdef double _c8 = R_b*_c7
+    cdef double _c9 = (h_m*h_m)
+    cdef double _c10 = _c7*_c9
+    cdef double _c11 = 2.0*_c8*h_m
+    cdef double _c12 = 2.0*_c9
+    cdef double _c13 = _c12*_c3
+    cdef double _c14 = _c0*h_m
+    cdef double _c15 = sqrt(J)
+    cdef double _c16 = 2.0*sqrt(k)*q_b
+    cdef double _c17 = _c16/_c15
+    cdef double _c18 = (1.0/m_y)
+    cdef double _c19 = _c18*h_m
+    cdef double _c20 = (1.0/m_z)
+    cdef double _c21 = (1.0/m_x)
+    cdef double _c22 = (1.0/h_m)
+    cdef double _c23 = (1.0/(omega_s*omega_s))
+    cdef double _c24 = (1.0/_c7)
+    cdef double _c25 = _c9*beta_m
+    cdef double _c26 = 2.0*_c10
     ctx.k[0] = -_c1  # _k0
     ctx.k[1] = _c1*omega_s  # _k1
     ctx.k[2] = -c_x  # _k2
     ctx.k[3] = _c2  # _k3
-    ctx.k[4] = -_c3  # _k4
+    ctx.k[4] = -_c4  # _k4
     ctx.k[5] = R_b*beta_m  # _k5
     ctx.k[6] = beta_m*h_m  # _k6
     ctx.k[7] = -_c2  # _k7
-    ctx.k[8] = -_c3*h_m  # _k8
-    ctx.k[9] = _c3*_c5  # _k9
-    ctx.k[10] = _c7  # _k10
-    ctx.k[11] = _c6*h_m  # _k11
-    ctx.k[12] = (R_b*R_b)*_c6  # _k12
-    ctx.k[13] = _c6*_c8  # _k13
-    ctx.k[14] = 2.0*_c7*h_m  # _k14
-    ctx.k[15] = _c3*_c8  # _k15
-    ctx.k[16] = -_c4*_c9  # _k16
-    ctx.k[17] = -_c12  # _k17
-    ctx.k[18] = _c12*omega_s  # _k18
-    ctx.k[19] = _c9  # _k19
-    ctx.k[20] = -_c0*_c8  # _k20
-    ctx.k[21] = -_c13*c_y  # _k21
-    ctx.k[22] = _c13*h_m  # _k22
+    ctx.k[8] = -_c4*h_m  # _k8
+    ctx.k[9] = _c4*_c6  # _k9
+    ctx.k[10] = _c8  # _k10
+    ctx.k[11] = _c7*h_m  # _k11
+    ctx.k[12] = (R_b*R_b)*_c7  # _k12
+    ctx.k[13] = _c10  # _k13
+    ctx.k[14] = _c11  # _k14
+    ctx.k[15] = _c13  # _k15
+    ctx.k[16] = -_c14*_c5  # _k16
+    ctx.k[17] = -_c17  # _k17
+    ctx.k[18] = _c17*omega_s  # _k18
+    ctx.k[19] = _c14  # _k19
+    ctx.k[20] = -_c0*_c9  # _k20
+    ctx.k[21] = -_c18*c_y  # _k21
+    ctx.k[22] = _c19  # _k22
     ctx.k[23] = -2.0*sqrt(c_y)*q_y/sqrt(m_y)  # _k23
     ctx.k[24] = -c_z  # _k24
     ctx.k[25] = -2.0*sqrt(c_z)*sqrt(m_z)*q_z  # _k25
-    ctx.k[26] = (1.0/m_z)  # _k26
+    ctx.k[26] = _c20  # _k26
     ctx.k[27] = -F_0  # _k27
     ctx.k[28] = -c_s  # _k28
-    ctx.k[29] = (1.0/m_x)  # _k29
+    ctx.k[29] = _c21  # _k29
     ctx.k[30] = -beta_0  # _k30
-    ctx.k[31] = _c4  # _k31
-    ctx.k[32] = _c14*_c15*_c6  # _k32
-    ctx.k[33] = _c15*beta_m  # _k33
+    ctx.k[31] = _c5  # _k31
+    ctx.k[32] = _c22*_c23*_c7  # _k32
+    ctx.k[33] = _c23*beta_m  # _k33
     ctx.k[34] = -h_m  # _k34
-    ctx.k[35] = _c14  # _k35
+    ctx.k[35] = _c22  # _k35
     ctx.k[36] = -k  # _k36
     ctx.k[37] = k*omega_s  # _k37
-    ctx.k[38] = _c10*_c11  # _k38
-    ctx.k[39] = -_c2*_c4  # _k39
-    ctx.k[40] = _c5  # _k40
-    ctx.k[41] = _c16*_c8  # _k41
-    ctx.k[42] = -_c16*h_m  # _k42
-    ctx.k[43] = -_c5  # _k43
-    ctx.k[44] = _c3  # _k44
+    ctx.k[38] = _c15*_c16  # _k38
+    ctx.k[39] = -_c2*_c5  # _k39
+    ctx.k[40] = _c6  # _k40
+    ctx.k[41] = _c24*_c9  # _k41
+    ctx.k[42] = -_c24*h_m  # _k42
+    ctx.k[43] = -_c6  # _k43
+    ctx.k[44] = _c4  # _k44
     ctx.k[45] = (1.0/omega_s)  # _k45
+    ctx.k[46] = _c25*c_x  # _k46
+    ctx.k[47] = _c13*beta_m  # _k47
+    ctx.k[48] = _c26*_c3  # _k48
+    ctx.k[49] = -_c26  # _k49
+    ctx.k[50] = -_c11  # _k50
+    ctx.k[51] = -_c9  # _k51
+    ctx.k[52] = -_c10  # _k52
+    ctx.k[53] = _c0*_c5  # _k53
+    ctx.k[54] = 4.0*_c3*_c9  # _k54
+    ctx.k[55] = -_c12  # _k55
+    ctx.k[56] = -_c25  # _k56
+    ctx.k[57] = _c18*_c5  # _k57
+    ctx.k[58] = _c19*_c5  # _k58
+    ctx.k[59] = _c20*_c5  # _k59
+    ctx.k[60] = _c21*_c5  # _k60
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -241,6 +266,21 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k43 = ctx.k[43]
     cdef double _k44 = ctx.k[44]
     cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
+    cdef double _k54 = ctx.k[54]
+    cdef double _k55 = ctx.k[55]
+    cdef double _k56 = ctx.k[56]
+    cdef double _k57 = ctx.k[57]
+    cdef double _k58 = ctx.k[58]
+    cdef double _k59 = ctx.k[59]
+    cdef double _k60 = ctx.k[60]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -361,6 +401,21 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k43 = ctx.k[43]
     cdef double _k44 = ctx.k[44]
     cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
+    cdef double _k54 = ctx.k[54]
+    cdef double _k55 = ctx.k[55]
+    cdef double _k56 = ctx.k[56]
+    cdef double _k57 = ctx.k[57]
+    cdef double _k58 = ctx.k[58]
+    cdef double _k59 = ctx.k[59]
+    cdef double _k60 = ctx.k[60]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -462,6 +517,21 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k43 = ctx.k[43]
     cdef double _k44 = ctx.k[44]
     cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
+    cdef double _k54 = ctx.k[54]
+    cdef double _k55 = ctx.k[55]
+    cdef double _k56 = ctx.k[56]
+    cdef double _k57 = ctx.k[57]
+    cdef double _k58 = ctx.k[58]
+    cdef double _k59 = ctx.k[59]
+    cdef double _k60 = ctx.k[60]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -505,6 +575,195 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[13] = 0.0 / 0.0
     _Km[14] = 0.0 / 0.0
     _Km[15] = 0.0 / 0.0
+
+
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
+    of the general right-hand side in the current modes, a cam input in a dwell taking its
+    dwell values."""
+    cdef double h_m = ctx.p[0]
+    cdef double beta_m = ctx.p[1]
+    cdef double beta_0 = ctx.p[2]
+    cdef double R_b = ctx.p[3]
+    cdef double omega_s = ctx.p[4]
+    cdef double J = ctx.p[5]
+    cdef double k = ctx.p[6]
+    cdef double q_b = ctx.p[7]
+    cdef double m_x = ctx.p[8]
+    cdef double c_x = ctx.p[9]
+    cdef double q_x = ctx.p[10]
+    cdef double m_y = ctx.p[11]
+    cdef double c_y = ctx.p[12]
+    cdef double q_y = ctx.p[13]
+    cdef double m_z = ctx.p[14]
+    cdef double c_z = ctx.p[15]
+    cdef double q_z = ctx.p[16]
+    cdef double F_0 = ctx.p[17]
+    cdef double c_s = ctx.p[18]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
+    cdef double _k10 = ctx.k[10]
+    cdef double _k11 = ctx.k[11]
+    cdef double _k12 = ctx.k[12]
+    cdef double _k13 = ctx.k[13]
+    cdef double _k14 = ctx.k[14]
+    cdef double _k15 = ctx.k[15]
+    cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
+    cdef double _k21 = ctx.k[21]
+    cdef double _k22 = ctx.k[22]
+    cdef double _k23 = ctx.k[23]
+    cdef double _k24 = ctx.k[24]
+    cdef double _k25 = ctx.k[25]
+    cdef double _k26 = ctx.k[26]
+    cdef double _k27 = ctx.k[27]
+    cdef double _k28 = ctx.k[28]
+    cdef double _k29 = ctx.k[29]
+    cdef double _k30 = ctx.k[30]
+    cdef double _k31 = ctx.k[31]
+    cdef double _k32 = ctx.k[32]
+    cdef double _k33 = ctx.k[33]
+    cdef double _k34 = ctx.k[34]
+    cdef double _k35 = ctx.k[35]
+    cdef double _k36 = ctx.k[36]
+    cdef double _k37 = ctx.k[37]
+    cdef double _k38 = ctx.k[38]
+    cdef double _k39 = ctx.k[39]
+    cdef double _k40 = ctx.k[40]
+    cdef double _k41 = ctx.k[41]
+    cdef double _k42 = ctx.k[42]
+    cdef double _k43 = ctx.k[43]
+    cdef double _k44 = ctx.k[44]
+    cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
+    cdef double _k54 = ctx.k[54]
+    cdef double _k55 = ctx.k[55]
+    cdef double _k56 = ctx.k[56]
+    cdef double _k57 = ctx.k[57]
+    cdef double _k58 = ctx.k[58]
+    cdef double _k59 = ctx.k[59]
+    cdef double _k60 = ctx.k[60]
+    cdef double beta = _y[0]
+    cdef double y = _y[1]
+    cdef double z = _y[2]
+    cdef double x = _y[3]
+    cdef double betad = _y[4]
+    cdef double yd = _y[5]
+    cdef double zd = _y[6]
+    cdef double xd = _y[7]
+    cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
+
+    cdef int _k
+    for _k in range(64):
+        _J[_k] = 0.0
+    for _k in range(4):
+        _J[_k * 9 + 4] = 1.0  # d q'/d q'
+    cdef double _j0 = _cam0[0]*_k11 + _k10
+    cdef double _j1 = (1.0/_j0)
+    cdef double _j2 = _j1*y
+    cdef double _j3 = _k8*betad
+    cdef double _j4 = _j2*_j3
+    cdef double _j5 = (ctx.mode[1] == 0.0)
+    cdef double _j6 = ((_j4) if (_j5) else (0.0))
+    cdef double _j7 = _j2*h_m
+    cdef double _j8 = (_cam0[1]*_cam0[1])
+    cdef double _j9 = (_cam0[0]*_cam0[0])*_k13 + _cam0[0]*_k14 + _k12
+    cdef double _j10 = (1.0/_j9)
+    cdef double _j11 = _j10*_j8
+    cdef double _j12 = _j11*_k51*y
+    cdef double _j13 = _k9*betad
+    cdef double _j14 = _cam0[0]*_k6 + _k5
+    cdef double _j15 = (1.0/_j14)
+    cdef double _j16 = _j15*_k7
+    cdef double _j17 = _j16*y
+    cdef double _j18 = _j15*_k8
+    cdef double _j19 = _j18*yd
+    cdef double _j20 = _j11*_k15
+    cdef double _j21 = _j20*betad
+    cdef double _j22 = ((_cam0[0]*_k3 + _cam0[1]*_j13 + _cam0[1]*_j17 + _cam0[1]*_j19 + _cam0[2]*_j4 + _j21*y + _k2*x + _k2*z + _k4*xd + _k4*zd) if (_j5) else (0.0))
+    cdef double _j23 = betad*y
+    cdef double _j24 = _cam0[1]*_j10
+    cdef double _j25 = ((_j13 + _j17 + _j19 + _j23*_j24*_k54) if (_j5) else (0.0))
+    cdef double _j26 = _cam0[1]*_j25
+    cdef double _j27 = _cam0[2]*_j25
+    cdef double _j28 = _j22*y
+    cdef double _j29 = _cam0[1]/(_j14*_j14)
+    cdef double _j30 = _cam0[2]/(_j0*_j0)
+    cdef double _j31 = _j8*(_cam0[0]*_k49 + _k50)/(_j9*_j9)
+    cdef double _j32 = ((_j23*_j30*_k48 + _j23*_j31*_k15 + _j29*_k46*y + _j29*_k47*yd + _k3) if (_j5) else (0.0))
+    cdef double _j33 = _cam0[1]*_j32
+    cdef double _j34 = _j32*h_m
+    cdef double _j35 = _cam0[2]*_j2
+    cdef double _j36 = _cam0[2]*_j1
+    cdef double _j37 = ((_cam0[1]*_j16 + _j21 + _j3*_j36) if (_j5) else (0.0))
+    cdef double _j38 = _cam0[1]*_k16
+    cdef double _j39 = _j35*_k19
+    cdef double _j40 = _j11*_k20
+    cdef double _j41 = _j40*y
+    cdef double _j42 = ((_k2) if (_j5) else (0.0))
+    cdef double _j43 = _j38 + _j39 + _j41
+    cdef double _j44 = _j42*_j43
+    cdef double _j45 = ((_cam0[1]*_k9 + _j20*y + _j35*_k8) if (_j5) else (0.0))
+    cdef double _j46 = ((_cam0[1]*_j18) if (_j5) else (0.0))
+    cdef double _j47 = ((_k4) if (_j5) else (0.0))
+    cdef double _j48 = _j43*_j47
+    cdef double _j49 = _cam0[3]*_j6
+    cdef double _j50 = _cam0[1]*_j15*_k22
+    cdef double _j51 = _j42*_j50
+    cdef double _j52 = _j47*_j50
+    cdef double _j53 = _j27 + _j33 + _j49
+    cdef double _j54 = _j47*_k29
+    _J[32] = _cam0[1]*_k53*(_j12*_j32 + _j28*_j30*_k52 + _j28*_j31*_k51 + _j33*_k43 + _j34*_j35) + _cam0[2]*_k53*(_j12*_j25 + _j22*_k43 + _j24*_j28*_k55 + _j26*_k43 + _j27*_j7) + _cam0[3]*_k53*(_cam0[1]*_j6*_k43 + _cam0[2]*_j6*_j7 + _j12*_j6 + _j22*_j7) + _k0
+    _J[33] = _j22*_j36*_k19 + _j22*_j40 + _j37*_j38 + _j37*_j39 + _j37*_j41
+    _J[34] = _j44
+    _J[35] = _j44
+    _J[36] = _j38*_j45 + _j39*_j45 + _j41*_j45 + _k17
+    _J[37] = _j43*_j46
+    _J[38] = _j48
+    _J[39] = _j48
+    _J[40] = _j15*(_cam0[1]*_j49*_k58 + _cam0[2]*_k57*h_m*(_j22 + _j26) + _j8*_k57*(_j15*_j22*_k56 + _j34))
+    _J[41] = _j37*_j50 + _k21
+    _J[42] = _j51
+    _J[43] = _j51
+    _J[44] = _j45*_j50
+    _J[45] = _j46*_j50 + _k23
+    _J[46] = _j52
+    _J[47] = _j52
+    _J[48] = _j53*_k59
+    _J[49] = _j37*_k26
+    _J[50] = _k26*(_j42 + _k24)
+    _J[51] = _j42*_k26
+    _J[52] = _j45*_k26
+    _J[53] = _j46*_k26
+    _J[54] = _k26*(_j47 + _k25)
+    _J[55] = _j47*_k26
+    _J[56] = _j53*_k60
+    _J[57] = _j37*_k29
+    _J[58] = _j42*_k29
+    _J[59] = _k29*(_j42 + _k28)
+    _J[60] = _j45*_k29
+    _J[61] = _j46*_k29
+    _J[62] = _j54
+    _J[63] = _j54
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -584,6 +843,21 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k43 = ctx.k[43]
     cdef double _k44 = ctx.k[44]
     cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
+    cdef double _k54 = ctx.k[54]
+    cdef double _k55 = ctx.k[55]
+    cdef double _k56 = ctx.k[56]
+    cdef double _k57 = ctx.k[57]
+    cdef double _k58 = ctx.k[58]
+    cdef double _k59 = ctx.k[59]
+    cdef double _k60 = ctx.k[60]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -664,6 +938,21 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double _k43 = ctx.k[43]
     cdef double _k44 = ctx.k[44]
     cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
+    cdef double _k54 = ctx.k[54]
+    cdef double _k55 = ctx.k[55]
+    cdef double _k56 = ctx.k[56]
+    cdef double _k57 = ctx.k[57]
+    cdef double _k58 = ctx.k[58]
+    cdef double _k59 = ctx.k[59]
+    cdef double _k60 = ctx.k[60]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -748,6 +1037,21 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k43 = ctx.k[43]
     cdef double _k44 = ctx.k[44]
     cdef double _k45 = ctx.k[45]
+    cdef double _k46 = ctx.k[46]
+    cdef double _k47 = ctx.k[47]
+    cdef double _k48 = ctx.k[48]
+    cdef double _k49 = ctx.k[49]
+    cdef double _k50 = ctx.k[50]
+    cdef double _k51 = ctx.k[51]
+    cdef double _k52 = ctx.k[52]
+    cdef double _k53 = ctx.k[53]
+    cdef double _k54 = ctx.k[54]
+    cdef double _k55 = ctx.k[55]
+    cdef double _k56 = ctx.k[56]
+    cdef double _k57 = ctx.k[57]
+    cdef double _k58 = ctx.k[58]
+    cdef double _k59 = ctx.k[59]
+    cdef double _k60 = ctx.k[60]
     cdef double beta = _y[0]
     cdef double y = _y[1]
     cdef double z = _y[2]
@@ -838,7 +1142,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 46
+_model.n_const = 61
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -848,6 +1152,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -871,6 +1176,7 @@ _MANIFEST_JSON = """
   "cam0_hi",
   "cam0_lo"
  ],
+ "jacobian": "symbolic",
  "modes": [
   {
    "doc": "roller on the cam or lifted off (follower jump)",
@@ -1196,7 +1502,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:7f58decc9cfef69affba9dbc66d6cbef86b828d17c757a297e7f17381ee2f025",
+ "source_hash": "sha256:a8a5f5eb70ce0d4783c335f2e573e44029f576fba812eeec73b924997a7c92ba",
  "states": [
   {
    "doc": "cam angle",

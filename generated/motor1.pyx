@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:861f92b717c62f950e5eb71987ab082267fa9ef1076ce06010a9f231b5d158f4
-# Text hash: sha256:cf7d6dfdc0fa775e1f2c6d1eb213b4a06920c947b7d9f16b56a3ddb14bedb790
+# Derivation key: sha256:247a8dd2f76ccc98240c4e3fe92832910dd22ea8de749729435ad7f732e9114a
+# Text hash: sha256:a54f56691f9e981383cd686c7a3c718770f1e7c14cf803b27115f9c26d672bc8
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
-# Source hash: sha256:d2982da34d717e81e23fa41761bafe1a5697842fe6b4ba3f99fe71c7426e0cf7
+# Source hash: sha256:cb12a14e2a82bc39c330ce4092034e4d1ae1ef6c8be29c96e4886b6df7b1aede
 #
 # The asynchronous motor driving a cam mechanism, thesis App. 5 (and sec. 6.7).
 #
@@ -123,6 +123,28 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
 
 
 
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
+    of the general right-hand side in the current modes, a cam input in a dwell taking its
+    dwell values."""
+    cdef double J_ma = ctx.p[0]
+    cdef double G_a = ctx.p[1]
+    cdef double t_m = ctx.p[2]
+    cdef double Mc = ctx.p[3]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double dw = _y[0]
+    cdef double _cam0[4]  # H(t/t_m) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t/t_m, _cam0)
+
+    cdef int _k
+    for _k in range(1):
+        _J[_k] = 0.0
+    for _k in range(0):
+        _J[_k * 2 + 0] = 1.0  # d q'/d q'
+    _J[0] = _k0
+
+
 cdef void refresh(Ctx* ctx) noexcept nogil:
     """ctx.variant from the modes (bit i set when cam input i sits in a dwell); the cam
     cache is emptied, its entries belong to the old segments."""
@@ -203,6 +225,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -221,6 +244,7 @@ _MANIFEST_JSON = """
   }
  ],
  "events": [],
+ "jacobian": "symbolic",
  "modes": [],
  "n_q": 0,
  "name": "motor1",
@@ -280,7 +304,7 @@ _MANIFEST_JSON = """
  ],
  "reference": "thesis sec. A.5.4.2",
  "residual": null,
- "source_hash": "sha256:d2982da34d717e81e23fa41761bafe1a5697842fe6b4ba3f99fe71c7426e0cf7",
+ "source_hash": "sha256:cb12a14e2a82bc39c330ce4092034e4d1ae1ef6c8be29c96e4886b6df7b1aede",
  "states": [
   {
    "doc": "speed deviation of the drive, reduced to the camshaft",

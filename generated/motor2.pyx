@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:94c4ef11db2c56556dadc66f822b1e1fd29858d39d27ecdf64a94e7c8f3e3966
-# Text hash: sha256:41d6945fba779893e8d53179ec5ae751a49d21499a19ae7d3e17cdf9f3d23fba
+# Derivation key: sha256:ce055bac4da4fd3c70cd1bf1c4e2796de691c2eaab5d175b00967e3f4fe8fcb3
+# Text hash: sha256:eafe727debe07d485228d5dbfdc534d613d8ecd486da25b96bb148fdbb19ccff
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
-# Source hash: sha256:2c1f555639a7d49b92ea7d665e9a0369046a7aa9f18b7ac380d975c265d508a4
+# Source hash: sha256:9df5f82783bfcb6fd0f028c14378234f531f563607d1d78bfad7ef80fa01f86a
 #
 # The asynchronous motor driving a cam mechanism, thesis App. 5 (and sec. 6.7).
 #
@@ -140,6 +140,34 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
 
 
 
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
+    of the general right-hand side in the current modes, a cam input in a dwell taking its
+    dwell values."""
+    cdef double J_ma = ctx.p[0]
+    cdef double G_a = ctx.p[1]
+    cdef double T_el = ctx.p[2]
+    cdef double t_m = ctx.p[3]
+    cdef double Mc = ctx.p[4]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double dw = _y[0]
+    cdef double Mea = _y[1]
+    cdef double _cam0[4]  # H(t/t_m) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t/t_m, _cam0)
+
+    cdef int _k
+    for _k in range(4):
+        _J[_k] = 0.0
+    for _k in range(0):
+        _J[_k * 3 + 0] = 1.0  # d q'/d q'
+    _J[1] = _k1
+    _J[2] = _k3
+    _J[3] = _k2
+
+
 cdef void refresh(Ctx* ctx) noexcept nogil:
     """ctx.variant from the modes (bit i set when cam input i sits in a dwell); the cam
     cache is emptied, its entries belong to the old segments."""
@@ -226,6 +254,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -244,6 +273,7 @@ _MANIFEST_JSON = """
   }
  ],
  "events": [],
+ "jacobian": "symbolic",
  "modes": [],
  "n_q": 0,
  "name": "motor2",
@@ -314,7 +344,7 @@ _MANIFEST_JSON = """
  ],
  "reference": "thesis (A.5.6)-(A.5.13)",
  "residual": null,
- "source_hash": "sha256:2c1f555639a7d49b92ea7d665e9a0369046a7aa9f18b7ac380d975c265d508a4",
+ "source_hash": "sha256:9df5f82783bfcb6fd0f028c14378234f531f563607d1d78bfad7ef80fa01f86a",
  "states": [
   {
    "doc": "speed deviation of the drive, reduced to the camshaft",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:43453b34a10992a1be5a49010fd3a3c56d1cce336b1be077a058dcc152944b17
-# Text hash: sha256:644a7479e787eb0ec4108090852148207fb786b4ced8ffddb7b37f07d39e93ff
+# Derivation key: sha256:82896fad7f44163072fc0fad54a3605513c807df15170bf46f08b0fd843c7753
+# Text hash: sha256:937b0d578c616022a96f0bb6229c1597b00f52abc7bd98e5cb52c7ee72280305
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
-# Source hash: sha256:bde9b5f7c474d0716c188e5f532573ed637e339597b233fbceaf43fad1df1210
+# Source hash: sha256:983ad329da4d3c689348672f065b5f0f272df226f6435e27325b84eb9ab41c90
 #
 # One DOF with constant fictitious angular velocity, thesis ch. 3, fig. 3.2.
 #
@@ -52,10 +52,12 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     """Parameter-only subexpressions, once per run, into ctx.k."""
     cdef double tau = ctx.p[0]
     cdef double q = ctx.p[1]
-    cdef double _c0 = 12.566370614359172*q/tau
-    ctx.k[0] = 39.47841760435743*(1.0/(tau*tau))  # _k0
-    ctx.k[1] = _c0  # _k1
-    ctx.k[2] = -_c0  # _k2
+    cdef double _c0 = 39.47841760435743*(1.0/(tau*tau))
+    cdef double _c1 = 12.566370614359172*q/tau
+    ctx.k[0] = _c0  # _k0
+    ctx.k[1] = _c1  # _k1
+    ctx.k[2] = -_c1  # _k2
+    ctx.k[3] = -_c0  # _k3
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -65,6 +67,7 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
     cdef double _cam0[4]  # H(T) and its derivatives
@@ -100,6 +103,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
     cdef double Xdd = _dy[1]
@@ -120,6 +124,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
     cdef double _cam0[4]  # H(T) and its derivatives
@@ -127,6 +132,30 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
 
     _Mm[0] = 1.0
     _Km[0] = 39.47841760435743*(1.0/(tau*tau))
+
+
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
+    of the general right-hand side in the current modes, a cam input in a dwell taking its
+    dwell values."""
+    cdef double tau = ctx.p[0]
+    cdef double q = ctx.p[1]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double X = _y[0]
+    cdef double Xd = _y[1]
+    cdef double _cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
+
+    cdef int _k
+    for _k in range(4):
+        _J[_k] = 0.0
+    for _k in range(1):
+        _J[_k * 3 + 1] = 1.0  # d q'/d q'
+    _J[2] = _k3
+    _J[3] = _k2
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -146,6 +175,7 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
 
@@ -195,7 +225,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 3
+_model.n_const = 4
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -205,6 +235,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -223,6 +254,7 @@ _MANIFEST_JSON = """
   }
  ],
  "events": [],
+ "jacobian": "symbolic",
  "modes": [],
  "n_q": 1,
  "name": "one_dof",
@@ -285,7 +317,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:bde9b5f7c474d0716c188e5f532573ed637e339597b233fbceaf43fad1df1210",
+ "source_hash": "sha256:983ad329da4d3c689348672f065b5f0f272df226f6435e27325b84eb9ab41c90",
  "states": [
   {
    "doc": "follower position over the stroke, X = x/h_m'",

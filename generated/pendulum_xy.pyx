@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:532976de8d6d8df4a020da90d1df99743f6b611babc483f42f56b49dd37ec23a
-# Text hash: sha256:a482dc95a161d2b1c943f46b42b5875c3f7fd4784ad52d6888fd9021b6881ae3
+# Derivation key: sha256:04b058ee885822b64093b5843a1c3a205d7454741e7400a03d098a633e4c67c4
+# Text hash: sha256:3703d76d77c622241d8e8dfd1c922998b2655334aeb9172c5615ac89aad7fd2c
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
-# Source hash: sha256:2078d808034e109b6d5041c180f07c5c08ac383302ff8d707638b4e68587f436
+# Source hash: sha256:b9be8f3f74294cabeecad03b8ef70c7bcf4ce445457ef8edf614d0911f4e81d7
 #
 # A planar pendulum in Cartesian coordinates: the constraint layer's second model.
 #
@@ -276,6 +276,50 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
             _Km[i * _NQ + j] = 0.0 / 0.0
 
 
+cdef double _SCALE[_NS]  # typical magnitude of each state (manifest "scale"): the difference steps
+_SCALE[0] = 1.0
+_SCALE[1] = 1.0
+_SCALE[2] = 1.0
+_SCALE[3] = 1.0
+
+
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, by central differences of rhs() in C (the
+    manifest says "finite-difference"), extrapolated (Richardson) from the steps h_j and h_j/2,
+    h_j = 1e-3 scale_j: truncation O(h^4), rounding O(eps |f|/h), both far below 1e-6 relative
+    where the right-hand side is smooth over the step (a step across a cam breakpoint sees its
+    kink).  The symbolic Jacobian of the augmented system (A^-1 (db/dy - dA/dy x)) is not
+    generated: it needs one derivative more of a cam profile than the cam-law library gives
+    (order 4), the partitioned formulation recovers the dependent coordinates by Newton's
+    method, and the systems are large; differences are what the implicit method's iteration
+    matrix needs."""
+    cdef double _yp[_NS]
+    cdef double _f1[_NS]
+    cdef double _f2[_NS]
+    cdef double _f3[_NS]
+    cdef double _f4[_NS]
+    cdef double _h, _a1, _b1, _a2, _b2
+    cdef int i, j
+    for i in range(_NS):
+        _yp[i] = _y[i]
+    for j in range(_NS):
+        _h = 1e-3 * _SCALE[j]
+        _a1, _b1 = _y[j] + _h, _y[j] - _h
+        _a2, _b2 = _y[j] + 0.5 * _h, _y[j] - 0.5 * _h
+        _yp[j] = _a1
+        rhs(t, _yp, _f1, ctx)
+        _yp[j] = _b1
+        rhs(t, _yp, _f2, ctx)
+        _yp[j] = _a2
+        rhs(t, _yp, _f3, ctx)
+        _yp[j] = _b2
+        rhs(t, _yp, _f4, ctx)
+        _yp[j] = _y[j]
+        for i in range(_NS):
+            _J[i * _NS + j] = (4.0 * (_f3[i] - _f4[i]) / (_a2 - _b2)
+                               - (_f1[i] - _f2[i]) / (_a1 - _b1)) / 3.0
+
+
 cdef void refresh(Ctx* ctx) noexcept nogil:
     """No modes: a cam profile is evaluated afresh at every call."""
     ctx.variant = 0
@@ -340,6 +384,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -360,6 +405,7 @@ _MANIFEST_JSON = """
   "y"
  ],
  "events": [],
+ "jacobian": "finite-difference",
  "modes": [],
  "n_constraints": 1,
  "n_q": 2,
@@ -477,7 +523,7 @@ _MANIFEST_JSON = """
   "baumgarte_rate": "w_B",
   "formulation": "formulation"
  },
- "source_hash": "sha256:2078d808034e109b6d5041c180f07c5c08ac383302ff8d707638b4e68587f436",
+ "source_hash": "sha256:b9be8f3f74294cabeecad03b8ef70c7bcf4ce445457ef8edf614d0911f4e81d7",
  "states": [
   {
    "doc": "horizontal position of the bob",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d2e595521eca9ab20cd2395d5b4ba3f82ee6aef6272f58c6f63e3d159130b8db
-# Text hash: sha256:4ab1201c99affeba0eb2b829623257f2ffac94021acc6e1cf54bb20009c4cb56
+# Derivation key: sha256:551dd1525b150daadb01b5d3cb1867cb384c291ab240b1cec35bcb019d553edc
+# Text hash: sha256:2e216585f689e3d1c345ddd57083fa37152d90919f1db7ad37ce11d9fd96e3f1
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
-# Source hash: sha256:ea251a65fb01a96b477aeb87ec30649e092338fc93c4dbcf03877f878d2f4be2
+# Source hash: sha256:5d9ff777c60c5d9e120e3db21dc017ee1859b236f86a4580393945c74b0d307c
 #
 # Roller vibration: the roller's mass and the contact stiffness between roller and cam, in
 # series with the follower linkage (thesis sec. 9.2.1).
@@ -93,6 +93,8 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c5 = _c4*delta_s
     cdef double _c6 = _c1*sqrt(kappa)*sqrt(mu)*zeta
     cdef double _c7 = S*_c4
+    cdef double _c8 = (1.0/mu)
+    cdef double _c9 = _c3*n_c
     ctx.k[0] = _c0  # _k0
     ctx.k[1] = _c2  # _k1
     ctx.k[2] = -_c0  # _k2
@@ -106,10 +108,14 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[10] = _c4  # _k10
     ctx.k[11] = -S*_c3  # _k11
     ctx.k[12] = _c7  # _k12
-    ctx.k[13] = (1.0/mu)  # _k13
+    ctx.k[13] = _c8  # _k13
     ctx.k[14] = -_c5  # _k14
     ctx.k[15] = -_c7  # _k15
     ctx.k[16] = -S  # _k16
+    ctx.k[17] = _c0*_c8  # _k17
+    ctx.k[18] = -_c9  # _k18
+    ctx.k[19] = _c9  # _k19
+    ctx.k[20] = _c2*_c8  # _k20
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -139,6 +145,10 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k14 = ctx.k[14]
     cdef double _k15 = ctx.k[15]
     cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
     cdef double X = _y[0]
     cdef double R = _y[1]
     cdef double Xd = _y[2]
@@ -216,6 +226,10 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k14 = ctx.k[14]
     cdef double _k15 = ctx.k[15]
     cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
     cdef double X = _y[0]
     cdef double R = _y[1]
     cdef double Xd = _y[2]
@@ -272,6 +286,10 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k14 = ctx.k[14]
     cdef double _k15 = ctx.k[15]
     cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
     cdef double X = _y[0]
     cdef double R = _y[1]
     cdef double Xd = _y[2]
@@ -287,6 +305,73 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[1] = 0.0 / 0.0
     _Km[2] = 0.0 / 0.0
     _Km[3] = 0.0 / 0.0
+
+
+cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
+    of the general right-hand side in the current modes, a cam input in a dwell taking its
+    dwell values."""
+    cdef double tau = ctx.p[0]
+    cdef double q = ctx.p[1]
+    cdef double mu = ctx.p[2]
+    cdef double kappa = ctx.p[3]
+    cdef double zeta = ctx.p[4]
+    cdef double S = ctx.p[5]
+    cdef double n_c = ctx.p[6]
+    cdef double delta_s = ctx.p[7]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double _k6 = ctx.k[6]
+    cdef double _k7 = ctx.k[7]
+    cdef double _k8 = ctx.k[8]
+    cdef double _k9 = ctx.k[9]
+    cdef double _k10 = ctx.k[10]
+    cdef double _k11 = ctx.k[11]
+    cdef double _k12 = ctx.k[12]
+    cdef double _k13 = ctx.k[13]
+    cdef double _k14 = ctx.k[14]
+    cdef double _k15 = ctx.k[15]
+    cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
+    cdef double X = _y[0]
+    cdef double R = _y[1]
+    cdef double Xd = _y[2]
+    cdef double Rd = _y[3]
+    cdef double _cam0[4]  # H(T) and its derivatives
+    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
+
+    cdef int _k
+    for _k in range(16):
+        _J[_k] = 0.0
+    for _k in range(2):
+        _J[_k * 5 + 2] = 1.0  # d q'/d q'
+    cdef double _j0 = R*_k5 + _cam0[0]*_k4
+    cdef double _j1 = pow(_j0, n_c)
+    cdef double _j2 = (R - _cam0[0] < 0.0)
+    cdef double _j3 = Rd*_k7 + _cam0[1]*_k8
+    cdef double _j4 = Rd*_k8 + _cam0[1]*_k7
+    cdef double _j5 = (((_j1*_k6 + _j3 > 0.0)) if (_j2) else ((R*_k10 + _cam0[0]*_k9 + _j4 < 0.0)))
+    cdef double _j6 = (ctx.mode[1] == 0.0)
+    cdef double _j7 = (ctx.mode[1] == 1.0)
+    cdef double _j8 = R*_k4 + _cam0[0]*_k5 + _k11
+    cdef double _j9 = pow(_j8, n_c)
+    cdef double _j10 = (-R + S + _cam0[0] < 0.0)
+    cdef double _j11 = (((_j4 + _j9*_k6 > 0.0)) if (_j10) else ((R*_k9 + _cam0[0]*_k10 + _j3 + _k12 < 0.0)))
+    _J[8] = _k2
+    _J[9] = _k0
+    _J[10] = _k3
+    _J[11] = _k1
+    _J[12] = _k17
+    _J[13] = _k13*(_k2 + ((((_k6*((_j1*_k18/_j0) if (_j2) else (_k5))) if (_j5) else (0.0))) if (_j6) else (((0.0) if (_j7) else (-((_k6*((_j9*_k19/_j8) if (_j10) else (_k4))) if (_j11) else (0.0)))))))
+    _J[14] = _k20
+    _J[15] = _k13*(_k3 + ((((_k7) if (_j5) else (0.0))) if (_j6) else (((0.0) if (_j7) else (-((_k8) if (_j11) else (0.0)))))))
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -326,6 +411,10 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k14 = ctx.k[14]
     cdef double _k15 = ctx.k[15]
     cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
     cdef double X = _y[0]
     cdef double R = _y[1]
     cdef double Xd = _y[2]
@@ -362,6 +451,10 @@ cdef void events(double t, const double* _y, double* _g, Ctx* ctx) noexcept nogi
     cdef double _k14 = ctx.k[14]
     cdef double _k15 = ctx.k[15]
     cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
     cdef double X = _y[0]
     cdef double R = _y[1]
     cdef double Xd = _y[2]
@@ -402,6 +495,10 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k14 = ctx.k[14]
     cdef double _k15 = ctx.k[15]
     cdef double _k16 = ctx.k[16]
+    cdef double _k17 = ctx.k[17]
+    cdef double _k18 = ctx.k[18]
+    cdef double _k19 = ctx.k[19]
+    cdef double _k20 = ctx.k[20]
     cdef double X = _y[0]
     cdef double R = _y[1]
     cdef double Xd = _y[2]
@@ -468,7 +565,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 17
+_model.n_const = 21
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -478,6 +575,7 @@ _model.refresh = refresh
 _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
+_model.jac = jacobian
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -501,6 +599,7 @@ _MANIFEST_JSON = """
   "contact_hit_upper",
   "contact_open_upper"
  ],
+ "jacobian": "symbolic",
  "modes": [
   {
    "doc": "groove wall the roller touches",
@@ -645,7 +744,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:ea251a65fb01a96b477aeb87ec30649e092338fc93c4dbcf03877f878d2f4be2",
+ "source_hash": "sha256:5d9ff777c60c5d9e120e3db21dc017ee1859b236f86a4580393945c74b0d307c",
  "states": [
   {
    "doc": "follower output position over the stroke, X = x/h_m",

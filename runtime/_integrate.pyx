@@ -362,6 +362,28 @@ def eval_mass_stiffness(object capsule, double[::1] p, int[::1] law, double[::1]
     return M, K
 
 
+def eval_jacobian(object capsule, double[::1] p, int[::1] law, double[::1] law_par, double t,
+                  double[::1] y, element_modes=None):
+    """J = d(dy/dt)/dy at one point (n_states x n_states), cam segments looked up as by
+    eval_rhs, the force elements in ``element_modes``: the Jacobian of the current modes.
+    How the model forms it (symbolically or by differences in C) is its manifest's
+    "jacobian"."""
+    cdef ModelC* m = model_pointer(capsule)
+    cdef int ns = m.n_states
+    J = np.zeros((ns, ns))
+    cdef double[:, ::1] Jv = J
+    cdef int[::1] md = _mode_buffer(m, element_modes)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef Ctx ctx
+    if y.shape[0] != ns:
+        raise ValueError("state vector of the wrong length")
+    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    m.update_modes(t, &y[0], &ctx)
+    if ns:
+        m.jac(t, &y[0], &Jv[0, 0], &ctx)
+    return J
+
+
 def rhs_cost_ns(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
                 double t, double[::1] y, long n):
     """Mean wall time of one right-hand-side call in ns, over n calls in C through

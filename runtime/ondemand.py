@@ -8,11 +8,12 @@ progress lines (each stage with its time) are passed on.
 
 The cache lives in platformdirs' user cache folder (``CAMDYN_CACHE_DIR`` overrides it); an
 entry is keyed by a hash of what decides the compiled code: the model's source (the file's
-bytes, or the option set), the derivation code (every file of ``camdyn.derive``) and the
-camdyn, SymPy and Cython versions.  A build is written into a temporary folder and renamed
-into place when complete, so a second process building the same model at the same time
-cannot corrupt the entry (the later rename loses and its folder is removed), and a failed
-build leaves nothing behind.
+bytes, or the option set), the derivation code (every file of ``camdyn.derive``), the
+runtime's Cython headers (the ABI, runtime/abi.pxd) and the camdyn, SymPy and Cython
+versions.  A build is written into a temporary folder and renamed into place when
+complete, so a second process building the same model at the same time cannot corrupt the
+entry (the later rename loses and its folder is removed), and a failed build leaves nothing
+behind.
 """
 from __future__ import annotations
 
@@ -58,6 +59,18 @@ def _derive_digest() -> str:
     return h.hexdigest()
 
 
+@lru_cache(maxsize=1)
+def _headers_digest() -> str:
+    """Hash of the runtime's Cython headers (abi.pxd with CAMDYN_ABI, linalg.pxd, loops.pxi),
+    compiled into every model: a cached build from another ABI is never loaded."""
+    spec = importlib.util.find_spec("camdyn.runtime")
+    h = hashlib.sha256()
+    for root in spec.submodule_search_locations:
+        for path in sorted(Path(root).glob("*.px[di]")):
+            h.update(path.name.encode() + b"\0" + path.read_bytes())
+    return h.hexdigest()
+
+
 def _version(dist: str) -> str:
     try:
         return metadata.version(dist)
@@ -67,7 +80,7 @@ def _version(dist: str) -> str:
 
 def key(kind: str, payload: bytes) -> str:
     h = hashlib.sha256()
-    for part in (kind.encode(), payload, _derive_digest().encode(),
+    for part in (kind.encode(), payload, _derive_digest().encode(), _headers_digest().encode(),
                  *(f"{d}={_version(d)}".encode() for d in ("camdyn", "sympy", "Cython")),
                  sys.implementation.cache_tag.encode()):
         h.update(part + b"\0")

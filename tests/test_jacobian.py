@@ -1,0 +1,212 @@
+"""The generated Jacobians d(dy/dt)/dy against central differences of the right-hand side
+(issue 13, item 1).
+
+Every registered model, loaded compiled, at random admissible points: states near the default
+initial state, perturbed by a few per cent of each state's manifest "scale", parameters at
+their defaults and at a random point inside their ranges; in every cam segment (the cam
+argument put in each dwell and at the middle of each piece of the rise, for the cycloid, one
+rise piece, and the modified trapezoid, five), and for models with modes in every combination
+of the force elements' modes.
+
+Tolerance: 1e-6, relative to the row.  Each entry is weighed by its state's manifest scale s
+(states of micrometres and of radians in one matrix): |J_ij - D_ij| s_j <= 1e-6 sum_k |D_ik| s_k
+(or 1e-6 of 1e-3 |f_i| where that is larger: see _relative_error), D the central differences of eval_rhs with the steps h_j = 4e-4 s_j and h_j/2, extrapolated
+(Richardson).  The check is independent of the code under test: the differences use only
+eval_rhs, the compiled right-hand side, whose own correctness the other tests establish; their
+error, O(h^4) truncation and O(eps |f|/h) rounding, is about 1e-9 relative or less, while a
+wrong term of the symbolic Jacobian (a missing chain-rule factor through the cam input, a wrong
+sign) is of relative size 1.  (Plain central differences of step 1e-6 s were tried first: on
+the stiff DYNACAM variants (c = 1e6 N/m, shaft states of 1e-5 m) their rounding alone reached
+1e-4 in the velocity columns.)  Constrained models declare a finite-difference Jacobian (their
+manifest says so, and their compiled differences use other steps, 1e-3 s_j); the check there
+covers the plumbing and the steps, in both formulations.
+
+A point where a Piecewise of the right-hand side switches within the difference step (a
+contact opening, a stick-slip boundary) is no point of the current mode's Jacobian: a point
+whose differences of steps h and h/2 disagree with each other is skipped (and replaced), and the
+rejected points are counted so that the check cannot go empty.
+"""
+import itertools
+
+import numpy as np
+import pytest
+import sympy as sp
+
+from camdyn.derive.models import REGISTRY
+from camdyn.runtime import _integrate, laws
+from camdyn.runtime.models import load
+
+TOL = 1e-6
+LAWS = ("cycloidal", "modified-trapezoid")
+POINTS = 2          # random points per segment, mode combination and parameter set
+TOL_CONSTRAINED = 1e-3
+"""For constrained models both sides are differences of the same compiled rhs with other steps
+(1e-3 s_j there, 4e-4 s_j here): what they check is the plumbing, and their agreement is
+limited by the truncation of the compiled differences on the beam's Baumgarte terms at states
+off the constraints (measured up to 4e-4 on beam6), ample for an iteration matrix."""
+STEP = 4e-4         # difference step per unit of each state's scale
+
+
+def _law_arrays(model, key):
+    choice = laws.choose(key)
+    nf = max(len(model.manifest["cam_families"]), 1)
+    return (np.full(nf, choice.code, dtype=np.intc), np.full(nf, choice.par)), choice
+
+
+def _targets(choice):
+    """Dimensionless cam arguments in every segment: both dwells, the middle of each piece."""
+    bp = choice.breakpoints()
+    return [bp[0] - 0.3] + [(a + b) / 2 for a, b in zip(bp, bp[1:])] + [bp[-1] + 0.4]
+
+
+def _parameter_sets(model, rng):
+    """Defaults, and each parameter scaled by a random factor in [0.8, 1.25] where the range
+    allows (the solver switch of constrained models kept)."""
+    p0 = model.parameter_vector()
+    out = [p0]
+    p = p0.copy()
+    for k, spec in enumerate(model.manifest["parameters"]):
+        if spec["name"] == "formulation" or p0[k] == 0.0:
+            continue
+        value = p0[k] * rng.uniform(0.8, 1.25)
+        lo = -np.inf if spec["low"] is None else spec["low"]
+        hi = np.inf if spec["high"] is None else spec["high"]
+        if lo < value < hi:
+            p[k] = value
+    out.append(p)
+    return out
+
+
+def _place_cam(model, p, y, T, choice):
+    """(t, y) with the cam argument at T: by time for a time-affine argument, else by the
+    state the argument follows (solved from the manifest's argument text); the constrained
+    models' periodic profile by its angle."""
+    m = model.manifest
+    names = model.state_names
+    values = {s["name"]: v for s, v in zip(m["parameters"], p)}
+    profile = m.get("cam_profile")
+    if profile is not None:          # RDFD: rise [0, beta_r), dwell, fall [pi, pi + beta_r), dwell
+        beta = values["beta_r"]
+        if 0.0 <= T < 1.0:
+            angle = beta * T
+        elif T < 0.0:
+            angle = np.pi + beta * 0.5          # the fall, as the mirror of the rise
+        else:
+            angle = (beta + np.pi) / 2          # the outer dwell
+        y[names.index(profile["argument"])] = angle
+        return 0.0, y
+    t = 0.0
+    affine = model.cam_time_affine(p)
+    for inst, ab in zip(m["cam_instances"], affine):
+        if ab is not None:
+            a, b = ab
+            t = (T - b) / a
+            continue
+        arg = sp.sympify(inst["argument"], locals={n: sp.Symbol(n) for n in names + list(values)})
+        arg = arg.subs({sp.Symbol(k): v for k, v in values.items()})
+        state = sorted(arg.free_symbols, key=str)[0]
+        y[names.index(state.name)] = float(sp.solve(sp.Eq(arg, T), state)[0])
+    return t, y
+
+
+def _differences(model, p, law, law_par, t, y, modes, h):
+    """(f, central, d1, d2): f = eval_rhs at y, the central differences of eval_rhs
+    extrapolated from the steps h and h/2 (Richardson), and the plain central differences
+    of step h and h/2, column by column."""
+    ns = len(y)
+    Y = np.repeat(y[None, :], 4 * ns + 1, axis=0)
+    for j in range(ns):
+        for k, c in enumerate((1.0, -1.0, 0.5, -0.5)):
+            Y[1 + k * ns + j, j] += c * h[j]
+    F = _integrate.eval_rhs(model.capsule, p, law, law_par, np.full(4 * ns + 1, t), Y,
+                            element_modes=modes)
+    f0 = F[0]
+    fp, fm, fp2, fm2 = (F[1 + k * ns:1 + (k + 1) * ns] for k in range(4))
+    Yp, Ym, Yp2, Ym2 = (Y[1 + k * ns:1 + (k + 1) * ns].diagonal()[:, None] for k in range(4))
+    # row j of fp, ...: the state moved in its j-th component; the steps as represented
+    d1, d2 = (fp - fm) / (Yp - Ym), (fp2 - fm2) / (Yp2 - Ym2)
+    return f0, ((4.0 * d2 - d1) / 3.0).T, d1.T, d2.T
+
+
+def _relative_error(J, D, s, f):
+    """Largest error of J against D, each entry's as |J_ij - D_ij| s_j relative to its row's
+    sum_k |D_ik| s_k (the change of dy_i/dt over a scale step of every state), or where that
+    is larger to 1e-3 of the rate |f_i|, or to 1e-8 of the largest row in units of the
+    scales: a row that changes by less is below what differences can resolve (their rounding
+    is eps |f_i| / h, or that of the terms that cancel in a rate held at zero, as in a
+    stuck friction mode)."""
+    E = np.abs(J - D) * s[None, :]
+    rows = (np.abs(D) * s[None, :]).sum(axis=1)
+    rows = np.maximum(np.maximum(rows, 1e-3 * np.abs(f)), 1e-8 * s * (rows / s).max())
+    return float((E.max(axis=1) / np.maximum(rows, 1e-300)).max())
+
+
+def _element_modes(model):
+    modes = model.manifest["modes"]
+    if not modes:
+        return [None]
+    return [list(c) for c in itertools.product(*[range(len(md["values"])) for md in modes])]
+
+
+def _kink(d1, d2, s, f):
+    """True when the central differences of steps h and h/2 disagree by more than their
+    O(h^2) truncation allows: a switch (a kink of the right-hand side) within the step."""
+    return _relative_error(d1, d2, s, f) > 1e-3
+
+
+def _check(model, rng, formulations=(None,), tol=TOL):
+    s = model.state_scales()
+    worst, checked, skipped = 0.0, 0, 0
+    for key in LAWS:
+        (law, law_par), choice = _law_arrays(model, key)
+        for p_base in _parameter_sets(model, rng):
+            for form in formulations:
+                p = p_base.copy()
+                if form is not None:
+                    p[model.parameter_names.index("formulation")] = form
+                y0 = model.initial_state(p)
+                for T in _targets(choice):
+                    for modes in _element_modes(model):
+                        got = 0
+                        for attempt in range(20 * POINTS):
+                            if got == POINTS:
+                                break
+                            y = y0 + s * rng.normal(0.0, 0.03, size=len(s))
+                            t, y = _place_cam(model, p, y, T, choice)
+                            h = STEP * s
+                            f0, D, D1, D2 = _differences(model, p, law, law_par, t, y, modes, h)
+                            if not (np.all(np.isfinite(f0)) and np.all(np.isfinite(D))) \
+                                    or _kink(D1, D2, s, f0):
+                                skipped += 1
+                                continue
+                            J = _integrate.eval_jacobian(model.capsule, p, law, law_par, t, y,
+                                                         element_modes=modes)
+                            err = _relative_error(J, D, s, f0)
+                            assert err <= tol, (model.name, key, T, modes, form, err)
+                            worst = max(worst, err)
+                            got += 1
+                            checked += 1
+                        assert got == POINTS, (f"{model.name}: only {got} smooth points in "
+                                               f"segment T={T} modes {modes}")
+    return worst, checked, skipped
+
+
+@pytest.mark.parametrize("name", sorted(REGISTRY))
+def test_jacobian_matches_central_differences(name, rng, record_property):
+    model = load(name)
+    kind = model.manifest["jacobian"]
+    constrained = bool(model.manifest.get("n_constraints"))
+    assert kind == ("finite-difference" if constrained else "symbolic")
+    worst, checked, skipped = _check(model, rng, (0.0,) if constrained else (None,),
+                                     TOL_CONSTRAINED if constrained else TOL)
+    record_property("largest_relative_difference", worst)
+    print(f"{name}: {checked} points, {skipped} skipped, largest relative difference {worst:.2e}")
+    assert checked > 0
+
+
+@pytest.mark.xfail(strict=True, reason="open (issue 13, item 1): in the partitioned formulation "
+                   "the compiled differences of the beam follower disagree with these at some "
+                   "points of the fall segment (up to ~180 relative on beam1-4); not diagnosed")
+def test_partitioned_beam_jacobian(rng):
+    """The partitioned formulation of the beam follower, as above (tolerance 1e-3)."""
+    _check(load("beam2"), rng, (1.0,), TOL_CONSTRAINED)
