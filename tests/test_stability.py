@@ -201,3 +201,29 @@ def test_existing_failures_stay():
     # x^2/8 = 0.85 and does not reach rounding level in its 100 iterations
     with pytest.raises(SimulationError, match="did not converge"):
         simulate("one_dof", {"tau": 0.05}, 3.0, "koster", step=2.6 / OMEGA)
+
+
+def test_finite_difference_jacobian_of_the_compiled_rhs():
+    """eval_jacobian against the one-DOF model's Jacobian by hand, thesis (3.1) with the damper
+    of (6.47): d(X, X')/dT = (X', w^2 (H - X) - 2 q w (X' - H')), J = [[0, 1], [-w^2, -2 q w]]."""
+    from camdyn.runtime import _integrate
+    from camdyn.runtime.models import load
+
+    m = load("one_dof")
+    res = simulate("one_dof", {"tau": 0.05, "q": 0.1}, 1.5, "dp54", rtol=1e-8)
+    J = _integrate.eval_jacobian(m.capsule, res.p, res.law_codes, res.law_pars, res.t[:5],
+                                 res.y[:5], np.ones(2), res.mode[:5])
+    want = np.array([[0.0, 1.0], [-OMEGA ** 2, -2 * 0.1 * OMEGA]])
+    assert np.allclose(J, want[None], rtol=1e-7, atol=1e-6)
+
+
+def test_cli_integrate_refuses_and_reports():
+    p = camdyn("integrate", "one_dof", "--set", "tau=0.05", "--t-end", "3", "--method", "rk4",
+               "--step", "0.03")
+    assert p.returncode == 1 and p.stdout == ""
+    assert len(p.stderr.strip().splitlines()) == 1
+    assert p.stderr.startswith("camdyn integrate: run failed: one_dof with rk4: step h = 0.03")
+    p = camdyn("integrate", "one_dof", "--set", "tau=0.05", "--t-end", "3", "--json")
+    assert p.returncode == 0, p.stderr
+    out = json.loads(p.stdout)
+    assert out["stiff_from_T"] is None and out["warnings"] == []
