@@ -13,6 +13,7 @@ tests; they call the model through its function pointers.
 """
 from cpython.pycapsule cimport PyCapsule_GetPointer, PyCapsule_IsValid
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
+from libc.math cimport NAN, fabs, fmax
 from libc.stdlib cimport free
 from libc.string cimport memcpy
 from posix.time cimport CLOCK_MONOTONIC, clock_gettime, timespec
@@ -28,11 +29,12 @@ DP54 = METHOD_DP54
 KOSTER = METHOD_KOSTER
 
 RunRecord = namedtuple("RunRecord", "status rows modes n n_steps n_rejected n_rhs t_fail seconds "
-                                    "n_events")
+                                    "n_events t_stiff")
 RunRecord.__doc__ = """What Integrator.run returns: the status (STATUS_TEXT), the record (``rows``:
 t, states and slopes at every recorded point; ``modes`` in force from each point on; ``n`` of
 them filled), step and right-hand-side counts, where a failed run stopped (``t_fail``), the
-wall time of the compiled loops and the number of events."""
+wall time of the compiled loops, the number of events and, for DP54, the time where Hairer's
+stiffness test first fired (``t_stiff``, NaN if it never did)."""
 
 STATUS_TEXT = {
     STATUS_OK: "ok",
@@ -169,6 +171,7 @@ cdef class Integrator:
         run.n_rhs = 0
         run.t_fail = self.t0
         run.err_old = 1e-4
+        run.t_stiff = NAN
         cdef int status
         cdef timespec c0, c1
         with nogil:
@@ -192,7 +195,7 @@ cdef class Integrator:
                 free(run.rec.rows)
                 free(run.rec.mode)
         return RunRecord(status, rows, modes, n, run.n_steps, run.n_rejected, run.n_rhs,
-                         run.t_fail, seconds, run.n_events)
+                         run.t_fail, seconds, run.n_events, run.t_stiff)
 
 
 # -- evaluation helpers (vectorized, compiled) ------------------------------------
@@ -325,6 +328,55 @@ def eval_rhs(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
         m.update_modes(t[j], &y[j, 0], &ctx)
         m.rhs(t[j], &y[j, 0], &o[j, 0], &ctx)
     return out
+
+
+def eval_jacobian_fd(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
+                  const double[:] t, y_in, const double[::1] scale, mode=None, element_modes=None):
+    """Jacobians df/dy of the first-order right-hand side at the points (t, y), by central
+    differences of the compiled rhs (steps 1e-6 max(|y_i|, scale_i)); shape (n, ns, ns).
+
+    ``mode``: all modes per point (as recorded), held fixed while the state is perturbed, as
+    the integration loops hold them within a step; else the cam segments are looked up at each
+    point and the force elements take ``element_modes``.  For stability estimates
+    (camdyn.runtime.stability); it does not depend on a generated Jacobian."""
+    cdef const double[:, :] y = _rows_contiguous(y_in)
+    cdef ModelC* m = model_pointer(capsule)
+    cdef Py_ssize_t n = t.shape[0], j
+    cdef int ns = m.n_states, nm = m.n_modes, r, c
+    if y.shape[1] != ns or scale.shape[0] != ns:
+        raise ValueError("state or scale array of the wrong width")
+    J = np.empty((n, ns, ns))
+    cdef double[:, :, ::1] Jv = J
+    cdef double[::1] yp = np.empty(ns), fp = np.empty(ns), fm = np.empty(ns)
+    cdef int[::1] md = _mode_buffer(m, element_modes)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef int[:, ::1] given
+    cdef bint have = mode is not None and nm > 0
+    cdef double d
+    if have:
+        given = np.ascontiguousarray(mode, dtype=np.intc)
+    cdef Ctx ctx
+    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    for j in range(n):
+        if have:
+            memcpy(&md[0], &given[j, 0], nm * sizeof(int))
+            m.refresh(&ctx)
+        else:
+            m.update_modes(t[j], &y[j, 0], &ctx)
+        for c in range(ns):
+            yp[c] = y[j, c]
+        for c in range(ns):
+            d = 1e-6 * fmax(fabs(y[j, c]), scale[c])
+            if not d > 0.0:
+                d = 1e-6
+            yp[c] = y[j, c] + d
+            m.rhs(t[j], &yp[0], &fp[0], &ctx)
+            yp[c] = y[j, c] - d
+            m.rhs(t[j], &yp[0], &fm[0], &ctx)
+            yp[c] = y[j, c]
+            for r in range(ns):
+                Jv[j, r, c] = (fp[r] - fm[r]) / (2.0 * d)
+    return J
 
 
 def eval_events(object capsule, double[::1] p, int[::1] law, double[::1] law_par, double t,

@@ -74,6 +74,7 @@ cdef struct Run:
     long max_events
     double t_fail
     double err_old
+    double t_stiff         # DP54: where Hairer's stiffness test (DOPRI5) first fired; NaN if never
 
 ctypedef void (*prep_fn)(Ctx* ctx) noexcept nogil
 ctypedef void (*rhs_fn)(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil

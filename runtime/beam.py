@@ -133,6 +133,8 @@ def summarize(case: Case, res, cpu: float) -> dict:
             "modes": case.modes, "revolutions": case.revolutions,
             "max_abs_tip_deflection": vmax, "max_constraint_residual": phi,
             "dwell_frequency_hz": dwell_frequency(case), "n_steps": int(res.stats["n_steps"]),
+            # DP54's stiffness test (Hairer): where it fired, in the model's time t (s)
+            "stiff_from_T": res.stiff_from_T, "warnings": list(res.warnings),
             "cpu_seconds": cpu, "case": asdict(case)}
 
 

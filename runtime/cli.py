@@ -140,11 +140,38 @@ def residual_run(model: str, tau: float, fa: float | None, law: str, theta: floa
         out["Bdot_dev_max"] = extreme(res, "Bdot_dev", t0, t1, absolute=True, minimum=False)[0]
         out["windup_max"] = extreme(res, "windup", t0, t1, absolute=False, minimum=False)[0]
     out.update({k: res.stats[k] for k in ("n_steps", "n_rejected", "n_rhs")})
+    out.update(run_health(res))
     out["cpu_seconds"] = cpu  # integration and post-processing
     if law == "cycloidal" and params.get("Fa", 0.0) == 0.0 and q == 0.0:
         out["U0_closed_form"] = closed_forms.U0(tau)
         out["U0dd_closed_form"] = closed_forms.U0dd(tau)
     return out
+
+
+def run_health(res) -> dict:
+    """What a run says about its own reliability, for the JSON: ``warnings`` (a fixed step near
+    the stability boundary) and ``stiff_from_T`` (DP54: where the problem became stiff, else
+    None)."""
+    return {"warnings": list(res.warnings), "stiff_from_T": res.stiff_from_T}
+
+
+# the implicit method to name in the stiffness note, once one exists in methods.METHODS
+IMPLICIT_HINT = "an implicit (L-stable) method"
+
+
+def report_health(prog: str, out: dict, tname: str = "T") -> None:
+    """One stderr line per warning, and one for a run that became stiff."""
+    for w in out.get("warnings") or ():
+        print(f"{prog}: warning: {w}", file=sys.stderr)
+    if out.get("stiff_from_T") is not None:
+        print(f"{prog}: note: the problem became stiff at {tname} = {out['stiff_from_T']:.6g}; "
+              f"{IMPLICIT_HINT} would take larger steps", file=sys.stderr)
+
+
+def run_failed(prog: str, exc: Exception) -> int:
+    """A run that failed (SimulationError): one line on stderr, exit status 1."""
+    print(f"{prog}: run failed: {exc}", file=sys.stderr)
+    return 1
 
 
 def _cmd_residual(args) -> int:
@@ -157,18 +184,19 @@ def _cmd_residual(args) -> int:
     except CamdynInputError as exc:
         return fail(prog, name_argument(str(exc)))
     except SimulationError as exc:
-        return fail(prog, str(exc))
+        return run_failed(prog, exc)
+    report_health(prog, out)
     if not args.no_error_estimate:
         try:
             out.update(residual_errors(args, out))
         except SimulationError as exc:
-            return fail(prog, f"the error estimate's second run failed: {exc}")
+            return run_failed(prog, f"the error estimate's second run failed: {exc}")
     if args.json:
         print(json.dumps(out))
     else:
         from .accuracy import with_errors
 
-        print("\n".join(with_errors(out)))
+        print("\n".join(with_errors({k: v for k, v in out.items() if k != "warnings"})))
     return 0
 
 
@@ -273,7 +301,7 @@ def integrate_run(model_arg: str, params: dict, initial: dict, t_end: float, met
                "time_unit": model.manifest["time"]["unit"],
                "state": {n: float(final[n][0]) for n in model.state_names},
                "n_steps": int(res.stats["n_steps"]), "n_rhs": int(res.stats["n_rhs"]),
-               "cpu_seconds": cpu, "status": "ok"}
+               "cpu_seconds": cpu, "status": "ok", **run_health(res)}
     return summary, res
 
 
@@ -348,8 +376,8 @@ def _cmd_integrate(args) -> int:
     except CamdynInputError as exc:
         return fail(prog, str(exc))
     except SimulationError as exc:
-        print(f"{prog}: run failed: {exc}", file=sys.stderr)
-        return 1
+        return run_failed(prog, exc)
+    report_health(prog, summary, res.model.manifest["time"]["name"])
     if args.json:
         print(json.dumps(summary, indent=1))
         return 0
@@ -385,9 +413,11 @@ def _cmd_run(args) -> int:
 
             summary, res = dynacam.run(sc, progress=say)
             summary["figures"] = dynacam.plot(sc, res, summary, out_dir)
+            report_health("camdyn run", summary)
             _print_dynacam(sc, summary)
         else:
             summary = beam_follower_run(sc.case, None, say)
+            report_health("camdyn run", summary, "t")
             _print_beam("camdyn run", summary)
     except CamdynInputError as exc:
         return fail("camdyn run", str(exc))
@@ -436,8 +466,8 @@ def _cmd_simulate(args) -> int:
     except CamdynInputError as exc:
         return fail("camdyn simulate", str(exc))
     except SimulationError as exc:
-        print(f"camdyn simulate: run failed: {exc}", file=sys.stderr)
-        return 1
+        return run_failed("camdyn simulate", exc)
+    report_health("camdyn simulate", summary)
     if args.json:
         print(json.dumps(summary, indent=1))
         return 0
@@ -526,6 +556,8 @@ def beam_follower_run(case, out_dir=None, progress=None, announce_run=True) -> d
         out[key] = summary[key]
     out["undercut"] = cut.message if cut else None
     out["n_steps"] = summary["n_steps"]
+    out["stiff_from_T"] = summary["stiff_from_T"]   # model time t, s
+    out["warnings"] = summary["warnings"]
     out["cpu_seconds"] = summary["cpu_seconds"]
     if out_dir is not None:
         done = iter(range(1, len(planned) + 1))
@@ -561,8 +593,8 @@ def _cmd_beam_follower(args) -> int:
     except CamdynInputError as exc:
         return fail(prog, _beam_argument(str(exc)))
     except SimulationError as exc:
-        print(f"{prog}: run failed: {exc}", file=sys.stderr)
-        return 1
+        return run_failed(prog, exc)
+    report_health(prog, out, "t")
     if args.json:
         _warn_undercut(prog, out)
         print(json.dumps(out, indent=1))
@@ -579,7 +611,8 @@ def _warn_undercut(prog, out) -> None:
 
 def _print_beam(prog, out) -> None:
     _warn_undercut(prog, out)
-    rows = [(k, v) for k, v in out.items() if k != "figures" and not k.endswith("_error")]
+    rows = [(k, v) for k, v in out.items()
+            if k not in ("figures", "warnings") and not k.endswith("_error")]
     rows = [(k, ("yes, see the warning" if v else "no") if k == "undercut" else v) for k, v in rows]
     width = max(len(k) for k, _ in rows)
     for k, v in rows:

@@ -203,6 +203,10 @@ def summarize(scene: Scene, model, res, ch: dict, cpu: float) -> dict:
                                         if "motor_speed_var" in model.output_names else None)
     out["n_events"] = int(res.stats["n_events"])
     out["n_steps"] = int(res.stats["n_steps"])
+    # DP54's stiffness test (Hairer): where it fired, as the nominal T; fixed-step warnings
+    out["stiff_from_T"] = (None if res.stiff_from_T is None
+                           else res.stiff_from_T / t_m + scene.T_start)
+    out["warnings"] = list(res.warnings)
     out["cpu_seconds"] = cpu
     out["characteristics"] = {k: ch[k] for k in ("t_m", "c_c", "m", "tan_alpha_me", "c_tan", "m_tan")}
     return out

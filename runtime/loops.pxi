@@ -22,7 +22,7 @@
 # Hairer's continuous-extension form: r4 = 0 is the cubic Hermite interpolant
 # (RK4, thesis scheme); DP54 stores its fourth-order r4 per step in `extra`.
 
-from libc.math cimport fabs, fmax, fmin, isfinite, pow, sqrt
+from libc.math cimport fabs, fmax, fmin, isfinite, isnan, pow, sqrt
 from libc.stdlib cimport free, malloc
 from libc.string cimport memcpy, memset
 
@@ -441,6 +441,10 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
     cdef const double* atol = run.atol
     cdef long n_steps = run.n_steps, n_rej = run.n_rejected, n_rhs = 0, max_steps = run.max_steps
     cdef bint last, rejected = False
+    # Hairer's stiffness test (DOPRI5, Hairer & Wanner, Solving ODEs II, sec. IV.2): counters
+    # of detections (iasti) and of non-stiff steps since the last one (nonsti), per interval
+    cdef int iasti = 0, nonsti = 0
+    cdef double st_num, st_den, st_a, st_b, st_c, st_wq, d, e
     memcpy(y, run.y, sizeof(y))
     # slopes jump at a breakpoint: every interval starts afresh
     rhs(t, y, k1, ctx)
@@ -511,6 +515,48 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
                 r4[i] = h * (DP_D1 * k1[i] + DP_D3 * k3[i] + DP_D4 * k4[i] + DP_D5 * k5[i]
                              + DP_D6 * k6[i] + DP_D7 * k7[i])
             n_steps += 1
+            # stiffness test (Hairer's DOPRI5): stages 6 and 7 sit at the same time t + h
+            # (FSAL), so w = k7 - k6 ~ J v with v = yn - ys, and h |w|/|v| estimates h times
+            # the spectral radius of the Jacobian there; beyond 3.25 (near the boundary of
+            # DP5's stability region, 3.31 on the negative real axis) the step is limited by
+            # stability, not accuracy.  Fired at the 15th detection, counted back to zero
+            # after 6 non-stiff steps (DOPRI5's IASTI, NONSTI); only the first time is
+            # recorded, the run goes on.
+            # The norm: DOPRI5's Euclidean one reads |K x|/|x| = omega^2, not omega, for a
+            # difference along the positions of an undamped oscillator (J = [[0, 1], [-K, 0]]
+            # is far from normal when omega >> 1) and flags the one-DOF model at rtol 1e-6.
+            # Here the positions are weighted by the frequency estimate
+            # omega2 = |w_q'|/|v_q| (w_q = v_q' exactly), which makes the ratio omega for
+            # both an undamped and an overdamped mode; first-order states count plainly.
+            st_a = 0.0    # |v_q|^2
+            st_b = 0.0    # |v_q'|^2 (+ first-order states)
+            st_c = 0.0    # |w_q'|^2 (+ first-order states)
+            st_wq = 0.0   # |w_q|^2
+            for i in range(_NS):
+                d = yn[i] - ys[i]
+                e = k7[i] - k6[i]
+                if i < _NQ:
+                    st_a += d * d
+                    st_wq += e * e
+                else:
+                    st_b += d * d
+                    st_c += e * e
+            if st_a > 0.0:
+                d = sqrt(st_c / st_a) if _NQ > 0 else 1.0
+                st_num = d * st_wq + st_c
+                st_den = d * st_a + st_b
+            else:
+                st_num = st_wq + st_c
+                st_den = st_a + st_b
+            if st_den > 0.0 and h * sqrt(st_num / st_den) > 3.25:
+                nonsti = 0
+                iasti += 1
+                if iasti == 15 and isnan(run.t_stiff):
+                    run.t_stiff = t
+            else:
+                nonsti += 1
+                if nonsti == 6:
+                    iasti = 0
             if _NE > 0:
                 hit = _event_in_step(run, t, h, y, yn, k1, k7, r4, g0, g1, &s_hit)
                 if hit >= 0:

@@ -26,6 +26,16 @@ class Result:
         self.law_codes, self.law_pars = sim.law_codes, sim.law_pars
         self.p = p
         self._out = out
+        # fixed-step methods: the stability estimate (camdyn.runtime.stability.Estimate) and
+        # the warnings of a step near the boundary, set by Simulator.run
+        self.stability = None
+        self.warnings: list[str] = []
+
+    @property
+    def stiff_from_T(self) -> float | None:
+        """DP54: the time where Hairer's stiffness test (DOPRI5) first fired, else None."""
+        t = getattr(self._out, "t_stiff", float("nan"))
+        return None if t != t else float(t)
 
     @cached_property
     def stats(self) -> dict:

@@ -12,7 +12,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from . import _integrate, laws as _laws, methods as _methods
+from . import _integrate, laws as _laws, methods as _methods, stability as _stability
 from .errors import CamdynInputError, SimulationError
 from .models import CompiledModel, load
 from .result import Result
@@ -108,6 +108,7 @@ class Simulator:
         y_init = m.initial_state() if y0 is None else np.array(y0, dtype=float).ravel()
         if y_init.shape != (n,) or not np.all(np.isfinite(y_init)):
             raise CamdynInputError(f"y0 must be {n} finite numbers ({', '.join(m.state_names)})")
+        self._y_init = y_init
         if method.adaptive:
             base = method.atol if method.atol is not None else 1e-3 * method.rtol
             atol = np.ascontiguousarray(base * m.state_scales(), dtype=float)
@@ -142,19 +143,58 @@ class Simulator:
         return hit
 
     def run(self, params: dict | None = None) -> Result:
-        """One run with these parameter values (defaults for the ones not given)."""
+        """One run with these parameter values (defaults for the ones not given).
+
+        A failed run raises SimulationError; so does a fixed-step run whose step lies beyond
+        the method's stability boundary, checked before the run at its start and after it at
+        a sample of recorded points (camdyn.runtime.stability).  A step near the boundary
+        leaves a warning in ``result.warnings``; DP54 records where Hairer's stiffness test
+        fired in ``result.stiff_from_T``.
+        """
         m = self.model
         p = m.parameter_vector(params)
         stops, cap = self.stops_and_capacity(p)
         y0 = None if self._y0_given else m.initial_state(p)
+        tname = m.manifest["time"]["name"]
+        fixed = not self.method.adaptive
+        est = None
+        if fixed:
+            y_start = self._y_init if y0 is None else y0
+            est = self._stability(p, [self.t0], [y_start])
+            if est is not None and not est.stable:
+                raise SimulationError(_stability.refusal(m.name, tname, est))
         out = self.integrator.run(p, stops, cap or self._cap, y0)
+        if fixed:
+            # during the run: the frozen Jacobian changes with the cam position and the modes
+            rows = out.rows[:out.n]
+            idx = _stability.sample_indices(rows[:, 0], out.n)
+            idx = idx[np.all(np.isfinite(rows[idx]), axis=1)]
+            if idx.size:
+                ns = len(m.state_names)
+                during = self._stability(p, rows[idx, 0], rows[idx, 1:1 + ns], out.modes[idx])
+                if during is not None and (est is None or during.largest_stable_step
+                                           < est.largest_stable_step):
+                    est = during
+            if est is not None and not est.stable:
+                raise SimulationError(_stability.refusal(m.name, tname, est))
         if out.status != 0:
             raise SimulationError(f"{m.name} with {self.method.name}: "
                                   f"{_integrate.STATUS_TEXT[out.status]} at "
-                                  f"{m.manifest['time']['name']} = {out.t_fail:.6g}")
+                                  f"{tname} = {out.t_fail:.6g}")
         if not cap:
             self._cap = max(256, out.n + out.n // 4)
-        return Result(self, p, out)
+        res = Result(self, p, out)
+        res.stability = est
+        if est is not None and est.near:
+            res.warnings.append(_stability.warning(tname, est))
+        return res
+
+    def _stability(self, p, times, states, modes=None):
+        """The stability estimate of this fixed-step method at the points given."""
+        ev = _stability.spectra(self.model, p, self.law_codes, self.law_pars, times, states,
+                                modes, None if modes is not None else
+                                np.array(self.modes0, dtype=np.intc))
+        return _stability.assess(self.method.name, self.method.step, np.asarray(times, float), ev)
 
 
 @lru_cache(maxsize=32)
