@@ -104,9 +104,11 @@ class RODAS4(DP54):
     step is fixed, and order 4 suits the moderate tolerances of design runs.  Stiffly
     accurate and L-stable, it damps the parasitic high frequencies (a stiff shaft, a beam's
     higher modes, a penalty contact) in one step instead of resolving them, as DP54 must to
-    stay stable.  The Jacobian is taken by forward differences of the right-hand side,
-    afresh at every accepted point (n_states + 1 right-hand-side calls, counted in n_rhs),
-    until the models provide the generated one.  Error control, breakpoints and events
+    stay stable.  The Jacobian and df/dt are taken by central differences of the
+    right-hand side (a Rosenbrock method needs an accurate Jacobian for its order; forward
+    differences were not accurate enough on the beam follower), afresh at every accepted
+    point and kept through rejections: 2 n_states + 2 right-hand-side calls per step,
+    counted in n_rhs, until the models provide the generated Jacobian.  Error control, breakpoints and events
     are those of DP54 (rtol, atol the same way); dense output is the cubic Hermite
     interpolant of the recorded points and slopes, O(h^4) like the method.
     """
