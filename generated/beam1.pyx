@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:800681ee0fac4877aa56a042e079fa36a7f54f032454d99804ddfbb543d635a7
-# Text hash: sha256:0cba1e719ac8f1c70192ac7065368ade546b83b7db5c8f7b70a6efdf7a1fa7e1
+# Derivation key: sha256:341ce3b9fd82ab43eb4be687bf0b868373e229fc814d8f0d6e8d1573ddd91f34
+# Text hash: sha256:509c64d0cc0164a49eb8155e43c9a4d633732693ab3c1933dfad5fd52a4e3184
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:5d2a44cf8e25feac525e98db3e8f9b86544d9ee8be1264146b5926c52bc1d882
@@ -92,6 +92,7 @@ cdef enum:
     _NE = 2
     _NQ1 = 3
     _NE1 = 2
+    _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up

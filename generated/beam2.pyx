@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:011c00720fa19ab195747cb6e107f7764153d9b99709641581237c67ec5974e9
-# Text hash: sha256:09341b90acfa09c12b146c16326f5a6a3b74245e7ee715c6e4bad2fc270322d7
+# Derivation key: sha256:fc443563e55925043b842d45696ab25ad52508f6187993453e9849ff0b460ffd
+# Text hash: sha256:b8f13cf2de7ba024872993a83c7af6aa8efbbd6faed01406989c2ff7089bb314
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
 # Source hash: sha256:78f7890af05f0d7cbc1a97f2df27b3a223fc1176389818e93d00f4462115a453
@@ -92,6 +92,7 @@ cdef enum:
     _NE = 2
     _NQ1 = 4
     _NE1 = 2
+    _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up

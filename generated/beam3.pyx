@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a604f85e49d2d177fa5c7de3432993c6a72a4977fb3fdf4952129243bb3adf4f
-# Text hash: sha256:fdd4c06f000ccca2598cbbee488c21187994155016c2ffe5a894ca9f4deb36fe
+# Derivation key: sha256:c2a3fe1595b949ea77faa2dbf9b798d7213fe31b29fcdb406e1e21c68a7cb5b2
+# Text hash: sha256:c7aa0a999073aa8454fac1e99124072ed5e0178e1bbaf6ed9d89876253f2f7e4
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:1995514ee23bf2a387c3e316d939e577766058354c944b09ea000874730d2f77
@@ -92,6 +92,7 @@ cdef enum:
     _NE = 2
     _NQ1 = 5
     _NE1 = 2
+    _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up

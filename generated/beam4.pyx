@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4887ea54ed54967f7d2f3f54a3f4b8837467d6540598001ab0a0f7580a8bb270
-# Text hash: sha256:fd1343c080fda91cb2e58f5c0a679d67105e21e38adf618907ef9c5c01885a7d
+# Derivation key: sha256:d504cfa5463f772ab9dfff5009eae2682fa7626fc9cb22c8846531ef2cb21248
+# Text hash: sha256:90aca4e19471620b68bba8f21514885e85cc4199a1c79733d0e9df5846aaea5a
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:16f611ebdb86cbe46e97003bef7d174a31629b18ebc930cf1c061e272d8922ef
@@ -92,6 +92,7 @@ cdef enum:
     _NE = 2
     _NQ1 = 6
     _NE1 = 2
+    _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up

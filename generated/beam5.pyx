@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ae5d14ec299ee9d8cd6327a2b6d6cc7c78c66e362aead67dffdc894b2cb2ed30
-# Text hash: sha256:a661556b12384c47102888605e95e9f20a9c7f7aedd054cd2cb6c4cba6e2e1f1
+# Derivation key: sha256:668f12355671d7216682aa884596cc59d512387ac6f8f5a8fce997ded0a3bcd0
+# Text hash: sha256:4f7e8706432ed758a020eca23fa247674cdf721058039f7a44b5e92bbfb126ac
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:8fe2954e6a569e2d27d4a17e9205dc00b2f11a367c65233e0b9bd0aa5c816b1f
@@ -92,6 +92,7 @@ cdef enum:
     _NE = 2
     _NQ1 = 7
     _NE1 = 2
+    _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up

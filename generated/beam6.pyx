@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a57fba212ed3bf50abe337a21031617bed2047edfdf3f0972f3b3d3d62560041
-# Text hash: sha256:8159eae7c719dc2e2824d8cfdc011b8269b0ae545b062405cd30720ab3bd99cf
+# Derivation key: sha256:db059f991612507ff61fbe7a2e9b0b6b20029ab79d8e57d22aa8881873d1f2bb
+# Text hash: sha256:5ea6abcb86c5485951314546f42ebdcad6e4560cc07d9100cee0b1d58db76209
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:0fe486664fd6bf30c39722ff29faf89fc0ef2fe2dafedd250fc815b51f862f63
@@ -92,6 +92,7 @@ cdef enum:
     _NE = 2
     _NQ1 = 8
     _NE1 = 2
+    _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up

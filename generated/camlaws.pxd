@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8e729db1f85020c12b9f7f5693e4b2f64fdd8a31ca4a9008b6d0d4ab693a1a81
-# Text hash: sha256:216994944a5bb2a406c6c20bedadac5b3f83378bee0565b88558eca58a40fa0e
+# Derivation key: sha256:49965379aaa7e2058b5a68381b3995644c79b1ad148f31ba7ec7366bfcdc916e
+# Text hash: sha256:5ac361e589670d77d383a2ce600439431465c84c1153bf977b04586109b314e5
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),

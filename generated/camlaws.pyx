@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8e729db1f85020c12b9f7f5693e4b2f64fdd8a31ca4a9008b6d0d4ab693a1a81
-# Text hash: sha256:c72e99c8053045ec5e65943ad061b06bd5b8781a43be3a5bcf7691bbf6191fbc
+# Derivation key: sha256:49965379aaa7e2058b5a68381b3995644c79b1ad148f31ba7ec7366bfcdc916e
+# Text hash: sha256:105ffebcbc00e5ebdf5505b747d1671550f5941588b59e605237f2e8118b5582
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6af487520ee1aa93313d9e13ad951d4af8de996534d0c8dda301ded744c8630d
-# Text hash: sha256:3fa37091711fe57b3a86b3dc2d618c5d87a764e19b5b812d8ef0ce5aca8a2c66
+# Derivation key: sha256:ccf2ba0e78754a9023649d8e3a401dec438e5eed671c84365a3047828a5b0dce
+# Text hash: sha256:f20c1dd8912c97eddd3972bbf4cd7e3a8c7f399aa8cf864d2d1a8b5a8ed469cb
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:f01a70f6e6b79e15c5fd2d981c5804e2cb64ac4ef41c2bf10add43b5b1e57712
@@ -46,6 +46,7 @@ cdef enum:
     _NE = 0                  # events
     _NQ1 = 1                 # array sizes that must not be zero
     _NE1 = 1
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c77e13e6f4dbc863af55c6b3a064955ab95931a02afd8d872dca091773064309
-# Text hash: sha256:a82d3d409ac69a46888be82410f83cfabbe43e875b2cb716006345d1926ceab8
+# Derivation key: sha256:fa498b34c07b3bbbebb309b578a166a5012ebbfe65b84fa29dcd7383992532e4
+# Text hash: sha256:dea490fc364ad9f50414f17f7d8e6da66bd42bec42288ba774305f5c0d0f71e4
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:30c2e2c54135369bb66802da83c9643f2cf13c9f8ba5b79248ab4f2224fd099d
@@ -47,6 +47,7 @@ cdef enum:
     _NE = 2                  # events
     _NQ1 = 2                 # array sizes that must not be zero
     _NE1 = 2
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi

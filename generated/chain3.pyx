@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a4742da95942ea73bde63e4eb821fc701f77ebd5f4a8b16e0f01ba8cf93232ce
-# Text hash: sha256:42b7fd32be02db4db7981d003f00d062267fd783c43debfb15734841e00715ca
+# Derivation key: sha256:c6d59957d431dc21efaf51bbf899cdb46bc4826a8dbfdf1fa81f297ed183323d
+# Text hash: sha256:a8c7d783d20e07d4ca738ab1bfc538726e294079e1c5cbb18b60476e35221f43
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:806a3b93fbc8a678464e19f0ad6c91940cc12473a197026e892f70a5be2771f5
@@ -42,6 +42,7 @@ cdef enum:
     _NE = 0                  # events
     _NQ1 = 3                 # array sizes that must not be zero
     _NE1 = 1
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:aa52323558bf35c61eb104e92d6bbd347d768ba2b6cfc5da28614c16dcb4452d
-# Text hash: sha256:168f6fd5ee115e6fd40efcec1512ccedca83985f94256ef247dccbe7be8d23a1
+# Derivation key: sha256:e7877c68f5f5e04f250c37264494743fab8b9227a6b0c22ed8fd71ddddc3de9d
+# Text hash: sha256:15616a6fa304ed3175f24c73abd996896b81cfdb4b67abb55117af87434bd156
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:f088bfd9d8d2b4bc1fc4d262d063949d46169006a69df9b54facca0bec628623
@@ -79,6 +79,7 @@ cdef enum:
     _NE = 10                  # events
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 10
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # gear_lift_drive

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:2aa049d5d902a47eb458e550c97d9da0bcb4b0f01eb1b5c2706a76368167619f
-# Text hash: sha256:96ec99da8ec364c78a38883b44b4c1d81523e55223e62cd7963e2b5a09af915e
+# Derivation key: sha256:8d4feb43f92fc5b5d604487c1da3047cdb2ab7e304aeba99109ea216b295308f
+# Text hash: sha256:fb0f9794dc643c7b3eef12fb080ecbbf855cadc2962ad57cdd428df012a63a2e
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:78fa11858ca20d6994bac0c176fc36e1595af1bf332cebfd85f98c842f41ced8
@@ -79,6 +79,7 @@ cdef enum:
     _NE = 2                  # events
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 2
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi

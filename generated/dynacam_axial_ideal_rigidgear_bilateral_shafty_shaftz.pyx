@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ca7591893b63a4c274a31c16137e3f676d3260d983546176e934db6f5966486d
-# Text hash: sha256:f9283c38fcf08ab69f2a6962d4a6a9b1a79941d3ec4fc609bd00bf93072111fb
+# Derivation key: sha256:7d17fbcc16050d7822f97581df49a9b5b7deff07ee213d9f80e4b7e9b4b70913
+# Text hash: sha256:ca91087e9a19a859783e10263a06af7b596ece80c238f0b1dc5329400b85bf81
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:e275047e0cf08992c876a680654868402ac3c5828f590df0a2091d07376aa9c5
@@ -79,6 +79,7 @@ cdef enum:
     _NE = 2                  # events
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 2
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi

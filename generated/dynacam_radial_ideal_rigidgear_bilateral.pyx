@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:14ec5053b5b216c79a8ba50670991c1bd992d42777d7cfde4963ca414666f56a
-# Text hash: sha256:aa2c30d05f450e22256010091f47a2564fb0e85463fca36b9ade546eb03e3b0b
+# Derivation key: sha256:19656928a9db1f2c38b70339a66b0b25e710e8f9fafcf1c75f1724c01c3af0be
+# Text hash: sha256:f8aa5a2c4f7155ac0b48cf54e4564506f4a7286427bfca0d8971440c92dd2417
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:70928959783656eafba925845d46bb159bc6f2bca0ef34805d7213adff3aa751
@@ -79,6 +79,7 @@ cdef enum:
     _NE = 2                  # events
     _NQ1 = 2                 # array sizes that must not be zero
     _NE1 = 2
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi

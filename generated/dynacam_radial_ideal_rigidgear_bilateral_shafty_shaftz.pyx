@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e08ab45c448e0548e339ec3492acd8571289ab9bc64e0e35370974d593b70926
-# Text hash: sha256:f50e6b061a74e1307487c511a3ff9e43b75b54c96478fd62fae96f716dd5d3bc
+# Derivation key: sha256:8c78394ccc764ca8edd04ca5ccaa1feb3b1cc804680b7e694535efd09bcfa292
+# Text hash: sha256:b539044bb0d335562b1f116de60f544ae2e3682c4885264418c093559956e604
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:8655144d348c9e6ff02b9c236b5160b222b3bd82ae7406eee237068108295e9b
@@ -79,6 +79,7 @@ cdef enum:
     _NE = 2                  # events
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 2
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1fb3777846f43b46eeaf8db1ed9dc4b2ee314a74623ecec16dbf88bd2d1af628
-# Text hash: sha256:b345b3f173ef4284aeed996e23212c94f5a270afeba8fdd39bb6d5d5eab6649b
+# Derivation key: sha256:d914f80868f93e8429b8b8fd3d40db489a3244589c32f9f101178cad4e52ff51
+# Text hash: sha256:f08724e28f5f270a1f96911b76652d81012a9f313ebdf7875b53b9e2de39b836
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:884fe82f295318101f76c676ce12f8ff5c51188645f43f122776328496539d79
@@ -79,6 +79,7 @@ cdef enum:
     _NE = 10                  # events
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 10
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # roller_lift

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:83af78661866406d5061184226d5d431c3c264ac85271e1bfd65567959e98ae2
-# Text hash: sha256:d5e3caba2d4e80ba139865047875184ef684fd7014b1776a006961e83f38ebe2
+# Derivation key: sha256:369b276b89f37aff0b1e5605045f4bb467993bf7a891e262c1af46ae6ea89b04
+# Text hash: sha256:2b940926141574b8f64a6e7b9b829826c5aafdf0e455808b8ff2ffc6cd5c2f67
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:a8a5f5eb70ce0d4783c335f2e573e44029f576fba812eeec73b924997a7c92ba
@@ -79,6 +79,7 @@ cdef enum:
     _NE = 4                  # events
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 4
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # roller_lift

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:98eb0acde142afaa3462cc9b104109c72365835f7fc164fe3361f9ce9f81b73a
-# Text hash: sha256:a87d49bc0b6d94d3dd6a5f26cf1bce3f43a5e71e509b2bc3cb7fe5229de4ec5c
+# Derivation key: sha256:0efb51629860ba6d335c3578bc61cdb389b5b0ce787d4020829b4c9323091161
+# Text hash: sha256:3c9e0c1614bda4e940ed428be817f7eb48f332b016a32d0f2a69a6a1c0afd326
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:1619237e70c6462c9a81ead3403043759f5c646d5103e24ad540df8015ea9865
@@ -79,6 +79,7 @@ cdef enum:
     _NE = 6                  # events
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 6
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # roller_lift

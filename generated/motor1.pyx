@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:247a8dd2f76ccc98240c4e3fe92832910dd22ea8de749729435ad7f732e9114a
-# Text hash: sha256:a54f56691f9e981383cd686c7a3c718770f1e7c14cf803b27115f9c26d672bc8
+# Derivation key: sha256:b28fd882942a6c15e77e95d453b703e8e654b9720e1d32ec6697d51352df85dc
+# Text hash: sha256:ba48389157e690513e1f58be8d819e0842a1e27f8a536f70c595fc99b7bc6c58
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:cb12a14e2a82bc39c330ce4092034e4d1ae1ef6c8be29c96e4886b6df7b1aede
@@ -44,6 +44,7 @@ cdef enum:
     _NE = 0                  # events
     _NQ1 = 1                 # array sizes that must not be zero
     _NE1 = 1
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ce055bac4da4fd3c70cd1bf1c4e2796de691c2eaab5d175b00967e3f4fe8fcb3
-# Text hash: sha256:eafe727debe07d485228d5dbfdc534d613d8ecd486da25b96bb148fdbb19ccff
+# Derivation key: sha256:d035e5d2d5cc9eb9a68a6fc01164d098c6e1064e341c38bf8cf1f6f6074607f9
+# Text hash: sha256:518ef7537d8d9636d4bf0ccc09f36a3bed68025bd9fdc833581feb374111019e
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:9df5f82783bfcb6fd0f028c14378234f531f563607d1d78bfad7ef80fa01f86a
@@ -44,6 +44,7 @@ cdef enum:
     _NE = 0                  # events
     _NQ1 = 1                 # array sizes that must not be zero
     _NE1 = 1
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 

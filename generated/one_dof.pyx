@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:82896fad7f44163072fc0fad54a3605513c807df15170bf46f08b0fd843c7753
-# Text hash: sha256:937b0d578c616022a96f0bb6229c1597b00f52abc7bd98e5cb52c7ee72280305
+# Derivation key: sha256:ff4ef2cb4b93831dbcb471e42ae657a3bc9ca67fbbf010d3b9ee011ef60f1e66
+# Text hash: sha256:7b9f61da67a02fba1cd9e6c46b73afbcc3144d2332ac3c3cf28debd594970c39
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:983ad329da4d3c689348672f065b5f0f272df226f6435e27325b84eb9ab41c90
@@ -43,6 +43,7 @@ cdef enum:
     _NE = 0                  # events
     _NQ1 = 1                 # array sizes that must not be zero
     _NE1 = 1
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:04b058ee885822b64093b5843a1c3a205d7454741e7400a03d098a633e4c67c4
-# Text hash: sha256:3703d76d77c622241d8e8dfd1c922998b2655334aeb9172c5615ac89aad7fd2c
+# Derivation key: sha256:c15079c7249856112fc35d765fc21dc5d3a0549f47357fb21463bde22960f51f
+# Text hash: sha256:ab2d93fe75567f35312978a0d86f245292c17fb98d9c3fa2cf8b25578bbccf7b
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:b9be8f3f74294cabeecad03b8ef70c7bcf4ce445457ef8edf614d0911f4e81d7
@@ -60,6 +60,7 @@ cdef enum:
     _NE = 0
     _NQ1 = 2
     _NE1 = 1
+    _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 

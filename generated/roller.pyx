@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:551dd1525b150daadb01b5d3cb1867cb384c291ab240b1cec35bcb019d553edc
-# Text hash: sha256:2e216585f689e3d1c345ddd57083fa37152d90919f1db7ad37ce11d9fd96e3f1
+# Derivation key: sha256:90168290a7757fefecece5c730e5f0dfe33cd8ec1c42c70f0826cace036c0ac2
+# Text hash: sha256:7fe65e7c4874c5886ed7ff1441d9b672f749433ef184d8646529033540693cea
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:5d9ff777c60c5d9e120e3db21dc017ee1859b236f86a4580393945c74b0d307c
@@ -66,6 +66,7 @@ cdef enum:
     _NE = 4                  # events
     _NQ1 = 2                 # array sizes that must not be zero
     _NE1 = 4
+    _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # contact_open_lower

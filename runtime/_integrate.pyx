@@ -27,6 +27,7 @@ from camdyn.runtime.abi cimport *
 RK4 = METHOD_RK4
 DP54 = METHOD_DP54
 KOSTER = METHOD_KOSTER
+RODAS = METHOD_RODAS
 
 RunRecord = namedtuple("RunRecord", "status rows modes n n_steps n_rejected n_rhs t_fail seconds "
                                     "n_events t_stiff")

@@ -19,6 +19,7 @@ cdef enum:
     METHOD_RK4 = 0
     METHOD_DP54 = 1
     METHOD_KOSTER = 2
+    METHOD_RODAS = 3       # RODAS4, linearly implicit (stiff problems)
 
 # run status codes
 cdef enum:

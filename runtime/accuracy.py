@@ -5,7 +5,7 @@ A figure without its accuracy is half an answer.  Every command that prints head
 time one notch more accurately and reports, next to each figure v, the estimate of its global
 error from the difference with the second run's v':
 
-* adaptive methods (dp54): the second run at rtol/10 and atol/10.  With the error of a run
+* adaptive methods (dp54, rodas4): the second run at rtol/10 and atol/10.  With the error of a run
   roughly proportional to its tolerance, v' carries a tenth of v's error, and |v - v'|
   estimates v's error to within about 10 %;
 * fixed-step methods (rk4, the thesis's scheme): the second run at half the step, and
@@ -32,11 +32,17 @@ RTOL_MIN = 1e-14
 """The tightest rtol a method accepts: a run there has no tighter neighbour to compare with."""
 
 
+RTOL_DEFAULT = 1e-8
+"""The adaptive methods' rtol when none is given (runtime/methods.py)."""
+
+
 def tighter_settings(method: str, rtol: float | None, step: float | None) -> tuple:
-    """(rtol, step) of the second run: rtol/10 for an adaptive method, step/2 for a fixed
-    one.  None when rtol is already the tightest allowed."""
+    """(rtol, step) of the second run: rtol/10 for an adaptive method (dp54, rodas4; its
+    default rtol when None), step/2 for a fixed one.  None when rtol is already the tightest
+    allowed."""
     if method in ORDER:
         return None, step / 2
+    rtol = RTOL_DEFAULT if rtol is None else rtol
     if rtol / 10 < RTOL_MIN:
         return None
     return rtol / 10, None

@@ -93,7 +93,7 @@ def simulator(case: Case, t_end: float | None = None) -> tuple[Simulator, object
     check(case)
     model = load(case.model)
     t_end = case.revolutions * case.period if t_end is None else t_end
-    sim = Simulator(model, t_end, "dp54", rtol=case.rtol, law=case.law,
+    sim = Simulator(model, t_end, case.method, rtol=case.rtol, law=case.law,
                     y0=initial_state(case, model), max_steps=20_000_000)
     return sim, model
 
@@ -116,7 +116,7 @@ def errors(case: Case, summary: dict) -> dict:
 
     rtol = case.rtol / 10
     tight = None if rtol < accuracy.RTOL_MIN else run(replace(case, rtol=rtol))[0]
-    return accuracy.errors(summary, tight, ("max_abs_tip_deflection",), "dp54")
+    return accuracy.errors(summary, tight, ("max_abs_tip_deflection",), case.method)
 
 
 def summarize(case: Case, res, cpu: float) -> dict:

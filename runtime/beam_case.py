@@ -37,8 +37,8 @@ _D = _declared_defaults()
 @dataclass(frozen=True)
 class Case:
     """One Rayleigh-beam follower run.  Paper data (sec. 4) by default, read from the
-    model's manifest; the run's own settings (modes, revolutions, formulation, law, rtol)
-    are defaults of the case."""
+    model's manifest; the run's own settings (modes, revolutions, formulation, law, rtol,
+    method) are defaults of the case."""
 
     omega: float = _D["Omega"]      # rad/s, cam speed (paper: 120, 240, 360)
     modes: int = 3                  # N assumed modes (paper: 2, 3, 4; converged at 3)
@@ -56,6 +56,7 @@ class Case:
     E: float = _D["E"]              # Pa
     rho: float = _D["rho"]          # kg/m^3
     rtol: float = 1e-9
+    method: str = "dp54"            # an adaptive method: dp54, or rodas4 for stiff rods
     w_B: float = _D["w_B"]          # rad/s, Baumgarte rate (augmented form)
 
     @property
@@ -104,5 +105,10 @@ def check(case: Case) -> Case:
             f"stroke (free rod {case.free_length_raised * 1e3:.3g} mm, roller radius "
             f"{case.roller_radius * 1e3:g} mm): with distance={case.distance:g} m and "
             f"rise={case.rise:g} m, base_radius must be below {limit:g} m")
+    from .methods import ADAPTIVE   # here, not at the top: the help text loads this module
+
+    if case.method not in ADAPTIVE:
+        raise CamdynInputError(f"method={case.method!r}: the beam follower takes an adaptive "
+                               f"method: {', '.join(ADAPTIVE)}")
     choose(case.law)
     return case

@@ -121,7 +121,9 @@ def residual_run(model: str, tau: float, fa: float | None, law: str, theta: floa
         if model == "camshaft2" and fa > 0 and fv > 0:
             # sec. 5.4: the step follows the smaller period, tau_b = tau (Fa/Fv)^(1/2) (5.19)
             step = 0.01 * min(tau, tau * (fa / fv) ** 0.5)
-    if method == "dp54" and rtol is None and step is None:
+    from .methods import METHODS
+
+    if method in METHODS and METHODS[method].adaptive and rtol is None and step is None:
         rtol = 1e-10
     if not t_end > 1.0:
         raise CamdynInputError(f"--t-end={t_end:g} must exceed the end of the rise, T = 1")
@@ -155,8 +157,8 @@ def run_health(res) -> dict:
     return {"warnings": list(res.warnings), "stiff_from_T": res.stiff_from_T}
 
 
-# the implicit method to name in the stiffness note, once one exists in methods.METHODS
-IMPLICIT_HINT = "an implicit (L-stable) method"
+# the implicit method the stiffness note names (runtime/methods.py RODAS4)
+IMPLICIT_HINT = "the implicit (L-stable) method rodas4 (--method rodas4)"
 
 
 def report_health(prog: str, out: dict, tname: str = "T") -> None:
@@ -307,11 +309,10 @@ def integrate_run(model_arg: str, params: dict, initial: dict, t_end: float, met
 
 def integrate_errors(args, params: dict, initial: dict, summary: dict) -> dict:
     """State name -> estimate of its error at t_end (runtime/accuracy.py): the same run at
-    rtol/10 (dp54; rtol 1e-8 when not given) or half the step."""
+    rtol/10 (an adaptive method; rtol 1e-8 when not given) or half the step."""
     from . import accuracy
 
-    rtol = (1e-8 if args.rtol is None else args.rtol) if args.method == "dp54" else None
-    settings = accuracy.tighter_settings(args.method, rtol, args.step)
+    settings = accuracy.tighter_settings(args.method, args.rtol, args.step)
     tight = None
     if settings is not None:
         tight, _ = integrate_run(args.model, params, initial, args.t_end, args.method,
@@ -365,8 +366,8 @@ def _cmd_integrate(args) -> int:
         params = _assignments(args.set, "--set")
         initial = _assignments(args.initial, "--initial")
         if args.rtol is not None and args.step is not None:
-            raise CamdynInputError("arguments --rtol and --step: give one (rtol for dp54, step "
-                                   "for rk4 and koster)")
+            raise CamdynInputError("arguments --rtol and --step: give one (rtol for dp54 and "
+                                   "rodas4, step for rk4 and koster)")
         summary, res = integrate_run(args.model, params, initial, args.t_end, args.method,
                                      args.rtol, args.step, args.law, args.theta, say)
         if not args.no_error_estimate:
@@ -403,6 +404,8 @@ def _cmd_run(args) -> int:
     say = (lambda msg: None) if args.quiet else (lambda msg: print(msg, file=sys.stderr, flush=True))
     try:
         kind, sc = scenes.load_any(args.scene or "default")
+        if args.method is not None:
+            sc = _with_method(kind, sc, args.method)
         out_dir = Path(args.out)
         if kind == "camshaft1-study":
             path = report.main_job(sc, out_dir, progress=not args.quiet)
@@ -429,6 +432,17 @@ def _cmd_run(args) -> int:
                                                      "title": sc.title, **summary}, indent=1))
     print(f"report: {out_dir / 'report.json'}")
     return 0
+
+
+def _with_method(kind: str, sc, method: str):
+    """The scene with its [run] method replaced (--method of run and simulate)."""
+    from dataclasses import replace
+
+    if kind == "dynacam":
+        return replace(sc, method=method)
+    if kind == "beam-follower":
+        return replace(sc, case=replace(sc.case, method=method))
+    return {**sc, "run": {**sc["run"], "method": method}}
 
 
 def _cmd_scenes(args) -> int:
@@ -458,6 +472,8 @@ def _cmd_simulate(args) -> int:
 
     try:
         sc = scenes.load(args.scene)
+        if args.method is not None:
+            sc = _with_method("dynacam", sc, args.method)
         summary, res = dynacam.run(sc, progress=progress)
         if not args.no_error_estimate:
             summary.update(dynacam.errors(sc, summary))
@@ -497,7 +513,8 @@ def _print_dynacam(sc, summary) -> None:
 _BEAM_FLAGS = {"omega": "--omega", "modes": "--modes", "rod_radius": "--rod-radius",
                "distance": "--distance", "base_radius": "--base-radius", "rise": "--rise",
                "revolutions": "--revolutions", "rayleigh": "--rayleigh",
-               "roller_inertia": "--roller-inertia", "formulation": "--formulation"}
+               "roller_inertia": "--roller-inertia", "formulation": "--formulation",
+               "method": "--method"}
 # summary key -> unit, for the table
 _BEAM_UNITS = {"omega": "rad/s", "rod_radius": "m", "distance": "m", "base_radius": "m",
                "rise": "m", "roller_inertia": "kg m^2", "roller_radius": "m", "roller_mass": "kg",
@@ -628,8 +645,21 @@ def _print_beam(prog, out) -> None:
 
 # -- parser -------------------------------------------------------------------------
 
+def _method_names() -> tuple[list, list]:
+    """(every method, the adaptive ones) for the --method choices.  A compiled runtime older
+    than its sources (a loop added, not yet rebuilt) must not stop `camdyn derive`, which
+    regenerates what the rebuild then compiles: its names are then the known ones."""
+    try:
+        from . import methods
+    except (ImportError, AttributeError):
+        return ["dp54", "koster", "rk4", "rodas4"], ["dp54", "rodas4"]
+    return sorted(methods.METHODS), list(methods.ADAPTIVE)
+
+
 def build_parser() -> argparse.ArgumentParser:
-    from . import laws, methods
+    from . import laws
+
+    all_methods, adaptive = _method_names()
 
     top = _Parser(prog="camdyn", description="Cam-mechanism dynamics: derive, generate, simulate, check.")
     sub = top.add_subparsers(dest="command", required=True, parser_class=_Parser)
@@ -652,8 +682,9 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("--q", type=float, default=0.0, help="relative damping q (6.47), one-dof only; default 0")
     r.add_argument("--law", default="cycloidal", choices=laws.NAMES)
     r.add_argument("--theta", type=float, default=None, help="shape parameter of the modified sine")
-    r.add_argument("--method", default="dp54", choices=sorted(methods.METHODS))
-    r.add_argument("--rtol", type=float, default=None, help="dp54 tolerance (default 1e-10)")
+    r.add_argument("--method", default="dp54", choices=all_methods)
+    r.add_argument("--rtol", type=float, default=None,
+                   help="dp54/rodas4 tolerance (default 1e-10)")
     r.add_argument("--step", type=float, default=None, help="rk4/koster step in T (default tau/100)")
     r.add_argument("--t-end", type=float, default=3.0, help="end of the dwell, in T (default 3)")
     r.add_argument("--json", action="store_true", help="one JSON object on stdout")
@@ -679,6 +710,9 @@ def build_parser() -> argparse.ArgumentParser:
                    help="scene TOML or a built-in scene name (camdyn scenes); default: the "
                         "embedded CAMSHAFT-1 study")
     m.add_argument("--out", default="out", help="folder for report and charts (default out/)")
+    m.add_argument("--method", default=None, choices=adaptive,
+                   help="integration method instead of the scene's [run] method; rodas4 is the "
+                        "stiff solver")
     m.add_argument("--quiet", action="store_true", help="no progress lines")
     m.set_defaults(func=_cmd_run)
 
@@ -696,8 +730,9 @@ def build_parser() -> argparse.ArgumentParser:
                     help="an initial state value (repeatable; default: the declared state)")
     ig.add_argument("--t-end", type=float, required=True, metavar="T",
                     help="end time, in the model's time unit")
-    ig.add_argument("--method", default="dp54", choices=sorted(methods.METHODS))
-    ig.add_argument("--rtol", type=float, default=None, help="dp54 tolerance (default 1e-8)")
+    ig.add_argument("--method", default="dp54", choices=all_methods)
+    ig.add_argument("--rtol", type=float, default=None,
+                    help="dp54/rodas4 tolerance (default 1e-8)")
     ig.add_argument("--step", type=float, default=None, help="rk4/koster step")
     ig.add_argument("--law", default="cycloidal", choices=laws.NAMES, help="cam law of the inputs")
     ig.add_argument("--theta", type=float, default=None, help="shape parameter of the law")
@@ -713,6 +748,9 @@ def build_parser() -> argparse.ArgumentParser:
     sm.add_argument("--no-error-estimate", action="store_true",
                      help="skip the second, more accurate run that estimates each headline figure's error (sweeps)")
     sm.add_argument("--out", default=None, help="folder for the diagrams (PNG)")
+    sm.add_argument("--method", default=None, choices=adaptive,
+                    help="integration method instead of the scene's (dp54 unless it sets "
+                         "run.method); rodas4 is the stiff solver")
     sm.set_defaults(func=_cmd_simulate)
 
     _add_beam_follower(sub)
@@ -724,6 +762,7 @@ def _add_beam_follower(sub) -> None:
     from dataclasses import asdict
 
     from .beam_case import FORMULATIONS, N_MAX, Case
+    from .methods import ADAPTIVE
 
     dflt = asdict(Case())
     disc = Case().J_r
@@ -764,6 +803,9 @@ def _add_beam_follower(sub) -> None:
     b.add_argument("--formulation", choices=tuple(FORMULATIONS),
                    help=f"augmented (multipliers, Baumgarte) or partitioned (coordinate "
                         f"partitioning, paper (21)-(27)); default {dflt['formulation']}")
+    b.add_argument("--method", choices=ADAPTIVE,
+                   help=f"integration method (default {dflt['method']}); rodas4, the stiff "
+                        f"solver, suits stiff rods (large E, many modes)")
     b.add_argument("--json", action="store_true", help="one JSON object on stdout")
     b.add_argument("--no-error-estimate", action="store_true",
                     help="skip the second, more accurate run that estimates each headline figure's error (sweeps)")

@@ -21,7 +21,7 @@ from .errors import CamdynInputError, SimulationError
 from .models import load
 from .residual import extreme
 from .scene import Scene
-from .methods import DP54
+from .methods import METHODS
 from .simulate import Simulator
 
 # summary keys, in the order printed
@@ -116,7 +116,8 @@ def variant_model(scene: Scene, progress=None):
 
 def run(scene: Scene, progress=None, method=None) -> tuple[dict, object]:
     """Run a scene; returns (summary, result).  ``method``: the integration method, by default
-    DP54 at the scene's rtol with no step limit (a step-limited one serves as a reference)."""
+    the scene's (DP54 unless it says rodas4) at its rtol with no step limit (a step-limited one
+    serves as a reference)."""
     model = variant_model(scene, progress)
     params = dict(scene.parameters)
     params["beta_0"] = -scene.T_start * params["beta_m"]
@@ -124,7 +125,7 @@ def run(scene: Scene, progress=None, method=None) -> tuple[dict, object]:
     t_m = ch["t_m"]
     t_end = (scene.T_end - scene.T_start) * t_m
     if method is None:
-        method = DP54(rtol=scene.rtol)
+        method = METHODS[scene.method](rtol=scene.rtol)
     sim = Simulator(model, t_end, method, law=scene.law, theta=scene.theta, modes=scene.modes,
                     max_steps=2_000_000)
     p = model.parameter_vector(params)
@@ -137,6 +138,7 @@ def run(scene: Scene, progress=None, method=None) -> tuple[dict, object]:
     res = sim.run(params)
     cpu = time.process_time() - start
     summary = summarize(scene, model, res, ch, cpu)
+    summary["method"] = method.name
     return summary, res
 
 
@@ -150,9 +152,9 @@ def errors(scene: Scene, summary: dict) -> dict:
     scene run again at rtol/10 (runtime/accuracy.py)."""
     from . import accuracy
 
-    method = accuracy.tighter_method(DP54(rtol=scene.rtol))
+    method = accuracy.tighter_method(METHODS[scene.method](rtol=scene.rtol))
     tight = None if method is None else run(scene, method=method)[0]
-    out = accuracy.errors(summary, tight, FIGURES, "dp54")
+    out = accuracy.errors(summary, tight, FIGURES, scene.method)
     jump = summary["jump"]
     if jump["occurs"]:
         T_t = None if tight is None else tight["jump"]["T"]

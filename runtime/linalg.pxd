@@ -38,3 +38,59 @@ cdef inline int solve_inplace(int n, double* A, double* b) noexcept nogil:
             v -= A[i * n + j] * b[j]
         b[i] = v / A[i * n + i]
     return 0
+
+
+cdef inline int lu_factor(int n, double* A, int* piv) noexcept nogil:
+    """LU factorization with partial pivoting, in place: A = P L U (row-major, L unit lower).
+
+    Kept apart from solve_inplace so that one factorization serves several right-hand
+    sides (the stages of a Rosenbrock step).  piv[k] is the row swapped with k at step k.
+    Returns 0, or k + 1 when pivot k vanishes (singular matrix).
+    """
+    cdef int i, j, k, p
+    cdef double amax, v, tmp
+    for k in range(n):
+        p = k
+        amax = abs(A[k * n + k])
+        for i in range(k + 1, n):
+            v = abs(A[i * n + k])
+            if v > amax:
+                amax = v
+                p = i
+        piv[k] = p
+        if amax == 0.0:
+            return k + 1
+        if p != k:
+            for j in range(n):
+                tmp = A[k * n + j]
+                A[k * n + j] = A[p * n + j]
+                A[p * n + j] = tmp
+        for i in range(k + 1, n):
+            v = A[i * n + k] / A[k * n + k]
+            A[i * n + k] = v
+            if v != 0.0:
+                for j in range(k + 1, n):
+                    A[i * n + j] -= v * A[k * n + j]
+    return 0
+
+
+cdef inline void lu_solve(int n, const double* LU, const int* piv, double* b) noexcept nogil:
+    """Solve A x = b with the factors of lu_factor; b becomes x."""
+    cdef int i, j
+    cdef double v
+    for i in range(n):
+        j = piv[i]
+        if j != i:
+            v = b[i]
+            b[i] = b[j]
+            b[j] = v
+    for i in range(1, n):
+        v = b[i]
+        for j in range(i):
+            v -= LU[i * n + j] * b[j]
+        b[i] = v
+    for i in range(n - 1, -1, -1):
+        v = b[i]
+        for j in range(i + 1, n):
+            v -= LU[i * n + j] * b[j]
+        b[i] = v / LU[i * n + i]

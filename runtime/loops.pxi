@@ -600,6 +600,312 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
     return status
 
 
+# -- RODAS4: the stiff solver (issue 13, item 2) --------------------------------------
+#
+# Hairer & Wanner, Solving ODEs II, sec. IV.7: a Rosenbrock method in the form (7.25),
+#
+#     (I/(h gamma) - J) u_i = f(t + alpha_i h, y + sum_j a_ij u_j) + sum_j (c_ij/h) u_j
+#                             + gamma_i h df/dt,
+#
+# with J = df/dy and df/dt at the step's start.  RODAS4 is stiffly accurate: the argument
+# of stage 6 is the embedded third-order solution and y_1 = that + u_6, so u_6 itself is the
+# error estimate.  One LU of (I/(h gamma) - J) serves all six stages: no Newton iteration
+# that could fail to converge.  Dense output and event location use the cubic Hermite
+# interpolant of the record (O(h^4), as accurate as the method), so no `extra` is stored.
+# Coefficients: Hairer & Wanner's RODAS4 as tabulated in sec. IV.7 and in their code RODAS
+# (subroutine ROCOEF, METH = 1); gamma_i = RO4_D_i, alpha_i = RO4_C_i, alpha_5 = alpha_6 = 1.
+cdef extern from *:
+    """
+    #define RO4_GAMMA 0.25
+    #define RO4_C2 0.386
+    #define RO4_C3 0.21
+    #define RO4_C4 0.63
+    #define RO4_D1 0.25
+    #define RO4_D2 (-0.1043)
+    #define RO4_D3 0.1035
+    #define RO4_D4 (-0.3620000000000023e-01)
+    #define RO4_A21 1.544
+    #define RO4_A31 0.9466785280815826
+    #define RO4_A32 0.2557011698983284
+    #define RO4_A41 3.314825187068521
+    #define RO4_A42 2.896124015972201
+    #define RO4_A43 0.9986419139977817
+    #define RO4_A51 1.221224509226641
+    #define RO4_A52 6.019134481288629
+    #define RO4_A53 12.53708332932087
+    #define RO4_A54 (-0.6878860361058950)
+    #define RO4_C21 (-5.6688)
+    #define RO4_C31 (-2.430093356833875)
+    #define RO4_C32 (-0.2063599157091915)
+    #define RO4_C41 (-0.1073529058151375)
+    #define RO4_C42 (-9.594562251023355)
+    #define RO4_C43 (-20.47028614809616)
+    #define RO4_C51 7.496443313967647
+    #define RO4_C52 (-10.24680431464352)
+    #define RO4_C53 (-33.99990352819905)
+    #define RO4_C54 11.70890893206160
+    #define RO4_C61 8.083246795921522
+    #define RO4_C62 (-7.981132988064893)
+    #define RO4_C63 (-31.52159432874371)
+    #define RO4_C64 16.31930543123136
+    #define RO4_C65 (-6.058818238834054)
+    """
+    const double RO4_GAMMA
+    const double RO4_C2
+    const double RO4_C3
+    const double RO4_C4
+    const double RO4_D1
+    const double RO4_D2
+    const double RO4_D3
+    const double RO4_D4
+    const double RO4_A21
+    const double RO4_A31
+    const double RO4_A32
+    const double RO4_A41
+    const double RO4_A42
+    const double RO4_A43
+    const double RO4_A51
+    const double RO4_A52
+    const double RO4_A53
+    const double RO4_A54
+    const double RO4_C21
+    const double RO4_C31
+    const double RO4_C32
+    const double RO4_C41
+    const double RO4_C42
+    const double RO4_C43
+    const double RO4_C51
+    const double RO4_C52
+    const double RO4_C53
+    const double RO4_C54
+    const double RO4_C61
+    const double RO4_C62
+    const double RO4_C63
+    const double RO4_C64
+    const double RO4_C65
+
+from camdyn.runtime.linalg cimport lu_factor, lu_solve
+
+
+cdef int _jacobian(Run* run, Ctx* ctx, double t, const double* y, const double* f0, double span,
+                   double* J, double* ft) noexcept nogil:
+    """J = df/dy (row-major: J[i * _NS + j] = df_i/dy_j) and ft = df/dt at (t, y); returns
+    the right-hand-side calls spent (they count in n_rhs).
+
+    The model's generated Jacobian where it is symbolic (_JAC_SYMBOLIC, set by the template);
+    else central differences, increment eps^(1/3) times the state's size: a Rosenbrock method is
+    not a W-method, an error dJ in the Jacobian enters its local error as h^2 dJ f, which
+    forward differences (dJ ~ sqrt(eps) |f|/|y|) made dominant on the beam follower, whose
+    rhs rounds at the level of large internal terms (half the steps rejected, the step
+    shrinking like rtol^(1/2)); central differences cut dJ to ~eps^(2/3) for 2 n + 2 calls.
+    """
+    cdef int i, j
+    cdef double yj, d, dt
+    cdef double yp[_NS]
+    cdef double fp[_NS]
+    cdef double fm[_NS]
+    cdef int calls = 0
+    if _JAC_SYMBOLIC:
+        # the model's generated Jacobian (derived symbolically, issue 13, item 1): exact, and
+        # no rhs calls; its manifest says "symbolic"
+        jacobian(t, y, J, ctx)
+    else:
+        memcpy(yp, y, sizeof(yp))
+        for j in range(_NS):
+            yj = y[j]
+            # relative to the state, but not below its scale (atol = 1e-3 rtol scale by
+            # default): a state passing through zero (a beam's mode amplitude at rest) would
+            # otherwise get an increment at which rounding in f swamps the difference
+            d = 6.055454452393343e-06 * fmax(fabs(yj), 1e3 * run.atol[j] / run.rtol)
+            if d == 0.0:
+                d = 6.055454452393343e-06
+            yp[j] = yj + d
+            d = yp[j] - yj      # the increment actually represented
+            rhs(t, yp, fp, ctx)
+            yp[j] = yj - d
+            rhs(t, yp, fm, ctx)
+            for i in range(_NS):
+                J[i * _NS + j] = (fp[i] - fm[i]) / (2.0 * d)
+            yp[j] = yj
+        calls = 2 * _NS
+    # the cam inputs make f depend on t; the increment scales with the interval when t ~ 0
+    dt = 6.055454452393343e-06 * fmax(fabs(t), span)
+    dt = (t + dt) - t
+    rhs(t + dt, y, fp, ctx)
+    rhs(t - dt, y, fm, ctx)
+    for i in range(_NS):
+        ft[i] = (fp[i] - fm[i]) / (2.0 * dt)
+    return calls + 2
+
+
+cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
+    """RODAS4 over [a, b]: one fresh Jacobian per accepted point (kept through rejections),
+    one LU per attempted step, the DP54 loop's breakpoint, event and failure handling."""
+    cdef Ctx local_ctx = run.ctx[0]
+    cdef Ctx* ctx = &local_ctx
+    cdef int i, hit, status = STATUS_OK
+    cdef double y[_NS]
+    cdef double f0[_NS]
+    cdef double ft[_NS]
+    cdef double u1[_NS]
+    cdef double u2[_NS]
+    cdef double u3[_NS]
+    cdef double u4[_NS]
+    cdef double u5[_NS]
+    cdef double u6[_NS]
+    cdef double ys[_NS]
+    cdef double yn[_NS]
+    cdef double fn[_NS]
+    cdef int piv[_NS]
+    cdef double g0[_NE1]
+    cdef double g1[_NE1]
+    cdef double t = a, tn, h, hinv, err, fac, s_hit, rtol = run.rtol
+    cdef const double* atol = run.atol
+    cdef long n_steps = run.n_steps, n_rej = run.n_rejected, n_rhs = 0, max_steps = run.max_steps
+    cdef bint last, rejected = False, have_jac = False
+    # heap, not stack: _NS^2 grows fast for models built from user files
+    cdef double* J = <double*> malloc(2 * _NS * _NS * sizeof(double))
+    cdef double* W
+    if J == NULL:
+        return STATUS_NO_MEMORY
+    W = J + _NS * _NS
+    memcpy(y, run.y, sizeof(y))
+    # slopes jump at a breakpoint: every interval starts afresh
+    rhs(t, y, f0, ctx)
+    n_rhs += 1
+    if _rec_point(run, t, y, f0) != 0:
+        free(J)
+        return STATUS_NO_MEMORY
+    if _NE > 0:
+        events(t, y, g0, ctx)
+    if run.h <= 0.0:
+        run.h = _dp_first_step(run, t, y, f0, fmin(b - a, run.h_max))
+    h = fmin(run.h, run.h_max)
+    while t < b:
+        if n_steps + n_rej >= max_steps:
+            status = STATUS_MAX_STEPS
+            break
+        if h < 16.0 * 2.220446049250313e-16 * fmax(fabs(t), fabs(b)):
+            status = STATUS_STEP_UNDERFLOW
+            break
+        last = t + 1.01 * h >= b
+        if last:
+            h = b - t
+        # one time for the last stages and the new point (the model caches cam values by t)
+        tn = b if last else t + h
+        if not have_jac:
+            n_rhs += _jacobian(run, ctx, t, y, f0, b - a, J, ft)
+            have_jac = True
+        hinv = 1.0 / h
+        for i in range(_NS * _NS):
+            W[i] = -J[i]
+        for i in range(_NS):
+            W[i * _NS + i] += hinv / RO4_GAMMA
+        if lu_factor(_NS, W, piv) != 0:
+            # 1/(h gamma) is an eigenvalue of J: any other step avoids it
+            h *= 0.5
+            n_rej += 1
+            rejected = True
+            continue
+        for i in range(_NS):
+            u1[i] = f0[i] + h * RO4_D1 * ft[i]
+        lu_solve(_NS, W, piv, u1)
+        for i in range(_NS):
+            ys[i] = y[i] + RO4_A21 * u1[i]
+        rhs(t + RO4_C2 * h, ys, fn, ctx)
+        for i in range(_NS):
+            u2[i] = fn[i] + hinv * RO4_C21 * u1[i] + h * RO4_D2 * ft[i]
+        lu_solve(_NS, W, piv, u2)
+        for i in range(_NS):
+            ys[i] = y[i] + RO4_A31 * u1[i] + RO4_A32 * u2[i]
+        rhs(t + RO4_C3 * h, ys, fn, ctx)
+        for i in range(_NS):
+            u3[i] = fn[i] + hinv * (RO4_C31 * u1[i] + RO4_C32 * u2[i]) + h * RO4_D3 * ft[i]
+        lu_solve(_NS, W, piv, u3)
+        for i in range(_NS):
+            ys[i] = y[i] + RO4_A41 * u1[i] + RO4_A42 * u2[i] + RO4_A43 * u3[i]
+        rhs(t + RO4_C4 * h, ys, fn, ctx)
+        for i in range(_NS):
+            u4[i] = (fn[i] + hinv * (RO4_C41 * u1[i] + RO4_C42 * u2[i] + RO4_C43 * u3[i])
+                     + h * RO4_D4 * ft[i])
+        lu_solve(_NS, W, piv, u4)
+        for i in range(_NS):
+            ys[i] = y[i] + RO4_A51 * u1[i] + RO4_A52 * u2[i] + RO4_A53 * u3[i] + RO4_A54 * u4[i]
+        rhs(tn, ys, fn, ctx)
+        for i in range(_NS):
+            u5[i] = fn[i] + hinv * (RO4_C51 * u1[i] + RO4_C52 * u2[i] + RO4_C53 * u3[i]
+                                    + RO4_C54 * u4[i])
+        lu_solve(_NS, W, piv, u5)
+        for i in range(_NS):
+            ys[i] += u5[i]      # the embedded third-order solution
+        rhs(tn, ys, fn, ctx)
+        for i in range(_NS):
+            u6[i] = fn[i] + hinv * (RO4_C61 * u1[i] + RO4_C62 * u2[i] + RO4_C63 * u3[i]
+                                    + RO4_C64 * u4[i] + RO4_C65 * u5[i])
+        lu_solve(_NS, W, piv, u6)
+        for i in range(_NS):
+            yn[i] = ys[i] + u6[i]
+        n_rhs += 5
+        err = _rms(u6, y, yn, rtol, atol)
+        if not isfinite(err):
+            # a NaN in a trial stage: retry smaller unless the start itself is bad
+            if not _finite(_NS, y):
+                status = STATUS_NOT_FINITE
+                break
+            h *= 0.2
+            n_rej += 1
+            rejected = True
+            continue
+        if err <= 1.0:
+            # standard controller for the embedded order 3 (err ~ h^4), limits as in RODAS
+            fac = 6.0 if err == 0.0 else fmin(6.0, fmax(0.2, 0.9 * pow(err, -0.25)))
+            if rejected:
+                fac = fmin(fac, 1.0)
+            rhs(tn, yn, fn, ctx)   # slope at the new point: recorded, and the next step's f0
+            n_rhs += 1
+            n_steps += 1
+            have_jac = False
+            if _NE > 0:
+                hit = _event_in_step(run, t, h, y, yn, f0, fn, NULL, g0, g1, &s_hit)
+                if hit >= 0:
+                    # cut the step at the crossing: state from the step's cubic Hermite extension
+                    _dense(s_hit, h, y, yn, f0, fn, NULL, ys)
+                    t = t + s_hit * h
+                    memcpy(y, ys, sizeof(y))
+                    rhs(t, y, f0, ctx)
+                    n_rhs += 1
+                    status = _apply_event(run, hit, t, y, f0, g0)
+                    if status != STATUS_OK:
+                        break
+                    # the event refreshed run.ctx (the rhs variant of the new cam segments)
+                    local_ctx = run.ctx[0]
+                    rejected = False
+                    continue
+                memcpy(g0, g1, sizeof(g0))
+            t = tn
+            memcpy(y, yn, sizeof(y))
+            memcpy(f0, fn, sizeof(f0))
+            if _rec_point(run, t, y, f0) != 0:
+                status = STATUS_NO_MEMORY
+                break
+            if not last:
+                run.h = h
+            h = fmin(h * fac, run.h_max)
+            rejected = False
+        else:
+            h *= fmax(0.2, 0.9 * pow(err, -0.25))
+            n_rej += 1
+            rejected = True
+    free(J)
+    memcpy(run.y, y, sizeof(y))
+    run.n_steps = n_steps
+    run.n_rejected = n_rej
+    run.n_rhs += n_rhs
+    if status != STATUS_OK:
+        run.t_fail = t
+    return status
+
+
 cdef int run_loops(Run* run) noexcept nogil:
     """Integrate from run.t0 through every stop; the record and statistics go into run."""
     cdef int k, status = STATUS_OK
@@ -617,6 +923,8 @@ cdef int run_loops(Run* run) noexcept nogil:
         update_modes(0.5 * (a + b), run.y, run.ctx)
         if run.method == METHOD_DP54:
             status = _loop_dp54(run, a, b)
+        elif run.method == METHOD_RODAS:
+            status = _loop_rodas(run, a, b)
         else:
             status = _loop_fixed(run, a, b)
         if status != STATUS_OK:

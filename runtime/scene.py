@@ -337,7 +337,7 @@ class BeamScene:
     case: object    # beam_case.Case
 
 
-_BEAM_RUN = ("revolutions", "rtol", "formulation")
+_BEAM_RUN = ("revolutions", "rtol", "formulation", "method")
 
 
 def beam_from_dict(data: dict, path: str = "<scene>") -> BeamScene:
@@ -369,7 +369,7 @@ def beam_from_dict(data: dict, path: str = "<scene>") -> BeamScene:
         if key in ("rayleigh",):
             if not isinstance(value, bool):
                 raise CamdynInputError(f"{key} must be true or false, got {value!r}")
-        elif key in ("formulation", "law"):
+        elif key in ("formulation", "law", "method"):
             if not isinstance(value, str):
                 raise CamdynInputError(f"{key} must be a name, got {value!r}")
         elif key == "modes":
@@ -408,9 +408,12 @@ def from_dict(data: dict, path: str = "<scene>") -> Scene:
         if key not in _RUN:
             raise CamdynInputError(f"run.{key} is not a run setting; settings are {', '.join(_RUN)}")
         if key == "method":
-            if value != "dp54":
-                raise CamdynInputError(f"run.method={value!r}: scenes need the adaptive dp54 "
-                                       "(contact changes are located on its dense output)")
+            from .methods import ADAPTIVE
+
+            if value not in ADAPTIVE:
+                raise CamdynInputError(f"run.method={value!r}: scenes need an adaptive method, "
+                                       f"{' or '.join(ADAPTIVE)} (contact changes are located on "
+                                       "its dense output)")
             settings[key] = value
         else:
             settings[key] = _number(f"run.{key}", value, *_RUN[key])

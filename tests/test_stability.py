@@ -190,7 +190,29 @@ def test_cli_stiff_note_and_json():
     lines = p.stderr.strip().splitlines()
     assert len(lines) == 1
     assert lines[0].startswith("camdyn residual: note: the problem became stiff at T = ")
-    assert "an implicit (L-stable) method would take larger steps" in lines[0]
+    assert "the implicit (L-stable) method rodas4 (--method rodas4) would take larger steps" in lines[0]
+
+
+def test_method_names_without_the_compiled_runtime_are_the_methods():
+    """`camdyn derive` builds its parser with the known method names when the compiled runtime
+    is older than its sources; they are the methods of runtime/methods.py."""
+    import builtins
+
+    from camdyn.runtime import cli, methods
+
+    real_import = builtins.__import__
+
+    def no_methods(name, globals=None, locals=None, fromlist=(), level=0):
+        if level == 1 and fromlist and "methods" in fromlist:
+            raise ImportError("stale runtime")
+        return real_import(name, globals, locals, fromlist, level)
+
+    builtins.__import__ = no_methods
+    try:
+        fallback = cli._method_names()
+    finally:
+        builtins.__import__ = real_import
+    assert fallback == (sorted(methods.METHODS), list(methods.ADAPTIVE))
 
 
 def test_existing_failures_stay():
