@@ -69,13 +69,20 @@ class DP54:
 
     Error per step is measured in the RMS norm against atol + rtol |y|;
     ``atol`` defaults to rtol times the state scales of the model's manifest
-    times 1e-3.
+    times 1e-3.  ``state_atol``, pairs (state name, absolute tolerance), sets the
+    tolerance of single states: a large one takes a state out of the error control
+    (it is then as accurate as the others' accuracy makes it, no more), so that an
+    L-stable method can step over a fast mode that only rings (the roller on its
+    contact spring) while the follower's error stays controlled.  The consequence:
+    that state's own history (the contact force, a ringing roller) is then not
+    resolved and must not be read from the run.
     """
 
     rtol: float = 1e-8
     atol: float | None = None
     first_step: float | None = None
     max_step: float = math.inf
+    state_atol: tuple = ()
     code = _integrate.DP54
     name = "dp54"
     adaptive = True
@@ -90,6 +97,10 @@ class DP54:
             object.__setattr__(self, "first_step", _positive("first_step", self.first_step))
         if self.max_step != math.inf:
             object.__setattr__(self, "max_step", _positive("max_step", self.max_step))
+        pairs = tuple(dict(self.state_atol).items())
+        for name, value in pairs:
+            _positive(f"state_atol[{name}]", value)
+        object.__setattr__(self, "state_atol", pairs)
 
 
 @dataclass(frozen=True)
@@ -104,11 +115,12 @@ class RODAS4(DP54):
     step is fixed, and order 4 suits the moderate tolerances of design runs.  Stiffly
     accurate and L-stable, it damps the parasitic high frequencies (a stiff shaft, a beam's
     higher modes, a penalty contact) in one step instead of resolving them, as DP54 must to
-    stay stable.  The Jacobian and df/dt are taken by central differences of the
-    right-hand side (a Rosenbrock method needs an accurate Jacobian for its order; forward
-    differences were not accurate enough on the beam follower), afresh at every accepted
-    point and kept through rejections: 2 n_states + 2 right-hand-side calls per step,
-    counted in n_rhs, until the models provide the generated Jacobian.  Error control, breakpoints and events
+    stay stable.  The Jacobian is the model's generated one where it is symbolic, else
+    central differences of the right-hand side (a Rosenbrock method needs an accurate
+    Jacobian for its order; forward differences were not accurate enough on the beam
+    follower), and df/dt central differences; afresh at every accepted point and kept
+    through rejections: 2 right-hand-side calls per step with the generated Jacobian,
+    2 n_states + 2 without, counted in n_rhs.  Error control, breakpoints and events
     are those of DP54 (rtol, atol the same way); dense output is the cubic Hermite
     interpolant of the recorded points and slopes, O(h^4) like the method.
     """

@@ -112,6 +112,11 @@ class Simulator:
         if method.adaptive:
             base = method.atol if method.atol is not None else 1e-3 * method.rtol
             atol = np.ascontiguousarray(base * m.state_scales(), dtype=float)
+            for name, value in method.state_atol:
+                if name not in m.state_names:
+                    raise CamdynInputError(f"state_atol: {m.name} has no state {name}; its states "
+                                           f"are {', '.join(m.state_names)}")
+                atol[m.state_names.index(name)] = value
             h, h_max, rtol = method.first_step or 0.0, min(method.max_step, t_end - t0), method.rtol
         else:
             if (t_end - t0) / method.step > max_steps:
