@@ -50,12 +50,19 @@ def tighter_settings(method: str, rtol: float | None, step: float | None) -> tup
 
 def tighter_method(method):
     """The method object of the second run (see :func:`tighter_settings`), or None."""
+    settings = tighter_settings(method.name, getattr(method, "rtol", None),
+                                getattr(method, "step", None))
+    if settings is None:
+        return None
+    rtol, step = settings
     if method.adaptive:
-        if method.rtol / 10 < RTOL_MIN:
-            return None
-        return replace(method, rtol=method.rtol / 10,
-                       atol=None if method.atol is None else method.atol / 10)
-    return replace(method, step=method.step / 2)
+        return replace(method, rtol=rtol, atol=None if method.atol is None else method.atol / 10)
+    return replace(method, step=step)
+
+
+def plus_minus(e) -> str:
+    """" ± e" for a text table, or "" without a number."""
+    return f" ± {e:.2g}" if _number(e) else ""
 
 
 def factor(method_name: str) -> float:
@@ -94,7 +101,7 @@ def with_errors(figures: dict) -> list:
         text = f"{v:.6g}" if isinstance(v, float) else f"{v}"
         e = figures.get(f"{k}_error")
         if _number(e):
-            text += f" ± {e:.2g}"
+            text += plus_minus(e)
         elif f"{k}_error" in figures:
             text += " (no error estimate)"
         rows.append(f"{k:<{width}}  {text}")

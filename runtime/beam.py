@@ -114,8 +114,8 @@ def errors(case: Case, summary: dict) -> dict:
     """``max_abs_tip_deflection_error``: the case run again at rtol/10 (runtime/accuracy.py)."""
     from . import accuracy
 
-    rtol = case.rtol / 10
-    tight = None if rtol < accuracy.RTOL_MIN else run(replace(case, rtol=rtol))[0]
+    settings = accuracy.tighter_settings(case.method, case.rtol, None)
+    tight = None if settings is None else run(replace(case, rtol=settings[0]))[0]
     return accuracy.errors(summary, tight, ("max_abs_tip_deflection",), case.method)
 
 

@@ -20,6 +20,7 @@ import sys
 import time
 from pathlib import Path
 
+from .accuracy import plus_minus
 from .errors import CamdynInputError, SimulationError
 
 
@@ -387,8 +388,7 @@ def _cmd_integrate(args) -> int:
           f"{summary['cpu_seconds']:.3g} s CPU")
     errs = summary.get("state_error", {})
     for name, value in summary["state"].items():
-        e = errs.get(name)
-        print(f"  {name:12s} {value:.10g}" + (f" ± {e:.2g}" if e is not None else ""))
+        print(f"  {name:12s} {value:.10g}{plus_minus(errs.get(name))}")
     for f in summary.get("files", []):
         print(f"wrote {f}")
     return 0
@@ -456,7 +456,7 @@ def _cmd_scenes(args) -> int:
     wk = max(len(k) for _, k, _ in rows)
     for name, kind, title in rows:
         print(f"{name:<{w}}  {kind:<{wk}}  {title}")
-    print(f"\nrun one with `camdyn run NAME`; kinds: "
+    print("\nrun one with `camdyn run NAME`; kinds: "
           + "; ".join(f"{k}: {what}" for k, what in scenes.KINDS.items()))
     return 0
 
@@ -500,9 +500,8 @@ def _print_dynacam(sc, summary) -> None:
         if key == "jump":
             v = summary["jump"]
             v = f"from T = {v['T']:.4g}" if v["occurs"] else "no"
-        e = summary.get(f"{key}_error")
-        note = f" ± {e:.2g}" if isinstance(e, float) else ""
-        print(f"  {key:26s} {v if isinstance(v, str) else fmt(v)}{note}")
+        print(f"  {key:26s} {v if isinstance(v, str) else fmt(v)}"
+              f"{plus_minus(summary.get(f'{key}_error'))}")
     for f in summary.get("figures", []):
         print(f"wrote {f}")
 
@@ -635,9 +634,7 @@ def _print_beam(prog, out) -> None:
     for k, v in rows:
         text = f"{v:.6g}" if isinstance(v, float) else str(v)
         unit = _BEAM_UNITS.get(k, "")
-        e = out.get(f"{k}_error")
-        if isinstance(e, float):
-            text += f" ± {e:.2g}"
+        text += plus_minus(out.get(f"{k}_error"))
         print(f"{k:<{width}}  {text} {unit}".rstrip())
     for f in out.get("figures", []):
         print(f"wrote {f}")
