@@ -255,10 +255,27 @@ def jacobian_plain(exprs, plain: _Plain, ys: list) -> list:
     return rows
 
 
+def _time_column(m: Model, plain: _Plain, exprs: list):
+    """d e/dT of the plain expressions (explicit time and the cam arguments a T + b, by the
+    chain rule of jacobian_plain), or None when that needs a cam derivative above the order
+    the cam-law library evaluates (the implicit loops then difference the rhs in time)."""
+    try:
+        return [row[0] for row in jacobian_plain(exprs, plain, [m.time])]
+    except NotImplementedError:
+        return None
+
+
 def _jacobian_context(m: Model, plain: _Plain, diagonal: bool, rhs_exprs: list,
                       consts: ConstantTable):
     """(sparse Jacobian entries (row, column, expr), the entries R of the non-diagonal
-    correction) of the general (not dwell-specialised) right-hand side.
+    correction, the time column: entries (row, expr) of df/dT and its correction R_t, or
+    None) of the general (not dwell-specialised) right-hand side.
+
+    df/dT is what a Rosenbrock method needs besides J (its gamma_i h f_t terms).  Derived,
+    not differenced: a unilateral contact makes f kinked in T within a deflection's worth of
+    cam travel of the trajectory (the roller, F_c = max(0, ...)), and a difference quotient
+    straddling the kink turned RODAS4's local error from O(h^5) into O(h^2) (the step
+    shrank with rtol^(1/2), 10^5 steps in a rise where 10^3 do).
 
     Diagonal M: rows n.. of d(dy/dt)/dy differentiate q'' = f/M and z' directly.  Else
     q'' = M^-1 f and d q''/dy_j = M^-1 (df/dy_j - dM/dy_j q''): the template solves M (the
@@ -275,7 +292,10 @@ def _jacobian_context(m: Model, plain: _Plain, diagonal: bool, rhs_exprs: list,
             for j, d in enumerate(row):
                 if d != 0:
                     entries.append((n + i, j, consts.hoist(d)))
-        return entries, []
+        col = _time_column(m, plain, rhs_exprs)
+        time = None if col is None else (
+            [(n + i, consts.hoist(d)) for i, d in enumerate(col) if d != 0], [])
+        return entries, [], time
     qdd = [sp.Symbol(c.name + "dd", real=True) for c in m.coordinates]
     M = rhs_exprs[:n * n]
     f = rhs_exprs[n * n:n * n + n]
@@ -290,7 +310,13 @@ def _jacobian_context(m: Model, plain: _Plain, diagonal: bool, rhs_exprs: list,
         for j, d in enumerate(row):
             if d != 0:
                 entries.append((2 * n + i, j, consts.hoist(d)))
-    return entries, R
+    time = None
+    dMt, dft, ratest = (_time_column(m, plain, e) for e in (M, f, rates))
+    if dMt is not None and dft is not None and ratest is not None:
+        time = ([(2 * n + i, consts.hoist(d)) for i, d in enumerate(ratest) if d != 0],
+                [consts.hoist(dft[i] - sum(dMt[i * n + k] * qdd[k] for k in range(n)))
+                 for i in range(n)])
+    return entries, R, time
 
 
 def _event_entries(m: Model, plain: _Plain, printer: CythonPrinter) -> list:
@@ -332,7 +358,8 @@ def _cam_instances(m: Model, plain: _Plain, printer: CythonPrinter) -> tuple[lis
     return instances, events
 
 
-def _model_manifest(m: Model, eq: Equations, instances: list, events: list) -> dict:
+def _model_manifest(m: Model, eq: Equations, instances: list, events: list,
+                    time_symbolic: bool) -> dict:
     """The manifest the runtime reads (states, parameters, outputs, cam inputs, modes,
     events, options) with the source hash of the equations it was generated from."""
     manifest = {
@@ -352,6 +379,8 @@ def _model_manifest(m: Model, eq: Equations, instances: list, events: list) -> d
         "options": [list(o) if isinstance(o, tuple) else o for o in m.options],
         # d(dy/dt)/dy (ModelC.jac): derived symbolically with the equations
         "jacobian": "symbolic",
+        # df/dT with it (jacobian()'s ft), for the Rosenbrock method's f_t terms
+        "time_derivative": "symbolic" if time_symbolic else "finite-difference",
     }
     canonical = json.dumps({"M": sp.srepr(eq.M), "f": sp.srepr(eq.f), "Phi": sp.srepr(eq.Phi),
                             "rates": [sp.srepr(z.rate) for z in m.first_order],
@@ -395,7 +424,8 @@ def model_context(eq: Equations) -> dict:
         specialise, variants = False, variants[:1]
     out_exprs = [consts.hoist(plain(o.expr)) for o in m.outputs]
     # the Jacobian of the general right-hand side (it may add cam derivative names)
-    jac_entries, jac_R = _jacobian_context(m, plain, diagonal, rhs_exprs, consts)
+    jac_entries, jac_R, jac_time = _jacobian_context(m, plain, diagonal, rhs_exprs, consts)
+    t_entries, t_R = jac_time if jac_time is not None else ([], [])
     names = dict(plain.names)
     names.update({k: k.name for k, _ in consts.items})
 
@@ -414,14 +444,20 @@ def model_context(eq: Equations) -> dict:
         jac_sys_lines, jac_sys_code, u = cse_block(
             [consts.hoist(e) for e in rhs_exprs[:n * n + n]], names, prefix="_a")
         used |= u
-    jac_lines, jac_code, u = cse_block(jac_R + [e for _, _, e in jac_entries],
+    nR, nE, nRt = len(jac_R), len(jac_entries), len(t_R)
+    jac_lines, jac_code, u = cse_block(jac_R + [e for _, _, e in jac_entries] + t_R
+                                       + [e for _, e in t_entries],
                                        names | {s: f"_qdd[{i}]" for i, s in enumerate(qdd_syms)},
                                        prefix="_j")
     used |= u
     jac = {"sys_lines": jac_sys_lines, "sys_code": jac_sys_code, "lines": jac_lines,
-           "R": jac_code[:len(jac_R)],
+           "R": jac_code[:nR],
            "entries": [(r * (2 * n + nz) + c, code)
-                       for (r, c, _), code in zip(jac_entries, jac_code[len(jac_R):])]}
+                       for (r, c, _), code in zip(jac_entries, jac_code[nR:nR + nE])],
+           # df/dT (Rosenbrock's f_t): derived unless it needs a cam derivative above the third
+           "time": jac_time is not None,
+           "R_t": jac_code[nR + nE:nR + nE + nRt],
+           "t_entries": [(r, code) for (r, _), code in zip(t_entries, jac_code[nR + nE + nRt:])]}
     const_lines, const_code, u = cse_block([e for _, e in consts.items], names, prefix="_c")
     used |= u
     ms_lines, ms_code, u = cse_block(list(eq.M.applyfunc(plain)) + list(K_raw.applyfunc(plain)),
@@ -437,7 +473,7 @@ def model_context(eq: Equations) -> dict:
     events += cam_events
     used |= printer.used
     used = sorted(used & (set(MATH_FUNCTIONS) | {"M_PI"}))
-    manifest = _model_manifest(m, eq, instances, events)
+    manifest = _model_manifest(m, eq, instances, events, jac_time is not None)
 
     initial = ([c.initial for c in m.coordinates] + [c.initial_rate for c in m.coordinates]
                + [z.initial for z in m.first_order])

@@ -124,6 +124,7 @@ def constrained_context(eq: Equations) -> dict:
         "options": [list(o) if isinstance(o, tuple) else o for o in m.options],
         # d(dy/dt)/dy (ModelC.jac): central differences of the compiled rhs (template)
         "jacobian": "finite-difference",
+        "time_derivative": "finite-difference",
     }
     canonical = json.dumps({"M": sp.srepr(eq.M), "f": sp.srepr(eq.f), "Phi": sp.srepr(eq.Phi),
                             "events": [sp.srepr(e.g) for e in m.events],

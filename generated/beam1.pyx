@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:341ce3b9fd82ab43eb4be687bf0b868373e229fc814d8f0d6e8d1573ddd91f34
-# Text hash: sha256:509c64d0cc0164a49eb8155e43c9a4d633732693ab3c1933dfad5fd52a4e3184
+# Derivation key: sha256:748b16e88dee650fb0eef0f419cd3b9399875b6719b1c190c2f52d342ff9bcc5
+# Text hash: sha256:14472ee1eb3bd71d8269503989f35e9f65ea18e331cc544e4f363670aa32f1c1
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
-# Source hash: sha256:5d2a44cf8e25feac525e98db3e8f9b86544d9ee8be1264146b5926c52bc1d882
+# Source hash: sha256:bfb311a2dc642912ccf96df03b945a685fb049d1c1bb63babea364e48a9d993c
 #
 # The Rayleigh-beam follower: a translating roller follower in the groove of a rigid disk cam,
 # its rod a Rayleigh beam whose free length changes as the cam turns (second source paper,
@@ -93,6 +93,7 @@ cdef enum:
     _NQ1 = 3
     _NE1 = 2
     _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
+    _FT_SYMBOLIC = 0            # nor df/dt: jacobian() leaves _ft alone
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up
@@ -906,7 +907,7 @@ _SCALE[4] = 0.05
 _SCALE[5] = 1.0
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, by central differences of rhs() in C (the
     manifest says "finite-difference"), extrapolated (Richardson) from the steps h_j and h_j/2,
     h_j = 1e-3 scale_j: truncation O(h^4), rounding O(eps |f|/h), both far below 1e-6 relative
@@ -1395,7 +1396,7 @@ _MANIFEST_JSON = """
   "baumgarte_rate": "w_B",
   "formulation": "formulation"
  },
- "source_hash": "sha256:5d2a44cf8e25feac525e98db3e8f9b86544d9ee8be1264146b5926c52bc1d882",
+ "source_hash": "sha256:bfb311a2dc642912ccf96df03b945a685fb049d1c1bb63babea364e48a9d993c",
  "states": [
   {
    "doc": "amplitude of the assumed mode (x/d)^2 (13)",
@@ -1444,6 +1445,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "finite-difference",
  "title": "Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes"
 }
 """

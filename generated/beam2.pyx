@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fc443563e55925043b842d45696ab25ad52508f6187993453e9849ff0b460ffd
-# Text hash: sha256:b8f13cf2de7ba024872993a83c7af6aa8efbbd6faed01406989c2ff7089bb314
+# Derivation key: sha256:a26823454e63f39a10848f73f83f030726e5b17750d8222d596ecf8684ea5e8a
+# Text hash: sha256:9f6a2da1d821e0f22096c10bdad3db5629ea35aa7e00b1a1d32d38a0d266f663
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
-# Source hash: sha256:78f7890af05f0d7cbc1a97f2df27b3a223fc1176389818e93d00f4462115a453
+# Source hash: sha256:921486bdc725aa760722bfb26290d6704b3ad8c2d314f01890c68f465878e573
 #
 # The Rayleigh-beam follower: a translating roller follower in the groove of a rigid disk cam,
 # its rod a Rayleigh beam whose free length changes as the cam turns (second source paper,
@@ -93,6 +93,7 @@ cdef enum:
     _NQ1 = 4
     _NE1 = 2
     _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
+    _FT_SYMBOLIC = 0            # nor df/dt: jacobian() leaves _ft alone
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up
@@ -1153,7 +1154,7 @@ _SCALE[6] = 0.05
 _SCALE[7] = 1.0
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, by central differences of rhs() in C (the
     manifest says "finite-difference"), extrapolated (Richardson) from the steps h_j and h_j/2,
     h_j = 1e-3 scale_j: truncation O(h^4), rounding O(eps |f|/h), both far below 1e-6 relative
@@ -1691,7 +1692,7 @@ _MANIFEST_JSON = """
   "baumgarte_rate": "w_B",
   "formulation": "formulation"
  },
- "source_hash": "sha256:78f7890af05f0d7cbc1a97f2df27b3a223fc1176389818e93d00f4462115a453",
+ "source_hash": "sha256:921486bdc725aa760722bfb26290d6704b3ad8c2d314f01890c68f465878e573",
  "states": [
   {
    "doc": "amplitude of the assumed mode (x/d)^2 (13)",
@@ -1754,6 +1755,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "finite-difference",
  "title": "Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes"
 }
 """

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d504cfa5463f772ab9dfff5009eae2682fa7626fc9cb22c8846531ef2cb21248
-# Text hash: sha256:90aca4e19471620b68bba8f21514885e85cc4199a1c79733d0e9df5846aaea5a
+# Derivation key: sha256:c6609875211a7904e92713e71c304d5cd8821c13407333992a2535a60e60a873
+# Text hash: sha256:030f1c8e21281f99de52863c4d6de212f371625c4f29f9d320526882a37886ac
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
-# Source hash: sha256:16f611ebdb86cbe46e97003bef7d174a31629b18ebc930cf1c061e272d8922ef
+# Source hash: sha256:005fc6dd88930eeb16af7091c0a74ba4fe7f9c436ef794c0f2976a8de40a1269
 #
 # The Rayleigh-beam follower: a translating roller follower in the groove of a rigid disk cam,
 # its rod a Rayleigh beam whose free length changes as the cam turns (second source paper,
@@ -93,6 +93,7 @@ cdef enum:
     _NQ1 = 6
     _NE1 = 2
     _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
+    _FT_SYMBOLIC = 0            # nor df/dt: jacobian() leaves _ft alone
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up
@@ -2198,7 +2199,7 @@ _SCALE[10] = 0.05
 _SCALE[11] = 1.0
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, by central differences of rhs() in C (the
     manifest says "finite-difference"), extrapolated (Richardson) from the steps h_j and h_j/2,
     h_j = 1e-3 scale_j: truncation O(h^4), rounding O(eps |f|/h), both far below 1e-6 relative
@@ -2942,7 +2943,7 @@ _MANIFEST_JSON = """
   "baumgarte_rate": "w_B",
   "formulation": "formulation"
  },
- "source_hash": "sha256:16f611ebdb86cbe46e97003bef7d174a31629b18ebc930cf1c061e272d8922ef",
+ "source_hash": "sha256:005fc6dd88930eeb16af7091c0a74ba4fe7f9c436ef794c0f2976a8de40a1269",
  "states": [
   {
    "doc": "amplitude of the assumed mode (x/d)^2 (13)",
@@ -3033,6 +3034,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "finite-difference",
  "title": "Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes"
 }
 """

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:668f12355671d7216682aa884596cc59d512387ac6f8f5a8fce997ded0a3bcd0
-# Text hash: sha256:4f7e8706432ed758a020eca23fa247674cdf721058039f7a44b5e92bbfb126ac
+# Derivation key: sha256:9515242cd59f0a80599b01dd95e6bda47f43073c293dba401e8f2e675ca6c17c
+# Text hash: sha256:027df48e22735aad3ef7b7e30aaa198eb255a9169e997b83888252ebffedf3ac
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
-# Source hash: sha256:8fe2954e6a569e2d27d4a17e9205dc00b2f11a367c65233e0b9bd0aa5c816b1f
+# Source hash: sha256:a91861c5ef9ef871d0972bdd6fadc95fb8bd8aa9c22b166a68b2e22724f00536
 #
 # The Rayleigh-beam follower: a translating roller follower in the groove of a rigid disk cam,
 # its rod a Rayleigh beam whose free length changes as the cam turns (second source paper,
@@ -93,6 +93,7 @@ cdef enum:
     _NQ1 = 7
     _NE1 = 2
     _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
+    _FT_SYMBOLIC = 0            # nor df/dt: jacobian() leaves _ft alone
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up
@@ -2879,7 +2880,7 @@ _SCALE[12] = 0.05
 _SCALE[13] = 1.0
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, by central differences of rhs() in C (the
     manifest says "finite-difference"), extrapolated (Richardson) from the steps h_j and h_j/2,
     h_j = 1e-3 scale_j: truncation O(h^4), rounding O(eps |f|/h), both far below 1e-6 relative
@@ -3766,7 +3767,7 @@ _MANIFEST_JSON = """
   "baumgarte_rate": "w_B",
   "formulation": "formulation"
  },
- "source_hash": "sha256:8fe2954e6a569e2d27d4a17e9205dc00b2f11a367c65233e0b9bd0aa5c816b1f",
+ "source_hash": "sha256:a91861c5ef9ef871d0972bdd6fadc95fb8bd8aa9c22b166a68b2e22724f00536",
  "states": [
   {
    "doc": "amplitude of the assumed mode (x/d)^2 (13)",
@@ -3871,6 +3872,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "finite-difference",
  "title": "Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes"
 }
 """

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:db059f991612507ff61fbe7a2e9b0b6b20029ab79d8e57d22aa8881873d1f2bb
-# Text hash: sha256:5ea6abcb86c5485951314546f42ebdcad6e4560cc07d9100cee0b1d58db76209
+# Derivation key: sha256:24b57b456c262bc916feb18dcd90c481889ef0f8192bd96f4b97a227d7c3ff17
+# Text hash: sha256:9eef9222047b50e8d973c331005f00631cb2cd775417c25aed591b074b120139
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
-# Source hash: sha256:0fe486664fd6bf30c39722ff29faf89fc0ef2fe2dafedd250fc815b51f862f63
+# Source hash: sha256:9d4ce2ed01f1ecad9d62194db1151f10c3655da69963e1cb0de52220801b3e5b
 #
 # The Rayleigh-beam follower: a translating roller follower in the groove of a rigid disk cam,
 # its rod a Rayleigh beam whose free length changes as the cam turns (second source paper,
@@ -93,6 +93,7 @@ cdef enum:
     _NQ1 = 8
     _NE1 = 2
     _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
+    _FT_SYMBOLIC = 0            # nor df/dt: jacobian() leaves _ft alone
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up
@@ -3709,7 +3710,7 @@ _SCALE[14] = 0.05
 _SCALE[15] = 1.0
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, by central differences of rhs() in C (the
     manifest says "finite-difference"), extrapolated (Richardson) from the steps h_j and h_j/2,
     h_j = 1e-3 scale_j: truncation O(h^4), rounding O(eps |f|/h), both far below 1e-6 relative
@@ -4774,7 +4775,7 @@ _MANIFEST_JSON = """
   "baumgarte_rate": "w_B",
   "formulation": "formulation"
  },
- "source_hash": "sha256:0fe486664fd6bf30c39722ff29faf89fc0ef2fe2dafedd250fc815b51f862f63",
+ "source_hash": "sha256:9d4ce2ed01f1ecad9d62194db1151f10c3655da69963e1cb0de52220801b3e5b",
  "states": [
   {
    "doc": "amplitude of the assumed mode (x/d)^2 (13)",
@@ -4893,6 +4894,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "finite-difference",
  "title": "Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes"
 }
 """

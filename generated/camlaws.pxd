@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:49965379aaa7e2058b5a68381b3995644c79b1ad148f31ba7ec7366bfcdc916e
-# Text hash: sha256:5ac361e589670d77d383a2ce600439431465c84c1153bf977b04586109b314e5
+# Derivation key: sha256:b8ed2dd11607c920499d023582131c96c7813601e75c16e70e7dd4ef1601a137
+# Text hash: sha256:bcf9a3004f945e3f0a243ea2dc6b041160691d2e0688c109d87e73c211974b66
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:49965379aaa7e2058b5a68381b3995644c79b1ad148f31ba7ec7366bfcdc916e
-# Text hash: sha256:105ffebcbc00e5ebdf5505b747d1671550f5941588b59e605237f2e8118b5582
+# Derivation key: sha256:b8ed2dd11607c920499d023582131c96c7813601e75c16e70e7dd4ef1601a137
+# Text hash: sha256:1990678fdebd11e71d5c712f4e7a49f9ab6227d1341e0e4c0edeaedbcfe184dc
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ccf2ba0e78754a9023649d8e3a401dec438e5eed671c84365a3047828a5b0dce
-# Text hash: sha256:f20c1dd8912c97eddd3972bbf4cd7e3a8c7f399aa8cf864d2d1a8b5a8ed469cb
+# Derivation key: sha256:972c10c0285b271abe255439ee7815d228d48b8f2951cf582c878d75ee1913e3
+# Text hash: sha256:68d2481ae0ba56050263842b73fdf493b4d37a848a911c41786dd8bed4bf6a2d
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
-# Source hash: sha256:f01a70f6e6b79e15c5fd2d981c5804e2cb64ac4ef41c2bf10add43b5b1e57712
+# Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233
 #
 # CAMSHAFT-1: one DOF with variable fictitious angular velocity, thesis ch. 4.
 #
@@ -47,6 +47,7 @@ cdef enum:
     _NQ1 = 1                 # array sizes that must not be zero
     _NE1 = 1
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -56,9 +57,11 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     """Parameter-only subexpressions, once per run, into ctx.k."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
-    cdef double _c0 = 39.47841760435743*(1.0/(tau*tau))
-    ctx.k[0] = _c0  # _k0
-    ctx.k[1] = -_c0  # _k1
+    cdef double _c0 = 9.869604401089358*(1.0/(tau*tau))
+    cdef double _c1 = 4.0*_c0
+    ctx.k[0] = _c1  # _k0
+    ctx.k[1] = -_c1  # _k1
+    ctx.k[2] = -8.0*Fa*_c0  # _k2
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -67,6 +70,7 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
     cdef double _cam0[4]  # H(T) and its derivatives
@@ -101,6 +105,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
     cdef double Xdd = _dy[1]
@@ -121,6 +126,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
     cdef double _cam0[4]  # H(T) and its derivatives
@@ -130,25 +136,35 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[0] = 39.47841760435743*1.0/((tau*tau)*(Fa*(_cam0[1]*_cam0[1]) + 1.0))
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
     cdef double _cam0[4]  # H(T) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
     cdef int _k
+    cdef double _ftl[2]
     for _k in range(4):
         _J[_k] = 0.0
+    for _k in range(2):
+        _ftl[_k] = 0.0
     for _k in range(1):
         _J[_k * 3 + 1] = 1.0  # d q'/d q'
-    _J[2] = _k1/(Fa*(_cam0[1]*_cam0[1]) + 1.0)
+    cdef double _j0 = (1.0/(Fa*(_cam0[1]*_cam0[1]) + 1.0))
+    _J[2] = _j0*_k1
+    _ftl[1] = _cam0[1]*_j0*(-_cam0[2]*_j0*_k2*(X - _cam0[0]) + _k0)
+    if _ft != NULL:
+        for _k in range(2):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -167,6 +183,7 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double Fa = ctx.p[1]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double X = _y[0]
     cdef double Xd = _y[1]
 
@@ -216,7 +233,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 2
+_model.n_const = 3
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -313,7 +330,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:f01a70f6e6b79e15c5fd2d981c5804e2cb64ac4ef41c2bf10add43b5b1e57712",
+ "source_hash": "sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233",
  "states": [
   {
    "doc": "follower position over the stroke, X = x/h_m'",
@@ -334,6 +351,7 @@ _MANIFEST_JSON = """
   "name": "T",
   "unit": "t_m"
  },
+ "time_derivative": "symbolic",
  "title": "CAMSHAFT-1, one DOF with variable fictitious angular velocity"
 }
 """

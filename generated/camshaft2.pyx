@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fa498b34c07b3bbbebb309b578a166a5012ebbfe65b84fa29dcd7383992532e4
-# Text hash: sha256:dea490fc364ad9f50414f17f7d8e6da66bd42bec42288ba774305f5c0d0f71e4
+# Derivation key: sha256:c734acdd9a8fb832f4f1601a3fc6efdd33a35ff741a6e680225ec5b6c063285e
+# Text hash: sha256:3bc198a816399940af0da211662879aeb5c88c6bef6ff83f5b298ce8a294a81e
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
-# Source hash: sha256:30c2e2c54135369bb66802da83c9643f2cf13c9f8ba5b79248ab4f2224fd099d
+# Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a
 #
 # CAMSHAFT-2: follower and cam angle, thesis ch. 5, figs 5.1-5.3.
 #
@@ -48,6 +48,7 @@ cdef enum:
     _NQ1 = 2                 # array sizes that must not be zero
     _NE1 = 2
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi
@@ -176,10 +177,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[3] = _m0*(Fa*(_cam0[1]*_cam0[1]) - Fa*_cam0[2]*(X - _cam0[0]) + 1.0)/Fa
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double tau = ctx.p[0]
     cdef double Fa = ctx.p[1]
     cdef double Fv = ctx.p[2]
@@ -197,14 +199,21 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], B, _cam0)
 
     cdef int _k
+    cdef double _ftl[4]
     for _k in range(16):
         _J[_k] = 0.0
+    for _k in range(4):
+        _ftl[_k] = 0.0
     for _k in range(2):
         _J[_k * 5 + 2] = 1.0  # d q'/d q'
     _J[8] = _k2
     _J[9] = _cam0[1]*_k0
     _J[12] = _cam0[1]*_k3
     _J[13] = (_cam0[1]*_cam0[1])*_k4 + _cam0[2]*_k3*(X - _cam0[0]) + _k5
+    _ftl[3] = _k1
+    if _ft != NULL:
+        for _k in range(4):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -434,7 +443,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:30c2e2c54135369bb66802da83c9643f2cf13c9f8ba5b79248ab4f2224fd099d",
+ "source_hash": "sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a",
  "states": [
   {
    "doc": "follower position over the stroke, X = x/h_m'",
@@ -469,6 +478,7 @@ _MANIFEST_JSON = """
   "name": "T",
   "unit": "t_m"
  },
+ "time_derivative": "symbolic",
  "title": "CAMSHAFT-2, follower and cam angle"
 }
 """

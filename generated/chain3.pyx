@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c6d59957d431dc21efaf51bbf899cdb46bc4826a8dbfdf1fa81f297ed183323d
-# Text hash: sha256:a8c7d783d20e07d4ca738ab1bfc538726e294079e1c5cbb18b60476e35221f43
+# Derivation key: sha256:6c5c4eb14f8d3b9d4aa24616ab104e4d7590160bec4df60dc666d671d2c7658a
+# Text hash: sha256:0c71ae0387b0b470a89379a29aad7750960b0d244e95b5917edada8a19f8278f
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
-# Source hash: sha256:806a3b93fbc8a678464e19f0ad6c91940cc12473a197026e892f70a5be2771f5
+# Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f
 #
 # Three-DOF chain at constant fictitious angular velocity, thesis sec. 3.7, figs 3.6 and 3.7.
 #
@@ -43,6 +43,7 @@ cdef enum:
     _NQ1 = 3                 # array sizes that must not be zero
     _NE1 = 1
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -204,10 +205,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[8] = _m2
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double tau = ctx.p[0]
     cdef double m1 = ctx.p[1]
     cdef double m2 = ctx.p[2]
@@ -235,8 +237,11 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
     cdef int _k
+    cdef double _ftl[6]
     for _k in range(36):
         _J[_k] = 0.0
+    for _k in range(6):
+        _ftl[_k] = 0.0
     for _k in range(3):
         _J[_k * 7 + 3] = 1.0  # d q'/d q'
     _J[18] = _k7
@@ -246,6 +251,10 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     _J[26] = _k4
     _J[31] = _k6
     _J[32] = _k9
+    _ftl[3] = _cam0[1]*_k1
+    if _ft != NULL:
+        for _k in range(6):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -485,7 +494,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:806a3b93fbc8a678464e19f0ad6c91940cc12473a197026e892f70a5be2771f5",
+ "source_hash": "sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f",
  "states": [
   {
    "doc": "position of mass 1 over the stroke",
@@ -534,6 +543,7 @@ _MANIFEST_JSON = """
   "name": "T",
   "unit": "t_m"
  },
+ "time_derivative": "symbolic",
  "title": "Three-DOF chain, constant fictitious angular velocity"
 }
 """

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e7877c68f5f5e04f250c37264494743fab8b9227a6b0c22ed8fd71ddddc3de9d
-# Text hash: sha256:15616a6fa304ed3175f24c73abd996896b81cfdb4b67abb55117af87434bd156
+# Derivation key: sha256:6607f822bd8693cdbe164f6167f0a26ac89c8b8e27745e221f3c02612578d738
+# Text hash: sha256:5e32ceb96494aa15cb426e2427a528dc7490ae860d85e888b78fcb588aa5b50e
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:f088bfd9d8d2b4bc1fc4d262d063949d46169006a69df9b54facca0bec628623
+# Source hash: sha256:8f77dd07c8ed4b4688df2d3c19ff019f5740d09221661f3282e318623b001c96
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -80,6 +80,7 @@ cdef enum:
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 10
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # gear_lift_drive
@@ -515,10 +516,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[15] = 0.0 / 0.0
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double h_m = ctx.p[0]
     cdef double beta_m = ctx.p[1]
     cdef double beta_0 = ctx.p[2]
@@ -596,8 +598,11 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef int _k
+    cdef double _ftl[8]
     for _k in range(64):
         _J[_k] = 0.0
+    for _k in range(8):
+        _ftl[_k] = 0.0
     for _k in range(4):
         _J[_k * 9 + 4] = 1.0  # d q'/d q'
     cdef double _j0 = (ctx.mode[1] == 0.0)
@@ -673,6 +678,10 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     _J[61] = _j31*_k22
     _J[62] = _j40
     _J[63] = _j40
+    _ftl[4] = _k15*((_k11) if (_j0) else (((0.0) if (_j1) else (_k11))))
+    if _ft != NULL:
+        for _k in range(8):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -1412,7 +1421,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:f088bfd9d8d2b4bc1fc4d262d063949d46169006a69df9b54facca0bec628623",
+ "source_hash": "sha256:8f77dd07c8ed4b4688df2d3c19ff019f5740d09221661f3282e318623b001c96",
  "states": [
   {
    "doc": "cam angle",
@@ -1475,6 +1484,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "symbolic",
  "title": "DYNACAM, cam mechanism with four degrees of freedom and drive"
 }
 """

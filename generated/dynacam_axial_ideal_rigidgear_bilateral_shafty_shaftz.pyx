@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7d17fbcc16050d7822f97581df49a9b5b7deff07ee213d9f80e4b7e9b4b70913
-# Text hash: sha256:ca91087e9a19a859783e10263a06af7b596ece80c238f0b1dc5329400b85bf81
+# Derivation key: sha256:bf39fc81f59bfbceb7fe2d8d55842eb93e78747557fcfe27aa8606f211e0240c
+# Text hash: sha256:c65f90001736d4ea01ba2432b8c8e4295b380b27d9362f23fa3b92cd3af51047
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:e275047e0cf08992c876a680654868402ac3c5828f590df0a2091d07376aa9c5
+# Source hash: sha256:f356169a69c515b9c42fefe373cc8acfc9be03f74c16a9cdb47e148eb2a59dfb
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -80,6 +80,7 @@ cdef enum:
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 2
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi
@@ -799,10 +800,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[15] = c_x
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double h_m = ctx.p[0]
     cdef double beta_m = ctx.p[1]
     cdef double beta_0 = ctx.p[2]
@@ -928,8 +930,11 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef int _k
+    cdef double _ftl[8]
     for _k in range(64):
         _J[_k] = 0.0
+    for _k in range(8):
+        _ftl[_k] = 0.0
     for _k in range(4):
         _J[_k * 9 + 4] = 1.0  # d q'/d q'
     cdef double _j0 = _cam0[2]*y
@@ -985,6 +990,10 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     _J[61] = _cam0[1]*_k95
     _J[62] = _k34
     _J[63] = _k34
+    _ftl[4] = _k1
+    if _ft != NULL:
+        for _k in range(8):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -1771,7 +1780,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:e275047e0cf08992c876a680654868402ac3c5828f590df0a2091d07376aa9c5",
+ "source_hash": "sha256:f356169a69c515b9c42fefe373cc8acfc9be03f74c16a9cdb47e148eb2a59dfb",
  "states": [
   {
    "doc": "cam angle",
@@ -1834,6 +1843,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "symbolic",
  "title": "DYNACAM, cam mechanism with four degrees of freedom and drive"
 }
 """

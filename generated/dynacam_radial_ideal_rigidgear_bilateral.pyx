@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:19656928a9db1f2c38b70339a66b0b25e710e8f9fafcf1c75f1724c01c3af0be
-# Text hash: sha256:f8aa5a2c4f7155ac0b48cf54e4564506f4a7286427bfca0d8971440c92dd2417
+# Derivation key: sha256:1adc3f5800168fd0fa8b015107a5fe14125a179123aaaf23efcfa6fc2aff0d60
+# Text hash: sha256:0dea2361cbb1ee5cfc7a2432e0f7fe335f17d38ec6604525dd3b594cdc33fb0d
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:70928959783656eafba925845d46bb159bc6f2bca0ef34805d7213adff3aa751
+# Source hash: sha256:68a26e070d019d08a18b136de438a3ead39168a76ade198c22c7707fe2202b40
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -80,6 +80,7 @@ cdef enum:
     _NQ1 = 2                 # array sizes that must not be zero
     _NE1 = 2
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi
@@ -390,10 +391,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[3] = c_x
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double h_m = ctx.p[0]
     cdef double beta_m = ctx.p[1]
     cdef double beta_0 = ctx.p[2]
@@ -450,8 +452,11 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], (beta - beta_0)/beta_m, _cam0)
 
     cdef int _k
+    cdef double _ftl[4]
     for _k in range(16):
         _J[_k] = 0.0
+    for _k in range(4):
+        _ftl[_k] = 0.0
     for _k in range(2):
         _J[_k * 5 + 2] = 1.0  # d q'/d q'
     cdef double _j0 = (_cam0[1]*_cam0[1])
@@ -463,6 +468,10 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     _J[13] = _k8
     _J[14] = _cam0[1]*_k11
     _J[15] = _k10
+    _ftl[2] = _k1
+    if _ft != NULL:
+        for _k in range(4):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -964,7 +973,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:70928959783656eafba925845d46bb159bc6f2bca0ef34805d7213adff3aa751",
+ "source_hash": "sha256:68a26e070d019d08a18b136de438a3ead39168a76ade198c22c7707fe2202b40",
  "states": [
   {
    "doc": "cam angle",
@@ -999,6 +1008,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "symbolic",
  "title": "DYNACAM, cam mechanism with four degrees of freedom and drive"
 }
 """

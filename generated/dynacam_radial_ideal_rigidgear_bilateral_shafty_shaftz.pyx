@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8c78394ccc764ca8edd04ca5ccaa1feb3b1cc804680b7e694535efd09bcfa292
-# Text hash: sha256:b539044bb0d335562b1f116de60f544ae2e3682c4885264418c093559956e604
+# Derivation key: sha256:3c958b5b5235d316e92a2e753f7c328cc132b66eeb212f654de6f0b7627b1e3d
+# Text hash: sha256:77d504c686f532e4931309af53fa64acf2fc4de4c456b3e978f7ba86a8216ab2
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:8655144d348c9e6ff02b9c236b5160b222b3bd82ae7406eee237068108295e9b
+# Source hash: sha256:52d0b492daa23ff0a6038d3692472c97bd3181f873d8a79b32f30d87ae0a259a
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -80,6 +80,7 @@ cdef enum:
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 2
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi
@@ -1160,10 +1161,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[15] = c_x
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double h_m = ctx.p[0]
     cdef double beta_m = ctx.p[1]
     cdef double beta_0 = ctx.p[2]
@@ -1343,8 +1345,11 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef int _k
+    cdef double _ftl[8]
     for _k in range(64):
         _J[_k] = 0.0
+    for _k in range(8):
+        _ftl[_k] = 0.0
     for _k in range(4):
         _J[_k * 9 + 4] = 1.0  # d q'/d q'
     cdef double _j0 = (_cam0[1]*_cam0[1])
@@ -1562,6 +1567,10 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     _J[61] = _j158*_k149
     _J[62] = _k63
     _J[63] = _k63
+    _ftl[4] = _k51
+    if _ft != NULL:
+        for _k in range(8):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -2510,7 +2519,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:8655144d348c9e6ff02b9c236b5160b222b3bd82ae7406eee237068108295e9b",
+ "source_hash": "sha256:52d0b492daa23ff0a6038d3692472c97bd3181f873d8a79b32f30d87ae0a259a",
  "states": [
   {
    "doc": "cam angle",
@@ -2573,6 +2582,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "symbolic",
  "title": "DYNACAM, cam mechanism with four degrees of freedom and drive"
 }
 """

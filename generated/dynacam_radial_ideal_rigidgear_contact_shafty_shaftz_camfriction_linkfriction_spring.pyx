@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d914f80868f93e8429b8b8fd3d40db489a3244589c32f9f101178cad4e52ff51
-# Text hash: sha256:f08724e28f5f270a1f96911b76652d81012a9f313ebdf7875b53b9e2de39b836
+# Derivation key: sha256:f122bc9fbc73ac8e558888c6cddb0a6742099215b44ddef90d0707fe1117b1a4
+# Text hash: sha256:b584f44713330cfba3176465325ef5722bbf89f491244e4e880c042e6dbd724d
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:884fe82f295318101f76c676ce12f8ff5c51188645f43f122776328496539d79
+# Source hash: sha256:4ac8bafb400a1646f69be4722317a3e6a1340e3e939fdbc69644456c4bc14bca
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -80,6 +80,7 @@ cdef enum:
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 10
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # roller_lift
@@ -689,10 +690,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[15] = 0.0 / 0.0
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double h_m = ctx.p[0]
     cdef double beta_m = ctx.p[1]
     cdef double beta_0 = ctx.p[2]
@@ -808,8 +810,11 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef int _k
+    cdef double _ftl[8]
     for _k in range(64):
         _J[_k] = 0.0
+    for _k in range(8):
+        _ftl[_k] = 0.0
     for _k in range(4):
         _J[_k * 9 + 4] = 1.0  # d q'/d q'
     cdef double _j0 = (ctx.mode[2] == 0.0)
@@ -969,6 +974,10 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     _J[61] = _k40*(_j100 + ((_j104*_k39) if (_j119) else (((-_j100) if (_j120) else (_j104*nu_x)))))
     _J[62] = _j124
     _J[63] = _j124
+    _ftl[4] = _k30*(_k1 + ((0.0) if (_j0) else (((_k23) if (_j1) else (0.0)))))
+    if _ft != NULL:
+        for _k in range(8):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -1868,7 +1877,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:884fe82f295318101f76c676ce12f8ff5c51188645f43f122776328496539d79",
+ "source_hash": "sha256:4ac8bafb400a1646f69be4722317a3e6a1340e3e939fdbc69644456c4bc14bca",
  "states": [
   {
    "doc": "cam angle",
@@ -1931,6 +1940,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "symbolic",
  "title": "DYNACAM, cam mechanism with four degrees of freedom and drive"
 }
 """

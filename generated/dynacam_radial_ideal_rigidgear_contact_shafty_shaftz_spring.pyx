@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:369b276b89f37aff0b1e5605045f4bb467993bf7a891e262c1af46ae6ea89b04
-# Text hash: sha256:2b940926141574b8f64a6e7b9b829826c5aafdf0e455808b8ff2ffc6cd5c2f67
+# Derivation key: sha256:80675d35eeadacf30acc3937eb8d67f8253381977bd983846ae4aea1bd508f9e
+# Text hash: sha256:4e2db6e39faba4a99d9d36d99ce4377f127656d7d8be9d8dace4b20585ddaf99
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:a8a5f5eb70ce0d4783c335f2e573e44029f576fba812eeec73b924997a7c92ba
+# Source hash: sha256:1862b6bf75d2cf1f5185cac2d07e5bdde467e7941a088e8b8accffb28b9684a6
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -80,6 +80,7 @@ cdef enum:
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 4
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # roller_lift
@@ -578,10 +579,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[15] = 0.0 / 0.0
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double h_m = ctx.p[0]
     cdef double beta_m = ctx.p[1]
     cdef double beta_0 = ctx.p[2]
@@ -674,8 +676,11 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef int _k
+    cdef double _ftl[8]
     for _k in range(64):
         _J[_k] = 0.0
+    for _k in range(8):
+        _ftl[_k] = 0.0
     for _k in range(4):
         _J[_k * 9 + 4] = 1.0  # d q'/d q'
     cdef double _j0 = _cam0[0]*_k11 + _k10
@@ -765,6 +770,10 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     _J[61] = _j46*_k29
     _J[62] = _j54
     _J[63] = _j54
+    _ftl[4] = _k1
+    if _ft != NULL:
+        for _k in range(8):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -1503,7 +1512,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:a8a5f5eb70ce0d4783c335f2e573e44029f576fba812eeec73b924997a7c92ba",
+ "source_hash": "sha256:1862b6bf75d2cf1f5185cac2d07e5bdde467e7941a088e8b8accffb28b9684a6",
  "states": [
   {
    "doc": "cam angle",
@@ -1566,6 +1575,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "symbolic",
  "title": "DYNACAM, cam mechanism with four degrees of freedom and drive"
 }
 """

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0efb51629860ba6d335c3578bc61cdb389b5b0ce787d4020829b4c9323091161
-# Text hash: sha256:3c9e0c1614bda4e940ed428be817f7eb48f332b016a32d0f2a69a6a1c0afd326
+# Derivation key: sha256:22757630a0aba81209ada5268e2d5d6d59ea618d5b80dd7ca4ff217fbf4b4cab
+# Text hash: sha256:44069c4904ba2ce8cf7481a9b4dae300f15cc20d280ed4c752dae2321bbc875a
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:1619237e70c6462c9a81ead3403043759f5c646d5103e24ad540df8015ea9865
+# Source hash: sha256:7842898e4fc68e8102d2800cc75353ff3970859773edaaef2a378a7c26cacd8a
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -80,6 +80,7 @@ cdef enum:
     _NQ1 = 4                 # array sizes that must not be zero
     _NE1 = 6
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # roller_lift
@@ -679,10 +680,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[15] = 0.0 / 0.0
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double h_m = ctx.p[0]
     cdef double beta_m = ctx.p[1]
     cdef double beta_0 = ctx.p[2]
@@ -794,8 +796,11 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef int _k
+    cdef double _ftl[11]
     for _k in range(121):
         _J[_k] = 0.0
+    for _k in range(11):
+        _ftl[_k] = 0.0
     for _k in range(4):
         _J[_k * 12 + 4] = 1.0  # d q'/d q'
     cdef double _j0 = _cam0[0]*_k11 + _k10
@@ -896,6 +901,9 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     _J[109] = _k35
     _J[119] = _k37
     _J[120] = _k36
+    if _ft != NULL:
+        for _k in range(11):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -1785,7 +1793,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:1619237e70c6462c9a81ead3403043759f5c646d5103e24ad540df8015ea9865",
+ "source_hash": "sha256:7842898e4fc68e8102d2800cc75353ff3970859773edaaef2a378a7c26cacd8a",
  "states": [
   {
    "doc": "cam angle",
@@ -1869,6 +1877,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "symbolic",
  "title": "DYNACAM, cam mechanism with four degrees of freedom and drive"
 }
 """

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b28fd882942a6c15e77e95d453b703e8e654b9720e1d32ec6697d51352df85dc
-# Text hash: sha256:ba48389157e690513e1f58be8d819e0842a1e27f8a536f70c595fc99b7bc6c58
+# Derivation key: sha256:2b106a0197eb19e71f857190d0652b007196e865218499fe8183aa8f6962c214
+# Text hash: sha256:a89f3d816266842e284915779aea48b69544faa687e84f2f49c5b7a0a104d6ab
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
-# Source hash: sha256:cb12a14e2a82bc39c330ce4092034e4d1ae1ef6c8be29c96e4886b6df7b1aede
+# Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68
 #
 # The asynchronous motor driving a cam mechanism, thesis App. 5 (and sec. 6.7).
 #
@@ -45,6 +45,7 @@ cdef enum:
     _NQ1 = 1                 # array sizes that must not be zero
     _NE1 = 1
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -57,8 +58,10 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double t_m = ctx.p[2]
     cdef double Mc = ctx.p[3]
     cdef double _c0 = (1.0/J_ma)
+    cdef double _c1 = Mc*_c0
     ctx.k[0] = -G_a*_c0  # _k0
-    ctx.k[1] = -Mc*_c0  # _k1
+    ctx.k[1] = -_c1  # _k1
+    ctx.k[2] = -_c1/t_m  # _k2
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -69,6 +72,7 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double Mc = ctx.p[3]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double dw = _y[0]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
     cdef int _v = ctx.variant
@@ -103,6 +107,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double Mc = ctx.p[3]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double dw = _y[0]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t/t_m, _cam0)
@@ -118,32 +123,42 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double Mc = ctx.p[3]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double dw = _y[0]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t/t_m, _cam0)
 
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double J_ma = ctx.p[0]
     cdef double G_a = ctx.p[1]
     cdef double t_m = ctx.p[2]
     cdef double Mc = ctx.p[3]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double dw = _y[0]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t/t_m, _cam0)
 
     cdef int _k
+    cdef double _ftl[1]
     for _k in range(1):
         _J[_k] = 0.0
+    for _k in range(1):
+        _ftl[_k] = 0.0
     for _k in range(0):
         _J[_k * 2 + 0] = 1.0  # d q'/d q'
     _J[0] = _k0
+    _ftl[0] = _k2*(_cam0[1]*_cam0[3] + (_cam0[2]*_cam0[2]))
+    if _ft != NULL:
+        for _k in range(1):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -164,6 +179,7 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double Mc = ctx.p[3]
     cdef double _k0 = ctx.k[0]
     cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
     cdef double dw = _y[0]
 
     ctx.mode[0] = camlaw_segment(ctx.law[0], ctx.law_par[0], t/t_m)
@@ -216,7 +232,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 2
+_model.n_const = 3
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -305,7 +321,7 @@ _MANIFEST_JSON = """
  ],
  "reference": "thesis sec. A.5.4.2",
  "residual": null,
- "source_hash": "sha256:cb12a14e2a82bc39c330ce4092034e4d1ae1ef6c8be29c96e4886b6df7b1aede",
+ "source_hash": "sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68",
  "states": [
   {
    "doc": "speed deviation of the drive, reduced to the camshaft",
@@ -319,6 +335,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "symbolic",
  "title": "Asynchronous motor, first order (no electrical lag)"
 }
 """

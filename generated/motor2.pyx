@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d035e5d2d5cc9eb9a68a6fc01164d098c6e1064e341c38bf8cf1f6f6074607f9
-# Text hash: sha256:518ef7537d8d9636d4bf0ccc09f36a3bed68025bd9fdc833581feb374111019e
+# Derivation key: sha256:889eb13d18dceb50731dbb97405da2f3b89354a63808d6a2bad6c9cd6925b220
+# Text hash: sha256:45066d0ca857ce10d6e75c647ee721d0dcce63d68023d31cd8173c60837b3558
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
-# Source hash: sha256:9df5f82783bfcb6fd0f028c14378234f531f563607d1d78bfad7ef80fa01f86a
+# Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71
 #
 # The asynchronous motor driving a cam mechanism, thesis App. 5 (and sec. 6.7).
 #
@@ -45,6 +45,7 @@ cdef enum:
     _NQ1 = 1                 # array sizes that must not be zero
     _NE1 = 1
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -57,11 +58,13 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double T_el = ctx.p[2]
     cdef double t_m = ctx.p[3]
     cdef double Mc = ctx.p[4]
-    cdef double _c0 = (1.0/T_el)
+    cdef double _c0 = (1.0/J_ma)
+    cdef double _c1 = (1.0/T_el)
     ctx.k[0] = -Mc  # _k0
-    ctx.k[1] = (1.0/J_ma)  # _k1
-    ctx.k[2] = -_c0  # _k2
-    ctx.k[3] = -G_a*_c0  # _k3
+    ctx.k[1] = _c0  # _k1
+    ctx.k[2] = -_c1  # _k2
+    ctx.k[3] = -G_a*_c1  # _k3
+    ctx.k[4] = -Mc*_c0/t_m  # _k4
 
 
 cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
@@ -75,6 +78,7 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
     cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
     cdef double dw = _y[0]
     cdef double Mea = _y[1]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
@@ -115,6 +119,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
     cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
     cdef double dw = _y[0]
     cdef double Mea = _y[1]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
@@ -134,6 +139,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
     cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
     cdef double dw = _y[0]
     cdef double Mea = _y[1]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
@@ -141,10 +147,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
 
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double J_ma = ctx.p[0]
     cdef double G_a = ctx.p[1]
     cdef double T_el = ctx.p[2]
@@ -154,19 +161,27 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
     cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
     cdef double dw = _y[0]
     cdef double Mea = _y[1]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t/t_m, _cam0)
 
     cdef int _k
+    cdef double _ftl[2]
     for _k in range(4):
         _J[_k] = 0.0
+    for _k in range(2):
+        _ftl[_k] = 0.0
     for _k in range(0):
         _J[_k * 3 + 0] = 1.0  # d q'/d q'
     _J[1] = _k1
     _J[2] = _k3
     _J[3] = _k2
+    _ftl[0] = _k4*(_cam0[1]*_cam0[3] + (_cam0[2]*_cam0[2]))
+    if _ft != NULL:
+        for _k in range(2):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -190,6 +205,7 @@ cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
     cdef double _k1 = ctx.k[1]
     cdef double _k2 = ctx.k[2]
     cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
     cdef double dw = _y[0]
     cdef double Mea = _y[1]
 
@@ -245,7 +261,7 @@ _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
 _model.n_events = _NE
-_model.n_const = 4
+_model.n_const = 5
 _model.n_cache = 5
 _model.prepare = prepare
 _model.rhs = rhs_ptr
@@ -345,7 +361,7 @@ _MANIFEST_JSON = """
  ],
  "reference": "thesis (A.5.6)-(A.5.13)",
  "residual": null,
- "source_hash": "sha256:9df5f82783bfcb6fd0f028c14378234f531f563607d1d78bfad7ef80fa01f86a",
+ "source_hash": "sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71",
  "states": [
   {
    "doc": "speed deviation of the drive, reduced to the camshaft",
@@ -366,6 +382,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "symbolic",
  "title": "Asynchronous motor, second order (electrical lag)"
 }
 """

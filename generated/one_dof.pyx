@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ff4ef2cb4b93831dbcb471e42ae657a3bc9ca67fbbf010d3b9ee011ef60f1e66
-# Text hash: sha256:7b9f61da67a02fba1cd9e6c46b73afbcc3144d2332ac3c3cf28debd594970c39
+# Derivation key: sha256:e6dca410fcff3245bc2af4133ecb297c6e03f8f9a3a5bdc23c82ed722e235207
+# Text hash: sha256:0c8dd15806982d7f2c7ff5fb4353e1d8edc6d149f86e6ab7812fd4efca5d015f
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
-# Source hash: sha256:983ad329da4d3c689348672f065b5f0f272df226f6435e27325b84eb9ab41c90
+# Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073
 #
 # One DOF with constant fictitious angular velocity, thesis ch. 3, fig. 3.2.
 #
@@ -44,6 +44,7 @@ cdef enum:
     _NQ1 = 1                 # array sizes that must not be zero
     _NE1 = 1
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -135,10 +136,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[0] = 39.47841760435743*(1.0/(tau*tau))
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double tau = ctx.p[0]
     cdef double q = ctx.p[1]
     cdef double _k0 = ctx.k[0]
@@ -151,12 +153,19 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
     cdef int _k
+    cdef double _ftl[2]
     for _k in range(4):
         _J[_k] = 0.0
+    for _k in range(2):
+        _ftl[_k] = 0.0
     for _k in range(1):
         _J[_k * 3 + 1] = 1.0  # d q'/d q'
     _J[2] = _k3
     _J[3] = _k2
+    _ftl[1] = _cam0[1]*_k0 + _cam0[2]*_k1
+    if _ft != NULL:
+        for _k in range(2):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -318,7 +327,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:983ad329da4d3c689348672f065b5f0f272df226f6435e27325b84eb9ab41c90",
+ "source_hash": "sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073",
  "states": [
   {
    "doc": "follower position over the stroke, X = x/h_m'",
@@ -339,6 +348,7 @@ _MANIFEST_JSON = """
   "name": "T",
   "unit": "t_m"
  },
+ "time_derivative": "symbolic",
  "title": "One DOF, constant fictitious angular velocity"
 }
 """

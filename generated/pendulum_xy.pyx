@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c15079c7249856112fc35d765fc21dc5d3a0549f47357fb21463bde22960f51f
-# Text hash: sha256:ab2d93fe75567f35312978a0d86f245292c17fb98d9c3fa2cf8b25578bbccf7b
+# Derivation key: sha256:d2fb433dcf4ba04968505cb1766f4507d93a42ae9bb71e21a5c6eaa601ab0aca
+# Text hash: sha256:09ad8a67219d2b882bd06839fcd0295ec7c03cf3f98c2846aaf74b6b5e333e27
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
-# Source hash: sha256:b9be8f3f74294cabeecad03b8ef70c7bcf4ce445457ef8edf614d0911f4e81d7
+# Source hash: sha256:e017c1589554bffedb179ec1f3fe3f8fdb43bb82d0bdd5e3f88df9f352e7786a
 #
 # A planar pendulum in Cartesian coordinates: the constraint layer's second model.
 #
@@ -61,6 +61,7 @@ cdef enum:
     _NQ1 = 2
     _NE1 = 1
     _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
+    _FT_SYMBOLIC = 0            # nor df/dt: jacobian() leaves _ft alone
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -284,7 +285,7 @@ _SCALE[2] = 1.0
 _SCALE[3] = 1.0
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, by central differences of rhs() in C (the
     manifest says "finite-difference"), extrapolated (Richardson) from the steps h_j and h_j/2,
     h_j = 1e-3 scale_j: truncation O(h^4), rounding O(eps |f|/h), both far below 1e-6 relative
@@ -524,7 +525,7 @@ _MANIFEST_JSON = """
   "baumgarte_rate": "w_B",
   "formulation": "formulation"
  },
- "source_hash": "sha256:b9be8f3f74294cabeecad03b8ef70c7bcf4ce445457ef8edf614d0911f4e81d7",
+ "source_hash": "sha256:e017c1589554bffedb179ec1f3fe3f8fdb43bb82d0bdd5e3f88df9f352e7786a",
  "states": [
   {
    "doc": "horizontal position of the bob",
@@ -559,6 +560,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
+ "time_derivative": "finite-difference",
  "title": "Planar pendulum in Cartesian coordinates with its length constraint"
 }
 """

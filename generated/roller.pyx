@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:90168290a7757fefecece5c730e5f0dfe33cd8ec1c42c70f0826cace036c0ac2
-# Text hash: sha256:7fe65e7c4874c5886ed7ff1441d9b672f749433ef184d8646529033540693cea
+# Derivation key: sha256:ed95e8ffe433a68361a12fbe57e103476ced4fbce2054f8fa983586b752edf32
+# Text hash: sha256:03c98bafa071b42789f804dff298dd0c9dced0c9314770e9191cf68de242e773
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
-# Source hash: sha256:5d9ff777c60c5d9e120e3db21dc017ee1859b236f86a4580393945c74b0d307c
+# Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27
 #
 # Roller vibration: the roller's mass and the contact stiffness between roller and cam, in
 # series with the follower linkage (thesis sec. 9.2.1).
@@ -67,6 +67,7 @@ cdef enum:
     _NQ1 = 2                 # array sizes that must not be zero
     _NE1 = 4
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
+    _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # contact_open_lower
@@ -308,10 +309,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Km[3] = 0.0 / 0.0
 
 
-cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept nogil:
+cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
     """d(dy/dt)/dy at (t, y), row-major _NS x _NS, derived symbolically (CSE'd): the Jacobian
     of the general right-hand side in the current modes, a cam input in a dwell taking its
-    dwell values."""
+    dwell values.
+    With _ft not NULL also df/dt there (_NS values), derived the same way."""
     cdef double tau = ctx.p[0]
     cdef double q = ctx.p[1]
     cdef double mu = ctx.p[2]
@@ -349,30 +351,39 @@ cdef void jacobian(double t, const double* _y, double* _J, Ctx* ctx) noexcept no
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
     cdef int _k
+    cdef double _ftl[4]
     for _k in range(16):
         _J[_k] = 0.0
+    for _k in range(4):
+        _ftl[_k] = 0.0
     for _k in range(2):
         _J[_k * 5 + 2] = 1.0  # d q'/d q'
     cdef double _j0 = R*_k5 + _cam0[0]*_k4
     cdef double _j1 = pow(_j0, n_c)
-    cdef double _j2 = (R - _cam0[0] < 0.0)
-    cdef double _j3 = Rd*_k7 + _cam0[1]*_k8
-    cdef double _j4 = Rd*_k8 + _cam0[1]*_k7
-    cdef double _j5 = (((_j1*_k6 + _j3 > 0.0)) if (_j2) else ((R*_k10 + _cam0[0]*_k9 + _j4 < 0.0)))
-    cdef double _j6 = (ctx.mode[1] == 0.0)
-    cdef double _j7 = (ctx.mode[1] == 1.0)
-    cdef double _j8 = R*_k4 + _cam0[0]*_k5 + _k11
-    cdef double _j9 = pow(_j8, n_c)
-    cdef double _j10 = (-R + S + _cam0[0] < 0.0)
-    cdef double _j11 = (((_j4 + _j9*_k6 > 0.0)) if (_j10) else ((R*_k9 + _cam0[0]*_k10 + _j3 + _k12 < 0.0)))
+    cdef double _j2 = _j1/_j0
+    cdef double _j3 = (R - _cam0[0] < 0.0)
+    cdef double _j4 = Rd*_k7 + _cam0[1]*_k8
+    cdef double _j5 = Rd*_k8 + _cam0[1]*_k7
+    cdef double _j6 = (((_j1*_k6 + _j4 > 0.0)) if (_j3) else ((R*_k10 + _cam0[0]*_k9 + _j5 < 0.0)))
+    cdef double _j7 = (ctx.mode[1] == 0.0)
+    cdef double _j8 = (ctx.mode[1] == 1.0)
+    cdef double _j9 = R*_k4 + _cam0[0]*_k5 + _k11
+    cdef double _j10 = pow(_j9, n_c)
+    cdef double _j11 = _j10/_j9
+    cdef double _j12 = (-R + S + _cam0[0] < 0.0)
+    cdef double _j13 = (((_j10*_k6 + _j5 > 0.0)) if (_j12) else ((R*_k9 + _cam0[0]*_k10 + _j4 + _k12 < 0.0)))
     _J[8] = _k2
     _J[9] = _k0
     _J[10] = _k3
     _J[11] = _k1
     _J[12] = _k17
-    _J[13] = _k13*(_k2 + ((((_k6*((_j1*_k18/_j0) if (_j2) else (_k5))) if (_j5) else (0.0))) if (_j6) else (((0.0) if (_j7) else (-((_k6*((_j9*_k19/_j8) if (_j10) else (_k4))) if (_j11) else (0.0)))))))
+    _J[13] = _k13*(_k2 + ((((_k6*((_j2*_k18) if (_j3) else (_k5))) if (_j6) else (0.0))) if (_j7) else (((0.0) if (_j8) else (-((_k6*((_j11*_k19) if (_j12) else (_k4))) if (_j13) else (0.0)))))))
     _J[14] = _k20
-    _J[15] = _k13*(_k3 + ((((_k7) if (_j5) else (0.0))) if (_j6) else (((0.0) if (_j7) else (-((_k8) if (_j11) else (0.0)))))))
+    _J[15] = _k13*(_k3 + ((((_k7) if (_j6) else (0.0))) if (_j7) else (((0.0) if (_j8) else (-((_k8) if (_j13) else (0.0)))))))
+    _ftl[3] = _k13*(_cam0[1]*((((_k6*((_j2*_k19) if (_j3) else (_k4))) if (_j6) else (0.0))) if (_j7) else (((0.0) if (_j8) else (-((_k6*((_j11*_k18) if (_j12) else (_k5))) if (_j13) else (0.0)))))) + _cam0[2]*((((_k8) if (_j6) else (0.0))) if (_j7) else (((0.0) if (_j8) else (-((_k7) if (_j13) else (0.0)))))))
+    if _ft != NULL:
+        for _k in range(4):
+            _ft[_k] = _ftl[_k]
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -745,7 +756,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:5d9ff777c60c5d9e120e3db21dc017ee1859b236f86a4580393945c74b0d307c",
+ "source_hash": "sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27",
  "states": [
   {
    "doc": "follower output position over the stroke, X = x/h_m",
@@ -780,6 +791,7 @@ _MANIFEST_JSON = """
   "name": "T",
   "unit": "t_m"
  },
+ "time_derivative": "symbolic",
  "title": "Roller vibration: roller mass and contact stiffness in series with the linkage"
 }
 """

@@ -416,15 +416,18 @@ def eval_mass_stiffness(object capsule, double[::1] p, int[::1] law, double[::1]
 
 
 def eval_jacobian(object capsule, double[::1] p, int[::1] law, double[::1] law_par, double t,
-                  double[::1] y, element_modes=None):
+                  double[::1] y, element_modes=None, bint with_time=False):
     """J = d(dy/dt)/dy at one point (n_states x n_states), cam segments looked up as by
     eval_rhs, the force elements in ``element_modes``: the Jacobian of the current modes.
     How the model forms it (symbolically or by differences in C) is its manifest's
-    "jacobian"."""
+    "jacobian".  ``with_time``: (J, df/dt), for a model whose manifest's "time_derivative"
+    is "symbolic" (else df/dt comes back NaN)."""
     cdef ModelC* m = model_pointer(capsule)
     cdef int ns = m.n_states
     J = np.zeros((ns, ns))
+    ft = np.full(ns, np.nan)
     cdef double[:, ::1] Jv = J
+    cdef double[::1] ftv = ft
     cdef int[::1] md = _mode_buffer(m, element_modes)
     cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
     cdef Ctx ctx
@@ -433,8 +436,8 @@ def eval_jacobian(object capsule, double[::1] p, int[::1] law, double[::1] law_p
     _ctx_init(&ctx, m, p, k, law, law_par, md)
     m.update_modes(t, &y[0], &ctx)
     if ns:
-        m.jac(t, &y[0], &Jv[0, 0], &ctx)
-    return J
+        m.jac(t, &y[0], &Jv[0, 0], &ftv[0] if with_time else NULL, &ctx)
+    return (J, ft) if with_time else J
 
 
 def rhs_cost_ns(object capsule, double[::1] p, int[::1] law, double[::1] law_par,

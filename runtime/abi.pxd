@@ -12,7 +12,7 @@
 # a module at run time.
 
 cdef enum:
-    CAMDYN_ABI = 4
+    CAMDYN_ABI = 5
 
 # method codes
 cdef enum:
@@ -85,7 +85,7 @@ ctypedef int (*run_fn)(Run* run) noexcept nogil
 ctypedef void (*event_fn)(double t, const double* y, double* g, Ctx* ctx) noexcept nogil
 ctypedef void (*action_fn)(int k, double t, double* y, Ctx* ctx) noexcept nogil
 ctypedef void (*ms_fn)(double t, const double* y, double* M, double* K, Ctx* ctx) noexcept nogil
-ctypedef void (*jac_fn)(double t, const double* y, double* J, Ctx* ctx) noexcept nogil
+ctypedef void (*jac_fn)(double t, const double* y, double* J, double* ft, Ctx* ctx) noexcept nogil
 
 cdef struct ModelC:
     int abi_version        # CAMDYN_ABI; checked before any call
@@ -108,7 +108,9 @@ cdef struct ModelC:
     action_fn on_event     # modes (and state resets) at event k
     ms_fn mass_stiffness   # M and K = -df/dq, for frozen (linearized) analyses
     jac_fn jac             # J = d(dy/dt)/dy, row-major n_states x n_states (ABI 4; the
-                           # manifest's "jacobian" says how: "symbolic" or "finite-difference")
+                           # manifest's "jacobian" says how: "symbolic" or "finite-difference"),
+                           # and df/dt into ft unless NULL where the manifest's
+                           # "time_derivative" is "symbolic" (ABI 5)
     run_fn run             # the integration loops (loops.pxi) with this model's rhs inlined
 
 

@@ -707,8 +707,10 @@ cdef int _jacobian(Run* run, Ctx* ctx, double t, const double* y, const double* 
     cdef int calls = 0
     if _JAC_SYMBOLIC:
         # the model's generated Jacobian (derived symbolically, issue 13, item 1): exact, and
-        # no rhs calls; its manifest says "symbolic"
-        jacobian(t, y, J, ctx)
+        # no rhs calls; its manifest says "symbolic"; df/dt with it where derived
+        jacobian(t, y, J, ft if _FT_SYMBOLIC else NULL, ctx)
+        if _FT_SYMBOLIC:
+            return 0
     else:
         memcpy(yp, y, sizeof(yp))
         for j in range(_NS):
@@ -728,7 +730,9 @@ cdef int _jacobian(Run* run, Ctx* ctx, double t, const double* y, const double* 
                 J[i * _NS + j] = (fp[i] - fm[i]) / (2.0 * d)
             yp[j] = yj
         calls = 2 * _NS
-    # the cam inputs make f depend on t; the increment scales with the interval when t ~ 0
+    # the cam inputs make f depend on t; the increment scales with the interval when t ~ 0.
+    # (Only where df/dt is not derived: a kink of f in t near the trajectory, a unilateral
+    # contact, spoils this quotient and with it the method's order.)
     dt = 6.055454452393343e-06 * fmax(fabs(t), span)
     dt = (t + dt) - t
     rhs(t + dt, y, fp, ctx)

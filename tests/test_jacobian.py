@@ -1,5 +1,5 @@
-"""The generated Jacobians d(dy/dt)/dy against central differences of the right-hand side
-(issue 13, item 1).
+"""The generated Jacobians d(dy/dt)/dy, and df/dt with them, against central differences of
+the right-hand side (issue 13, item 1).
 
 Every registered model, loaded compiled, at random admissible points: states near the default
 initial state, perturbed by a few per cent of each state's manifest "scale", parameters at
@@ -7,6 +7,9 @@ their defaults and at a random point inside their ranges; in every cam segment (
 argument put in each dwell and at the middle of each piece of the rise, for the cycloid, one
 rise piece, and the modified trapezoid, five), and for models with modes in every combination
 of the force elements' modes.
+
+df/dt (the Rosenbrock method's f_t) is checked as one more column, time weighed by the model
+time in which a time-driven cam argument moves by one (differences of step 4e-4 of that).
 
 Tolerance: 1e-6, relative to the row.  Each entry is weighed by its state's manifest scale s
 (states of micrometres and of radians in one matrix): |J_ij - D_ij| s_j <= 1e-6 sum_k |D_ik| s_k
@@ -128,6 +131,32 @@ def _differences(model, p, law, law_par, t, y, modes, h):
     return f0, ((4.0 * d2 - d1) / 3.0).T, d1.T, d2.T
 
 
+def _time_scale(model, p, y, f) -> float:
+    """The "scale" of t in the time column: the shortest model time in which a time-driven cam
+    argument a t + b moves by one (1/|a|) or a coordinate moves by its scale at its present
+    rate (s_j/|q_j'|: a camshaft turning at omega_s through the explicit time of an ideal
+    drive), at most one unit of model time."""
+    tc = 1.0
+    for ab in model.cam_time_affine(p):
+        if ab is not None and ab[0] != 0:
+            tc = min(tc, 1.0 / abs(ab[0]))
+    s, nq = model.state_scales(), model.manifest["n_q"]
+    for j in range(nq):
+        if f[j] != 0:
+            tc = min(tc, s[j] / abs(f[j]))
+    return tc
+
+
+def _time_differences(model, p, law, law_par, t, y, modes, h):
+    """(extrapolated, d1, d2): df/dt by central differences of eval_rhs in t, steps h, h/2."""
+    ts = t + np.array([h, -h, h / 2, -h / 2])
+    F = _integrate.eval_rhs(model.capsule, p, law, law_par, ts, np.repeat(y[None, :], 4, axis=0),
+                            element_modes=modes)
+    d1 = (F[0] - F[1]) / (ts[0] - ts[1])
+    d2 = (F[2] - F[3]) / (ts[2] - ts[3])
+    return (4.0 * d2 - d1) / 3.0, d1, d2
+
+
 def _relative_error(J, D, s, f):
     """Largest error of J against D, each entry's as |J_ij - D_ij| s_j relative to its row's
     sum_k |D_ik| s_k (the change of dy_i/dt over a scale step of every state), or where that
@@ -137,7 +166,8 @@ def _relative_error(J, D, s, f):
     stuck friction mode)."""
     E = np.abs(J - D) * s[None, :]
     rows = (np.abs(D) * s[None, :]).sum(axis=1)
-    rows = np.maximum(np.maximum(rows, 1e-3 * np.abs(f)), 1e-8 * s * (rows / s).max())
+    sr = s[:len(f)]      # the rows' own scales (a time column adds one to the columns')
+    rows = np.maximum(np.maximum(rows, 1e-3 * np.abs(f)), 1e-8 * sr * (rows / sr).max())
     return float((E.max(axis=1) / np.maximum(rows, 1e-300)).max())
 
 
@@ -156,6 +186,7 @@ def _kink(d1, d2, s, f):
 
 def _check(model, rng, formulations=(None,), tol=TOL):
     s = model.state_scales()
+    timed = model.manifest.get("time_derivative") == "symbolic"
     worst, checked, skipped = 0.0, 0, 0
     for key in LAWS:
         (law, law_par), choice = _law_arrays(model, key)
@@ -179,9 +210,26 @@ def _check(model, rng, formulations=(None,), tol=TOL):
                                     or _kink(D1, D2, s, f0):
                                 skipped += 1
                                 continue
-                            J = _integrate.eval_jacobian(model.capsule, p, law, law_par, t, y,
-                                                         element_modes=modes)
-                            err = _relative_error(J, D, s, f0)
+                            if timed:
+                                # df/dt as one more column, t weighed by its scale
+                                tc = _time_scale(model, p, y, f0)
+                                Dt, Dt1, Dt2 = _time_differences(model, p, law, law_par, t, y,
+                                                                 modes, STEP * tc)
+                                D, D1, D2 = (np.column_stack([a, b]) for a, b in
+                                             ((D, Dt), (D1, Dt1), (D2, Dt2)))
+                                se = np.append(s, tc)
+                                if not np.all(np.isfinite(D)) or _kink(D1, D2, se, f0):
+                                    skipped += 1
+                                    continue
+                                J, ft = _integrate.eval_jacobian(model.capsule, p, law, law_par,
+                                                                 t, y, element_modes=modes,
+                                                                 with_time=True)
+                                J = np.column_stack([J, ft])
+                            else:
+                                se = s
+                                J = _integrate.eval_jacobian(model.capsule, p, law, law_par, t,
+                                                             y, element_modes=modes)
+                            err = _relative_error(J, D, se, f0)
                             assert err <= tol, (model.name, key, T, modes, form, err)
                             worst = max(worst, err)
                             got += 1
@@ -197,6 +245,8 @@ def test_jacobian_matches_central_differences(name, rng, record_property):
     kind = model.manifest["jacobian"]
     constrained = bool(model.manifest.get("n_constraints"))
     assert kind == ("finite-difference" if constrained else "symbolic")
+    # df/dt (RODAS4's f_t) is derived with J wherever J is: no model needs a fourth cam derivative for it today
+    assert model.manifest["time_derivative"] == kind
     worst, checked, skipped = _check(model, rng, (0.0,) if constrained else (None,),
                                      TOL_CONSTRAINED if constrained else TOL)
     record_property("largest_relative_difference", worst)
