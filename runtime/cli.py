@@ -9,6 +9,7 @@
     camdyn integrate MODEL --t-end T ...    any model: a model file (built on demand) or built-in
     camdyn simulate SCENE.toml [--json]     a DYNACAM scene (thesis ch. 6, 7): summary and diagrams
     camdyn beam-follower [--omega W] ...    the Rayleigh-beam follower (paper; issue 5)
+    camdyn precision SCENE_OR_MODEL ...     work-precision chart: every method, SciPy's beside
 
 Bad arguments end in one line on stderr naming the argument, and status 2.
 """
@@ -640,6 +641,51 @@ def _print_beam(prog, out) -> None:
         print(f"wrote {f}")
 
 
+# -- camdyn precision ----------------------------------------------------------------
+
+def _cmd_precision(args) -> int:
+    """Work-precision study (runtime/precision.py): chart, CSV and JSON into --out."""
+    from . import precision
+
+    prog = "camdyn precision"
+    say = (lambda msg: print(msg, file=sys.stderr, flush=True))
+    try:
+        params = _assignments(args.set, "--set")
+        if args.no_peers and args.peers:
+            raise CamdynInputError("arguments --peers and --no-peers: give one")
+        pr = precision.problem(args.target, params, args.t_end, say)
+        out = Path(args.out)
+        try:
+            out.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise CamdynInputError(f"argument --out: cannot create {out}: {exc}") from None
+        st = precision.study(pr, args.methods, () if args.no_peers else args.peers,
+                             quick=args.quick, progress=say)
+    except CamdynInputError as exc:
+        return fail(prog, str(exc))
+    except SimulationError as exc:
+        return run_failed(prog, exc)
+    stem = Path(args.target).stem
+    files = [st.write_csv(out / f"{stem}_precision.csv"), st.write_json(out / f"{stem}_precision.json"),
+             st.chart(out / f"{stem}_precision.png")]
+    if args.json:
+        print(json.dumps({**precision._finite(st.as_dict()), "files": files}, indent=1))
+        return 0
+    ref = st.reference
+    print(f"{st.label}: reference dp54 rtol={ref['rtol']:g}, error bound {ref['error_estimate']:.2g}")
+    print(f"{'method':8s} {'setting':>14s} {'error':>10s} {'CPU s':>10s} {'rhs':>9s}  status")
+    for r in st.rows:
+        setting = "" if r.setting is None else f"{r.setting_name}={r.setting:.3g}"
+        err = "" if r.error is None else f"{r.error:.3g}"
+        cpu = "" if r.cpu_seconds is None else f"{r.cpu_seconds:.3g}"
+        rhs = "" if r.n_rhs is None else str(r.n_rhs)
+        note = r.status if r.status == "ok" else f"{r.status}: {r.message.split(';')[0][:100]}"
+        print(f"{r.method:8s} {setting:>14s} {err:>10s} {cpu:>10s} {rhs:>9s}  {note}")
+    for f in files:
+        print(f"wrote {f}")
+    return 0
+
+
 # -- parser -------------------------------------------------------------------------
 
 def _method_names() -> tuple[list, list]:
@@ -751,6 +797,7 @@ def build_parser() -> argparse.ArgumentParser:
     sm.set_defaults(func=_cmd_simulate)
 
     _add_beam_follower(sub)
+    _add_precision(sub, all_methods)
     return top
 
 
@@ -810,6 +857,25 @@ def _add_beam_follower(sub) -> None:
                    help="also write the paper's figs 4-9 (tip deflection against cam angle, one "
                         "parameter varied; 18 runs) as PNG into DIR")
     b.set_defaults(func=_cmd_beam_follower)
+
+
+def _add_precision(sub, all_methods) -> None:
+    pr = sub.add_parser("precision", help="work-precision chart: error against CPU time of every "
+                                          "method over a ladder of tolerances, SciPy's beside")
+    pr.add_argument("target", metavar="SCENE_OR_MODEL",
+                    help="a scene (.toml or built-in), a model file (.py) or a built-in model")
+    pr.add_argument("--set", action="append", metavar="NAME=VALUE", help="a parameter (repeatable)")
+    pr.add_argument("--t-end", type=float, default=None, metavar="T",
+                    help="end of the run, models only (default 3 for a model with a rise)")
+    pr.add_argument("--methods", nargs="+", choices=all_methods, default=None,
+                    help="camdyn's methods (default: all)")
+    pr.add_argument("--peers", nargs="+", default=None, metavar="PEER",
+                    help="SciPy peers: RK45 DOP853 Radau BDF LSODA odeint (default: all)")
+    pr.add_argument("--no-peers", action="store_true", help="camdyn's methods only")
+    pr.add_argument("--out", default="out", help="folder for the chart, CSV and JSON (default out/)")
+    pr.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    pr.add_argument("--quick", action="store_true", help="every other rung of the ladders")
+    pr.set_defaults(func=_cmd_precision)
 
 
 def main(argv=None) -> int:
