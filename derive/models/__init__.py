@@ -15,6 +15,8 @@ REGISTRY = {
     "motor1": motor.build_first_order,
     "motor2": motor.build_second_order,
     "roller": roller.build,
+    # the same held without backlash: smooth, the stiff benchmark case (issue 13, item 8)
+    "roller_bilateral": roller.build_bilateral,
     # the second constrained model, a pendulum in dependent coordinates: the constraint layer
     # (dae.py) serves any declaration, not the beam follower only
     "pendulum_xy": pendulum.build,

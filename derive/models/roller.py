@@ -122,3 +122,39 @@ def build() -> Model:
         events=events,
         residual=Residual(error="U", acceleration="Xdd", rise_end=1.0),
     )
+
+
+def build_bilateral() -> Model:
+    """The roller held in a groove without backlash: the contact spring and damper act both
+    ways (F_c = kappa omega^2 delta + 2 zeta sqrt(mu kappa) omega delta', linear), so the
+    contact never opens and there are no modes or events.  The smooth stiff case of the
+    benchmarks: a fast mode of omega sqrt((kappa + 1)/mu) that only rings, undamped at
+    zeta = 0, in series with the follower (issue 13, item 8)."""
+    x, r, h = X(T), R(T), H(T)
+    w = 2 * sp.pi / tau.symbol
+    k_c = kappa.symbol * w**2
+    d_c = 2 * zeta.symbol * sp.sqrt(mu.symbol * kappa.symbol) * w
+    delta = h - r
+    F_c = k_c * delta + d_c * delta.diff(T)
+    return Model(
+        name="roller_bilateral",
+        title="Roller vibration, bilateral contact: roller mass and contact stiffness in series "
+              "with the linkage, no backlash",
+        reference="thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3",
+        doc=build_bilateral.__doc__,
+        time=T,
+        time_unit="t_m",
+        coordinates=(X, R),
+        kinetic=x.diff(T) ** 2 / 2 + mu.symbol * r.diff(T) ** 2 / 2,
+        potential=w**2 * (r - x) ** 2 / 2,
+        dissipation=q.symbol * w * (r.diff(T) - x.diff(T)) ** 2,
+        forces=(sp.Integer(0), F_c),
+        parameters=(tau, q, mu, kappa, zeta),
+        outputs=(
+            Output("Xdd", x.diff(T, 2), "h_m/t_m^2", "follower acceleration X''"),
+            Output("U", x - h, "h_m", "positional error of the follower, X - H (3.4)"),
+            Output("Fc", F_c, "m h_m/t_m^2", "contact force of the cam on the roller"),
+            Output("delta", delta, "h_m", "deflection of the contact, H - R"),
+        ),
+        residual=Residual(error="U", acceleration="Xdd", rise_end=1.0),
+    )
