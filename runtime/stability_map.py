@@ -11,7 +11,9 @@ refused     a fixed step beyond the method's stability boundary, refused by the 
             runtime/stability.py (the default behaviour of every command)
 blew up     the run failed (SimulationError: non-finite state, the thesis scheme's mid-step
             iteration not converging, step collapse or step budget of an adaptive method), or
-            a state grew past ``BLOWUP`` times its largest value in the reference run
+            a state grew past ``BLOWUP`` times its largest value in the reference run, or the
+            residual vibration (U) grew by more than ``GROWTH`` from the first fifth of the
+            dwell to the last (``dwell_growth``; the models do not excite it there)
 
 A refused step is also run with the check off (``Simulator(check_stability=False)``), and its
 outcome kept in ``outcome``: so the map shows whether the check refused what would have
@@ -51,6 +53,7 @@ CLASSES = ("fine", "inaccurate", "refused", "blew up")
 COLOURS = {"fine": "#4caf50", "inaccurate": "#ffc107", "refused": "#9e9e9e", "blew up": "#e53935"}
 REF_RTOL = 1e-11   # the reference run (DP54)
 BLOWUP = 100.0     # a state beyond BLOWUP x (its reference maximum + scale) has blown up
+GROWTH = 2.0       # so has a residual vibration grown by more than this over the dwell
 MAX_CELLS = 2000
 THESIS_STEP_X = 0.2 * math.pi   # sec. 4.4.2: Delta T = 0.1 tau is h omega = 0.1 * 2 pi
 
@@ -237,6 +240,26 @@ def step_limit(model: CompiledModel, method: str, ref: Reference) -> float:
     return math.inf if est is None else est.largest_stable_step / _stability.SAFETY
 
 
+def dwell_growth(model: CompiledModel, res) -> float:
+    """A residual model's error output (U) in the dwell: its largest |value| over the last
+    fifth of the dwell over that over the first fifth (0 without a dwell).  The models are
+    undamped or damped there: a residual vibration that grows is the method's instability."""
+    spec = model.manifest.get("residual")
+    if not spec or spec.get("rise_state"):
+        return 0.0
+    t0, t1 = float(spec["rise_end"]), float(res.t[-1])
+    if t1 <= t0:
+        return 0.0
+    u, t = np.abs(res[spec["error"]]), res.t
+    first = u[(t >= t0) & (t <= t0 + 0.2 * (t1 - t0))]
+    last = u[t >= t1 - 0.2 * (t1 - t0)]
+    if not first.size or not last.size:
+        return 0.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        g = last.max() / first.max()
+    return float(g) if np.isfinite(g) else (math.inf if last.max() > 0 else 0.0)
+
+
 def _outcome(model, sim, params, ref: Reference, threshold: float) -> tuple:
     """(outcome, reason, figure, error, cpu, loop seconds, n_steps, n_rhs, h_rho) of one run."""
     c0 = time.process_time()
@@ -253,6 +276,10 @@ def _outcome(model, sim, params, ref: Reference, threshold: float) -> tuple:
     if not np.all(np.abs(res.y).max(axis=0) <= bound):
         return ("blew up", f"a state grew past {BLOWUP:g} x its reference maximum", None, None,
                 cpu, *n, h_rho)
+    grew = dwell_growth(model, res)
+    if grew > GROWTH:
+        return ("blew up", f"the residual vibration grew {grew:.3g}-fold over the dwell", None,
+                None, cpu, *n, h_rho)
     try:
         value = headline(model, res)
     except (SimulationError, CamdynInputError) as exc:
