@@ -370,10 +370,16 @@ def meth_koster_unusable(m: CompiledModel, settings: dict) -> bool:
 
 
 def largest_fine(smap: StabilityMap, method: str) -> list:
-    """Per parameter value the largest step (or rtol) classified fine, None if none is."""
+    """Per parameter value the largest step (or rtol) up to which every cell is fine (a
+    coarser cell that is fine by coincidence, its error crossing zero, does not count);
+    None if the finest is not."""
     out = []
     for v in smap.values:
-        ok = [c.setting for c in smap.cells if c.method == method and c.param == v
-              and c.status == "fine"]
-        out.append(max(ok) if ok else None)
+        best = None
+        for c in sorted((c for c in smap.cells if c.method == method and c.param == v),
+                        key=lambda c: c.setting):
+            if c.status != "fine":
+                break
+            best = c.setting
+        out.append(best)
     return out

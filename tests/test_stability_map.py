@@ -126,6 +126,8 @@ def test_map_counts_and_theory_line():
     assert status[("rk4", round(2 / 9, 4), 0.002)] == "fine"
     assert status[("dp54", round(2 / 9, 4), 1e-9)] == "fine"
     assert all(c.n_steps > 0 for c in m.cells if c.method == "dp54")
+    fine = smap.largest_fine(m, "rk4")
+    assert fine[1] is not None and fine[1] < m.step_limit["rk4"][1]
 
 
 # -- the thesis, sec. 4.4.2 ---------------------------------------------------------------
