@@ -10,6 +10,7 @@
     camdyn simulate SCENE.toml [--json]     a DYNACAM scene (thesis ch. 6, 7): summary and diagrams
     camdyn beam-follower [--omega W] ...    the Rayleigh-beam follower (paper; issue 5)
     camdyn precision SCENE_OR_MODEL ...     work-precision chart: every method, SciPy's beside
+    camdyn stability MODEL --param P=A:B:N  stability map: step/rtol x parameter, per method
 
 Bad arguments end in one line on stderr naming the argument, and status 2.
 """
@@ -686,6 +687,134 @@ def _cmd_precision(args) -> int:
     return 0
 
 
+# -- camdyn stability ------------------------------------------------------------------
+
+# default grids: tau at the maxima 2/(2k + 1) of |sin(pi/tau)| in U0 (3.5), k = 13, 9, 6, 4, 2:
+# near a zero of U0 (tau = 1/n) a relative error means nothing
+_TAU_MAXIMA = "tau=" + ",".join(f"{2 / (2 * k + 1):.6g}" for k in (13, 9, 6, 4, 2))
+_STABILITY_DEFAULTS = {"one_dof": _TAU_MAXIMA, "camshaft1": _TAU_MAXIMA,
+                       "roller": "kappa=100:10000:3:log"}
+
+
+def _grid(text: str, flag: str, positive: bool = True) -> list:
+    """'A:B:N' (N values from A to B; ':log' for geometric spacing) or 'a,b,c'."""
+    import numpy as np
+
+    parts = text.split(":")
+    try:
+        if len(parts) == 1:
+            vals = [float(v) for v in text.split(",") if v.strip()]
+        elif len(parts) in (3, 4) and (len(parts) == 3 or parts[3] in ("log", "lin")):
+            a, b, n = float(parts[0]), float(parts[1]), int(parts[2])
+            if not 1 <= n <= 200:
+                raise CamdynInputError(f"argument {flag}: N={n} is out of range: 1 <= N <= 200")
+            log = len(parts) == 4 and parts[3] == "log"
+            if log and not (a > 0 and b > 0):
+                raise CamdynInputError(f"argument {flag}: a log grid needs START, STOP > 0")
+            vals = list(np.geomspace(a, b, n) if log else np.linspace(a, b, n))
+        else:
+            raise ValueError
+    except ValueError:
+        raise CamdynInputError(f"argument {flag}: {text!r} is not START:STOP:N[:log] or a "
+                               f"comma-separated list of numbers") from None
+    if not vals or not all(np.isfinite(vals)) or (positive and min(vals) <= 0):
+        raise CamdynInputError(f"argument {flag}: {text!r} must give finite"
+                               f"{' positive' if positive else ''} numbers")
+    return [float(v) for v in vals]
+
+
+def stability_run(args, say) -> tuple:
+    """The map of `camdyn stability` (runtime/stability_map.py): (StabilityMap, model)."""
+    import numpy as np
+
+    from . import stability_map as smap
+    from .methods import METHODS
+    from .models import available, load
+
+    if args.model.endswith(".py") or Path(args.model).is_file():
+        from . import ondemand
+
+        model = ondemand.model_file(args.model, say)
+    elif args.model.replace("-", "_") in available():
+        model = load(args.model)
+    else:
+        raise CamdynInputError(f"MODEL {args.model!r} is neither a model file (.py) nor a built-in "
+                               f"model; built-in models: {', '.join(available())}")
+    spec = args.param or _STABILITY_DEFAULTS.get(model.name)
+    if spec is None:
+        raise CamdynInputError(f"argument --param: required for {model.name} (NAME=START:STOP:N, "
+                               f"e.g. one of {', '.join(model.parameter_names)})")
+    name, sep, rng = spec.partition("=")
+    if not sep or not name:
+        raise CamdynInputError(f"argument --param: {spec!r} is not NAME=START:STOP:N[:log]")
+    values = _grid(rng, "--param", positive=False)
+    methods = args.methods or [k for k in ("rk4", "koster", "dp54", "rodas4")
+                               if not (k == "koster" and len(model.state_names) != 2 * model.manifest["n_q"])]
+    for k in methods:
+        if k not in METHODS:
+            raise CamdynInputError(f"argument --methods: unknown method {k!r}; choose from "
+                                   f"{', '.join(METHODS)}")
+    fixed = _assignments(args.set, "--set")
+    rtols = _grid(args.rtols, "--rtols") if args.rtols else list(np.geomspace(1e-3, 1e-10, 8))
+    if any(not r < 1 for r in rtols):
+        raise CamdynInputError("argument --rtols: every rtol must be < 1")
+    if args.steps:
+        steps = _grid(args.steps, "--steps")
+    else:   # around the theory's boundary over the grid: 1/50 of the smallest to 1.6 x the largest
+        lims = []
+        for v in values:
+            p = {**fixed, name: v}
+            model.parameter_vector(p)
+            ref = smap.reference(model, p, args.t_end, args.law)
+            lims.append(smap.step_limit(model, "rk4", ref))
+        steps = list(np.geomspace(min(lims) / 50, max(lims) * 1.6, 10))
+    return smap.run_map(model, name, values, methods, steps=steps, rtols=rtols, fixed=fixed,
+                        threshold=args.threshold, t_end=args.t_end, law=args.law,
+                        check_stability=not args.run_refused, progress=say), model
+
+
+def _cmd_stability(args) -> int:
+    prog = "camdyn stability"
+    say = (lambda msg: None) if args.quiet else (lambda msg: print(f"{prog}: {msg}", file=sys.stderr, flush=True))
+    from . import stability_map as smap
+
+    try:
+        if not 0 < args.threshold < 1:
+            raise CamdynInputError(f"argument --threshold: {args.threshold:g} is out of range: "
+                                   f"0 < threshold < 1")
+        if not args.t_end > 0:
+            raise CamdynInputError(f"argument --t-end: {args.t_end:g} must be positive")
+        m, model = stability_run(args, say)
+        out = Path(args.out)
+        try:
+            out.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise CamdynInputError(f"argument --out: cannot create {out}: {exc}") from None
+        stem = out / f"stability_{model.name}_{m.param}"
+        files = [m.plot(f"{stem}.png"), m.write_csv(f"{stem}.csv"), m.write_json(f"{stem}.json")]
+    except CamdynInputError as exc:
+        return fail(prog, str(exc))
+    except SimulationError as exc:   # the reference run itself failed
+        return run_failed(prog, f"the reference run (dp54, rtol {smap.REF_RTOL:g}) failed: {exc}")
+    summary = {"model": m.model, "param": m.param, "values": m.values, "counts": m.counts(),
+               "largest_fine": {k: smap.largest_fine(m, k) for k in m.settings},
+               "step_limit": m.step_limit, "files": files}
+    if args.json:
+        print(json.dumps(summary, indent=1))
+        return 0
+    print(f"{m.model}: stability map over {m.param} = {', '.join(f'{v:.4g}' for v in m.values)} "
+          f"({m.figure} within {m.threshold:g} counts as fine)")
+    for k, c in summary["counts"].items():
+        fine = ", ".join("-" if f is None else f"{f:.3g}" for f in summary["largest_fine"][k])
+        line = f"  {k:7s} " + " ".join(f"{n} {c[n]}" for n in smap.CLASSES)
+        line += f"; largest fine {'step' if k in m.step_limit else 'rtol'}: {fine}"
+        if k in m.step_limit:
+            line += "; theory's step limit: " + ", ".join(f"{v:.3g}" for v in m.step_limit[k])
+        print(line)
+    for f in files:
+        print(f"wrote {f}")
+    return 0
+
 # -- parser -------------------------------------------------------------------------
 
 def _method_names() -> tuple[list, list]:
@@ -797,6 +926,35 @@ def build_parser() -> argparse.ArgumentParser:
     sm.set_defaults(func=_cmd_simulate)
 
     _add_beam_follower(sub)
+    st = sub.add_parser("stability", help="stability map: each method over a grid of step (or "
+                                          "rtol) x a stiffness parameter")
+    st.add_argument("model", metavar="MODEL", help="a built-in model (one_dof, camshaft1, roller, "
+                    "motor1, ...) or a model file")
+    st.add_argument("--param", metavar="NAME=START:STOP:N[:log]",
+                    help="the stiffness parameter's grid, or NAME=a,b,c (default for one_dof and "
+                         "camshaft1: tau = 2/(2k + 1), k = 13, 9, 6, 4, 2, maxima of U0 (3.5); "
+                         "kappa=100:10000:3:log for roller)")
+    st.add_argument("--set", action="append", metavar="NAME=VALUE",
+                    help="another parameter's value (repeatable)")
+    st.add_argument("--methods", nargs="+", metavar="METHOD",
+                    help=f"methods to map (default: {', '.join(all_methods)}; koster only for "
+                         "second-order models)")
+    st.add_argument("--steps", metavar="START:STOP:N[:log] | a,b,c",
+                    help="fixed steps (default: 10 on a log grid around the theory's boundary)")
+    st.add_argument("--rtols", metavar="START:STOP:N[:log] | a,b,c",
+                    help="tolerances of dp54/rodas4 (default 1e-3 .. 1e-10, 8)")
+    st.add_argument("--threshold", type=float, default=1e-3,
+                    help="relative error of the headline figure above which a run is "
+                         "inaccurate (default 1e-3)")
+    st.add_argument("--t-end", type=float, default=3.0, help="end of each run (default 3)")
+    st.add_argument("--law", default="cycloidal", choices=laws.NAMES)
+    st.add_argument("--run-refused", action="store_true",
+                    help="run refused steps anyway and show what they do (stability check off)")
+    st.add_argument("--out", default="out", help="folder for PNG, CSV, JSON (default out/)")
+    st.add_argument("--json", action="store_true", help="the summary as JSON on stdout")
+    st.add_argument("--quiet", action="store_true", help="no progress lines")
+    st.set_defaults(func=_cmd_stability)
+
     _add_precision(sub, all_methods)
     return top
 

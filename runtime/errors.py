@@ -11,3 +11,16 @@ class CamdynInputError(ValueError):
 
 class SimulationError(RuntimeError):
     """An integration stopped early (step budget, non-finite state, ...)."""
+
+
+class UnstableStep(SimulationError):
+    """A fixed step refused because it lies beyond the method's stability boundary.
+
+    ``estimate`` is the check's :class:`camdyn.runtime.stability.Estimate` (h rho, the
+    boundary, the largest stable step).  A SimulationError, so every caller that catches
+    failed runs catches it too; the stability map tells it apart from a run that blew up.
+    """
+
+    def __init__(self, message: str, estimate=None):
+        super().__init__(message)
+        self.estimate = estimate

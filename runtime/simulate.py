@@ -13,7 +13,7 @@ from functools import lru_cache
 import numpy as np
 
 from . import _integrate, laws as _laws, methods as _methods, stability as _stability
-from .errors import CamdynInputError, SimulationError
+from .errors import CamdynInputError, SimulationError, UnstableStep
 from .models import CompiledModel, load
 from .result import Result
 
@@ -80,12 +80,19 @@ class Simulator:
     method  "dp54" (rtol, atol), "rk4" or "koster" (step), or a method object
     law     cam-law name, or {family: name} for models with several inputs;
             theta is the law's shape parameter (modified sine)
+    check_stability
+            True (the default): a fixed step beyond the method's stability boundary is
+            refused (UnstableStep).  False runs it anyway, for the stability map
+            (runtime/stability_map.py), which must see what the step does: the estimate is
+            still computed and kept in ``result.stability``, a run that becomes non-finite
+            still raises SimulationError.
     """
 
     def __init__(self, model, t_end: float = 3.0, method="dp54", *, rtol: float | None = None,
                  atol: float | None = None, step: float | None = None, law="cycloidal",
                  theta: float | None = None, y0=None, t0: float = 0.0, max_steps: int = 5_000_000,
-                 modes: dict | None = None, max_events: int = 1_000_000):
+                 modes: dict | None = None, max_events: int = 1_000_000,
+                 check_stability: bool = True):
         m = model if isinstance(model, CompiledModel) else load(model)
         if isinstance(method, str):
             method = _methods.make(method, rtol=rtol, atol=atol, step=step)
@@ -100,6 +107,9 @@ class Simulator:
         if isinstance(max_steps, bool) or not isinstance(max_steps, int) or max_steps < 1:
             raise CamdynInputError(f"max_steps must be a positive integer, got {max_steps!r}")
         self.model, self.method, self.t0, self.t_end, self.max_steps = m, method, t0, t_end, max_steps
+        if not isinstance(check_stability, bool):
+            raise CamdynInputError(f"check_stability must be True or False, got {check_stability!r}")
+        self.check_stability = check_stability
         self.laws, self.law_codes, self.law_pars = _law_choices(m, law, theta)
         n = len(m.state_names)
         # a default initial state that depends on the parameters is worked out per run
@@ -152,7 +162,8 @@ class Simulator:
 
         A failed run raises SimulationError; so does a fixed-step run whose step lies beyond
         the method's stability boundary, checked before the run at its start and after it at
-        a sample of recorded points (camdyn.runtime.stability).  A step near the boundary
+        a sample of recorded points (camdyn.runtime.stability; UnstableStep, unless the
+        simulator was made with check_stability=False).  A step near the boundary
         leaves a warning in ``result.warnings``; DP54 records where Hairer's stiffness test
         fired in ``result.stiff_from_T``.
         """
@@ -166,8 +177,8 @@ class Simulator:
         if fixed:
             y_start = self._y_init if y0 is None else y0
             est = self._stability(p, [self.t0], [y_start])
-            if est is not None and not est.stable:
-                raise SimulationError(_stability.refusal(m.name, tname, est))
+            if self.check_stability and est is not None and not est.stable:
+                raise UnstableStep(_stability.refusal(m.name, tname, est), est)
         out = self.integrator.run(p, stops, cap or self._cap, y0)
         if fixed:
             # during the run: the frozen Jacobian changes with the cam position and the modes
@@ -180,8 +191,8 @@ class Simulator:
                 if during is not None and (est is None or during.largest_stable_step
                                            < est.largest_stable_step):
                     est = during
-            if est is not None and not est.stable:
-                raise SimulationError(_stability.refusal(m.name, tname, est))
+            if self.check_stability and est is not None and not est.stable:
+                raise UnstableStep(_stability.refusal(m.name, tname, est), est)
         if out.status != 0:
             raise SimulationError(f"{m.name} with {self.method.name}: "
                                   f"{_integrate.STATUS_TEXT[out.status]} at "
@@ -192,6 +203,9 @@ class Simulator:
         res.stability = est
         if est is not None and est.near:
             res.warnings.append(_stability.warning(tname, est))
+        elif est is not None and not est.stable:   # run anyway (check_stability=False)
+            res.warnings.append("run with the stability check off: "
+                                + _stability.refusal(m.name, tname, est))
         return res
 
     def _stability(self, p, times, states, modes=None):
