@@ -69,6 +69,7 @@ bench: build
 	$(BIN)/python -c 'import Cython' 2>/dev/null || $(BIN)/python -m pip install --quiet -e '.[test,bench]'
 	$(BIN)/python bench/run.py
 	$(BIN)/python bench/beam.py
+	$(BIN)/python bench/stiff.py
 	$(BIN)/python bench/scene_load.py
 	$(BIN)/python bench/derive_time.py
 	$(BIN)/python bench/derive_seeds.py --seeds 0 random random
