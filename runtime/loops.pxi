@@ -26,6 +26,8 @@ from libc.math cimport fabs, fmax, fmin, isfinite, isnan, pow, sqrt
 from libc.stdlib cimport free, malloc
 from libc.string cimport memcpy, memset
 
+from camdyn.runtime.linalg cimport lu_factor, lu_solve
+
 
 cdef int _rec_grow(Record* r) noexcept nogil:
     """Double the record's capacity in buffers of its own (copying what is there)."""
@@ -170,6 +172,63 @@ cdef int _apply_event(Run* run, int k, double t, double* y, double* f, double* g
     return STATUS_OK
 
 
+# the thesis scheme turns from fixed-point iteration to Newton's method once a sweep leaves more
+# than this fraction of the mid-step residual (about 13 more sweeps to rounding level)
+cdef extern from *:
+    """
+    #define NEWTON_RATIO 0.1
+    """
+    const double NEWTON_RATIO
+
+
+cdef int _koster_newton_matrix(Ctx* ctx, double t, const double* ym, const double* acc,
+                               const double* fm, double theta, double* J, double* W,
+                               int* piv, double* ya, double* fa) noexcept nogil:
+    """W = I - d a_mid/d a, LU-factored in place (piv), for the thesis scheme's mid-step
+    equation g(a) = a - F(t, X + X' theta + a theta^2/2, X' + a theta) = 0 at the iterate a
+    (acc; ym is the mid-step state there and fm its slope).  Returns the right-hand-side calls
+    spent (they count in n_rhs), or a negative code (below).
+
+    The model's symbolic Jacobian where it has one (_JAC_SYMBOLIC): d a_mid/d a =
+    dF/dX theta^2/2 + dF/dX' theta, the rows _NQ.._2NQ-1 of df/dy, no rhs calls.  Else the
+    mid-step map itself is differenced forward in each a_j (_NQ calls), increment sqrt(eps)
+    times the size of the accelerations: an error in W only slows Newton down (linear
+    convergence with a factor ~ that error), it does not move the solution.  -2 when W is
+    not finite (the state is blowing up), -1 when it is singular."""
+    cdef int i, j, calls = 0
+    cdef double tt = 0.5 * theta * theta, d, aj, scale = 0.0
+    if _JAC_SYMBOLIC:
+        jacobian(t, ym, J, NULL, ctx)
+        for i in range(_NQ):
+            for j in range(_NQ):
+                W[i * _NQ + j] = -(J[(_NQ + i) * _NS + j] * tt + J[(_NQ + i) * _NS + _NQ + j] * theta)
+    else:
+        for i in range(_NQ):
+            scale = fmax(scale, fmax(fabs(acc[i]), fabs(fm[_NQ + i])))
+        if scale == 0.0:
+            scale = 1.0
+        memcpy(ya, ym, _NS * sizeof(double))
+        for j in range(_NQ):
+            aj = acc[j]
+            d = 1.4901161193847656e-08 * fmax(fabs(aj), scale)
+            d = (aj + d) - aj       # the increment actually represented
+            ya[j] = ym[j] + d * tt
+            ya[_NQ + j] = ym[_NQ + j] + d * theta
+            rhs(t, ya, fa, ctx)
+            calls += 1
+            for i in range(_NQ):
+                W[i * _NQ + j] = -(fa[_NQ + i] - fm[_NQ + i]) / d
+            ya[j] = ym[j]
+            ya[_NQ + j] = ym[_NQ + j]
+    for i in range(_NQ):
+        W[i * _NQ + i] += 1.0
+    if not _finite(_NQ * _NQ, W):
+        return -2
+    if lu_factor(_NQ, W, piv) != 0:
+        return -1
+    return calls
+
+
 cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
     """RK4 or the thesis scheme over [a, b] in equal steps no longer than run.h.
 
@@ -195,6 +254,11 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
     cdef double acc[_NQ1]
     cdef double g0[_NE1]
     cdef double g1[_NE1]
+    cdef int piv[_NQ1]
+    cdef int calls
+    cdef bint newton
+    cdef double* Jm = NULL     # koster's Newton: df/dy and the Newton matrix, allocated on first use
+    cdef double* Wm = NULL
     memcpy(y, run.y, sizeof(y))
     rhs(t, y, k1, ctx)
     n_rhs += 1
@@ -224,29 +288,68 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
             n_rhs += 3
         else:
             # thesis (4.23)-(4.31): X'' held constant over the step at its value at
-            # mid-step theta = h/2, taken at X + dX, dX = X' theta + X'' theta^2/2 (4.24);
-            # solved by fixed-point iteration (the thesis eliminates dX by hand, (4.25))
+            # mid-step theta = h/2, taken at X + dX, dX = X' theta + X'' theta^2/2 (4.24),
+            # with the mid-step velocity X' + X'' theta: the equation
+            # g(a) = a - F(t + theta, X + X' theta + a theta^2/2, X' + a theta) = 0.
+            # Fixed-point iteration first (cheap where it contracts fast: factor (h w)^2/8 on
+            # y'' = -w^2 y); once a sweep leaves more than NEWTON_RATIO of the residual (or
+            # it grows), Newton's method, g'(a) = I - dF/dX theta^2/2 - dF/dX' theta, which converges up
+            # to the scheme's stability boundary h w = 2 sqrt(2) and beyond (the fixed point
+            # stops contracting there), and in one step for a linear model: the thesis's own
+            # elimination of dX by hand (4.25)
             for i in range(_NQ):
                 acc[i] = k1[_NQ + i]
             prev = 1e300
+            newton = False
             for it in range(100):
                 for i in range(_NQ):
                     yn[i] = y[i] + (y[_NQ + i] + 0.5 * acc[i] * hh) * hh
                     yn[_NQ + i] = y[_NQ + i] + acc[i] * hh
                 rhs(t + hh, yn, k2, ctx)
                 n_rhs += 1
+                if not _finite(_NS, k2):
+                    # a run blowing up (a step beyond the stability boundary): say so, not
+                    # "did not converge"
+                    status = STATUS_NOT_FINITE
+                    break
                 amax = 0.0
                 diff = 0.0
                 for i in range(_NQ):
                     diff = fmax(diff, fabs(k2[_NQ + i] - acc[i]))
                     amax = fmax(amax, fabs(k2[_NQ + i]))
-                    acc[i] = k2[_NQ + i]
-                # converged, or stalled at the rounding level of the acceleration
+                # converged, or stalled at the rounding level of the acceleration; either way
+                # the last evaluation F(a) is taken, as a fixed-point sweep would
                 if diff <= 1e-13 * (1.0 + amax) or (diff >= prev and diff <= 1e-9 * (1.0 + amax)):
+                    for i in range(_NQ):
+                        acc[i] = k2[_NQ + i]
                     break
+                if not newton and it >= 1 and not (diff <= NEWTON_RATIO * prev):
+                    newton = True
+                    if Jm == NULL:
+                        # heap, not stack: _NS^2 grows fast for models built from user files
+                        Jm = <double*> malloc((_NS * _NS + _NQ * _NQ) * sizeof(double))
+                        if Jm == NULL:
+                            status = STATUS_NO_MEMORY
+                            break
+                        Wm = Jm + _NS * _NS
+                if newton:
+                    calls = _koster_newton_matrix(ctx, t + hh, yn, acc, k2, hh, Jm, Wm, piv, k3, k4)
+                    if calls < 0:       # singular or non-finite Newton matrix
+                        status = STATUS_NOT_FINITE if calls == -2 else STATUS_NO_CONVERGENCE
+                        break
+                    n_rhs += calls
+                    for i in range(_NQ):
+                        k3[i] = k2[_NQ + i] - acc[i]        # -g(a)
+                    lu_solve(_NQ, Wm, piv, k3)
+                    for i in range(_NQ):
+                        acc[i] += k3[i]
+                else:
+                    for i in range(_NQ):
+                        acc[i] = k2[_NQ + i]
                 prev = diff
             else:
                 status = STATUS_NO_CONVERGENCE
+            if status != STATUS_OK:
                 break
             for i in range(_NQ):
                 yn[i] = y[i] + (y[_NQ + i] + 0.5 * acc[i] * h) * h      # (4.30), (4.31)
@@ -288,6 +391,7 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
         if _rec_point(run, t, y, k1) != 0:
             status = STATUS_NO_MEMORY
             break
+    free(Jm)
     memcpy(run.y, y, sizeof(y))
     run.n_rhs += n_rhs
     run.n_steps = n_steps
@@ -683,8 +787,6 @@ cdef extern from *:
     const double RO4_C63
     const double RO4_C64
     const double RO4_C65
-
-from camdyn.runtime.linalg cimport lu_factor, lu_solve
 
 
 cdef int _jacobian(Run* run, Ctx* ctx, double t, const double* y, const double* f0, double span,

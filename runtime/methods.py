@@ -48,8 +48,11 @@ class Koster:
     The acceleration is held constant over a step at its value at mid-step,
     evaluated at the mid-step position X + dX, dX = X' theta + X'' theta^2/2
     (4.23), (4.24) with theta = dT/2; the thesis eliminates dX by hand (4.25),
-    here the mid-step equation is solved by fixed-point iteration to rounding
-    error, which is the same for the linear equation (4.15).  Then
+    here the mid-step equation is solved to rounding error by fixed-point
+    iteration while that contracts fast, else by Newton's method with the
+    model's Jacobian (one step for the linear equation (4.15): the same as the
+    elimination), so the run is usable up to the scheme's stability boundary
+    dT omega = 2 sqrt(2) (runtime/stability.py).  Then
     dX' = X'' dT, dX = (X' + dX'/2) dT (4.28)-(4.31).  The thesis finds it
     stable for dT <= 0.1 tau.  Second-order models only.
     """

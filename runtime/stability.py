@@ -23,10 +23,11 @@ half-plane: a mode that grows physically is judged by its magnitude, not refused
   x <= 2 sqrt(2) = 2.828, which is also where the mid-step fixed-point iteration stops
   contracting (factor x^2/8).  Measured from that matrix in tests/test_stability.py.  The
   scheme is analysed on the undamped test equation only: its boundary is applied to |h lambda|
-  in every direction.  The compiled scheme iterates the mid-step equation at most 100 times,
-  so it stops converging a little earlier, at h w ~ 2.35-2.40 (measured,
-  runtime/stability_boundary.py): steps between that and 2.828 pass this check and fail in the
-  run with "did not converge", never with a number.
+  in every direction.  The compiled scheme solves the mid-step equation by fixed-point
+  iteration only while that contracts fast (factor <= 0.1 a sweep) and by Newton's method with
+  the model's Jacobian beyond (runtime/loops.pxi), which converges in one step on this linear
+  equation at any x: the compiled boundary is 2 sqrt(2) too (measured 2.8284,
+  runtime/stability_boundary.py; with the plain iteration it gave up at h w ~ 2.35-2.40).
 
 "Near the boundary": the step still gives a bounded solution, but the fastest mode is damped or
 shifted in phase heavily.  Criterion: over one period of the fastest mode (2 pi/rho) the error

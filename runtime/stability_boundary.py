@@ -18,16 +18,15 @@ Measured (tests/test_stability_map.py):
   q = 0.9999 (lambda = omega (-q +- i (1 - q^2)^(1/2)), nearly real) 2.7855.
 * The thesis scheme ("koster", (4.23)-(4.31)) with its mid-step equation eliminated as the
   thesis does it by hand (4.25) (``koster_scheme_step``, NumPy): 2.8284 = 2 sqrt(2).  The
-  compiled scheme solves that equation by fixed-point iteration (contraction factor
-  (h omega)^2/8, at most 100 iterations to 1e-13): it stops converging before the scheme
-  becomes unstable, at h omega = 2.39 for a 1 % amplitude in the dwell of the one-DOF model
-  (2.35 for a full stroke), and fails there with "did not converge; use a smaller step".
-  Between that and 2.828 the stability check (runtime/stability.py, boundary 2 sqrt(2))
-  does not refuse, the run fails instead: no wrong number, but the usable limit of the
-  compiled scheme is ~2.35-2.39, not 2.828.
+  compiled scheme solves that equation by fixed-point iteration while it contracts fast and
+  by Newton's method with the model's Jacobian beyond (one step on a linear model: the
+  elimination (4.25)); compiled, on the dwell of the one-DOF model: 2.8284 = 2 sqrt(2) as
+  well.  (With the fixed-point iteration alone, contraction factor (h omega)^2/8 and at most
+  100 iterations, it failed with "did not converge" from h omega = 2.39, 2.35 for a full
+  stroke.)
 
 The thesis (sec. 4.4.2): "stable if Delta T <= 0.1 tau", i.e. h omega <= 0.2 pi = 0.628 with
-omega = 2 pi/tau; the measured limit is 2.828 (Delta T <= 0.450 tau; compiled 0.38 tau): the
+omega = 2 pi/tau; the measured limit is 2.828 (Delta T <= 0.450 tau, compiled as well): the
 thesis's criterion is 4.5 times inside the stability limit, an accuracy criterion rather than
 a stability one (``thesis_step_comparison``).
 """
