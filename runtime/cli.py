@@ -20,6 +20,7 @@ import argparse
 import json
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 
 from .accuracy import plus_minus
@@ -731,6 +732,8 @@ def stability_run(args, say) -> tuple:
     from .methods import METHODS
     from .models import available, load
 
+    if args.model.replace("_", "-") in BEAM_NAMES:
+        return _beam_stability_run(args, say)
     if args.model.endswith(".py") or Path(args.model).is_file():
         from . import ondemand
 
@@ -771,6 +774,43 @@ def stability_run(args, say) -> tuple:
     return smap.run_map(model, name, values, methods, steps=steps, rtols=rtols, fixed=fixed,
                         threshold=args.threshold, t_end=args.t_end, law=args.law,
                         check_stability=not args.run_refused, progress=say), model
+
+
+BEAM_NAMES = ("beam-follower", "beam")
+
+
+def _beam_stability_run(args, say) -> tuple:
+    """The beam follower's map (runtime/stability_beam.py) over E or N: dp54 and rodas4 over
+    rtol, the paper's case otherwise (--set modes=N with E, --set E=... with N)."""
+    from types import SimpleNamespace
+
+    from . import stability_beam as sb
+    from .beam_case import Case
+
+    name, values = "N", None
+    if args.param:
+        name, sep, rng = args.param.partition("=")
+        if not sep or name not in sb.PARAMS:
+            raise CamdynInputError(f"argument --param: {args.param!r}: the beam follower's map "
+                                   f"takes E=START:STOP:N[:log] or N=a,b,c")
+        values = _grid(rng, "--param")
+    methods = args.methods or ["dp54", "rodas4"]
+    rtols = _grid(args.rtols, "--rtols") if args.rtols else [1e-4, 1e-5, 1e-6, 1e-7, 1e-8]
+    if args.steps:
+        raise CamdynInputError("argument --steps: the beam follower's map takes --rtols "
+                               "(dp54, rodas4)")
+    base = Case()
+    for k, v in _assignments(args.set, "--set").items():
+        if k == "modes":
+            base = replace(base, modes=int(v))
+        elif k == "E":
+            base = replace(base, E=float(v))
+        else:
+            raise CamdynInputError(f"argument --set: the beam follower's map takes modes=N or "
+                                   f"E=PA besides its --param, not {k}")
+    smap = sb.run_map(name, values or sb.default_values(name), methods, rtols,
+                      threshold=args.threshold, base=base, progress=say)
+    return smap, SimpleNamespace(name="beam_follower")
 
 
 def _cmd_stability(args) -> int:
@@ -929,7 +969,7 @@ def build_parser() -> argparse.ArgumentParser:
     st = sub.add_parser("stability", help="stability map: each method over a grid of step (or "
                                           "rtol) x a stiffness parameter")
     st.add_argument("model", metavar="MODEL", help="a built-in model (one_dof, camshaft1, roller, "
-                    "motor1, ...) or a model file")
+                    "motor1, ...), a model file, or beam-follower (--param E=... or N=...)")
     st.add_argument("--param", metavar="NAME=START:STOP:N[:log]",
                     help="the stiffness parameter's grid, or NAME=a,b,c (default for one_dof and "
                          "camshaft1: tau = 2/(2k + 1), k = 13, 9, 6, 4, 2, maxima of U0 (3.5); "

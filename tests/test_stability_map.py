@@ -14,6 +14,7 @@ theory of the applicable axis (Hairer & Wanner, Solving ODEs II, sec. IV.2, fig.
   converging first, at h omega = 2.397 here: measured and asserted as what it is.
 """
 import json
+import os
 import math
 import subprocess
 import sys
@@ -213,3 +214,45 @@ def test_cli_refuses_bad_input_with_one_line(args, part, tmp_path):
     lines = p.stderr.strip().splitlines()
     assert len(lines) == 1 and part in lines[0], p.stderr
     assert lines[0].startswith("camdyn stability: error:")
+
+
+# -- the beam follower (issue 13, item 6: E or N) --------------------------------------------
+
+def test_beam_map_cells_against_their_own_runs():
+    """The beam follower's map over N (dp54, rodas4 over rtol): each cell's error is
+    |max |v_E| - reference| / reference, recomputed here from an independent run of the same
+    case through runtime/beam.py (same figure to 1e-12), the reference DP54 at rtol 1e-9; at a
+    threshold of 1e-5 the loose rtol 1e-3 is inaccurate and rtol 1e-8 fine (measured errors on
+    N = 1: dp54 ~1e-4 / ~1e-9)."""
+    from dataclasses import replace
+
+    from camdyn.runtime import beam, stability_beam
+    from camdyn.runtime.beam_case import Case
+
+    m = stability_beam.run_map("N", [1], ["dp54", "rodas4"], [1e-3, 1e-8], threshold=1e-5)
+    ref = beam.run(Case(modes=1, rtol=1e-9))[0]["max_abs_tip_deflection"]
+    assert m.reference[0] == pytest.approx(ref, rel=1e-12)
+    for c in m.cells:
+        v = beam.run(Case(modes=1, rtol=c.setting, method=c.method))[0]["max_abs_tip_deflection"]
+        assert c.figure == pytest.approx(v, rel=1e-12)
+        assert c.error == pytest.approx(abs(v - ref) / ref, rel=1e-9)
+        assert c.status == ("fine" if c.error <= 1e-5 else "inaccurate")
+    by = {(c.method, c.setting): c.status for c in m.cells}
+    assert by["dp54", 1e-3] == "inaccurate" and by["dp54", 1e-8] == "fine"
+
+
+def test_beam_map_cli_and_bad_input(tmp_path):
+    """`camdyn stability beam-follower --param N=1` writes PNG, CSV, JSON; an N outside 1..6,
+    a non-positive E, --steps (the beam map takes rtols) and an unknown --param are refused
+    in one line with status 2."""
+    p = camdyn("stability", "beam-follower", "--param", "N=1", "--rtols", "1e-4,1e-6",
+               "--out", str(tmp_path), "--json", "--quiet")
+    assert p.returncode == 0, p.stderr
+    out = json.loads(p.stdout)
+    assert out["counts"]["dp54"]["fine"] + out["counts"]["dp54"]["inaccurate"] == 2
+    for f in out["files"]:
+        assert os.path.getsize(f) > 0
+    for bad in (["--param", "N=7"], ["--param", "E=-1,2e11"], ["--param", "N=1", "--steps", "1e-3"],
+                ["--param", "tau=0.1"]):
+        p = camdyn("stability", "beam-follower", *bad, "--out", str(tmp_path), "--quiet")
+        assert p.returncode == 2 and len(p.stderr.strip().splitlines()) == 1, (bad, p.stderr)
