@@ -79,11 +79,24 @@ class Problem:
 
     def figures(self, run) -> dict:
         """The headline figures of a run (a camdyn Result or a PeerRun)."""
-        from .residual import extreme, residual
+        from .residual import extreme, residual, scan_grid
 
         if self.kind == "residual":
             fig = residual(run)
             return {"U0": fig.U0, "U0dd": fig.U0dd}
+        if self.kind == "beam":
+            # max |v_E| over the run as runtime/beam.py's summary takes it: a scan at 4 points a
+            # recorded step, refined around the largest
+            t0, t1 = float(run.t[0]), float(run.t[-1])
+            t = np.asarray(run.t, float)
+            grid = scan_grid(t, t0, t1, 4)
+            smp = run.sample(grid)
+            k = int(np.argmax(np.abs(smp["vE"])))
+            i = int(np.searchsorted(t, grid[k]))
+            a, b = t[max(i - 1, 0)], t[min(i + 1, len(t) - 1)]
+            vmax = max(float(np.abs(smp["vE"][k])),
+                       extreme(run, "vE", a, b, absolute=True, minimum=False)[0])
+            return {"max_abs_tip_deflection": vmax}
         if self.kind == "dynacam":
             t_m, T0 = self.t_m, self.T_start
             rise0, rise1, t_end = -T0 * t_m, (1 - T0) * t_m, float(run.t[-1])
@@ -433,6 +446,34 @@ def from_dynacam_scene(sc, params: dict, t_end: float | None, progress=None) -> 
                    modes=dict(sc.modes), T_start=sc.T_start, t_m=ch["t_m"])
 
 
+def from_beam_scene(sc, params: dict, t_end: float | None) -> Problem:
+    """A beam-follower scene as `camdyn run` runs it (its case: N modes, formulation, cam speed,
+    revolutions); the headline figure max |v_E|, the paper's."""
+    from dataclasses import replace
+
+    from . import beam
+    from .beam_case import check
+    from .models import load
+
+    if t_end is not None:
+        raise CamdynInputError("argument --t-end: applies to models; a beam-follower scene runs "
+                               "its [run] revolutions")
+    case = sc.case
+    if params:
+        # --set gives numbers; the case's integer fields (modes) take them as integers
+        params = {k: int(v) if isinstance(getattr(case, k, None), int) and float(v).is_integer()
+                  else v for k, v in params.items()}
+        try:
+            case = replace(case, **params)
+        except TypeError as exc:
+            raise CamdynInputError(f"argument --set: {exc}") from None
+    check(case)
+    model = load(case.model)
+    return Problem(f"{sc.title}: {case.model}, {case.formulation}", model, beam.parameters(case),
+                   case.revolutions * case.period, "beam", law=case.law,
+                   y0=beam.initial_state(case, model))
+
+
 def problem(arg: str, params: dict, t_end: float | None, progress=None) -> Problem:
     """The problem named on the command line: a scene (file or built-in) or a model (a model
     file, built on demand, or a built-in model)."""
@@ -453,8 +494,7 @@ def problem(arg: str, params: dict, t_end: float | None, progress=None) -> Probl
             return from_dynacam_scene(sc, params, t_end, progress)
         if kind == "camshaft1-study":
             return from_study_scene(sc, params, t_end)
-        raise CamdynInputError(f"{arg} is a {kind} scene: precision takes DYNACAM and CAMSHAFT-1 "
-                               "scenes and models; the beam follower's run is not yet one of them")
+        return from_beam_scene(sc, params, t_end)
     if arg.endswith(".py") or path.is_file():
         from . import ondemand
 

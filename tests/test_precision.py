@@ -139,3 +139,19 @@ def test_cli_refuses_bad_input_in_one_line(tmp_path, capsys, argv, word):
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 2
     assert len(err) == 1 and err[0].startswith("camdyn precision: error:") and word in err[0]
+
+
+def test_beam_scene_figure_is_the_beam_followers():
+    """`camdyn precision beam_paper` scores max |v_E|, taken as runtime/beam.py's summary takes
+    it: the same run (N = 1, DP54 at rtol 1e-8) gives the same figure to 1e-12."""
+    from dataclasses import replace
+
+    from camdyn.runtime import beam, scene
+    from camdyn.runtime.methods import DP54
+
+    pr = precision.problem("beam_paper", {"modes": 1}, None)
+    assert pr.kind == "beam" and pr.model.name == "beam1"
+    got = pr.figures(pr.simulator(DP54(rtol=1e-8)).run(pr.params))["max_abs_tip_deflection"]
+    case = replace(scene.load_any("beam_paper")[1].case, modes=1, rtol=1e-8, method="dp54")
+    want = beam.run(case)[0]["max_abs_tip_deflection"]
+    assert got == pytest.approx(want, rel=1e-12)
