@@ -228,3 +228,22 @@ def test_state_atol_takes_a_state_out_of_the_error_control():
         Simulator("camshaft1", 3.0, DP54(rtol=1e-8, state_atol=(("Rd", 1.0),)))
     with pytest.raises(CamdynInputError, match="state_atol"):
         DP54(state_atol=(("X", -1.0),))
+
+
+def test_beam6_keeps_the_order_when_a_modal_rate_crosses_zero():
+    """beam6 (augmented), t in [0, 1.6 ms], RODAS4 at rtol 1e-4 and 1e-6: the steps grow like
+    rtol^(-1/4) (measured 4,615 and 15,867 steps, ratio 3.4).  Before the Jacobian's increment
+    had the floors ymag_j and |h f_j| (runtime/loops.pxi _jacobian), a modal rate b_i' passing
+    through zero got the increment 6e-6 * 1e-5 (its declared scale), at which the rhs's rounding
+    (2e-7 |f| from the ill-conditioned augmented solve) made that Jacobian column 30 % wrong: the
+    step collapsed to 1e-12 s in bursts, 4,839 and 40,265 steps here (ratio 8.3), 98,415 and
+    1,368,843 over a revolution (114 s at rtol 1e-6; now 86,179 and 293,409, 23 s)."""
+    from camdyn.runtime import beam
+
+    steps = {}
+    for rtol in (1e-4, 1e-6):
+        case = beam.Case(modes=6, rtol=rtol, method="rodas4")
+        sim, _ = beam.simulator(case, t_end=1.6e-3)
+        steps[rtol] = sim.run(beam.parameters(case)).stats["n_steps"]
+    assert steps[1e-6] < 25_000, steps
+    assert steps[1e-6] / steps[1e-4] < 5.0, steps   # rtol^(-0.35) at most over two decades
