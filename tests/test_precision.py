@@ -132,7 +132,8 @@ def test_cli_writes_chart_csv_and_json(tmp_path, capsys):
     (["pendulum_xy"], "--t-end"),
     (["one_dof", "--set", "tau"], "--set"),
     (["indexing", "--t-end", "2"], "--t-end"),
-    (["beam_paper"], "beam"),
+    (["beam_paper", "--t-end", "2"], "--t-end"),
+    (["beam_paper", "--set", "modes=9"], "modes"),
 ])
 def test_cli_refuses_bad_input_in_one_line(tmp_path, capsys, argv, word):
     rc = main(["precision", *argv, "--out", str(tmp_path)])
