@@ -395,7 +395,22 @@ def markdown(res) -> str:
     for s in sections(res):
         lines += [f"## {s.title}", ""] + _md_table(s.headers, s.rows) + [""]
         lines += [n + "  " for n in s.notes] + [""]
+    lines += ["## The other benchmarks", ""] + [f"- {x}" for x in OTHER_BENCHMARKS] + [""]
     return "\n".join(lines).rstrip() + "\n"
+
+
+OTHER_BENCHMARKS = (
+    "Stiff cases (issue 13, item 8): [BENCHMARKS-stiff.md](BENCHMARKS-stiff.md), written by "
+    "`bench/stiff.py` with its charts in `bench/charts/stiff_*.png`: the roller on its contact "
+    "spring (kappa 100 and 1000, zeta 0 and 0.1) and the beam follower at N = 6 and E x 1e6, "
+    "camdyn's rodas4 against its dp54 and SciPy's Radau, BDF, LSODA on the same compiled "
+    "right-hand side and Jacobian.",
+    "The beam follower's two formulations: [BENCHMARKS-beam.md](BENCHMARKS-beam.md) "
+    "(`bench/beam.py`).",
+    "Loading a scene: [BENCHMARKS-scenes.md](BENCHMARKS-scenes.md) (`bench/scene_load.py`).",
+    "Regeneration: [BENCHMARKS-derive.md](BENCHMARKS-derive.md), "
+    "[BENCHMARKS-derive-seeds.md](BENCHMARKS-derive-seeds.md).",
+)
 
 
 STYLE = {"camdyn-rk4": ("C0", "o", "-"), "camdyn-rk4-bare": ("C0", "o", ":"),

@@ -208,11 +208,17 @@ def chart(res: CaseResult, path: Path) -> None:
         style = "--" if method in ("Radau", "BDF", "LSODA") else "-"
         ax.loglog([p.cpu for p in pts], [p.error for p in pts], style, marker="o", ms=3,
                   label=method)
+    if not ax.lines:
+        ax.text(0.5, 0.5, "no run finished within its step budget\n(see the table)",
+                ha="center", va="center", transform=ax.transAxes)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
     ax.set_xlabel("CPU time of the integration, s")
     ax.set_ylabel("follower error" if res.key.startswith("roller") else "relative error of max |v_E|")
     ax.set_title(res.title, fontsize=9)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    if ax.lines:
+        ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
