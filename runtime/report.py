@@ -4,7 +4,9 @@ Writes into the output folder
     report.md      what was run and the key figures next to the thesis's
     report.json    the same figures for machines
     response.png   X'' against T at one tau for several Fa (fig. 4.10)
-    graphs.png     U0, max deceleration and its instant, U0dd against tau (fig. 4.11)
+    graphs.png     U0, max deceleration and its instant, U0dd against tau (fig. 4.11), U0 and
+                   U0dd with their envelopes through the maxima (secs 3.5, 8.2.6)
+    envelopes.csv  U0 and U0dd and their envelopes per Fa and tau
 """
 from __future__ import annotations
 
@@ -17,6 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from . import closed_forms
+from .envelope import envelope, tau_grid
 from .errors import CamdynInputError
 from .residual import residual
 from .simulate import simulate
@@ -73,7 +76,8 @@ def main_job(scene: dict, out: Path, progress: bool = True) -> Path:
     plt.close(fig)
 
     # fig. 4.11: graphs against tau
-    taus = np.linspace(graphs["tau_min"], graphs["tau_max"], graphs["n_tau"])
+    # uniform in 1/tau, so that every tuning dip of (3.5) is resolved alike (runtime/envelope.py)
+    taus = tau_grid(graphs["tau_min"], graphs["tau_max"], graphs["n_tau"])
     rows = {}
     total = len(taus) * len(graphs["Fa"])
     k = 0
@@ -85,19 +89,29 @@ def main_job(scene: dict, out: Path, progress: bool = True) -> Path:
                 say(f"  graphs: run {k}/{total} (Fa = {Fa:g}, tau = {tau:.3f})")
             rows[Fa].append(residual(_run(float(tau), Fa, scene)).as_dict())
     fig, ax = plt.subplots(2, 2, figsize=(11, 8))
-    for Fa, vals in rows.items():
+    envelopes = {}
+    for k, (Fa, vals) in enumerate(rows.items()):
+        colour = f"C{k}"
         U0 = [v["U0"] for v in vals]
-        ax[0, 0].semilogy(taus, U0, label=f"Fa = {Fa:g}")
-        ax[0, 1].plot(taus, [-v["Xdd_min_rise"] for v in vals], label=f"Fa = {Fa:g}")
-        ax[1, 0].plot(taus, [v["T_at_Xdd_min"] for v in vals], label=f"Fa = {Fa:g}")
-        ax[1, 1].plot(taus, [v["U0dd"] for v in vals], label=f"Fa = {Fa:g}")
+        U0dd = [v["U0dd"] for v in vals]
+        # the curves a designer reads (secs 3.5, 8.2.6): through the maxima, bold; the raw
+        # graph thin beneath them
+        envelopes[Fa] = {"U0": envelope(taus, U0), "U0dd": envelope(taus, U0dd)}
+        ax[0, 0].semilogy(taus, U0, color=colour, lw=0.6, alpha=0.6)
+        ax[0, 0].semilogy(taus, envelopes[Fa]["U0"](taus), color=colour, lw=1.8,
+                          label=f"Fa = {Fa:g}")
+        ax[0, 1].plot(taus, [-v["Xdd_min_rise"] for v in vals], color=colour, label=f"Fa = {Fa:g}")
+        ax[1, 0].plot(taus, [v["T_at_Xdd_min"] for v in vals], color=colour, label=f"Fa = {Fa:g}")
+        ax[1, 1].plot(taus, U0dd, color=colour, lw=0.6, alpha=0.6)
+        ax[1, 1].plot(taus, envelopes[Fa]["U0dd"](taus), color=colour, lw=1.8,
+                      label=f"Fa = {Fa:g}")
     if scene["law"] == "cycloidal":
         fine = np.linspace(graphs["tau_min"], min(graphs["tau_max"], 0.99), 600)
         ax[0, 0].semilogy(fine, closed_forms.U0(fine), "k:", lw=0.8, label="(3.5)")
-    ax[0, 0].set_ylabel("U0")
+    ax[0, 0].set_ylabel("U0 (bold: envelope through the maxima)")
     ax[0, 1].set_ylabel("-X''min during rise")
     ax[1, 0].set_ylabel("T at X''min")
-    ax[1, 1].set_ylabel("U0''")
+    ax[1, 1].set_ylabel("U0'' (bold: envelope through the maxima)")
     for a in ax.ravel():
         a.set_xlabel("tau")
         a.grid(alpha=0.3, which="both")
@@ -108,6 +122,17 @@ def main_job(scene: dict, out: Path, progress: bool = True) -> Path:
     plt.close(fig)
 
     summary["graphs"] = {"tau": taus.tolist(), "rows": {str(Fa): v for Fa, v in rows.items()}}
+    # the envelopes as data: their maxima per Fa, and the curves on the graph's tau grid
+    summary["envelopes"] = {str(Fa): {k: {"tau_at_maxima": e.tau.tolist(),
+                                          "maxima": e.value.tolist()} for k, e in env.items()}
+                            for Fa, env in envelopes.items()}
+    with open(out / "envelopes.csv", "w") as fh:
+        fh.write("Fa,tau,U0,U0_envelope,U0dd,U0dd_envelope\n")
+        for Fa, vals in rows.items():
+            e = envelopes[Fa]
+            for tau, v in zip(taus, vals):
+                fh.write(f"{Fa:g},{tau:.10g},{v['U0']:.10g},{e['U0'](tau):.10g},"
+                         f"{v['U0dd']:.10g},{e['U0dd'](tau):.10g}\n")
     ratio = None
     by_fa = {d["Fa"]: d for d in summary["response"]}
     if 0.0 in by_fa and 2.0 in by_fa:
