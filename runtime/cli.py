@@ -915,6 +915,16 @@ def build_parser() -> argparse.ArgumentParser:
     lw = sub.add_parser("laws", help="cam-law characteristics (thesis App. 2), derived symbolically")
     lw.add_argument("--theta", type=float, default=None, help="modified sine's theta (default 0.1)")
     lw.add_argument("--json", action="store_true", help="one JSON array on stdout")
+    lw.add_argument("--tau", type=float, default=None,
+                    help="with --fa: the selection criteria of sec. 9.2.2 at this tau (envelope "
+                         "U0 and U0'' of CAMSHAFT-1, impact sensitivity, peaks)")
+    lw.add_argument("--fa", type=float, default=None, help="Fa of the selection (default 0)")
+    lw.add_argument("--stroke", type=float, default=None, metavar="M",
+                    help="with --base-radius and --roller-radius: add the cam's least radius of "
+                         "curvature and largest pressure angle (90/90/90/90 deg cam)")
+    lw.add_argument("--base-radius", type=float, default=None, metavar="M")
+    lw.add_argument("--roller-radius", type=float, default=None, metavar="M")
+    lw.add_argument("--out", default=None, help="folder for laws_selection.png/.csv")
     lw.set_defaults(func=_cmd_laws)
 
     m = sub.add_parser("run", help="any scene: the CAMSHAFT-1 study (default), a DYNACAM mechanism, "

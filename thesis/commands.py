@@ -62,8 +62,12 @@ def _print_check_table(outcomes) -> None:
 
 
 def laws(args) -> int:
-    """`camdyn laws`: the App. 2 characteristics of every cam law, derived symbolically."""
+    """`camdyn laws`: the App. 2 characteristics of every cam law, derived symbolically; with
+    --tau, the selection criteria of sec. 9.2.2 (thesis/selection.py)."""
     from . import lawtable
+
+    if getattr(args, "tau", None) is not None or getattr(args, "fa", None) is not None:
+        return _selection(args)
 
     try:
         rows = [lawtable.properties(k, args.theta if k == "modified-sine" else None)
@@ -93,3 +97,63 @@ def _num(v) -> str:
     if v is None:
         return "impulse"
     return {float("inf"): "inf", float("-inf"): "-inf"}.get(v, f"{v:.4g}")
+
+
+def _selection(args) -> int:
+    """`camdyn laws --tau T --fa F`: the criteria of sec. 9.2.2 for every law, table and chart."""
+    import csv
+    import math
+    from pathlib import Path
+
+    from camdyn.runtime.errors import CamdynInputError
+
+    from . import selection
+
+    prog = "camdyn laws"
+    say = (lambda msg: print(f"{prog}: {msg}", file=sys.stderr, flush=True))
+    try:
+        if args.tau is None:
+            raise CamdynInputError("argument --tau: required with --fa (0 < tau < 0.99)")
+        geo_args = (args.stroke, args.base_radius, args.roller_radius)
+        if any(g is not None for g in geo_args) and not all(g is not None for g in geo_args):
+            raise CamdynInputError("arguments --stroke, --base-radius, --roller-radius: give all "
+                                   "three for the cam's curvature and pressure angle")
+        geometry = None if args.stroke is None else {
+            "stroke": args.stroke, "base_radius": args.base_radius,
+            "roller_radius": args.roller_radius}
+        rows = selection.table(args.tau, 0.0 if args.fa is None else args.fa, args.theta,
+                               geometry, say)
+    except (CamdynInputError, ValueError) as exc:
+        return fail(prog, name_argument(str(exc)))
+    cols = [(k, t) for k, t in selection.COLUMNS if any(r.get(k) is not None for r in rows)]
+    files = []
+    if args.out:
+        out = Path(args.out)
+        out.mkdir(parents=True, exist_ok=True)
+        with open(out / "laws_selection.csv", "w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(["law"] + [k for k, _ in cols])
+            for r in rows:
+                w.writerow([r["law"]] + [r.get(k) for k, _ in cols])
+        files = [str(out / "laws_selection.csv"),
+                 selection.chart(rows, out / "laws_selection.png")]
+    if args.json:
+        clean = [{k: (None if isinstance(v, float) and math.isinf(v) else v) for k, v in r.items()}
+                 for r in rows]
+        print(json.dumps({"rows": clean, "files": files}, indent=1))
+        return 0
+    head = ("law",) + tuple(t for _, t in cols)
+    table = [head] + [(r["law"],) + tuple(_num(r.get(k)) if r.get(k) is not None else "-"
+                                          for k, _ in cols) for r in rows]
+    widths = [max(len(row[i]) for row in table) for i in range(len(head))]
+    for k, row in enumerate(table):
+        print("  ".join(c.rjust(w) if i else c.ljust(w) for i, (c, w) in enumerate(zip(row, widths))))
+        if k == 0:
+            print("  ".join("-" * w for w in widths))
+    print(f"\nSelection criteria of thesis sec. 9.2.2 at tau = {args.tau:g}, Fa = "
+          f"{0.0 if args.fa is None else args.fa:g}: envelopes through the maxima of CAMSHAFT-1's "
+          "U0 and U0'' around tau; impact = r_e/S^(2/3) after backlash (3.15)-(3.16), inf where "
+          "H'' jumps; lower is better in every column.")
+    for f in files:
+        print(f"wrote {f}")
+    return 0

@@ -1,0 +1,76 @@
+"""Cam-law selection criteria of thesis sec. 9.2.2 (issue 14, item 4, first part):
+`camdyn laws --tau T --fa F`, thesis/selection.py."""
+import json
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+
+from camdyn.runtime import closed_forms
+from camdyn.runtime.envelope import envelope, tau_grid
+from camdyn.thesis import impact, selection
+
+
+def test_impact_sensitivity_of_the_cycloid():
+    """r_e/S^(2/3) at the cycloid's reversal points, |H'''| = 4 pi^2 (A.2.16): (18 pi^2)^(1/3) =
+    5.62, the reading of (3.16) that gives sec. 7.4.4's printed r_e = 0.31 at S = 1.27e-2."""
+    row = selection.criteria("cycloidal", 0.15, 0.0)
+    want = (18 * math.pi ** 2) ** (1 / 3)
+    for k in ("impact_T0", "impact_T05", "impact_T1"):
+        assert row[k] == pytest.approx(want, rel=1e-12)
+    S = 1.27e-2
+    assert row["impact_T0"] * S ** (2 / 3) == pytest.approx(impact.r_e_from_backlash(S), rel=1e-12)
+    assert round(row["impact_T0"] * S ** (2 / 3), 2) == 0.31
+
+
+def test_impulsive_jerk_is_infinite_sensitivity():
+    """Where H'' jumps (simple harmonic at T = 0 and 1, parabolic everywhere) the follower meets
+    an impact without backlash: the sensitivity is infinite, not a number."""
+    sh = selection.criteria("simple-harmonic", 0.15, 0.0)
+    assert math.isinf(sh["impact_T0"]) and math.isinf(sh["impact_T1"])
+    assert math.isfinite(sh["impact_T05"])
+
+
+def test_envelope_at_fa0_is_the_closed_forms():
+    """At Fa = 0 CAMSHAFT-1 is the one-DOF model: the envelope of the simulated U0 around tau
+    equals the envelope of (3.5) on the same grid (runs at rtol 1e-9; asserted 1e-6)."""
+    tau = 0.15
+    row = selection.criteria("cycloidal", tau, 0.0)
+    taus = tau_grid(0.8 * tau, 1.25 * tau, 41)
+    assert row["U0_envelope"] == pytest.approx(float(envelope(taus, closed_forms.U0(taus))(tau)),
+                                               rel=1e-6)
+    assert row["U0dd_envelope"] == pytest.approx(
+        float(envelope(taus, closed_forms.U0dd(taus))(tau)), rel=1e-6)
+
+
+def test_pressure_angle_of_the_cycloid_cam():
+    """alpha_max of a 90/90/90/90 deg cycloidal cam (h 15 mm, r_b 26 mm, r_r 5 mm, no offset)
+    against the closed form tan alpha = s'(phi)/(r_b + r_r + s(phi)), s = h (x - sin(2 pi x)/
+    (2 pi)), x = phi/beta, over 1e5 angles of the rise: within 0.01 deg (the cam is sampled at
+    10 points a degree)."""
+    geo = {"stroke": 0.015, "base_radius": 0.026, "roller_radius": 0.005}
+    row = selection.criteria("cycloidal", 0.15, 0.0, geometry=geo)
+    beta = math.pi / 2
+    x = np.linspace(0, 1, 100001)
+    s = 0.015 * (x - np.sin(2 * np.pi * x) / (2 * np.pi))
+    ds = 0.015 / beta * (1 - np.cos(2 * np.pi * x))
+    want = np.degrees(np.arctan(ds / (0.031 + s))).max()
+    assert row["alpha_max_deg"] == pytest.approx(want, abs=0.01)
+    assert 0 < row["rho_min"] < 0.031
+
+
+def camdyn(*args):
+    return subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", *args],
+                          capture_output=True, text=True)
+
+
+def test_cli_table_json_and_bad_input(tmp_path):
+    p = camdyn("laws", "--tau", "0.2", "--fa", "0.3", "--json", "--out", str(tmp_path))
+    assert p.returncode == 0, p.stderr
+    out = json.loads(p.stdout)
+    assert [r["law"] for r in out["rows"]][0] == "cycloidal" and len(out["files"]) == 2
+    for bad in (["--tau", "1.5"], ["--tau", "0.2", "--stroke", "0.01"], ["--fa", "0.3"]):
+        p = camdyn("laws", *bad)
+        assert p.returncode == 2 and len(p.stderr.strip().splitlines()) == 1, (bad, p.stderr)
