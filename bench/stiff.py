@@ -165,7 +165,7 @@ def beam_case(key: str, title: str, case_kw: dict, settings, repeat: int,
 
     res = CaseResult(key, title)
     try:
-        ref = stability_beam._run(Case(**case_kw, rtol=1e-9), budget)[0]
+        ref = stability_beam.run_case(Case(**case_kw, rtol=1e-9), budget)[0]
         _progress(f"{title}: reference (dp54, rtol 1e-9) max |v_E| = {ref:.9e}")
     except SimulationError as exc:
         ref = None
@@ -173,7 +173,7 @@ def beam_case(key: str, title: str, case_kw: dict, settings, repeat: int,
     for method, rtol, limit in settings:
         case = Case(**case_kw, method=method, rtol=rtol)
         try:
-            runs = [stability_beam._run(case, limit) for _ in range(repeat)]
+            runs = [stability_beam.run_case(case, limit) for _ in range(repeat)]
         except SimulationError as exc:
             res.points.append(Point(method, rtol, None, None, None, None, "failed",
                                     f"{str(exc)[:90]} (step budget {limit:,})"))

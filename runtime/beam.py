@@ -89,12 +89,13 @@ def initial_state(case: Case, model, b=None, b_rate=None) -> np.ndarray:
     return y
 
 
-def simulator(case: Case, t_end: float | None = None) -> tuple[Simulator, object]:
+def simulator(case: Case, t_end: float | None = None,
+              max_steps: int = 20_000_000) -> tuple[Simulator, object]:
     check(case)
     model = load(case.model)
     t_end = case.revolutions * case.period if t_end is None else t_end
     sim = Simulator(model, t_end, case.method, rtol=case.rtol, law=case.law,
-                    y0=initial_state(case, model), max_steps=20_000_000)
+                    y0=initial_state(case, model), max_steps=max_steps)
     return sim, model
 
 
@@ -119,15 +120,26 @@ def errors(case: Case, summary: dict) -> dict:
     return accuracy.errors(summary, tight, ("max_abs_tip_deflection",), case.method)
 
 
-def summarize(case: Case, res, cpu: float) -> dict:
-    t0, t1 = float(res.t[0]), float(res.t[-1])
-    # one dense sampling (4 points a step) serves all three maxima; the tip's is then refined
-    smp = res.sample(scan_grid(res.t, t0, t1, 4))
+def scan(res) -> dict:
+    """One dense sampling of a run, 4 points a recorded step: it serves every maximum."""
+    return res.sample(scan_grid(res.t, float(res.t[0]), float(res.t[-1]), 4))
+
+
+def tip_max(res, smp: dict | None = None) -> float:
+    """max |v_E| over the run (the paper's headline figure): the largest of the scan
+    (:func:`scan`, or ``smp`` if given), refined between the recorded points around it."""
+    smp = scan(res) if smp is None else smp
+    t = np.asarray(res.t)
     k = int(np.argmax(np.abs(smp["vE"])))
-    span = (res.t[max(np.searchsorted(res.t, smp["t"][k]) - 1, 0)],
-            res.t[min(np.searchsorted(res.t, smp["t"][k]) + 1, len(res.t) - 1)])
-    vmax = max(float(np.abs(smp["vE"][k])),
+    i = np.searchsorted(t, smp["t"][k])
+    span = (t[max(i - 1, 0)], t[min(i + 1, len(t) - 1)])
+    return max(float(np.abs(smp["vE"][k])),
                extreme(res, "vE", span[0], span[1], absolute=True, minimum=False)[0])
+
+
+def summarize(case: Case, res, cpu: float) -> dict:
+    smp = scan(res)
+    vmax = tip_max(res, smp)
     phi = float(max(np.abs(smp["Phi1"]).max(), np.abs(smp["Phi2"]).max()))
     return {"model": case.model, "formulation": case.formulation, "omega": case.omega,
             "modes": case.modes, "revolutions": case.revolutions,

@@ -79,24 +79,15 @@ class Problem:
 
     def figures(self, run) -> dict:
         """The headline figures of a run (a camdyn Result or a PeerRun)."""
-        from .residual import extreme, residual, scan_grid
+        from .residual import extreme, residual
 
         if self.kind == "residual":
             fig = residual(run)
             return {"U0": fig.U0, "U0dd": fig.U0dd}
         if self.kind == "beam":
-            # max |v_E| over the run as runtime/beam.py's summary takes it: a scan at 4 points a
-            # recorded step, refined around the largest
-            t0, t1 = float(run.t[0]), float(run.t[-1])
-            t = np.asarray(run.t, float)
-            grid = scan_grid(t, t0, t1, 4)
-            smp = run.sample(grid)
-            k = int(np.argmax(np.abs(smp["vE"])))
-            i = int(np.searchsorted(t, grid[k]))
-            a, b = t[max(i - 1, 0)], t[min(i + 1, len(t) - 1)]
-            vmax = max(float(np.abs(smp["vE"][k])),
-                       extreme(run, "vE", a, b, absolute=True, minimum=False)[0])
-            return {"max_abs_tip_deflection": vmax}
+            from .beam import tip_max
+
+            return {"max_abs_tip_deflection": tip_max(run)}
         if self.kind == "dynacam":
             t_m, T0 = self.t_m, self.T_start
             rise0, rise1, t_end = -T0 * t_m, (1 - T0) * t_m, float(run.t[-1])

@@ -24,8 +24,6 @@ from . import beam
 from .beam_case import Case
 from .errors import CamdynInputError, SimulationError, UnstableStep
 from .methods import METHODS
-from .models import load
-from .simulate import Simulator
 from .stability_map import Cell, StabilityMap
 
 REF_RTOL = 1e-9          # the reference (DP54; beam6 at rtol 1e-10 collapses its step)
@@ -46,37 +44,27 @@ def _case(base: Case, param: str, value: float) -> Case:
     return replace(base, E=float(value))
 
 
-def _run(case: Case, max_steps: int):
+def run_case(case: Case, max_steps: int):
     """(max |v_E|, result, CPU seconds) of one case, with a step budget."""
-    from .beam_case import check
-
-    check(case)
-    model = load(case.model)
-    sim = Simulator(model, case.revolutions * case.period, case.method, rtol=case.rtol,
-                    step=None, law=case.law, y0=beam.initial_state(case, model),
-                    max_steps=max_steps) if METHODS[case.method].adaptive else None
-    if sim is None:
-        raise CamdynInputError("the beam follower's map takes the adaptive methods dp54 and "
-                               "rodas4 (its initial state and stops are set per case)")
+    sim, _ = beam.simulator(case, max_steps=max_steps)
     c0 = time.process_time()
     res = sim.run(beam.parameters(case))
-    cpu = time.process_time() - c0
-    return beam.summarize(case, res, cpu)["max_abs_tip_deflection"], res, cpu
+    return beam.tip_max(res), res, time.process_time() - c0
 
 
 def reference(case: Case) -> float:
     """max |v_E| of ``case`` at REF_RTOL: DP54, or RODAS4 where DP54 would need more than
     REF_MAX_STEPS steps."""
     try:
-        return _run(replace(case, method="dp54", rtol=REF_RTOL), REF_MAX_STEPS)[0]
+        return run_case(replace(case, method="dp54", rtol=REF_RTOL), REF_MAX_STEPS)[0]
     except SimulationError:
-        return _run(replace(case, method="rodas4", rtol=REF_RTOL), REF_MAX_STEPS)[0]
+        return run_case(replace(case, method="rodas4", rtol=REF_RTOL), REF_MAX_STEPS)[0]
 
 
 def classify(case: Case, ref: float, threshold: float, param: float) -> Cell:
     """One cell: ``case`` (its method and rtol) against the reference figure."""
     try:
-        v, res, cpu = _run(case, MAX_STEPS)
+        v, res, cpu = run_case(case, MAX_STEPS)
     except UnstableStep as exc:        # not reached with the adaptive methods; kept for clarity
         return Cell(case.method, param, case.rtol, "refused", "refused", True, str(exc), None,
                     None, math.nan, None, None, None, None)

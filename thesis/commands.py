@@ -82,15 +82,21 @@ def laws(args) -> int:
     table = [head] + [(r.key, _num(r.H1_max), _num(r.H2_max), _num(r.H2_min), _num(r.jerk_0),
                        _num(r.jerk_half), _num(r.jerk_1), _num(r.torque_max), _num(r.T_torque_max),
                        _num(r.residual_coeff), str(r.residual_order)) for r in rows]
-    widths = [max(len(row[i]) for row in table) for i in range(len(head))]
-    for k, row in enumerate(table):
-        print("  ".join(c.rjust(w) if i else c.ljust(w) for i, (c, w) in enumerate(zip(row, widths))))
-        if k == 0:
-            print("  ".join("-" * w for w in widths))
+    _print_table(table)
     print("\nNominal characteristics, thesis App. 2 (jerk = H''', 'impulse' where H'' jumps); "
           "torque M = m h_m^2/(w_s t_m^3) H' H'' (A.2.7); one-DOF residual envelope "
           "U0 <= C tau^p for tau << 1 (ch. 3).")
     return 0
+
+
+def _print_table(table) -> None:
+    """Rows of strings, the first the head: the name left, the numbers right, a rule under
+    the head."""
+    widths = [max(len(row[i]) for row in table) for i in range(len(table[0]))]
+    for k, row in enumerate(table):
+        print("  ".join(c.rjust(w) if i else c.ljust(w) for i, (c, w) in enumerate(zip(row, widths))))
+        if k == 0:
+            print("  ".join("-" * w for w in widths))
 
 
 def _num(v) -> str:
@@ -145,11 +151,7 @@ def _selection(args) -> int:
     head = ("law",) + tuple(t for _, t in cols)
     table = [head] + [(r["law"],) + tuple(_num(r.get(k)) if r.get(k) is not None else "-"
                                           for k, _ in cols) for r in rows]
-    widths = [max(len(row[i]) for row in table) for i in range(len(head))]
-    for k, row in enumerate(table):
-        print("  ".join(c.rjust(w) if i else c.ljust(w) for i, (c, w) in enumerate(zip(row, widths))))
-        if k == 0:
-            print("  ".join("-" * w for w in widths))
+    _print_table(table)
     print(f"\nSelection criteria of thesis sec. 9.2.2 at tau = {args.tau:g}, Fa = "
           f"{0.0 if args.fa is None else args.fa:g}: envelopes through the maxima of CAMSHAFT-1's "
           "U0 and U0'' around tau; impact = r_e/S^(2/3) after backlash (3.15)-(3.16), inf where "
