@@ -478,6 +478,13 @@ def _cmd_simulate(args) -> int:
         sc = scenes.load(args.scene)
         if args.method is not None:
             sc = _with_method("dynacam", sc, args.method)
+        if args.model == "auto":
+            if args.out:
+                raise CamdynInputError("--out does not go with --model auto (no diagrams of the "
+                                       "least model yet)")
+            return _least_model(sc, args, progress)
+        if args.tolerance is not None or args.figures is not None or args.build_variants:
+            raise CamdynInputError("--tolerance, --figures and --build-variants go with --model auto")
         summary, res = dynacam.run(sc, progress=progress)
         if not args.no_error_estimate:
             summary.update(dynacam.errors(sc, summary))
@@ -492,6 +499,43 @@ def _cmd_simulate(args) -> int:
         print(json.dumps(summary, indent=1))
         return 0
     _print_dynacam(sc, summary)
+    return 0
+
+
+def _least_model(sc, args, progress) -> int:
+    """camdyn simulate SCENE --model auto: the least model of the chain of sec. 8.2 that keeps
+    the requested figures within the tolerance (runtime/least_model.py)."""
+    from . import least_model
+
+    figures = least_model.DEFAULT_FIGURES if args.figures is None else tuple(
+        f.strip() for f in args.figures.split(",") if f.strip())
+    tol = least_model.TOLERANCE if args.tolerance is None else args.tolerance
+    out = least_model.choose(sc, figures, tol, build=args.build_variants, progress=progress)
+    if args.json:
+        print(json.dumps(out, indent=1, default=float))
+        return 0
+    print(f"{sc.title}: least model within {100 * tol:g} % on {', '.join(figures)}")
+    print(f"  {'candidate':12s} {'states':>6s}  predicted error (probes)")
+    for c in out["candidates"]:
+        if c["note"] and not c["predicted"]:
+            text = f"not probed: {c['note']}"
+        else:
+            text = ", ".join(f"{f} {100 * c['predicted'][f]:.3g} %" for f in figures
+                             if f in c["predicted"])
+            text += "  accepted" if c["accepted"] else (f"  ({c['note']})" if c["note"] else "")
+        mark = "*" if c["key"] == out["chosen"] else " "
+        print(f"{mark} {c['key']:12s} {c['states'] or '':>6}  {text}")
+    print(f"chosen: {out['chosen']}, {out['chosen_label']}")
+    print(f"why: {out['why']}")
+    for f in figures:
+        print(f"  {f:22s} {fmt(out['result'][f])} ± {out['bound'][f]:.2g} (against the full model)")
+    t = out["time"]
+    full = "measured" if t["full_measured"] else "estimated from the probes"
+    saved = (f"saved {t['saved_cpu_seconds'] * 1e3:.3g} ms" if t["saved_cpu_seconds"] > 0
+             else "no time saved")
+    print(f"time: {t['chosen_cpu_seconds'] * 1e3:.3g} ms CPU against {t['full_cpu_seconds'] * 1e3:.3g} ms "
+          f"for the full model ({full}), {saved}; the probes took "
+          f"{t['probes_cpu_seconds'] * 1e3:.3g} ms")
     return 0
 
 
@@ -974,6 +1018,18 @@ def build_parser() -> argparse.ArgumentParser:
     sm.add_argument("--method", default=None, choices=adaptive,
                     help="integration method instead of the scene's (dp54 unless it sets "
                          "run.method); rodas4 is the stiff solver")
+    sm.add_argument("--model", default="scene", choices=("scene", "auto"),
+                    help="auto: the least model of the chain of sec. 8.2 (ideal drive, no "
+                         "backlash, spring, shaft directions, CAMSHAFT-2, -1, one DOF) that keeps "
+                         "--figures within --tolerance of the full model, with error bounds")
+    sm.add_argument("--tolerance", type=float, default=None,
+                    help="with --model auto: relative tolerance on every figure (default 0.05)")
+    sm.add_argument("--figures", default=None, metavar="F1,F2",
+                    help="with --model auto: figures to keep (default U0,U0dd,Xdd_min_rise; also "
+                         "T_at_Xdd_min, Xdd_max_rise, speed_variation_max)")
+    sm.add_argument("--build-variants", action="store_true",
+                    help="with --model auto: build DYNACAM variants of the chain that are not "
+                         "compiled yet (seconds each, once)")
     sm.set_defaults(func=_cmd_simulate)
 
     _add_beam_follower(sub)

@@ -63,3 +63,17 @@ def options_model(options, progress=None):
 
 def variant_manifest(options, progress=None) -> dict:
     return options_model(options, progress).manifest
+
+
+def is_compiled(options) -> bool:
+    """Whether the variant of an option set loads without a build: pre-generated, or already in
+    the on-demand cache (:mod:`camdyn.runtime.ondemand`)."""
+    from .models import available
+
+    if options.name in available():
+        return True
+    from . import ondemand
+
+    text = json.dumps(asdict(options), sort_keys=True)
+    entry = ondemand.cache_root() / f"{options.name}-{ondemand.key('dynacam', text.encode())}"
+    return (entry / "build.json").is_file()
