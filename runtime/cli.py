@@ -511,6 +511,8 @@ def _least_model(sc, args, progress) -> int:
         f.strip() for f in args.figures.split(",") if f.strip())
     tol = least_model.TOLERANCE if args.tolerance is None else args.tolerance
     out = least_model.choose(sc, figures, tol, build=args.build_variants, progress=progress)
+    if out["summary"] is not None:
+        report_health("camdyn simulate", out["summary"])
     if args.json:
         print(json.dumps(out, indent=1, default=float))
         return 0

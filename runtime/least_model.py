@@ -16,7 +16,7 @@ measured by probes:
    follower spring (roller held on the cam, 'mathematical forcing', sec. 8.2.3); no friction;
    no external force; no tangential shaft deflection y'; no shaft deflections (the 2-DOF
    DYNACAM model); CAMSHAFT-2 (tau, Fa, Fv) (5.15), (5.16); CAMSHAFT-1 (tau, Fa) (4.15);
-   one DOF (tau) (3.1).  A shaft direction is dropped with the equivalent magnitudes of
+   one DOF (tau, with the follower's damping q_x; CAMSHAFT-1, -2 are undamped) (3.1).  A shaft direction is dropped with the equivalent magnitudes of
    sec. 5.6, so tau, Fa and Fv stay as they are: c_x -> c_c (4.3), m_x -> m (4.39),
    k -> c_tan R_1/2^2 (4.4), J -> m_tan R_1/2^2 (5.51).  Only elements the scene has give a
    candidate; a DYNACAM variant that is not compiled yet is skipped unless ``build``;
@@ -43,7 +43,7 @@ from dataclasses import asdict, dataclass, field
 import numpy as np
 
 from . import dynacam, scene as scenes
-from .errors import CamdynInputError
+from .errors import CamdynInputError, SimulationError
 from .methods import METHODS
 from .residual import extreme
 
@@ -370,7 +370,15 @@ def choose(sc, figures=DEFAULT_FIGURES, tolerance: float = TOLERANCE, build: boo
             say(f"least model: {c.key}: skipped, {c.note}")
             continue
         say(f"least model: probing {c.key}")
-        _probe(sc, c, figures)
+        if c is full:
+            _probe(sc, c, figures)
+            continue
+        try:
+            _probe(sc, c, figures)
+        except (SimulationError, CamdynInputError) as exc:
+            # a reduction that cannot be run is not a candidate; the full model's failure is
+            # the scene's and stops the command
+            c.probe, c.note = None, f"its probe failed: {exc}"
     for c in cands:
         if c.probe is None:
             continue
@@ -450,7 +458,7 @@ def why(cands, chosen, figures, tolerance) -> str:
 
     parts = []
     if chosen.key == "full":
-        parts.append("no reduction keeps every requested figure within "
+        parts.append("no probed reduction keeps every requested figure within "
                      f"{100 * tolerance:g} %, so the scene's own model runs")
     else:
         parts.append(f"{chosen.key}: predicted error {errs(chosen)} (all below "
