@@ -195,14 +195,16 @@ def figures(args) -> int:
     seconds = time.perf_counter() - t0
     page = index.write(built, out, seconds, args.quick)
     for b in built:
-        status = ("not reproduced" if b.figure.build is None else
-                  "FAILED: " + b.error if b.error else
-                  f"{sum(c.passed for c in b.claims)}/{len(b.claims)} statements reproduced")
+        agree = (f"{sum(c.passed for c in b.claims)}/{len(b.claims)} statements agree"
+                 if b.claims else "")
+        status = ("not reproduced" + (f"; {agree}" if agree else "") if b.figure.build is None
+                  else "FAILED: " + b.error if b.error else agree or "drawn")
         print(f"{b.figure.id:<12} {b.seconds:6.1f} s  {status}")
     bad = [b for b in built if not b.passed]
+    claims = [c for b in built for c in b.claims]
     print(f"\n{sum(bool(b.pngs) for b in built)} figures drawn, "
-          f"{sum(b.figure.build is None for b in built)} not reproduced, "
-          f"{sum(len(b.claims) for b in built)} statements checked, "
-          f"{sum(not c.passed for b in built for c in b.claims)} not reproduced, {seconds:.0f} s")
+          f"{sum(b.figure.build is None for b in built)} listed as not reproducible; "
+          f"{len(claims)} printed statements computed, {sum(c.passed for c in claims)} agree; "
+          f"{seconds:.0f} s")
     print(f"index: {page}")
     return 1 if bad else 0

@@ -27,7 +27,7 @@ GROUPS = (("thesis", "Thesis figures (Koster, Vibrations of cam mechanisms)"),
           ("design", "Design charts (issue 14, items 2-6)"))
 """Sections of the index, in order: key, heading."""
 
-TOPICS = ("ch3", "ch4", "ch5", "ch7", "ch8", "paper", "design")
+TOPICS = ("ch3", "ch4", "ch5", "ch7", "ch8", "app2", "measured", "paper", "design")
 """Topic modules of this package, in the order the index lists them."""
 
 
@@ -94,8 +94,19 @@ class Built:
         return not self.error and all(c.passed for c in self.claims)
 
 
+def _order(fig: Figure) -> tuple:
+    """Thesis figures by chapter and number (appendices after the chapters), the rest as
+    listed: "8.10" after "8.9", "A.5.7" after "8.10", "4.11a" after "4.10"."""
+    if fig.group != "thesis":
+        return (1,)
+    parts = re.findall(r"[A-Z]|\d+|[a-z]", fig.id)
+    appendix = parts[0] == "A"
+    return (0, appendix) + tuple((int(p), "") if p.isdigit() else (0, p) for p in parts[appendix:])
+
+
 def registry(topics=TOPICS) -> list[Figure]:
-    """All figures of the given topic modules, ids unique."""
+    """All figures of the given topic modules, ids unique; thesis figures in the thesis's
+    order, the others as their modules list them."""
     out, seen = [], set()
     for topic in topics:
         module = importlib.import_module(f"{__name__}.{topic}")
@@ -104,7 +115,7 @@ def registry(topics=TOPICS) -> list[Figure]:
                 raise ValueError(f"figure id {fig.id!r} used twice")
             seen.add(fig.id)
             out.append(fig)
-    return out
+    return sorted(out, key=_order)
 
 
 def select(figures: list[Figure], only) -> list[Figure]:
@@ -178,7 +189,7 @@ def build_one(fig: Figure, out_dir, quick: bool, by_key: dict) -> Built:
             b.pngs = [str(p) for p in fig.build(Path(out_dir), quick)]
         except Exception as exc:
             b.error = f"{type(exc).__name__}: {exc}"
-        b.claims = [evaluate(cl, by_key) for cl in fig.claims]
+    b.claims = [evaluate(cl, by_key) for cl in fig.claims]
     b.seconds = time.perf_counter() - t0
     return b
 

@@ -27,3 +27,17 @@ def dwell_shade(ax) -> None:
     """The rise 0 <= T <= 1 shaded, as the thesis marks the cam rise time."""
     ax.axvspan(0.0, 1.0, color="0.93", zorder=0)
     ax.grid(alpha=0.3)
+
+
+def dynacam_diagrams(sc, summary, res, folder, keys) -> list:
+    """DYNACAM's diagrams ``keys`` (of runtime.dynacam.DIAGRAMS) of a run, drawn by
+    runtime.dynacam.plot into ``folder``; the diagrams not asked for are removed."""
+    import os
+
+    from camdyn.runtime import dynacam
+
+    written = dynacam.plot(sc, res, summary, Path(folder))
+    keep = [p for k in keys for p in written if Path(p).stem.endswith(f"_{k}")]
+    for p in set(written) - set(keep):
+        os.remove(p)
+    return keep

@@ -61,6 +61,29 @@ def _fig3_4(out_dir, quick):
     return [save(fig, out_dir, "fig3_4")]
 
 
+def _fig3_5(out_dir, quick):
+    """One DOF under the ramp h' = v_b t (the law 'uniform' during 0 <= T < 1), tau = 0.13."""
+    from camdyn.runtime.simulate import simulate
+
+    tau = 0.13
+    T = np.linspace(0.0, 1.0, 1001 if quick else 3001)
+    s = simulate("one_dof", {"tau": tau}, 1.0, "dp54", rtol=1e-11, law="uniform").sample(T)
+    p = plt()
+    fig, ax = p.subplots(2, 1, figsize=(7.5, 5.5), sharex=True)
+    ax[0].plot(T, s["X"], lw=0.9, label="x/h_m")
+    ax[0].plot(T, s["H"], "k--", lw=0.7, label="ramp h/h_m = T")
+    ax[1].plot(T, s["U"], lw=0.9, label="U = X - H")
+    amp = tau / (2 * math.pi)
+    ax[1].axhline(-amp, color="r", lw=0.6, ls="--", label="amplitude r_e tau/(2 pi), (3.11)")
+    ax[1].axhline(amp, color="r", lw=0.6, ls="--")
+    ax[1].set_xlabel("T = t/t_m")
+    ax[0].set_title(f"one DOF under a ramp input, tau = {tau:g} (r_e = 1)", fontsize=9)
+    for a in ax:
+        a.grid(alpha=0.3)
+        a.legend(fontsize=7)
+    return [save(fig, out_dir, "fig3_5")]
+
+
 def figures() -> list[Figure]:
     return [
         Figure("3.3", "thesis", "One-DOF model at constant angular velocity: output position "
@@ -75,4 +98,9 @@ def figures() -> list[Figure]:
                _fig3_4,
                claims=(Claim("eq3_7.decay.formula"), Claim("eq3_7.decay.simulated")),
                note="generated model one_dof (3.1) with viscous damping; envelope by (3.7)."),
+        Figure("3.5", "thesis", "Response of the one-DOF model to a ramp input (a follower "
+               "that meets a uniformly moving cam): a free vibration about the ramp",
+               _fig3_5, claims=(Claim("ch3_6.eq3_11.simulated"), Claim("ch3_6.eq3_12.simulated")),
+               note="law 'uniform' (H = T) on the generated one_dof model, as the checks of "
+                    "(3.11), (3.12) run it."),
     ]

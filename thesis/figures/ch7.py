@@ -5,29 +5,21 @@ statement beside it come from one simulation; the diagrams are drawn by
 :func:`camdyn.runtime.dynacam.plot`, as `camdyn simulate SCENE --out` draws them."""
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 import numpy as np
 
 from . import Claim, Figure
-from ._plot import dwell_shade, plt, save
+from ._plot import dwell_shade, dynacam_diagrams, plt, save
 
 
 def _diagrams(scene: str, backlash: bool, slug: str, keys):
     """Builder: DYNACAM's diagrams ``keys`` (of dynacam.DIAGRAMS) of a built-in scene into
     out_dir/slug/ (the diagrams not asked for are removed)."""
     def build(out_dir, quick):
-        from camdyn.runtime import dynacam
-
         from ..checks.dynacam import _run   # the checks' cached run: one simulation for both
 
-        sc, summary, res = _run(scene, backlash)
-        written = dynacam.plot(sc, res, summary, Path(out_dir) / slug)
-        keep = [p for k in keys for p in written if Path(p).stem.endswith(f"_{k}")]
-        for p in set(written) - set(keep):
-            os.remove(p)
-        return keep
+        return dynacam_diagrams(*_run(scene, backlash), Path(out_dir) / slug, keys)
     return build
 
 
