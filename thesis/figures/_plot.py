@@ -37,7 +37,8 @@ def dynacam_diagrams(sc, summary, res, folder, keys) -> list:
     from camdyn.runtime import dynacam
 
     written = dynacam.plot(sc, res, summary, Path(folder))
-    keep = [p for k in keys for p in written if Path(p).stem.endswith(f"_{k}")]
+    stem = Path(sc.path).stem        # dynacam.plot names them <scene>_<key>.png
+    keep = [p for k in keys for p in written if Path(p).stem == f"{stem}_{k}"]
     for p in set(written) - set(keep):
         os.remove(p)
     return keep

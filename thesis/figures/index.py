@@ -3,9 +3,11 @@ number, caption and the statements it reproduces (computed value against the pri
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 
 from jinja2 import Environment
+from markupsafe import Markup, escape
 
 from . import GROUPS
 
@@ -34,18 +36,23 @@ value the thesis's own formulas give is reproduced (see <code>camdyn check</code
 {% for b in items %}<div class="fig" id="{{ b.figure.slug }}">
 <div class="pics">{% for p in b.pics %}<a href="{{ p }}"><img src="{{ p }}" alt="{{ b.figure.id }}"></a>
 {% endfor %}{% if not b.pics %}<p class="missing">{% if b.figure.not_reproduced %}not reproduced: {{ b.figure.not_reproduced }}{% else %}build failed: {{ b.error }}{% endif %}</p>{% endif %}</div>
-<div class="text"><div class="num">{% if b.figure.group == "thesis" %}Fig. {% endif %}{{ b.figure.id }}</div>
-<p>{{ b.figure.caption }}</p>
+<div class="text"><div class="num">{% if b.figure.group == "thesis" %}Fig. {{ b.figure.id }}{% elif b.figure.group == "paper" %}Paper, fig. {{ b.figure.id.split()[-1] }}{% else %}{{ b.figure.id }}{% endif %}</div>
+<p>{{ b.figure.caption|code }}</p>
 {% if b.error %}<p class="ERROR">build failed: {{ b.error }}</p>{% endif %}
 {% if b.claims %}<table><tr><th>statement reproduced</th><th>source</th><th>printed</th><th>computed</th><th>tolerance</th><th></th></tr>
 {% for c in b.claims %}<tr><td>{{ c.text }}{% if c.note %}<br><span class="note">{{ c.note }}</span>{% endif %}</td><td>{{ c.reference }}</td><td>{{ c.printed }}</td><td>{{ c.derived }}</td><td>{{ c.rule }}</td><td class="{{ c.status.split()[0] }}">{{ c.status }}</td></tr>
 {% endfor %}</table>{% endif %}
-{% if b.figure.note %}<p class="note">{{ b.figure.note }}</p>{% endif %}
+{% if b.figure.note %}<p class="note">{{ b.figure.note|code }}</p>{% endif %}
 {% if b.pics %}<p class="note">{{ "%.1f"|format(b.seconds) }} s</p>{% endif %}
 </div></div>
 {% endfor %}{% endif %}{% endfor %}
 </body></html>
 """
+
+
+def _code(text: str) -> Markup:
+    """Escape, then show `command` spans as code."""
+    return Markup(re.sub(r"`([^`]+)`", r"<code>\1</code>", str(escape(text))))
 
 
 def write(built: list, out_dir, seconds: float, quick: bool) -> str:
@@ -54,7 +61,9 @@ def write(built: list, out_dir, seconds: float, quick: bool) -> str:
     for b in built:
         b.pics = [os.path.relpath(p, out_dir) for p in b.pngs]
     claims = [c for b in built for c in b.claims]
-    html = Environment(autoescape=True).from_string(TEMPLATE).render(
+    env = Environment(autoescape=True)
+    env.filters["code"] = _code
+    html = env.from_string(TEMPLATE).render(
         groups=[(k, h, [b for b in built if b.figure.group == k]) for k, h in GROUPS],
         n_built=sum(bool(b.pngs) for b in built),
         n_missing=sum(not b.pngs for b in built),
