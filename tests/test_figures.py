@@ -121,3 +121,26 @@ def test_registry_is_consistent():
         assert fid in ids
         assert next(f for f in reg if f.id == fid).claims, fid
     figs.checks_by_key(reg)        # raises on an unknown key
+
+
+def test_failures_are_reported_not_hidden(tmp_path):
+    """A builder that raises and a statement the computation does not reproduce both show in
+    the index (build failed / FAIL) and make the figure fail; the other figures still build."""
+    from camdyn.thesis.checks import Check
+    from camdyn.thesis.figures import index
+
+    def broken(out_dir, quick):
+        raise RuntimeError("no such run")
+
+    wrong = Check("test.wrong", "2 pi printed as 7", "nowhere", "7", lambda: 2 * math.pi)
+    bad = figs.Figure("9.1", "thesis", "a figure that cannot be drawn", broken)
+    off = figs.Figure("9.2", "thesis", "a figure whose statement is off",
+                      next(f for f in figs.registry() if f.id == "8.6").build,
+                      claims=(figs.Claim(wrong),))
+    built = figs.build([bad, off], tmp_path, quick=True)
+    assert built[0].error == "RuntimeError: no such run" and not built[0].passed
+    assert built[1].pngs and not built[1].error
+    assert built[1].claims[0].status == "FAIL" and not built[1].passed
+    page = open(index.write(built, tmp_path, 1.0, True)).read()
+    assert "build failed: RuntimeError: no such run" in page
+    assert 'class="FAIL">FAIL<' in page
