@@ -74,8 +74,9 @@ bench: build
 	$(BIN)/python bench/derive_time.py
 	$(BIN)/python bench/derive_seeds.py --seeds 0 random random
 
+# every thesis and paper figure the models determine, with out/figures/index.html
 figures: build
-	$(BIN)/camdyn run --out out
+	$(BIN)/camdyn figures --out out/figures
 
 derive: build
 	$(BIN)/camdyn derive

@@ -12,6 +12,7 @@
     camdyn precision SCENE_OR_MODEL ...     work-precision chart: every method, SciPy's beside
     camdyn stability MODEL --param P=A:B:N  stability map: step/rtol x parameter, per method
     camdyn profile --law L --stroke H ...   the cam itself: pitch curve, profile(s), CSV/DXF/PNG
+    camdyn figures [--out DIR] [--only IDS]  every thesis/paper figure the models determine + index
 
 Bad arguments end in one line on stderr naming the argument, and status 2.
 """
@@ -1066,7 +1067,35 @@ def build_parser() -> argparse.ArgumentParser:
 
     _add_precision(sub, all_methods)
     _add_profile(sub, laws.NAMES)
+    _add_figures(sub)
     return top
+
+
+# -- camdyn figures: the thesis room's figure registry (thesis/figures/) -------------------
+
+def _cmd_figures(args) -> int:
+    from camdyn.thesis import commands
+
+    return commands.figures(args)
+
+
+def _add_figures(sub) -> None:
+    f = sub.add_parser(
+        "figures", help="every thesis and paper figure the models determine, with an index page",
+        description="Draw the thesis's figures (3.3 ... 8.6, A.5.7), the paper's figs 4-9 and "
+                    "the design charts into --out, and write index.html showing each picture "
+                    "beside its number, caption and the printed statements it reproduces, "
+                    "computed now. Exit 1 if a figure fails or a statement is not reproduced.")
+    f.add_argument("--out", default="out/figures", metavar="DIR",
+                   help="folder for the PNG files and index.html (default out/figures)")
+    f.add_argument("--only", default=None, metavar="IDS",
+                   help="comma-separated figure ids (3.3,4.11a,paper 5; 4.11 = 4.11a-c; "
+                        "thesis, paper or design = the whole group)")
+    f.add_argument("--quick", action="store_true",
+                   help="coarser tau grids for the response graphs (4.11, 5.7): a draft in "
+                        "a fraction of the time")
+    f.add_argument("--quiet", action="store_true", help="no progress bar")
+    f.set_defaults(func=_cmd_figures)
 
 
 # -- camdyn profile ------------------------------------------------------------------

@@ -159,3 +159,52 @@ def _selection(args) -> int:
     for f in files:
         print(f"wrote {f}")
     return 0
+
+
+def figures(args) -> int:
+    """`camdyn figures`: every figure the models determine, drawn into --out with index.html
+    beside them (thesis/figures/, issue 14 item 7)."""
+    import time
+    from pathlib import Path
+
+    from camdyn.runtime.errors import CamdynInputError
+
+    from . import figures as figs
+    from .figures import index
+
+    prog = "camdyn figures"
+    try:
+        only = [s.strip() for s in args.only.split(",") if s.strip()] if args.only else None
+        todo = figs.select(figs.registry(), only)
+        out = Path(args.out)
+        try:
+            out.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise CamdynInputError(f"argument --out: cannot create {out}: {exc}") from None
+    except CamdynInputError as exc:
+        return fail(prog, str(exc))
+    t0 = time.perf_counter()
+    by_key = figs.checks_by_key(todo)
+    built = []
+    from tqdm import tqdm
+
+    with tqdm(todo, file=sys.stderr, unit="fig", desc="figures", disable=args.quiet) as bar:
+        for fig in bar:
+            bar.set_postfix_str(fig.id)
+            built.append(figs.build_one(fig, out, args.quick, by_key))
+    seconds = time.perf_counter() - t0
+    page = index.write(built, out, seconds, args.quick)
+    for b in built:
+        agree = (f"{sum(c.passed for c in b.claims)}/{len(b.claims)} statements agree"
+                 if b.claims else "")
+        status = ("not reproduced" + (f"; {agree}" if agree else "") if b.figure.build is None
+                  else "FAILED: " + b.error if b.error else agree or "drawn")
+        print(f"{b.figure.id:<12} {b.seconds:6.1f} s  {status}")
+    bad = [b for b in built if not b.passed]
+    claims = [c for b in built for c in b.claims]
+    print(f"\n{sum(bool(b.pngs) for b in built)} figures drawn, "
+          f"{sum(b.figure.build is None for b in built)} listed as not reproducible; "
+          f"{len(claims)} printed statements computed, {sum(c.passed for c in claims)} agree; "
+          f"{seconds:.0f} s")
+    print(f"index: {page}")
+    return 1 if bad else 0
