@@ -21,7 +21,8 @@ ROOT = Path(__file__).resolve().parent.parent
 ROOMS = ("derive", "generated", "runtime", "thesis")
 DISPATCH = {("runtime/cli.py", "_cmd_derive"): "camdyn.derive",
             ("runtime/cli.py", "_cmd_check"): "camdyn.thesis",
-            ("runtime/cli.py", "_cmd_laws"): "camdyn.thesis"}
+            ("runtime/cli.py", "_cmd_laws"): "camdyn.thesis",
+            ("runtime/cli.py", "_cmd_design"): "camdyn.thesis"}
 
 
 def _module_name(path: Path) -> str:
