@@ -26,13 +26,15 @@ Secs 8.3, 8.5, 8.6 and App. 7 describe one method:
 Solving on the envelope.  "Largest Fa that still meets the requirement" is taken as the
 first crossing: the envelope ratio r(Fa) = max(u0_env/accuracy, u0''_env/acceleration) is
 evaluated on the bracket Fa = 0, 0.1, 0.2, 0.4, ... (doubling, up to :data:`FA_CAP`) until
-it exceeds 1, and the root in the last interval is found by Brent's method to 1e-7
-relative.  Every Fa uses the same tau samples (a window of +-1.5 dip spacings around tau, in
-1/tau), so r(Fa) is one smooth function.  The largest tau is found the same way on one
-envelope in tau (samples on a lattice in 1/tau, extended until the crossing lies inside
-the samples with a window to spare on either side).  Each answer carries the envelope's
-own accuracy: the envelope at the answer recomputed with twice as many samples per dip,
-the change carried to the answer through the slope of r.
+it exceeds 1, and the root in the last interval is found by Brent's method.  Every Fa uses
+the same tau samples (a window of +-1.5 dip spacings of the largest Fa around tau, in
+1/tau), so r(Fa) is one function of Fa.  The largest tau is found the same way on one
+envelope in tau (samples on a lattice in 1/tau, extended until the first crossing lies
+inside them with a window to spare).  Both use 12 samples per dip; the root is then moved
+by one secant step onto the envelope with 24 samples per dip, which is the answer, and the
+step is its stated error (:func:`_polish`).  Not counting on a later dip, the first
+crossing is the limit even where a larger Fa or tau would meet the requirement again.
+The envelope itself: :class:`Upper`.
 """
 from __future__ import annotations
 
@@ -388,7 +390,7 @@ def motor(*, t_m, T_m, delta_n, delta_lim, eta_g=1.0, spring=False, T_el=None, m
     out = {"T_m": T_m, "tau_m": tau_m, "tau_el": tau_el, "delta_n": delta_n,
            "delta_lim": delta_lim, "eta_g": eta_g, "v_v": 5 if spring else 1,
            "slip_peak_rel": rel, "T_slip_peak": T_peak, "P": P,
-           "M_ena": None, "N_n": None, "rule_8_4": mt.slip_within_rated(delta_lim, delta_n)}
+           "M_ena": None, "N_n": None, "rule_8_4": bool(mt.slip_within_rated(delta_lim, delta_n))}
     if mass is not None:
         out["N_n"] = mt.required_power(mass, stroke, t_m, P)
         if w_s is not None:
@@ -565,7 +567,7 @@ def machine(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None
 
 # -- the rules of sec. 8.5 -----------------------------------------------------------------------
 def rules(M: Machine, ratio_design: float, common_shaft: bool, motor_out: dict | None,
-          limited_by: str = "accuracy") -> list[dict]:
+          limited_by: str = "accuracy", law: str = "cycloidal") -> list[dict]:
     """The rules of secs 8.2.6-8.5 the design breaks ("violated") or should mind ("note")."""
     out = []
 
@@ -574,7 +576,11 @@ def rules(M: Machine, ratio_design: float, common_shaft: bool, motor_out: dict |
 
     if ratio_design > 1:
         k = ratio_design
-        if limited_by == "accuracy":
+        if law != "cycloidal":
+            how = ("(8.5) and (3.6) are the cycloid's; the limits above say how far tau and Fa "
+                   "must come down (rules 1, 3, 4: a shorter stroke, a longer t_m, a stiffer, "
+                   "lighter follower)")
+        elif limited_by == "accuracy":
             how = (f"By (8.5), u0 ~ h_m' (2 pi/t_m)^3 (m/c)^(3/2)/pi (Fa = 0): shorten the stroke "
                    f"by {k:.3g} (rule 1), or lengthen t_m by {k ** (1 / 3):.3g} (rule 3), or raise "
                    f"c/m by {k ** (2 / 3):.3g} (rule 4)")
@@ -583,7 +589,8 @@ def rules(M: Machine, ratio_design: float, common_shaft: bool, motor_out: dict |
                    f"by {k:.3g}, or lengthen t_m by {k ** (1 / 3):.3g}, or raise c/m by {k ** 2:.3g}")
         add("violated", "sec. 8.5 (3), (8.5)",
             f"the envelope at tau = {M.tau:.3g}, Fa = {M.Fa:.3g} is {k:.3g} times the "
-            f"requirement ({limited_by}).  {how}; with Fa > 0 see the limits above")
+            f"requirement ({limited_by}).  {how}" + ("; with Fa > 0 see the limits above"
+                                                      if law == "cycloidal" else ""))
     if M.Fa > COMMON_SHAFT_FA:
         if common_shaft:
             add("violated", "sec. 8.5 (3)", f"Fa = {M.Fa:.3g} > {COMMON_SHAFT_FA} on a common "
@@ -658,14 +665,15 @@ def design(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None,
            "U0dd_error": max(abs(U2f - U2e), 1e-8 * U2f),
            "U0_Fa0": U00, "U0dd_Fa0": U20, "u0": U0f * M.stroke,
            "u0dd": None if M.t_m is None else U2f * M.stroke / M.t_m**2,
-           "eq_8_5_u0": M.stroke * M.tau**3 / math.pi}
+           # (8.5) is (3.5)'s envelope for small tau: the cycloid's only
+           "eq_8_5_u0": M.stroke * M.tau**3 / math.pi if law == "cycloidal" else None}
     out["envelope"] = env
     req = Requirement(M.stroke, acc, a_req)
     ratio_design = None
     if acc is not None or a_req is not None:
         ratio_design = req.ratio(U0f, U2f, M.t_m)
         out["requirement"] = {"accuracy": acc, "residual_acceleration": a_req,
-                              "ratio": ratio_design, "met": ratio_design <= 1.0}
+                              "ratio": float(ratio_design), "met": bool(ratio_design <= 1.0)}
         say("largest Fa at this tau")
         lf = largest_Fa(graphs, M.tau, req, M.t_m)
         if lf.get("Fa_max") is not None and M.tan_alpha_me is not None and M.stiffness is not None:
@@ -701,7 +709,7 @@ def design(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None,
         motor_out = motor(t_m=M.t_m, mass=M.mass, stroke=M.stroke, w_s=M.w_s, **motor_args)
         out["motor"] = motor_out
     out["rules"] = rules(M, ratio_design or 0.0, common_shaft, motor_out,
-                         req.which(U0f, U2f, M.t_m) if ratio_design else "accuracy")
+                         req.which(U0f, U2f, M.t_m) if ratio_design else "accuracy", law)
     if check:
         model, why = least_model(U0f, U00, M.Fa)
         say(f"check run: {model}")
@@ -752,8 +760,9 @@ def text(d: dict) -> str:
             L.append(f"  {label:<14}{_g(M[key]):>12} {unit:<6}{src}")
     e = d["envelope"]
     L.append("envelope through the maxima of fig. 4.11 (CAMSHAFT-1), at the design point")
+    eq85 = f"; (8.5): u0 ~ {_g(e['eq_8_5_u0'])} m" if e["eq_8_5_u0"] is not None else ""
     L.append(f"  U0   = {_pm(e['U0'], e['U0_error'])}   u0 = U0 h_m' = {_g(e['u0'])} m"
-             f"   (Fa = 0: {_g(e['U0_Fa0'])}; (8.5): u0 ~ {_g(e['eq_8_5_u0'])} m)")
+             f"   (Fa = 0: {_g(e['U0_Fa0'])}{eq85})")
     L.append(f"  U0'' = {_pm(e['U0dd'], e['U0dd_error'])}" +
              (f"   u0'' = U0'' h_m'/t_m^2 = {_g(e['u0dd'])} m/s^2" if e["u0dd"] is not None else ""))
     if "requirement" in d:
