@@ -236,3 +236,36 @@ def test_cli_bad_input(capsys, argv, flag):
 def test_stroke_must_be_positive():
     with pytest.raises(CamdynInputError, match="--stroke"):
         ds.machine(stroke=-1.0, tau=0.1, Fa=0.0)
+
+
+def test_envelope_is_read_through_the_maxima_not_in_a_dip():
+    """At tau = 1/7, Fa = 0, the graph (3.5) sits in a tuning dip (U0 = 0); the envelope a
+    designer reads (secs 3.5, 8.2.6) is the line through the neighbouring maxima, here those of
+    (3.5) found by a bounded scalar search, log-linear between them: to 1e-4."""
+    def lobe(n):
+        r = minimize_scalar(lambda t: -cf.U0(t), bounds=(1 / (n + 1), 1 / n), method="bounded",
+                            options={"xatol": 1e-13})
+        return r.x, -r.fun
+    (t1, v1), (t2, v2) = lobe(7), lobe(6)
+    expected = math.exp(np.interp(1 / 7, [t1, t2], [math.log(v1), math.log(v2)]))
+    assert cf.U0(1 / 7) < 1e-12
+    U0, _ = ds.Graphs().at(1 / 7, 0.0, per_dip=2 * ds.PER_DIP)
+    assert U0 == pytest.approx(expected, rel=1e-4)
+
+
+def test_residual_acceleration_limit():
+    """A residual-acceleration requirement u0'' <= 20 m/s^2 (h_m' = 20 mm, t_m = 0.1 s, tau 0.15,
+    Fa 0.3): the largest tau at this T_e meets it exactly, checked by the envelope around
+    tau_max read anew, U0'' h_m' tau^2/T_e^2 = 20 m/s^2 to 1e-6 (sec. 3.3: x'' = X'' h_m'/t_m^2,
+    t_m = T_e/tau); at this t_m instead, U0'' h_m'/t_m^2 = 20 m/s^2."""
+    h, t_m, tau, Fa, a = 0.02, 0.1, 0.15, 0.3, 20.0
+    d = ds.design(stroke=h, tau=tau, Fa=Fa, rise_time=t_m, residual_acceleration=a, check=False)
+    lt, le = d["largest_tau"], d["largest_T_e"]
+    assert lt["limited_by"] == "residual acceleration"
+    g = ds.Graphs()
+    T_e = tau * t_m
+    U2 = g.at(lt["tau_max"], Fa, per_dip=2 * ds.PER_DIP)[1]
+    assert U2 * h * lt["tau_max"] ** 2 / T_e**2 == pytest.approx(a, rel=1e-6)
+    U2 = g.at(le["tau_max"], Fa, per_dip=2 * ds.PER_DIP)[1]
+    assert U2 * h / t_m**2 == pytest.approx(a, rel=1e-6)
+    assert le["T_e_max"] == pytest.approx(le["tau_max"] * t_m, rel=1e-12)

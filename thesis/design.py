@@ -31,7 +31,7 @@ the same tau samples (a window of +-1.5 dip spacings of the largest Fa around ta
 1/tau), so r(Fa) is one function of Fa.  The largest tau is found the same way on one
 envelope in tau (samples on a lattice in 1/tau, extended until the first crossing lies
 inside them with a window to spare).  Both use 12 samples per dip; the root is then moved
-by one secant step onto the envelope with 24 samples per dip, which is the answer, and the
+by secant steps onto the envelope with 24 samples per dip, which is the answer, and the
 step is its stated error (:func:`_polish`).  Not counting on a later dip, the first
 crossing is the limit even where a larger Fa or tau would meet the requirement again.
 The envelope itself: :class:`Upper`.
@@ -264,15 +264,22 @@ def largest_Fa(graphs: Graphs, tau: float, req: Requirement, t_m: float | None) 
 
 
 def _polish(name, x_c, slope, r_fine, envelopes_at, req, t_m_of) -> dict:
-    """The answer x_c found on the envelope with PER_DIP samples per dip, moved by one secant
-    step onto the envelope with twice as many: the answer reported; |the step| is its error
+    """The answer x_c found on the envelope with PER_DIP samples per dip, moved by secant
+    steps onto the envelope with twice as many: the answer reported; |the move| is its error
     estimate (the finer envelope's own error is some four times smaller, the parabolas through
     the maxima and the spline between samples being second order or better).  ``ratio_at``
     and ``ratio_beyond`` are the finer envelope's ratio at the answer and 0.1 % beyond."""
     if not slope > 0:
         raise SimulationError(f"the envelope does not grow through the crossing at {name} = "
                               f"{x_c:.6g}: no single limit to report")
-    x = x_c - (r_fine(x_c) - 1.0) / slope
+    # secant steps on the finer envelope, the first with the coarse slope
+    x0, r0 = x_c, r_fine(x_c)
+    x = x0 - (r0 - 1.0) / slope
+    for _ in range(8):
+        r1 = r_fine(x)
+        if abs(r1 - 1.0) < 1e-10 or r1 == r0:
+            break
+        x0, r0, x = x, r1, x - (r1 - 1.0) * (x - x0) / (r1 - r0)
     U0, U2 = envelopes_at(x)
     return {name: x, f"{name}_error": max(abs(x - x_c), 1e-9 * x),
             "ratio_at": float(req.ratio(U0, U2, t_m_of(x))),
@@ -324,7 +331,8 @@ def largest_tau(graphs: Graphs, Fa: float, tau0: float, req: Requirement,
 
     tau_c = brentq(f, taus[k - 1], taus[k], xtol=1e-13, rtol=1e-11)
     slope = (f(tau_c * (1 + 1e-4)) - f(tau_c)) / (1e-4 * tau_c)
-    fine = graphs.envelopes(1 / tau_c - 2 * w, 1 / tau_c + 2 * w, Fa, 2 * graphs.per_dip)
+    # the window Graphs.at reads around tau, so that the answer and at(answer) agree
+    fine = graphs.envelopes(1 / tau_c - w, 1 / tau_c + w, Fa, 2 * graphs.per_dip)
 
     def fine_at(t):
         return float(fine[0](t)), float(fine[1](t))
