@@ -13,6 +13,7 @@
     camdyn stability MODEL --param P=A:B:N  stability map: step/rtol x parameter, per method
     camdyn profile --law L --stroke H ...   the cam itself: pitch curve, profile(s), CSV/DXF/PNG
     camdyn figures [--out DIR] [--only IDS]  every thesis/paper figure the models determine + index
+    camdyn design --stroke H ...            design by the thesis's rules (secs 8.3, 8.5, App. 7)
 
 Bad arguments end in one line on stderr naming the argument, and status 2.
 """
@@ -261,6 +262,12 @@ def _cmd_laws(args) -> int:
     from camdyn.thesis import commands
 
     return commands.laws(args)
+
+
+def _cmd_design(args) -> int:
+    from camdyn.thesis import commands
+
+    return commands.design(args)
 
 
 # -- camdyn integrate ------------------------------------------------------------------
@@ -974,6 +981,8 @@ def build_parser() -> argparse.ArgumentParser:
     lw.add_argument("--out", default=None, help="folder for laws_selection.png/.csv")
     lw.set_defaults(func=_cmd_laws)
 
+    _add_design(sub, laws.NAMES)
+
     m = sub.add_parser("run", help="any scene: the CAMSHAFT-1 study (default), a DYNACAM mechanism, "
                                    "the beam follower")
     m.add_argument("scene", nargs="?", default=None,
@@ -1249,6 +1258,52 @@ def _add_precision(sub, all_methods) -> None:
     pr.add_argument("--json", action="store_true", help="one JSON object on stdout")
     pr.add_argument("--quick", action="store_true", help="every other rung of the ladders")
     pr.set_defaults(func=_cmd_precision)
+
+
+def _add_design(sub, law_names) -> None:
+    """`camdyn design`: SI inputs, the thesis's answer (camdyn/thesis/design.py)."""
+    ds = sub.add_parser("design", help="design by the thesis's rules: tau, Fa, the envelope, the "
+                                       "largest Fa and smallest t_m meeting a requirement, sec. 8.5's "
+                                       "rules, the motor (sec. 8.3), a check run")
+    a = ds.add_argument
+    a("--stroke", type=float, required=True, metavar="M", help="h_m', stroke of the output member (m)")
+    a("--rise-time", type=float, default=None, metavar="S", help="t_m, cam rise time (s)")
+    a("--cam-angle", default=None, metavar="RAD",
+      help="beta_m, cam angle of the rise: rad, or degrees as '100deg' (with --speed)")
+    a("--speed", type=float, default=None, metavar="RPM", help="camshaft speed (r.p.m.)")
+    a("--mass", type=float, default=None, metavar="KG", help="m, equivalent mass at the output (4.39)")
+    a("--stiffness", type=float, default=None, metavar="N/M",
+      help="c_c, stiffness of the uncoupled follower system at the output (4.3)")
+    a("--tau", type=float, default=None, help="tau = T_e/t_m directly (instead of m and c_c)")
+    a("--fa", type=float, default=None, help="Fa directly (instead of --c-tan)")
+    a("--c-tan", type=float, default=None, metavar="N/M",
+      help="c_tan, tangential stiffness of the shaft at the output (4.4); Fa = (c_c/c_tan) tan^2 alpha_me")
+    a("--pitch-radius", type=float, default=None, metavar="M", help="R_1/2 at the cam (4.1)")
+    a("--ratio", type=float, default=None, metavar="I",
+      help="transmission ratio i, h_m' = i h_m at the cam (default 1)")
+    a("--tan-alpha-me", type=float, default=None, help="mean slope (4.13) directly")
+    a("--accuracy", type=float, default=None, metavar="M", help="largest positional error u0 (m)")
+    a("--residual-acceleration", type=float, default=None, metavar="M/S2",
+      help="largest residual acceleration u0'' after the rise (m/s^2)")
+    a("--law", default="cycloidal", choices=law_names)
+    a("--theta", type=float, default=None, help="the law's shape parameter")
+    a("--common-shaft", action="store_true", help="the shaft drives other mechanisms (Fa <= 0.3, sec. 8.5)")
+    a("--motor-rpm", type=float, default=None, help="a thesis motor by synchronous speed: "
+      "3000/1500/1000/750 (T_m of fig. A.5.3)")
+    a("--motor-tm", type=float, default=None, metavar="S", help="the motor's mechanical time "
+      "constant T_m = J_m/G (A.5.11)")
+    a("--motor-tel", type=float, default=None, metavar="S",
+      help="electrical time constant T_el (A.5.3): second-order slip (A.5.25) instead of (A.5.33)")
+    a("--rated-slip", type=float, default=0.085, help="delta_n (default 0.085, fig. A.5.3)")
+    a("--slip-limit", type=float, default=None, help="delta_lim, the largest slip allowed (8.1)")
+    a("--spring", action="store_true", help="a follower spring: v_v = 5 in (8.1)")
+    a("--gear-efficiency", type=float, default=None, help="eta_g of the reduction gear (8.1)")
+    a("--worm", type=float, nargs=2, default=None, metavar=("ALPHA", "MU"),
+      help="worm gear lead angle and friction angle (rad): eta_g by (6.72)")
+    a("--no-check", action="store_true", help="skip the check run")
+    a("--json", action="store_true", help="one JSON object on stdout")
+    a("--quiet", action="store_true", help="no progress lines")
+    ds.set_defaults(func=_cmd_design)
 
 
 def main(argv=None) -> int:

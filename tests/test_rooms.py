@@ -22,7 +22,8 @@ ROOMS = ("derive", "generated", "runtime", "thesis")
 DISPATCH = {("runtime/cli.py", "_cmd_derive"): "camdyn.derive",
             ("runtime/cli.py", "_cmd_check"): "camdyn.thesis",
             ("runtime/cli.py", "_cmd_laws"): "camdyn.thesis",
-            ("runtime/cli.py", "_cmd_figures"): "camdyn.thesis"}
+            ("runtime/cli.py", "_cmd_figures"): "camdyn.thesis",
+            ("runtime/cli.py", "_cmd_design"): "camdyn.thesis"}
 
 
 def _module_name(path: Path) -> str:

@@ -208,3 +208,72 @@ def figures(args) -> int:
           f"{seconds:.0f} s")
     print(f"index: {page}")
     return 1 if bad else 0
+def design(args) -> int:
+    """`camdyn design`: the thesis's design method (secs 8.3, 8.5, App. 7) for what the designer
+    gives (thesis/design.py)."""
+    import math
+
+    from camdyn.runtime.errors import CamdynInputError, SimulationError
+
+    from . import design as ds
+
+    prog = "camdyn design"
+    say = (lambda msg: print(f"{prog}: {msg}", file=sys.stderr, flush=True))
+    try:
+        motor_args = None
+        motor_given = [args.motor_rpm, args.motor_tm, args.slip_limit]
+        if any(v is not None for v in motor_given):
+            if args.slip_limit is None:
+                raise CamdynInputError("argument --slip-limit: required with a motor (delta_lim, "
+                                       "the largest slip allowed, 0 < delta_lim < 1; (8.1))")
+            if (args.motor_rpm is None) == (args.motor_tm is None):
+                raise CamdynInputError("arguments --motor-rpm, --motor-tm: give one (the motor's "
+                                       "mechanical time constant T_m, fig. A.5.3, (A.5.11))")
+            if args.motor_rpm is not None:
+                if args.motor_rpm not in ds.MOTOR_T_M:
+                    raise CamdynInputError(f"argument --motor-rpm: {args.motor_rpm:g} is not one of "
+                                           f"{', '.join(str(k) for k in ds.MOTOR_T_M)} (fig. A.5.3)")
+                T_m = ds.MOTOR_T_M[int(args.motor_rpm)]
+            else:
+                T_m = ds._positive("T_m", "--motor-tm", args.motor_tm, "s, motor's mechanical "
+                                   "time constant (A.5.11)")
+            for flag, v in (("--slip-limit", args.slip_limit), ("--rated-slip", args.rated_slip)):
+                if not (math.isfinite(v) and 0 < v < 1):
+                    raise CamdynInputError(f"argument {flag}: {v:g} is out of range: 0 < slip < 1")
+            if args.worm is not None and args.gear_efficiency is not None:
+                raise CamdynInputError("argument --worm: not allowed with --gear-efficiency; give one")
+            eta = 1.0
+            if args.gear_efficiency is not None:
+                eta = args.gear_efficiency
+                if not 0 < eta <= 1:
+                    raise CamdynInputError(f"argument --gear-efficiency: eta_g={eta:g} is out of "
+                                           "range: 0 < eta_g <= 1")
+            if args.worm is not None:
+                alpha, mu = args.worm
+                if not (0 < alpha < math.pi / 2 and 0 <= mu and alpha + mu < math.pi / 2):
+                    raise CamdynInputError(f"argument --worm: alpha={alpha:g}, mu={mu:g} rad out of "
+                                           "range: 0 < alpha, 0 <= mu, alpha + mu < pi/2")
+                from .motor_theory import worm_gear_efficiency
+
+                eta = worm_gear_efficiency(alpha, mu)       # motor driving (6.72), (A.5.34)
+            tel = ds._positive("T_el", "--motor-tel", args.motor_tel, "s, electrical time "
+                               "constant (A.5.3)")
+            motor_args = {"T_m": T_m, "delta_n": args.rated_slip, "delta_lim": args.slip_limit,
+                          "eta_g": eta, "spring": args.spring, "T_el": tel}
+        result = ds.design(
+            stroke=args.stroke, rise_time=args.rise_time, cam_angle_rad=ds.cam_angle(args.cam_angle),
+            speed=args.speed, mass=args.mass, stiffness=args.stiffness, tau=args.tau, Fa=args.fa,
+            c_tan=args.c_tan, pitch_radius=args.pitch_radius, ratio=args.ratio,
+            tan_alpha_me=args.tan_alpha_me, accuracy=args.accuracy,
+            residual_acceleration=args.residual_acceleration, law=args.law, theta=args.theta,
+            common_shaft=args.common_shaft, motor_args=motor_args, check=not args.no_check,
+            progress=None if args.json or args.quiet else say)
+    except (CamdynInputError, ValueError) as exc:
+        return fail(prog, name_argument(str(exc)))
+    except SimulationError as exc:
+        return fail(prog, f"a graph run failed: {exc}")
+    if args.json:
+        print(json.dumps(result, indent=1, default=float))
+    else:
+        print(ds.text(result))
+    return 0
