@@ -6,7 +6,7 @@ not count on a dip (the parameters are never known that well, sec. 8.2.6) and re
 through the maxima instead: the envelope.  Here it is taken from sampled graphs: every
 interior local maximum of the samples, refined by the parabola through it and its two
 neighbours (in tau), then joined by straight lines in log(value) between the maxima and held
-flat beyond the outermost ones.  The grid must resolve the dips: :func:`tau_grid` spaces tau
+flat beyond the outermost ones where a dip lies between (else the graph is the envelope).  The grid must resolve the dips: :func:`tau_grid` spaces tau
 uniformly in 1/tau, in which the dips of (3.5) are equally spaced (one per unit of 1/tau).
 """
 from __future__ import annotations
@@ -32,9 +32,10 @@ def tau_grid(tau_min: float, tau_max: float, n: int) -> np.ndarray:
 class Envelope:
     """The curve through the maxima of a graph: ``tau`` and ``value`` at the maxima, the
     samples themselves (``sample_tau``, ``sample_value``), and ``__call__`` for any tau inside
-    the samples: log-linear between maxima, flat beyond the outermost ones, and never below
-    the graph (where the graph rises past a maximum without a dip, as U0 does towards tau = 1
-    on a stiff camshaft, the envelope is the graph)."""
+    the samples: log-linear between maxima and never below the graph.  Beyond the outermost
+    maximum the maximum is held flat only past a dip of the graph; where the graph rises or
+    falls away from it without a dip (U0 towards tau = 1 on a stiff camshaft, or a window of a
+    graph without dips, as U0 at large Fa, fig. 4.11a) the graph is its own envelope."""
 
     tau: np.ndarray
     value: np.ndarray
@@ -43,12 +44,36 @@ class Envelope:
 
     def __call__(self, tau):
         t = np.asarray(tau, dtype=float)
-        if self.tau.size == 1:
-            out = np.full(t.shape, self.value[0])
-        else:
-            out = np.exp(np.interp(t, self.tau, np.log(self.value)))
-        out = np.maximum(out, np.interp(t, self.sample_tau, self.sample_value))
+        graph = np.interp(t, self.sample_tau, self.sample_value)
+        through = through_maxima(np.atleast_1d(t), self.tau, self.value,
+                                 dips(self.sample_tau, self.sample_value)).reshape(t.shape)
+        out = np.where(np.isnan(through), graph, np.maximum(graph, np.nan_to_num(through)))
         return float(out) if out.ndim == 0 else out
+
+
+def dips(tau, values) -> np.ndarray:
+    """tau of the interior local minima of the samples (tau ascending): the tuning dips."""
+    t, v = np.asarray(tau, float), np.asarray(values, float)
+    return t[1:-1][(v[1:-1] < v[:-2]) & (v[1:-1] <= v[2:])]
+
+
+def through_maxima(x, mt, mv, dip_tau) -> np.ndarray:
+    """The curve through the maxima (mt, mv) at x: log-linear in tau between them; beyond the
+    outermost maximum its value held flat, but only past a dip (``dip_tau``) between that
+    maximum and x, else NaN (the graph is its own envelope there); NaN everywhere without
+    maxima."""
+    x = np.asarray(x, float)
+    out = np.full(x.shape, np.nan)
+    if len(mt) == 0:
+        return out
+    inside = (x >= mt[0]) & (x <= mt[-1])
+    out[inside] = np.exp(np.interp(x[inside], mt, np.log(mv)))
+    for k in np.flatnonzero(~inside):
+        if x[k] > mt[-1] and np.any((dip_tau > mt[-1]) & (dip_tau <= x[k])):
+            out[k] = mv[-1]
+        elif x[k] < mt[0] and np.any((dip_tau >= x[k]) & (dip_tau < mt[0])):
+            out[k] = mv[0]
+    return out
 
 
 def maxima(tau, values) -> tuple[np.ndarray, np.ndarray]:
@@ -83,15 +108,11 @@ def maxima(tau, values) -> tuple[np.ndarray, np.ndarray]:
 
 
 def envelope(tau, values) -> Envelope:
-    """The envelope of a sampled graph (module doc); with no interior maximum, the samples'
-    largest value."""
+    """The envelope of a sampled graph (module doc); with no interior maximum, the graph."""
     mt, mv = maxima(tau, values)
     t = np.asarray(tau, float)
     order = np.argsort(t)
     t, v = t[order], np.asarray(values, float)[order]
-    if mt.size == 0:
-        k = int(np.argmax(v))
-        mt, mv = np.array([t[k]]), np.array([v[k]])
     if np.any(mv <= 0):
         raise CamdynInputError("an envelope of values that are not all positive")
     return Envelope(mt, mv, t, v)

@@ -102,3 +102,29 @@ def test_report_writes_the_envelopes(tmp_path):
         assert float(r["U0dd_envelope"]) >= float(r["U0dd"]) * (1 - 1e-12)
     env = json.loads((tmp_path / "report.json").read_text())["envelopes"]
     assert set(env) == {"0.0", "1.0"} and env["0.0"]["U0"]["maxima"]
+
+
+def test_a_graph_without_dips_is_its_own_envelope():
+    """A window of a graph that rises without a dip (U0 at large Fa, fig. 4.11a) has no
+    maximum to draw through: the envelope is the graph itself, not the window's largest
+    value (which read U0 3.4 times too high at tau = 0.08, Fa = 3.34 in `camdyn laws`).
+    Past the last maximum the maximum is held only beyond a dip: |sin(pi/tau)| tau^2 on
+    [0.3, 0.7] has one maximum (tau ~ 0.41) and its dip at 1/2; the held maximum stands
+    beyond the dip until the graph rises past it."""
+    t = np.linspace(0.06, 0.1, 9)
+    rising = 1e-3 * t ** 3
+    env = envelope(t, rising)
+    x = np.linspace(0.06, 0.1, 33)
+    assert np.allclose(env(x), np.interp(x, t, rising), rtol=1e-14, atol=0)
+
+    t = tau_grid(0.3, 0.7, 400)
+    v = np.abs(np.sin(np.pi / t)) * t ** 2
+    env = envelope(t, v)
+    assert env.tau.size == 1 and 0.40 < env.tau[0] < 0.42
+    x = np.array([0.35, 0.45, 0.55, 0.65])
+    graph = np.interp(x, t, v)
+    # before the maximum and between it and the dip: the graph; past the dip: the held
+    # maximum while the graph lies below it, then the graph again
+    assert np.allclose(env(x[[0, 1, 3]]), graph[[0, 1, 3]], rtol=1e-14)
+    assert graph[2] < env.value[0] < graph[3]
+    assert env(x[2]) == pytest.approx(env.value[0], rel=1e-14)

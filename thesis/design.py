@@ -46,7 +46,7 @@ from scipy.interpolate import CubicSpline
 from scipy.optimize import brentq
 
 from camdyn.runtime import laws as _laws
-from camdyn.runtime.envelope import maxima
+from camdyn.runtime.envelope import dips, maxima, through_maxima
 from camdyn.runtime.errors import CamdynInputError, SimulationError
 from camdyn.runtime.residual import residual
 from camdyn.runtime.simulate import Simulator
@@ -86,17 +86,13 @@ def phase_factor(law: str, theta, Fa: float) -> float:
 
 
 class Upper:
-    """The envelope through the maxima of a sampled graph, evaluated where it is bracketed.
-
-    runtime/envelope.py's Envelope holds the outermost maxima flat and, with no interior
-    maximum at all, answers the samples' largest value everywhere: right for a whole graph,
-    but a window of a graph without dips (U0 at large Fa rises monotonically, fig. 4.11a)
-    would then be read at its upper end.  Here: the maxima (found and refined by
-    runtime/envelope.py's :func:`maxima`), log-linear between them and never below the
-    graph; beyond the outermost maximum the graph itself, which has no dip there, or where
-    it does dip again (the top of the tau range at small Fa) the outermost maximum held flat
-    and the answer flagged (:meth:`unbracketed`).  Extrapolating the maxima instead (a power
-    law through the outermost two) fails where the dips fade out: at Fa = 0.8 the last two
+    """The envelope through the maxima of a sampled graph, as runtime/envelope.py's Envelope
+    draws it (log-linear between the maxima, held flat beyond the outermost one only past a
+    dip, never below the graph), with two refinements the design solver needs: the answer
+    is flagged where it rests on a held maximum (the top of the tau range at small Fa,
+    :meth:`unbracketed`), and the graph between samples is a spline, not a line.
+    Extrapolating the maxima instead (a power law through the outermost two) fails where
+    the dips fade out: at Fa = 0.8 the last two
     maxima below tau = 0.15 rise as tau^11.  Between samples the graph is a cubic spline in 1/tau, on whose uniform grid the
     samples lie: near the top of a lobe, where the graph rises above the line through the
     maxima, straight lines would cut the lobe short by ~(pi h)^2/8 (0.9 % at 12 samples per
@@ -116,22 +112,9 @@ class Upper:
         return np.maximum(self._spline(1.0 / np.asarray(tau, float)), 0.0)
 
     def through(self, x):
-        """The curve through the maxima at x: log-linear in tau between them; beyond the
-        outermost maximum its value held flat, but only past a dip of the graph (a local
-        minimum of the samples between that maximum and x), else None (the graph is its own
-        envelope there); None everywhere without maxima."""
-        out = np.full(x.shape, np.nan)
-        if self.mt.size == 0:
-            return out
-        inside = (x >= self.mt[0]) & (x <= self.mt[-1])
-        out[inside] = np.exp(np.interp(x[inside], self.mt, np.log(self.mv)))
-        dips = self.t[1:-1][(self.v[1:-1] < self.v[:-2]) & (self.v[1:-1] <= self.v[2:])]
-        for k in np.flatnonzero(~inside):
-            if x[k] > self.mt[-1] and np.any((dips > self.mt[-1]) & (dips <= x[k])):
-                out[k] = self.mv[-1]
-            elif x[k] < self.mt[0] and np.any((dips >= x[k]) & (dips < self.mt[0])):
-                out[k] = self.mv[0]
-        return out
+        """runtime/envelope.py's curve through the maxima at x (NaN where the graph is its own
+        envelope)."""
+        return through_maxima(x, self.mt, self.mv, dips(self.t, self.v))
 
     def unbracketed(self, tau) -> bool:
         """Is tau beyond the last maximum with a dip in between, the held value above the
@@ -140,8 +123,8 @@ class Upper:
         to zero at tau = 1/2 and then rises without a maximum)."""
         if self.mt.size == 0:
             return False
-        dips = self.t[1:-1][(self.v[1:-1] < self.v[:-2]) & (self.v[1:-1] <= self.v[2:])]
-        return bool(tau > self.mt[-1] and np.any((dips > self.mt[-1]) & (dips <= tau))
+        d = dips(self.t, self.v)
+        return bool(tau > self.mt[-1] and np.any((d > self.mt[-1]) & (d <= tau))
                     and self.mv[-1] > self.graph(tau))
 
     def __call__(self, tau):
