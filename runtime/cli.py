@@ -1302,6 +1302,9 @@ def _add_design(sub, law_names) -> None:
       help="worm gear lead angle and friction angle (rad): eta_g by (6.72)")
     a("--no-check", action="store_true", help="skip the check run")
     a("--json", action="store_true", help="one JSON object on stdout")
+    a("--out", default=None, help="folder for design.json and design.png (the envelope u0 over "
+                                   "tau at the design's Fa, the largest Fa and Fa = 0, with the "
+                                   "requirement)")
     a("--quiet", action="store_true", help="no progress lines")
     ds.set_defaults(func=_cmd_design)
 

@@ -194,13 +194,16 @@ def test_least_model():
     assert ds.least_model(1.5, 1.0, 0.5)[0] == "camshaft1"
 
 
-def test_cli_json(capsys):
+def test_cli_json(capsys, tmp_path):
     """`camdyn design --json`: the keys of the answer."""
     rc = main(["design", "--stroke", "0.02", "--tau", "0.3", "--fa", "0.4", "--rise-time", "0.1",
                "--accuracy", "1e-4", "--common-shaft", "--motor-rpm", "3000", "--slip-limit",
-               "0.02", "--mass", "2", "--json"])
+               "0.02", "--mass", "2", "--json", "--out", str(tmp_path)])
     assert rc == 0
     d = json.loads(capsys.readouterr().out)
+    # --out: the same answer as JSON, and the chart
+    assert json.loads((tmp_path / "design.json").read_text())["machine"] == d["machine"]
+    assert (tmp_path / "design.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert {"law", "machine", "envelope", "requirement", "largest_Fa", "largest_tau",
             "largest_T_e", "motor", "rules", "check_run"} <= set(d)
     assert {"tau", "Fa", "T_e", "t_m", "dip"} <= set(d["machine"])

@@ -8,6 +8,7 @@ runtime's own commands never load.
 from __future__ import annotations
 
 import json
+from pathlib import Path
 import sys
 
 from camdyn.runtime.cli import fail, fmt, name_argument
@@ -267,7 +268,10 @@ def design(args) -> int:
             tan_alpha_me=args.tan_alpha_me, accuracy=args.accuracy,
             residual_acceleration=args.residual_acceleration, law=args.law, theta=args.theta,
             common_shaft=args.common_shaft, motor_args=motor_args, check=not args.no_check,
-            progress=None if args.json or args.quiet else say)
+            progress=None if args.json or args.quiet else say,
+            chart_path=None if args.out is None else Path(args.out) / "design.png")
+        if args.out is not None:
+            (Path(args.out) / "design.json").write_text(json.dumps(result, indent=1, default=float))
     except (CamdynInputError, ValueError) as exc:
         return fail(prog, name_argument(str(exc)))
     except SimulationError as exc:

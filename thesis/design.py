@@ -39,6 +39,7 @@ The envelope itself: :class:`Upper`.
 from __future__ import annotations
 
 import math
+from pathlib import Path
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -615,7 +616,7 @@ def design(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None,
            tau=None, Fa=None, c_tan=None, pitch_radius=None, ratio=None, tan_alpha_me=None,
            accuracy=None, residual_acceleration=None, law="cycloidal", theta=None,
            common_shaft=False, motor_args: dict | None = None, check: bool = True,
-           per_dip: int = PER_DIP, progress=None) -> dict:
+           per_dip: int = PER_DIP, progress=None, chart_path=None) -> dict:
     """The thesis's design method (module doc) as one dict (the JSON of `camdyn design`)."""
     say = progress or (lambda msg: None)
     M = machine(stroke=stroke, rise_time=rise_time, cam_angle_rad=cam_angle_rad, speed=speed,
@@ -719,8 +720,61 @@ def design(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None,
                 if M.mass is not None:
                     run["inertia_force_max"] = M.mass * abs(run["xdd_min_rise"])
         out["check_run"] = run
+    if chart_path is not None:
+        say("chart")
+        out["chart"] = chart(out, graphs, M, chart_path)
     out["graph_runs"] = graphs.runs
     return out
+
+
+def chart(d: dict, graphs: Graphs, M: Machine, path) -> str:
+    """The design on fig. 4.11a's axes: the envelope u0 = U0 h_m' over tau at the design's Fa
+    (with its graph), at the largest Fa that meets the requirement and at Fa = 0, the required
+    accuracy, the design point and the smallest t_m (largest tau)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    lf, lt = d.get("largest_Fa") or {}, d.get("largest_tau") or {}
+    tau_hi = max(M.tau, lt.get("tau_max") or 0.0) * 1.5
+    x_lo, x_hi = 1.0 / tau_hi, 1.0 / (0.8 * M.tau)
+    fig, ax = plt.subplots(figsize=(7.5, 4.6))
+    curves = [(M.Fa, f"Fa = {M.Fa:.3g} (design)", "tab:blue")]
+    if lf.get("Fa_max") is not None:
+        curves.append((lf["Fa_max"], f"Fa = {lf['Fa_max']:.3g} (largest meeting the requirement)",
+                       "tab:orange"))
+    if M.Fa > 0:
+        curves.append((0.0, "Fa = 0 (rigid camshaft)", "0.4"))
+    for Fa, label, color in curves:
+        # two dip spacings more on either side, so that the drawn part lies between maxima
+        w = 2.0 / phase_factor(graphs.law, graphs.theta, Fa)
+        t, u0, _ = graphs.samples(max(x_lo - w, 1.0), x_hi + w, Fa)
+        env = Upper(t, u0)
+        shown = (t >= 1.0 / x_hi) & (t <= 1.0 / x_lo)
+        ax.plot(t[shown], env(t[shown]) * M.stroke, color=color, lw=1.8, label=label)
+        if Fa == M.Fa:
+            ax.plot(t[shown], u0[shown] * M.stroke, color=color, lw=0.6, alpha=0.6)
+    req = (d.get("requirement") or {}).get("accuracy")
+    if req is not None:
+        ax.axhline(req, color="k", ls="--", lw=1, label=f"required u0 <= {req:.3g} m")
+    ax.plot([M.tau], [d["envelope"]["u0"]], "o", color="tab:blue", label="design point")
+    if lt.get("tau_max") is not None:
+        ax.axvline(lt["tau_max"], color="tab:green", ls=":", lw=1.2,
+                   label=f"largest tau {lt['tau_max']:.4g}"
+                         + (f" (t_m >= {lt['t_m_min']:.4g} s)" if lt.get("t_m_min") else ""))
+    ax.set_yscale("log")
+    ax.set_xlabel("tau = T_e / t_m")
+    ax.set_ylabel("u0 = U0 h_m'  [m]  (envelope through the maxima)")
+    ax.set_title(f"camdyn design: {d['law']} law, stroke {M.stroke:g} m", fontsize=10)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7.5, loc="lower right")
+    fig.tight_layout()
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return str(path)
 
 
 # -- text ----------------------------------------------------------------------------------------
