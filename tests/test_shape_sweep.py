@@ -51,3 +51,30 @@ def test_fig_8_8_optimum_and_improvements(spring):
     assert 0.08 <= u["theta"] <= 0.14 and 0.08 <= w["theta"] <= 0.14
     assert rows[-1]["U0dd"] / u["U0dd"] == pytest.approx(2.9, rel=0.2)
     assert rows[-1]["speed_variation_max"] / w["speed_variation_max"] == pytest.approx(2.7, rel=0.2)
+
+
+def _camdyn(*args):
+    import subprocess
+    import sys
+
+    return subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", *args],
+                          capture_output=True, text=True)
+
+
+def test_cli_sweep_json_files_and_bad_input(tmp_path, spring):
+    """`camdyn laws --sweep`: rows equal the library's sweep (1e-12), the CSV and chart are
+    written; bad input is one line on stderr, status 2."""
+    import json
+
+    p = _camdyn("laws", "--sweep", "spring_loaded", "--law", "sine-constant-cosine",
+                "--values", "0.2,0.5", "--no-error-estimate", "--json", "--out", str(tmp_path))
+    assert p.returncode == 0, p.stderr
+    out = json.loads(p.stdout)
+    assert out["parameter"] == "c" and len(out["files"]) == 2
+    ref = shape_sweep.sweep(spring, "sine-constant-cosine", [0.2, 0.5], errors=False)
+    for got, want in zip(out["rows"], ref):
+        assert got["U0dd"] == pytest.approx(want["U0dd"], rel=1e-12)
+    for bad in (["--law", "cycloidal"], ["--values", "0.1,x"], ["--values", "0.7"],
+                ["--n", "1"]):
+        p = _camdyn("laws", "--sweep", "spring_loaded", *bad)
+        assert p.returncode == 2 and len(p.stderr.strip().splitlines()) == 1, (bad, p.stderr)

@@ -122,3 +122,48 @@ def test_cam_profile_turn_is_the_profile_motion():
     for k in range(4):
         np.testing.assert_allclose(0.02 * H[:, k] / beta**k, S[k], rtol=1e-12,
                                    atol=1e-12 * np.abs(S[k]).max())
+
+
+def test_turn_through_events_in_a_dynacam_model():
+    """A DYNACAM model's input H(B) with B = (beta - beta_0)/beta_m follows the cam angle, a
+    state, so segments change by events (seg += 1).  Over 2.5 turns every breakpoint crossed
+    is one event, and the input the model used, H = x/h_m - U (outputs (6.17), (3.4)), is the
+    turn's H at the B reached, to 1e-12; up to the return the run equals the plain rise's."""
+    m = "dynacam_radial_ideal_rigidgear_bilateral"
+    turn = laws.compose("cycloidal", "modified-sine", (25, 95, 40, 200), ret_theta=0.15)
+    params = load(m).manifest["parameters"]
+    h_m = next(p["default"] for p in params if p["name"] == "h_m")
+    w = next(p["default"] for p in params if p["name"] == "omega_s")
+    t_end = 2.5 * 2 * math.pi / w
+    r = simulate(m, {}, t_end, "dp54", rtol=1e-9, law=turn)
+    B = r["B"]
+    assert B.max() > 2.4 * turn.period
+    np.testing.assert_allclose(r["x"] / h_m - r["U"], turn.evaluate(B)[:, 0], rtol=0, atol=1e-12)
+    assert r.stats["n_events"] == len(turn.breakpoints_between(0.0, B.max()))
+    plain = simulate(m, {}, t_end, "dp54", rtol=1e-9, law="cycloidal")
+    upto = B < 1 + turn.up
+    n = int(upto.sum())
+    np.testing.assert_allclose(r.y[:n], plain.y[:n], rtol=0, atol=1e-12)
+
+
+def test_cli_integrate_turn(tmp_path):
+    """`camdyn integrate one_dof --turn`: the final state equals the library's run with the
+    same Turn (1e-12); bad angles and --return-law without --turn are one line, status 2."""
+    import json
+    import subprocess
+    import sys
+
+    def camdyn(*args):
+        return subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", *args],
+                              capture_output=True, text=True)
+
+    p = camdyn("integrate", "one_dof", "--t-end", "6", "--law", "3-4-5", "--turn",
+               "90,45,90,135", "--return-law", "cycloidal", "--no-error-estimate", "--json")
+    assert p.returncode == 0, p.stderr
+    got = json.loads(p.stdout)["state"]
+    turn = laws.compose("3-4-5", "cycloidal", (90, 45, 90, 135))
+    r = simulate("one_dof", {}, 6.0, "dp54", rtol=1e-8, law=turn)
+    assert got["X"] == pytest.approx(float(r.y[-1, 0]), rel=1e-12)
+    for bad in (["--turn", "90,90,90"], ["--turn", "90,x,90,180"], ["--return-law", "cycloidal"]):
+        p = camdyn("integrate", "one_dof", "--t-end", "2", *bad)
+        assert p.returncode == 2 and len(p.stderr.strip().splitlines()) == 1, (bad, p.stderr)
