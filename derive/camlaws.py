@@ -12,6 +12,15 @@ peak accelerations the thesis prints, 2 pi for the cycloid and
 pi^2/(2 - 8 theta + 2 pi theta) for the modified sine (A.2.17), are derived,
 not typed in, and the tests compare them with the printed forms.
 
+Two families are built rather than typed: :func:`polynomial_law` solves for the
+polynomial of least degree that meets given boundary conditions (3-4-5 and 4-5-6-7 are
+its members with the derivatives up to H'' or H''' zero at both ends,
+:func:`polynomial_2n1`), and :func:`scca_pieces` gives the sine-constant-cosine
+acceleration family (Norton's b, c, d), whose one-parameter member with b = 1/4 is the law
+``sine-constant-cosine``.  A full cam turn (rise, dwell, return, dwell) is not a law of
+this table: the generated library composes it at run time from two of them (law code
+:data:`TURN_CODE`).
+
 Segments are numbered for the generated code: 0 is the dwell before the rise
 (T < 0), 1..K the pieces of the rise and K + 1 the dwell after it (T >= 1).
 Segments are closed on the left, so a breakpoint belongs to the segment that

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ec03457927620cc2a4363233f84a4e1378e0160082cd38a205e4a3fb6f3755f2
-# Text hash: sha256:d485757fc191fd0d48989a8502b8b4fbfff393581ad252f17c3f77f4d871331b
+# Derivation key: sha256:88c4a8a3e7d2dd16b01dc91d60077604f3930b54b5001aeaaed7d6cbfef0557b
+# Text hash: sha256:80f8869fd63095136b96579b964df470efdb5416cfdaabd47925247036be7843
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),

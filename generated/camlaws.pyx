@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ec03457927620cc2a4363233f84a4e1378e0160082cd38a205e4a3fb6f3755f2
-# Text hash: sha256:3c728641e8e9698ee274510082ee15850d98e3f72bf9f9a3fede1f21ddac6c11
+# Derivation key: sha256:88c4a8a3e7d2dd16b01dc91d60077604f3930b54b5001aeaaed7d6cbfef0557b
+# Text hash: sha256:eb63a1dfc101f6a0ee69a7318f285ac78aef03f830101dad190503af6e486e84
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.
