@@ -78,3 +78,13 @@ def test_cli_sweep_json_files_and_bad_input(tmp_path, spring):
                 ["--n", "1"]):
         p = _camdyn("laws", "--sweep", "spring_loaded", *bad)
         assert p.returncode == 2 and len(p.stderr.strip().splitlines()) == 1, (bad, p.stderr)
+
+
+def test_scca_sweep_meets_the_modified_sine_at_c_zero(spring):
+    """The SCCA law's c -> 0 end is the modified sine with theta = 1/8 (both: sine quarter
+    waves over the first and last eighth, a cosine half wave between): the sweep at c = 1e-7
+    equals the modified-sine run at 1/8 to 1e-5 (the law moves by O(c))."""
+    scca = shape_sweep.sweep(spring, "sine-constant-cosine", [1e-7], errors=False)[0]
+    ms = shape_sweep.sweep(spring, "modified-sine", [0.125], errors=False)[0]
+    for k in shape_sweep.FIELDS:
+        assert scca[k] == pytest.approx(ms[k], rel=1e-5), k

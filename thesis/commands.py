@@ -153,9 +153,10 @@ def _sweep(args) -> int:
     _print_table(table)
     b = shape_sweep.best(rows, "U0dd")
     v = shape_sweep.best(rows, "speed_variation_max")
+    note = (" (thesis fig. 8.8, the spring-loaded mechanism: both near theta = 0.1)"
+            if law == "modified-sine" else "")
     print(f"\n{sc.title}, {law}: least U0'' at {name} = {b[name]:.4g}, least speed variation "
-          f"at {name} = {v[name]:.4g} (thesis fig. 8.8: both near theta = 0.1 for the "
-          "spring-loaded mechanism)")
+          f"at {name} = {v[name]:.4g}{note}")
     for f in files:
         print(f"wrote {f}")
     return 0
