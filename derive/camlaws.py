@@ -12,6 +12,15 @@ peak accelerations the thesis prints, 2 pi for the cycloid and
 pi^2/(2 - 8 theta + 2 pi theta) for the modified sine (A.2.17), are derived,
 not typed in, and the tests compare them with the printed forms.
 
+Two families are built rather than typed: :func:`polynomial_law` solves for the
+polynomial of least degree that meets given boundary conditions (3-4-5 and 4-5-6-7 are
+its members with the derivatives up to H'' or H''' zero at both ends,
+:func:`polynomial_2n1`), and :func:`scca_pieces` gives the sine-constant-cosine
+acceleration family (Norton's b, c, d), whose one-parameter member with b = 1/4 is the law
+``sine-constant-cosine``.  A full cam turn (rise, dwell, return, dwell) is not a law of
+this table: the generated library composes it at run time from two of them (law code
+:data:`TURN_CODE`).
+
 Segments are numbered for the generated code: 0 is the dwell before the rise
 (T < 0), 1..K the pieces of the rise and K + 1 the dwell after it (T >= 1).
 Segments are closed on the left, so a breakpoint belongs to the segment that
@@ -30,6 +39,10 @@ T = sp.Symbol("T", real=True)
 
 theta = sp.Symbol("theta", positive=True)
 """Peak position of the modified sine (A.2.17), fig. A.2.3."""
+
+c_scca = sp.Symbol("c", positive=True)
+"""Constant-acceleration fraction c of the sine-constant-cosine law (Norton's b, c, d with
+b = 1/4, d = 3/4 - c): see :func:`scca_law`."""
 
 _A = sp.Symbol("A", real=True)  # unknown acceleration amplitude while building
 
@@ -72,6 +85,9 @@ class CamLaw:
     parameter: LawParameter | None = None
     displacement: tuple = ()
     """H(T) on each piece, for laws whose acceleration is impulsive (uniform motion)."""
+    simplify_pieces: bool = True
+    """False: tidy H by collecting on its sines and cosines and factoring their coefficients
+    instead of sympy's simplify(), which takes ~30 s on the SCCA's cosine piece."""
 
     # -- derived symbolically -------------------------------------------------
     @cached_property
@@ -92,7 +108,8 @@ class CamLaw:
         if len(amp) != 1:
             raise ValueError(f"{self.key}: H(1) = 1 does not fix the amplitude")
         amp = sp.simplify(amp[0])
-        return tuple(sp.simplify(h.subs(_A, amp)) for h in pieces), amp
+        tidy = sp.simplify if self.simplify_pieces else _collect_trig
+        return tuple(tidy(h.subs(_A, amp)) for h in pieces), amp
 
     @property
     def amplitude(self) -> sp.Expr | None:
@@ -154,6 +171,13 @@ class CamLaw:
         return lambda t: np.broadcast_to(f(np.asarray(t, dtype=float)), np.shape(t)) * 1.0
 
 
+def _collect_trig(h: sp.Expr) -> sp.Expr:
+    """h as a sum of its sines and cosines times factored coefficients (and a factored rest)."""
+    parts = sp.collect(sp.expand(h), sorted(h.atoms(sp.sin, sp.cos), key=sp.default_sort_key),
+                       evaluate=False)
+    return sp.Add(*(k * sp.factor(v) for k, v in parts.items()))
+
+
 def _law(key, code, title, reference, bounds, acceleration, parameter=None, displacement=()):
     return CamLaw(key, code, title, reference, tuple(sp.sympify(b) for b in bounds),
                   tuple(sp.sympify(a) for a in acceleration), parameter,
@@ -162,6 +186,102 @@ def _law(key, code, title, reference, bounds, acceleration, parameter=None, disp
 
 _pi = sp.pi
 _half = sp.Rational(1, 2)
+
+
+# -- builders of law families -----------------------------------------------------------
+
+
+def polynomial_rise(at0: dict | None = None, at1: dict | None = None) -> sp.Expr:
+    """The polynomial H(T) of least degree with H(0) = 0, H(1) = 1 and the given derivative
+    values, ``{order: value}`` at T = 0 and at T = 1 (polynomial by boundary conditions).
+
+    Every condition is one linear equation in the coefficients, so N conditions fix a
+    polynomial of degree N - 1; e.g. H', H'' zero at both ends give 10 T^3 - 15 T^4 + 6 T^5."""
+    at0, at1 = dict(at0 or {}), dict(at1 or {})
+    for side in (at0, at1):
+        if any(int(k) != k or k < 1 for k in side):
+            raise ValueError(f"boundary conditions are on derivatives of order >= 1, got {sorted(side)}")
+    conds = [(0, 0, 0), (1, 0, 1)] + [(0, k, v) for k, v in at0.items()] \
+        + [(1, k, v) for k, v in at1.items()]
+    coeffs = sp.symbols(f"a0:{len(conds)}")
+    H = sum(a * T**i for i, a in enumerate(coeffs))
+    eqs = [sp.Eq(sp.diff(H, T, k).subs(T, t), v) for t, k, v in conds]
+    sol = sp.solve(eqs, coeffs, dict=True)
+    if len(sol) != 1 or len(sol[0]) != len(coeffs):
+        raise ValueError("the boundary conditions do not fix one polynomial")
+    return sp.expand(H.subs(sol[0]))
+
+
+def polynomial_law(key: str, code: int, at0: dict | None = None, at1: dict | None = None,
+                   title: str | None = None) -> CamLaw:
+    """A law whose rise is :func:`polynomial_rise`, declared by its acceleration H''(T).
+
+    The library's laws start from rest (the dwell before the rise), so H'(0) must be 0;
+    it is then derived again from H'' like every other law, which checks the solve."""
+    at0 = dict(at0 or {})
+    if at0.get(1, 0) != 0:
+        raise ValueError("a rise starts from the dwell: H'(0) must be 0")
+    at0.setdefault(1, 0)
+    H = polynomial_rise(at0, at1)
+    if sp.diff(H, T, 2) == 0:
+        raise ValueError("the boundary conditions give no acceleration (H linear)")
+    terms = " ".join(f"{'+' if c > 0 else '-'} {abs(c)} T^{m[0]}"
+                     for (m, c) in sorted(sp.Poly(H, T).terms(), key=lambda mc: mc[0]))
+    # written as A times H'' over its peak, so that the amplitude fixed by H(1) = 1 is
+    # H''max like that of the other laws (10/sqrt 3 for 3-4-5)
+    acc = sp.diff(H, T, 2)
+    stat = sp.solveset(sp.diff(acc, T), T, sp.Interval(0, 1))
+    if isinstance(stat, sp.FiniteSet):
+        acc = acc / max((sp.simplify(acc.subs(T, x)) for x in stat | {0, 1}), key=float)
+    return _law(key, code, title or f"{key} polynomial", f"H = {terms.lstrip('+ ')}", (0, 1),
+                [_A * acc])
+
+
+def polynomial_2n1(n: int) -> sp.Expr:
+    """The (2n+1)-degree member: H', ..., H^(n) zero at both ends (3-4-5 for n = 2,
+    4-5-6-7 for n = 3).  H' is proportional to T^n (1 - T)^n."""
+    zero = {k: 0 for k in range(1, n + 1)}
+    return polynomial_rise(zero, zero)
+
+
+def scca_pieces(b, c, d):
+    """Breakpoints and acceleration pieces of the sine-constant-cosine acceleration (SCCA)
+    family, Norton, *Cam Design and Manufacturing Handbook*, sec. 3 (b + c + d = 1):
+
+    =================  ==================================  =========================
+    0 .. b/2           A sin(pi T/b)                       sine ramp up
+    b/2 .. (1-d)/2     A                                   constant
+    (1-d)/2 .. (1+d)/2 A cos(pi (T - (1-d)/2)/d)           cosine from +A to -A
+    (1+d)/2 .. 1-b/2   -A                                  constant
+    1-b/2 .. 1         -A cos(pi (T - 1 + b/2)/b)          cosine ramp back to 0
+    =================  ==================================  =========================
+
+    Pieces of zero length (b, c or d = 0) are left out.  Members: b = d = 1/2 the cycloid,
+    d = 1 simple harmonic, c = 1 constant acceleration, (1/4, 1/2, 1/4) the modified
+    trapezoid, (1/4, 0, 3/4) the modified sine (thesis (A.2.17) with theta = 1/8)."""
+    b, c, d = (sp.sympify(x) for x in (b, c, d))
+    if sp.simplify(b + c + d - 1) != 0:
+        raise ValueError(f"SCCA needs b + c + d = 1, got {b + c + d}")
+    ends = [0, b / 2, (1 - d) / 2, (1 + d) / 2, 1 - b / 2, 1]
+    accs = [_A * sp.sin(_pi * T / b) if b != 0 else None,
+            _A,
+            _A * sp.cos(_pi * (T - (1 - d) / 2) / d) if d != 0 else None,
+            -_A,
+            -_A * sp.cos(_pi * (T - 1 + b / 2) / b) if b != 0 else None]
+    width = [b / 2, c / 2, d, c / 2, b / 2]
+    bounds, pieces = [sp.Integer(0)], []
+    for k in range(5):
+        if width[k] != 0:
+            bounds.append(sp.sympify(ends[k + 1]))
+            pieces.append(accs[k])
+    return tuple(bounds), tuple(pieces)
+
+
+def scca_law(key: str, code: int, b, c, d, title: str | None = None) -> CamLaw:
+    """One member of the SCCA family (:func:`scca_pieces`) as a law."""
+    bounds, acc = scca_pieces(b, c, d)
+    return _law(key, code, title or f"SCCA b={b}, c={c}, d={d}",
+                "sine-constant-cosine acceleration (Norton)", bounds, acc)
 
 LAWS: dict[str, CamLaw] = {}
 for _l in (
@@ -174,14 +294,12 @@ for _l in (
           -_A * sp.sin(_pi * (2 * theta - 1 + T) / (2 * theta))],  # BC
          LawParameter(theta, 0.1, 0.0, 0.5,
                       "fraction of the rise to the acceleration peak (thesis fig. A.2.3: 0.1)")),
-    _law("3-4-5", 2, "3-4-5 polynomial", "H = 10 T^3 - 15 T^4 + 6 T^5", (0, 1),
-         [_A * (T - 3 * T**2 + 2 * T**3)]),
+    polynomial_law("3-4-5", 2, {2: 0}, {1: 0, 2: 0}, "3-4-5 polynomial"),
     _law("simple-harmonic", 3, "Simple harmonic", "H = (1 - cos pi T)/2", (0, 1),
          [_A * sp.cos(_pi * T)]),
     _law("parabolic", 4, "Parabolic (constant acceleration)", "H'' = +-4", (0, _half, 1),
          [_A, -_A]),
-    _law("4-5-6-7", 5, "4-5-6-7 polynomial", "H = 35 T^4 - 84 T^5 + 70 T^6 - 20 T^7", (0, 1),
-         [_A * (T**2 - 4 * T**3 + 5 * T**4 - 2 * T**5)]),
+    polynomial_law("4-5-6-7", 5, {2: 0, 3: 0}, {1: 0, 2: 0, 3: 0}, "4-5-6-7 polynomial"),
     _law("modified-trapezoid", 6, "Modified trapezoid", "jerk-limited, eighths of the rise",
          (0, sp.Rational(1, 8), sp.Rational(3, 8), sp.Rational(5, 8), sp.Rational(7, 8), 1),
          [_A * sp.sin(4 * _pi * T), _A, _A * sp.cos(4 * _pi * (T - sp.Rational(3, 8))), -_A,
@@ -189,10 +307,27 @@ for _l in (
     # uniform motion: H' jumps from 0 to 1 at T = 0, the ramp input of the impact model (3.8)
     _law("uniform", 7, "Uniform motion (constant velocity)", "H = T; ramp input (3.8)", (0, 1),
          [], displacement=[T]),
+    # SCCA with Norton's b = 1/4 fixed: c -> 0 is the modified sine (theta = 1/8), c = 1/2 the
+    # modified trapezoid, c -> 3/4 the jerk-unbounded trapezoid; c trades peak acceleration
+    # (lower with more constant part) against peak velocity
+    CamLaw("sine-constant-cosine", 8, "Sine-constant-cosine acceleration (SCCA, b = 1/4)",
+           "Norton SCCA, b = 1/4, d = 3/4 - c", *scca_pieces(sp.Rational(1, 4), c_scca,
+                                                           sp.Rational(3, 4) - c_scca),
+           LawParameter(c_scca, 0.25, 0.0, 0.75,
+                        "fraction of the rise at constant acceleration, b = 1/4, d = 3/4 - c"),
+           simplify_pieces=False),
 ):
     LAWS[_l.key] = _l
 
 LAW_BY_CODE = {law.code: law for law in LAWS.values()}
+
+TURN_CODE = 1000
+"""Law code of the dwell-rise-dwell-return composition over a full cam turn, which the
+generated library evaluates from a rise law and a return law of this table (its par is the
+index of the turn's description, written at run time: camdyn.runtime.laws.compose)."""
+TURN_SLOTS = 256
+"""Different turns one process can hold at once."""
+assert TURN_CODE not in LAW_BY_CODE
 
 
 def get(key: str) -> CamLaw:

@@ -545,9 +545,10 @@ def render_model(model: Model, source: str) -> str:
 
 def camlaws_context() -> dict:
     laws = []
-    par = camlaws.theta
     for law in sorted(camlaws.LAWS.values(), key=lambda l: l.code):
-        names = {par: "par", camlaws.T: "T"}
+        names = {camlaws.T: "T"}
+        if law.parameter is not None:
+            names[law.parameter.symbol] = "par"
         printer = CythonPrinter(names)
         segs = []
         for k in range(law.n_segments):
@@ -568,7 +569,8 @@ def camlaws_context() -> dict:
             "amplitude": str(law.amplitude),
         })
     info = [{k: v for k, v in law.items() if k not in ("segments",)} for law in laws]
-    return {"laws": laws, "laws_json": json.dumps(info, indent=1, sort_keys=True)}
+    turn = {"code": camlaws.TURN_CODE, "slots": camlaws.TURN_SLOTS, "width": 13}
+    return {"laws": laws, "laws_json": json.dumps(info, indent=1, sort_keys=True), "turn": turn}
 
 
 def render_camlaws() -> dict[str, str]:

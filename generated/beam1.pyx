@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:748b16e88dee650fb0eef0f419cd3b9399875b6719b1c190c2f52d342ff9bcc5
-# Text hash: sha256:14472ee1eb3bd71d8269503989f35e9f65ea18e331cc544e4f363670aa32f1c1
+# Derivation key: sha256:a46d691428dc4bab27f4e4065c8ec5c0af347d8a38619905a1665f591236309a
+# Text hash: sha256:6ec5b42bb51dbccf6e07584d3d6b6c3a9844fd16e49bcbff5f6e665d0336a4e5
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:bfb311a2dc642912ccf96df03b945a685fb049d1c1bb63babea364e48a9d993c

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a26823454e63f39a10848f73f83f030726e5b17750d8222d596ecf8684ea5e8a
-# Text hash: sha256:9f6a2da1d821e0f22096c10bdad3db5629ea35aa7e00b1a1d32d38a0d266f663
+# Derivation key: sha256:32fea2183baa5bd972cb5015a52b61e889baebc86b54c75a1d84830620dd06d2
+# Text hash: sha256:619059e4e248db5aabd81745dd4af7d46fa56ced88728986ae727c9e447d89b9
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
 # Source hash: sha256:921486bdc725aa760722bfb26290d6704b3ad8c2d314f01890c68f465878e573

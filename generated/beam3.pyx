@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4a794033e1b4194e0e122f023a9383ea2af7de24eb9361f45b1936c419d72b90
-# Text hash: sha256:27850cd9f3fe9db3a68c2a1851d7310baca43b495b80f63655b592c6b7d7dd71
+# Derivation key: sha256:d6ff7b7ecae29be5ff1693c3dda2efde07ace20e39a11ecc70b4465b310c93e2
+# Text hash: sha256:d85cdd63a6f5a7fd24971c24cfe33811dd556887bc0531b1a18762a2077cdc14
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:1d8106cbb4c080dc1d4baa1e57662f2dae7c6b7184e85535a26798dca84a5c31

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c6609875211a7904e92713e71c304d5cd8821c13407333992a2535a60e60a873
-# Text hash: sha256:030f1c8e21281f99de52863c4d6de212f371625c4f29f9d320526882a37886ac
+# Derivation key: sha256:3469c3a24e117b74b0531537991be9e5835cd043c70e196e8a5144c965c03ea7
+# Text hash: sha256:6d59c6a1c10a08dc1ded813805b00773621e5eed32a7caeda1925e9e03839c10
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:005fc6dd88930eeb16af7091c0a74ba4fe7f9c436ef794c0f2976a8de40a1269

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:9515242cd59f0a80599b01dd95e6bda47f43073c293dba401e8f2e675ca6c17c
-# Text hash: sha256:027df48e22735aad3ef7b7e30aaa198eb255a9169e997b83888252ebffedf3ac
+# Derivation key: sha256:7a24e421924c6bdb2e272f1501371311e23570e305ad6976b341a79715dc3dee
+# Text hash: sha256:316c51809ee7d5c8ffc130f594b3b99a52889db1042e06564562fa59ddc00850
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:a91861c5ef9ef871d0972bdd6fadc95fb8bd8aa9c22b166a68b2e22724f00536

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:24b57b456c262bc916feb18dcd90c481889ef0f8192bd96f4b97a227d7c3ff17
-# Text hash: sha256:9eef9222047b50e8d973c331005f00631cb2cd775417c25aed591b074b120139
+# Derivation key: sha256:c32148256f7a6b66393d407e362de3dfc3845ac27032b4249b0fbc357b16ce7b
+# Text hash: sha256:e00b5e55a3171fac1f415d37d75f363987f656c3a84f702cae87cc901733f262
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:9d4ce2ed01f1ecad9d62194db1151f10c3655da69963e1cb0de52220801b3e5b

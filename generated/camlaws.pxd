@@ -2,29 +2,54 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b8ed2dd11607c920499d023582131c96c7813601e75c16e70e7dd4ef1601a137
-# Text hash: sha256:bcf9a3004f945e3f0a243ea2dc6b041160691d2e0688c109d87e73c211974b66
+# Derivation key: sha256:88c4a8a3e7d2dd16b01dc91d60077604f3930b54b5001aeaaed7d6cbfef0557b
+# Text hash: sha256:80f8869fd63095136b96579b964df470efdb5416cfdaabd47925247036be7843
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),
 # segments 1..K the pieces of the rise, K + 1 the dwell after it (T >= 1).
 # Segments are closed on the left.  `par` is the law's shape parameter
-# (theta of the modified sine); laws without one ignore it.
+# (theta of the modified sine, c of the sine-constant-cosine law); laws without one ignore it.
 #
 #   0  cycloidal            Cycloidal, (A.2.8)-(A.2.11); H''max = 2*pi
 #   1  modified-sine        Modified sine, (A.2.17)-(A.2.20); H''max = pi**2/(2*(-4*theta + pi*theta + 1))
-#   2  3-4-5                3-4-5 polynomial, H = 10 T^3 - 15 T^4 + 6 T^5; H''max = 60
+#   2  3-4-5                3-4-5 polynomial, H = 10 T^3 - 15 T^4 + 6 T^5; H''max = 10*sqrt(3)/3
 #   3  simple-harmonic      Simple harmonic, H = (1 - cos pi T)/2; H''max = pi**2/2
 #   4  parabolic            Parabolic (constant acceleration), H'' = +-4; H''max = 4
-#   5  4-5-6-7              4-5-6-7 polynomial, H = 35 T^4 - 84 T^5 + 70 T^6 - 20 T^7; H''max = 420
+#   5  4-5-6-7              4-5-6-7 polynomial, H = 35 T^4 - 84 T^5 + 70 T^6 - 20 T^7; H''max = 84*sqrt(5)/25
 #   6  modified-trapezoid   Modified trapezoid, jerk-limited, eighths of the rise; H''max = 8*pi/(2 + pi)
 #   7  uniform              Uniform motion (constant velocity), H = T; ramp input (3.8); H''max = impulsive
+#   8  sine-constant-cosine Sine-constant-cosine acceleration (SCCA, b = 1/4), Norton SCCA, b = 1/4, d = 3/4 - c; H''max = 8*pi**2/(-2*pi**2*c**2 + 16*c**2 - 24*c + 3*pi**2*c + 2*pi + 8)
 
-from libc.math cimport INFINITY, M_PI, cos, sin
+#
+#   1000 (turn)               dwell-rise-dwell-return over a full cam turn, periodic in T
+#        (below); `par` is the slot of camlaw_turns that describes it.
+
+from libc.math cimport INFINITY, M_PI, cos, floor, sin
+
+# -- dwell-rise-dwell-return over a full cam turn (law code 1000) -----------------
+# A plain law is one rise.  Law 1000 strings a rise law, an upper dwell, a return law
+# run backwards (H = 1 - H_ret) and a lower dwell into one turn of period P, in units of the
+# rise (T = 1 is the end of the rise), and repeats it for T >= 0; T < 0 is the dwell before the
+# first rise, segment 0, as for a plain law.  Segment 1 + k S + l is piece l of turn k
+# (S pieces per turn: the rise's, the upper dwell if any, the return's, the lower dwell if
+# any), so that crossing a breakpoint is still `segment += 1`.  A turn is described by a
+# slot of camlaw_turns (written once by camlaws.turn_slot(), then only read), whose index is
+# the law's `par`: the one double the model ABI passes per cam input.
+cdef double camlaw_turns[256][13]
+# slot fields: 0 rise law, 1 its par, 2 return law, 3 its par, 4 period P, 5 K_rise pieces,
+# 6 start of the return 1 + d_up, 7 return length r, 8 start of the lower dwell, 9 K_return
+# pieces, 10 S segments per turn, 11 1.0 if there is an upper dwell, 12 1.0 if a lower one
 
 
 cdef inline int camlaw_segment(int law, double par, double T) noexcept nogil:
     """Segment of `law` that contains T (right-continuous); -1 for an unknown law."""
+    if law == 1000:
+        return _turn_segment(&camlaw_turns[<int>par][0], T)
+    return _plain_segment(law, par, T)
+
+
+cdef inline int _plain_segment(int law, double par, double T) noexcept nogil:
     if law == 0:  # cycloidal
         if T < 0.0:
             return 0
@@ -87,6 +112,20 @@ cdef inline int camlaw_segment(int law, double par, double T) noexcept nogil:
         if T < 1.0:
             return 1
         return 2
+    elif law == 8:  # sine-constant-cosine
+        if T < 0.0:
+            return 0
+        if T < 1.0/8.0:
+            return 1
+        if T < 0.5*par + 1.0/8.0:
+            return 2
+        if T < 7.0/8.0 - 0.5*par:
+            return 3
+        if T < 7.0/8.0:
+            return 4
+        if T < 1.0:
+            return 5
+        return 6
     return -1
 
 
@@ -110,11 +149,21 @@ cdef inline bint camlaw_dwell(int law, int seg) noexcept nogil:
         return seg == 6
     elif law == 7:
         return seg == 2
+    elif law == 8:
+        return seg == 6
     return False
 
 
 cdef inline double camlaw_lo(int law, double par, int seg) noexcept nogil:
     """Lower end of segment `seg` (-inf for the dwell before the rise)."""
+    if seg <= 0:
+        return -INFINITY
+    if law == 1000:
+        return _turn_lo(&camlaw_turns[<int>par][0], seg)
+    return _plain_lo(law, par, seg)
+
+
+cdef inline double _plain_lo(int law, double par, int seg) noexcept nogil:
     if seg <= 0:
         return -INFINITY
     if law == 0:
@@ -171,6 +220,19 @@ cdef inline double camlaw_lo(int law, double par, int seg) noexcept nogil:
             return 0.0
         elif seg == 2:
             return 1.0
+    elif law == 8:
+        if seg == 1:
+            return 0.0
+        elif seg == 2:
+            return 1.0/8.0
+        elif seg == 3:
+            return 0.5*par + 1.0/8.0
+        elif seg == 4:
+            return 7.0/8.0 - 0.5*par
+        elif seg == 5:
+            return 7.0/8.0
+        elif seg == 6:
+            return 1.0
     return INFINITY
 
 
@@ -190,7 +252,90 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
     The segment is given, not looked up, so that an integration step that ends
     on a breakpoint keeps using the formula of the segment it started in.
     """
-    cdef double c0, c1, c2, c3, c4, c5, c6, c7, c8, c9
+    if law == 1000:
+        _turn_eval(&camlaw_turns[<int>par][0], seg, T, out)
+    else:
+        _plain_eval(law, par, seg, T, out)
+
+
+cdef inline int _turn_piece(const double* q, int seg, int* k, int* j) noexcept nogil:
+    """Where segment `seg` (>= 1) of a turn lies: returns 1 rise, 2 upper dwell, 3 return,
+    4 lower dwell; k the turn, j the piece of the rise or return law (1..K)."""
+    cdef int S = <int>q[10], m = seg - 1, l
+    k[0] = m // S
+    l = m % S
+    j[0] = 0
+    if l < <int>q[5]:
+        j[0] = l + 1
+        return 1
+    l -= <int>q[5]
+    if q[11] > 0.0:
+        if l == 0:
+            return 2
+        l -= 1
+    if l < <int>q[9]:
+        j[0] = l + 1
+        return 3
+    return 4
+
+
+cdef inline int _turn_segment(const double* q, double T) noexcept nogil:
+    """The last segment whose lower end (_turn_lo, the same floating-point expressions as the
+    breakpoints of camdyn.runtime.laws.Turn) is <= T, so that a breakpoint itself belongs to
+    the segment it starts."""
+    if T < 0.0:
+        return 0
+    cdef double P = q[4]
+    cdef int S = <int>q[10], k = <int>floor(T / P), l
+    while k > 0 and k * P > T:
+        k -= 1
+    while (k + 1) * P <= T:
+        k += 1
+    for l in range(S, 1, -1):
+        if _turn_lo(q, k * S + l) <= T:
+            return k * S + l
+    return k * S + 1
+
+
+cdef inline double _turn_lo(const double* q, int seg) noexcept nogil:
+    cdef int k, j
+    cdef int kind = _turn_piece(q, seg, &k, &j)
+    cdef double t0 = k * q[4]
+    if kind == 1:
+        return t0 + _plain_lo(<int>q[0], q[1], j)
+    if kind == 2:
+        return t0 + 1.0
+    if kind == 3:
+        return t0 + (q[6] + q[7] * _plain_lo(<int>q[2], q[3], j))
+    return t0 + q[8]
+
+
+cdef inline void _turn_eval(const double* q, int seg, double T, double* out) noexcept nogil:
+    cdef int k, j, kind
+    cdef double r, h[4]
+    if seg <= 0:
+        out[0] = out[1] = out[2] = out[3] = 0.0
+        return
+    kind = _turn_piece(q, seg, &k, &j)
+    T -= k * q[4]
+    if kind == 1:
+        _plain_eval(<int>q[0], q[1], j, T, out)
+    elif kind == 3:
+        # the return law run backwards: H = 1 - H_ret(u), u = (T - start)/r, so each
+        # derivative is -H_ret^(n)/r^n
+        r = q[7]
+        _plain_eval(<int>q[2], q[3], j, (T - q[6]) / r, h)
+        out[0] = 1.0 - h[0]
+        out[1] = -h[1] / r
+        out[2] = -h[2] / (r * r)
+        out[3] = -h[3] / (r * r * r)
+    else:
+        out[0] = 1.0 if kind == 2 else 0.0
+        out[1] = out[2] = out[3] = 0.0
+
+
+cdef inline void _plain_eval(int law, double par, int seg, double T, double* out) noexcept nogil:
+    cdef double c0, c1, c2, c3, c4, c5, c6, c7, c8, c9, c10, c11, c12, c13
     if law == 0:  # cycloidal
         if seg == 0:
             out[0] = 0.0
@@ -274,12 +419,13 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
             out[3] = 0.0
         elif seg == 1:
             c0 = (T*T)
-            c1 = 6.0*c0
-            c2 = -15.0*T + c1 + 10.0
-            out[0] = (T*T*T)*c2
-            out[1] = 3.0*c0*(T*(4.0*T - 5.0) + c2)
-            out[2] = 60.0*T*(-3.0*T + 2.0*c0 + 1.0)
-            out[3] = -360.0*T + 60.0*c1 + 60.0
+            c1 = -15.0*T + 6.0*c0 + 10.0
+            c2 = 4.0*T
+            c3 = -3.0*T + 2.0*c0 + 1.0
+            out[0] = (T*T*T)*c1
+            out[1] = 3.0*c0*(T*(c2 - 5.0) + c1)
+            out[2] = 60.0*T*c3
+            out[3] = 60.0*T*(c2 - 3.0) + 60.0*c3
         elif seg == 2:
             out[0] = 1.0
             out[1] = 0.0
@@ -341,10 +487,11 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
             c0 = (T*T)
             c1 = (T*T*T)
             c2 = 84.0*T - 70.0*c0 + 20.0*c1 - 35.0
+            c3 = 4.0*T - 5.0*c0 + 2.0*c1 - 1.0
             out[0] = -(T*T*T*T)*c2
             out[1] = -4.0*c1*(T*(-35.0*T + 15.0*c0 + 21.0) + c2)
-            out[2] = 420.0*c0*(-4.0*T + 5.0*c0 - 2.0*c1 + 1.0)
-            out[3] = 840.0*T*(-6.0*T + 10.0*c0 - 5.0*c1 + 1.0)
+            out[2] = -420.0*c0*c3
+            out[3] = -840.0*T*(T*(-5.0*T + 3.0*c0 + 2.0) + c3)
         elif seg == 2:
             out[0] = 1.0
             out[1] = 0.0
@@ -422,6 +569,86 @@ cdef inline void camlaw_eval(int law, double par, int seg, double T, double* out
             out[2] = 0.0
             out[3] = 0.0
         elif seg == 2:
+            out[0] = 1.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        else:
+            out[0] = out[1] = out[2] = out[3] = 0.0
+    elif law == 8:  # sine-constant-cosine
+        if seg == 0:
+            out[0] = 0.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        elif seg == 1:
+            c0 = 6.283185307179586
+            c1 = 12.566370614359172*T
+            c2 = sin(c1)
+            c3 = (par*par)
+            c4 = (M_PI*M_PI)
+            c5 = (1.0/(3.0*par*c4 - 24.0*par + c0 - 2.0*c3*c4 + 16.0*c3 + 8.0))
+            c6 = cos(c1)
+            out[0] = c5*(T*c0 - 0.5*c2)
+            out[1] = c0*c5*(1.0 - c6)
+            out[2] = 8.0*c2*c4*c5
+            out[3] = 992.2008537695942*c5*c6
+        elif seg == 2:
+            c0 = (M_PI*M_PI)
+            c1 = 3.141592653589793*T
+            c2 = (par*par)
+            c3 = (1.0/(3.0*par*c0 - 24.0*par - 2.0*c0*c2 + 16.0*c2 + 6.283185307179586 + 8.0))
+            out[0] = 0.0625*c3*(64.0*(T*T)*c0 - 16.0*T*c0 + c0 + 32.0*c1 - 8.0)
+            out[1] = 3.141592653589793*c3*(8.0*c1 - 3.141592653589793 + 2.0)
+            out[2] = 8.0*c0*c3
+            out[3] = 0.0
+        elif seg == 3:
+            c0 = 6.283185307179586
+            c1 = (M_PI*M_PI)
+            c2 = par*c1
+            c3 = (par*par)
+            c4 = -24.0*par - 2.0*c1*c3 + 16.0*c3 + 8.0
+            c5 = (1.0/(c0 + 3.0*c2 + c4))
+            c6 = 4.0*par - 3.0
+            c7 = 4.0*T
+            c8 = 3.141592653589793*(2.0*par - c7 + 1.0/2.0)/c6
+            c9 = (1.0/(par - 3.0/4.0))
+            c10 = 3.141592653589793*c9*(-T + 0.5*par + 1.0/8.0)
+            c11 = 8.0*c5
+            out[0] = 0.5*c5*(8.0*T*c2 - c2 + c4 - (c6*c6)*cos(c8) + 3.141592653589793*c7)
+            out[1] = c0*c5*(par*c0 - c6*sin(c8) + 1.0)
+            out[2] = c1*c11*cos(c10)
+            out[3] = 31.00627668029982*c11*c9*sin(c10)
+        elif seg == 4:
+            c0 = (par*par)
+            c1 = (M_PI*M_PI)
+            c2 = par*c1
+            c3 = (1.0/(-24.0*par - 2.0*c0*c1 + 16.0*c0 + 3.0*c2 + 6.283185307179586 + 8.0))
+            c4 = 3.141592653589793*T
+            out[0] = -0.0625*c3*(64.0*(T*T)*c1 - 112.0*T*c1 + 384.0*par + 32.0*c0*c1 - 256.0*c0 + 49.0*c1 - 48.0*c2 - 32.0*c4 - 136.0)
+            out[1] = 3.141592653589793*c3*(-8.0*c4 + 2.0 + 21.991148575128552)
+            out[2] = -8.0*c1*c3
+            out[3] = 0.0
+        elif seg == 5:
+            c0 = 6.283185307179586
+            c1 = (par*par)
+            c2 = (M_PI*M_PI)
+            c3 = c1*c2
+            c4 = par*c2
+            c5 = 24.0*par
+            c6 = 16.0*c1
+            c7 = -c5 + c6
+            c8 = (1.0/(c0 - 2.0*c3 + 3.0*c4 + c7 + 8.0))
+            c9 = 4.0*T
+            c10 = 3.141592653589793*c9
+            c11 = 4.0*par - 3.0
+            c12 = -1.0
+            c13 = 3.141592653589793*(c9 - 7.0/2.0)
+            out[0] = 0.5*c8*(c10 + c12*c5 - c12*c6 - 9.0*c12 - 4.0*c3 + 6.0*c4 + c7 - sin(c10) + 7.0)
+            out[1] = c0*c8*(1.0 - cos(c10))
+            out[2] = -8.0*c2*c8*cos(c13)
+            out[3] = 992.2008537695942*c8*sin(c13)
+        elif seg == 6:
             out[0] = 1.0
             out[1] = 0.0
             out[2] = 0.0

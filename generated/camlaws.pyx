@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b8ed2dd11607c920499d023582131c96c7813601e75c16e70e7dd4ef1601a137
-# Text hash: sha256:1990678fdebd11e71d5c712f4e7a49f9ab6227d1341e0e4c0edeaedbcfe184dc
+# Derivation key: sha256:88c4a8a3e7d2dd16b01dc91d60077604f3930b54b5001aeaaed7d6cbfef0557b
+# Text hash: sha256:eb63a1dfc101f6a0ee69a7318f285ac78aef03f830101dad190503af6e486e84
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.
@@ -49,7 +49,7 @@ _LAWS_JSON = """
   "title": "Modified sine"
  },
  {
-  "amplitude": "60",
+  "amplitude": "10*sqrt(3)/3",
   "bounds": [
    "0.0",
    "1.0"
@@ -86,7 +86,7 @@ _LAWS_JSON = """
   "title": "Parabolic (constant acceleration)"
  },
  {
-  "amplitude": "420",
+  "amplitude": "84*sqrt(5)/25",
   "bounds": [
    "0.0",
    "1.0"
@@ -124,11 +124,63 @@ _LAWS_JSON = """
   "parameter": null,
   "reference": "H = T; ramp input (3.8)",
   "title": "Uniform motion (constant velocity)"
+ },
+ {
+  "amplitude": "8*pi**2/(-2*pi**2*c**2 + 16*c**2 - 24*c + 3*pi**2*c + 2*pi + 8)",
+  "bounds": [
+   "0.0",
+   "1.0/8.0",
+   "0.5*par + 1.0/8.0",
+   "7.0/8.0 - 0.5*par",
+   "7.0/8.0",
+   "1.0"
+  ],
+  "code": 8,
+  "key": "sine-constant-cosine",
+  "parameter": {
+   "default": 0.25,
+   "doc": "fraction of the rise at constant acceleration, b = 1/4, d = 3/4 - c",
+   "high": 0.75,
+   "low": 0.0,
+   "name": "c"
+  },
+  "reference": "Norton SCCA, b = 1/4, d = 3/4 - c",
+  "title": "Sine-constant-cosine acceleration (SCCA, b = 1/4)"
  }
 ]
 """
 LAWS = json.loads(_LAWS_JSON)
 """Per law: key, code, title, reference, bounds (as code), parameter, amplitude."""
+
+TURN = 1000
+"""Law code of a dwell-rise-dwell-return turn (see camlaws.pxd); its par is a slot index."""
+TURN_SLOTS = 256
+
+_turn_index = {}
+
+
+def turn_slot(int rise, double rise_par, int ret, double ret_par, double up, double r,
+              double low):
+    """Slot of camlaw_turns describing one turn: the rise law (length 1), an upper dwell
+    `up`, the return law over length `r` and a lower dwell `low`, all in units of the rise.
+
+    Equal turns share a slot and a written slot never changes, so runs in other threads keep
+    reading what they were given.  The caller checks the values (camdyn.runtime.laws)."""
+    spec = (rise, rise_par, ret, ret_par, up, r, low)
+    if spec in _turn_index:
+        return _turn_index[spec]
+    if len(_turn_index) >= TURN_SLOTS:
+        raise RuntimeError(f"more than {TURN_SLOTS} different cam turns in one process")
+    k_rise, k_ret = len(breakpoints(rise, rise_par)) - 1, len(breakpoints(ret, ret_par)) - 1
+    cdef int s = len(_turn_index)
+    cdef double* q = &camlaw_turns[s][0]
+    q[0], q[1], q[2], q[3] = rise, rise_par, ret, ret_par
+    q[4] = 1.0 + up + r + low
+    q[5], q[6], q[7], q[8], q[9] = k_rise, 1.0 + up, r, 1.0 + up + r, k_ret
+    q[11], q[12] = (1.0 if up > 0.0 else 0.0), (1.0 if low > 0.0 else 0.0)
+    q[10] = k_rise + k_ret + q[11] + q[12]
+    _turn_index[spec] = s
+    return s
 
 
 def evaluate(int law, double par, T):
@@ -167,4 +219,6 @@ def breakpoints(int law, double par):
         return [0.0, 1.0/8.0, 3.0/8.0, 5.0/8.0, 7.0/8.0, 1.0]
     elif law == 7:  # uniform
         return [0.0, 1.0]
+    elif law == 8:  # sine-constant-cosine
+        return [0.0, 1.0/8.0, 0.5*par + 1.0/8.0, 7.0/8.0 - 0.5*par, 7.0/8.0, 1.0]
     raise ValueError(f"unknown cam law code {law}")

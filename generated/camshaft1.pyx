@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:972c10c0285b271abe255439ee7815d228d48b8f2951cf582c878d75ee1913e3
-# Text hash: sha256:68d2481ae0ba56050263842b73fdf493b4d37a848a911c41786dd8bed4bf6a2d
+# Derivation key: sha256:877e489985eb1503f1271ce260e70cff14767a99b939f98307f5eb1c8d8eb240
+# Text hash: sha256:c9600f171e3906a735bdd7a201a6b057ee6449ad1107feba2f4c76e0f8a7bade
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c734acdd9a8fb832f4f1601a3fc6efdd33a35ff741a6e680225ec5b6c063285e
-# Text hash: sha256:3bc198a816399940af0da211662879aeb5c88c6bef6ff83f5b298ce8a294a81e
+# Derivation key: sha256:ea773befa9d548ab834c84d12c1b8056852cd28554969a246f3e37536d9a62a7
+# Text hash: sha256:49c5531271cc892829b4df19b84be8547452a2b53c18c0cb7e24115ddf267740
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a

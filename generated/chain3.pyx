@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6c5c4eb14f8d3b9d4aa24616ab104e4d7590160bec4df60dc666d671d2c7658a
-# Text hash: sha256:0c71ae0387b0b470a89379a29aad7750960b0d244e95b5917edada8a19f8278f
+# Derivation key: sha256:11bc7533a48fcf44b46a57b63c8a0ebc6ad842ca8d5e8001de2be269e8eab996
+# Text hash: sha256:ba871c7ff097651572154ad2ee3249864f8912846cd884a3c023dd06ce67cc64
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6607f822bd8693cdbe164f6167f0a26ac89c8b8e27745e221f3c02612578d738
-# Text hash: sha256:5e32ceb96494aa15cb426e2427a528dc7490ae860d85e888b78fcb588aa5b50e
+# Derivation key: sha256:da35ec2ce4a36611918b340ef02eca3cf10cfccb62e2e8c87910c5c895b284b3
+# Text hash: sha256:699c736cfe495979d7ff2dfe11344f1b0adcc47a9605e8ca89b7cbbe2124a7e1
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:8f77dd07c8ed4b4688df2d3c19ff019f5740d09221661f3282e318623b001c96

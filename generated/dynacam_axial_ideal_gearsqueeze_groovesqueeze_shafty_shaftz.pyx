@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8db6667a8bfe6652cc6b072ebe598e1ebc9b97e63bcea0fea70a8d8324770702
-# Text hash: sha256:aab32a0bd6fa689d5fa4d1c27ebc18fb240ac0ef0ef8ffa1726cdc3524f79dde
+# Derivation key: sha256:292dc42ef521cc0b2637f229883a0d071120117dfe085297280b5393a5628680
+# Text hash: sha256:b3b18a24bd6a737ff558f9b40b2f7329d978609f2afa4869083b06eb02389feb
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:8a86b6ab0f64a1ad41aa3dc8c8942dc37aa336ef30396ea9acf74fbea9619acb

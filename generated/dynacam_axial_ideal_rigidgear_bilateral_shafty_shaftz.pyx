@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:bf39fc81f59bfbceb7fe2d8d55842eb93e78747557fcfe27aa8606f211e0240c
-# Text hash: sha256:c65f90001736d4ea01ba2432b8c8e4295b380b27d9362f23fa3b92cd3af51047
+# Derivation key: sha256:b15e1ef803c6deaffa657b717dbe40af671382aacd07fcfc8fe08a11301251e6
+# Text hash: sha256:f43c83e39282d9412f1dc3c081dff94eea38f8cd1446f2d512e6cbd2f28eca58
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:f356169a69c515b9c42fefe373cc8acfc9be03f74c16a9cdb47e148eb2a59dfb

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1adc3f5800168fd0fa8b015107a5fe14125a179123aaaf23efcfa6fc2aff0d60
-# Text hash: sha256:0dea2361cbb1ee5cfc7a2432e0f7fe335f17d38ec6604525dd3b594cdc33fb0d
+# Derivation key: sha256:22db1a5c2e932abf69b52e38eab49667994811fd49edcfe6a048088334c68fd8
+# Text hash: sha256:bc885a57648ef14bd5aa4066f4545d6d651ae2598dcce86ea51eb0087d3a9510
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:68a26e070d019d08a18b136de438a3ead39168a76ade198c22c7707fe2202b40

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:3c958b5b5235d316e92a2e753f7c328cc132b66eeb212f654de6f0b7627b1e3d
-# Text hash: sha256:77d504c686f532e4931309af53fa64acf2fc4de4c456b3e978f7ba86a8216ab2
+# Derivation key: sha256:ab49df9fc36ceeb8c2849524dd4a671c87e5b5f0102c7c75db8fea321ec266b2
+# Text hash: sha256:fbbf5e913a178d626df095ff1c4d0a6c7c5b15c8d392ba39c62c13c6cbf44f30
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:52d0b492daa23ff0a6038d3692472c97bd3181f873d8a79b32f30d87ae0a259a

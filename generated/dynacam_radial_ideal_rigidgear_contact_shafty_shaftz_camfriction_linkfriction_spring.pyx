@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f122bc9fbc73ac8e558888c6cddb0a6742099215b44ddef90d0707fe1117b1a4
-# Text hash: sha256:b584f44713330cfba3176465325ef5722bbf89f491244e4e880c042e6dbd724d
+# Derivation key: sha256:bf051619ee95912d56a84e1e4e471bf8ced9e947e1f23326d68a8a7920dbb5e7
+# Text hash: sha256:12f59f62f672ba9da832bf390227984360d612d3eb8e08edfd3233742f80c371
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:4ac8bafb400a1646f69be4722317a3e6a1340e3e939fdbc69644456c4bc14bca

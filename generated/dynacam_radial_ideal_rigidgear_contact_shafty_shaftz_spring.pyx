@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:80675d35eeadacf30acc3937eb8d67f8253381977bd983846ae4aea1bd508f9e
-# Text hash: sha256:4e2db6e39faba4a99d9d36d99ce4377f127656d7d8be9d8dace4b20585ddaf99
+# Derivation key: sha256:522e010d9fd509a62923e03d420395964795d88be2f02c18fe5095a648f1cce7
+# Text hash: sha256:971b1cc755ee186953e2dbfbd7ea4538536f5afa257664d9b1d954056b5d9594
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:1862b6bf75d2cf1f5185cac2d07e5bdde467e7941a088e8b8accffb28b9684a6

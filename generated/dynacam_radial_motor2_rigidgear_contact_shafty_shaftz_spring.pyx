@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:22757630a0aba81209ada5268e2d5d6d59ea618d5b80dd7ca4ff217fbf4b4cab
-# Text hash: sha256:44069c4904ba2ce8cf7481a9b4dae300f15cc20d280ed4c752dae2321bbc875a
+# Derivation key: sha256:5be688b2ed3fa4544b60245cff97fe470e608712ba087c3df3ece1ad673ecdcb
+# Text hash: sha256:ad0e627f2cefe731822596bee6389b493f29a7e5f2c4090c2f9d0900bd21175a
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7842898e4fc68e8102d2800cc75353ff3970859773edaaef2a378a7c26cacd8a

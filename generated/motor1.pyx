@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:2b106a0197eb19e71f857190d0652b007196e865218499fe8183aa8f6962c214
-# Text hash: sha256:a89f3d816266842e284915779aea48b69544faa687e84f2f49c5b7a0a104d6ab
+# Derivation key: sha256:e1b911be379388e7f1ef51c598365e961b04ff4b7f616cd8e89ec4df9ddc1d8b
+# Text hash: sha256:a9abeba262047b8faab461ae0924421ee0077f92624b3959d877e7a3c72fcc12
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68

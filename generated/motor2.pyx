@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:889eb13d18dceb50731dbb97405da2f3b89354a63808d6a2bad6c9cd6925b220
-# Text hash: sha256:45066d0ca857ce10d6e75c647ee721d0dcce63d68023d31cd8173c60837b3558
+# Derivation key: sha256:5b1d279c27a95b3bdf5e67aa18ecc656725363891d21abd4d140d899782e0ed4
+# Text hash: sha256:dc3d14ca597ccdb280a9afba5d48b3be1b57229c9d675467d0e149f204531ad3
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e6dca410fcff3245bc2af4133ecb297c6e03f8f9a3a5bdc23c82ed722e235207
-# Text hash: sha256:0c8dd15806982d7f2c7ff5fb4353e1d8edc6d149f86e6ab7812fd4efca5d015f
+# Derivation key: sha256:c74d962e7d29e81fbeb0bd47b7e40485497afca43ab1b0a5ece6fa47c90c751c
+# Text hash: sha256:e80a65ad9494014adab671f3a8def8ceef7b3e5f992a28fc7492f7f60a193876
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073

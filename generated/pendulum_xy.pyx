@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d2fb433dcf4ba04968505cb1766f4507d93a42ae9bb71e21a5c6eaa601ab0aca
-# Text hash: sha256:09ad8a67219d2b882bd06839fcd0295ec7c03cf3f98c2846aaf74b6b5e333e27
+# Derivation key: sha256:9b8f6969fb99fc8ea4a40ae7c8f9c244545bebe66b2cf3efb377c604e46973a5
+# Text hash: sha256:553de7d57e258e94d5a9ebfcafef5389a998e7ae0e7e509508e3814ddb410ac6
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:e017c1589554bffedb179ec1f3fe3f8fdb43bb82d0bdd5e3f88df9f352e7786a

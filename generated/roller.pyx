@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ed95e8ffe433a68361a12fbe57e103476ced4fbce2054f8fa983586b752edf32
-# Text hash: sha256:03c98bafa071b42789f804dff298dd0c9dced0c9314770e9191cf68de242e773
+# Derivation key: sha256:3b51d86830c695e994a9c22b6f5a4a84f53552d9407b485cb4af1e51429773b7
+# Text hash: sha256:301cf288486e715bb99632bf3f0dd2b139128d5c84e68e57bfa2ee35a15cdeb4
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27

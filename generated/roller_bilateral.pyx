@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:766b788b16e5261b07bc2ff32a14a6cca7f3b7049bf5914a13b744b1082824fd
-# Text hash: sha256:4100d09643217dc38317ad786fb6cd70e9bc49fe0f9dc1c9fd23ca4ba2ad3985
+# Derivation key: sha256:4024098250c9ced8b4cb2d9465890b50db4a7a1d4546b90c7830b3b4722a5139
+# Text hash: sha256:a2213bbb27d300f0810817ced0ccc52eac952eccfff92a8870740daaea625011
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360

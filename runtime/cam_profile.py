@@ -126,6 +126,15 @@ class CamProfile:
         object.__setattr__(self, "angles_deg", ang)
         object.__setattr__(self, "cam", cam)
 
+    @property
+    def turn(self):
+        """This cam's motion as a model input: the :class:`camdyn.runtime.laws.Turn` with the
+        same law and angles (in units of the rise, T = phi/beta_rise; its H^(k) times
+        stroke/beta_rise^k is this cam's S^(k)(phi))."""
+        from .laws import compose
+
+        return compose(self.law, None, self.angles_deg, self.law_parameter)
+
     # -- geometry at any angles --------------------------------------------------------
     @property
     def prime_radius(self) -> float:

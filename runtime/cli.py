@@ -320,6 +320,23 @@ def integrate_run(model_arg: str, params: dict, initial: dict, t_end: float, met
     return summary, res
 
 
+def _law_arg(args) -> tuple:
+    """(law, theta) of a run: --law and --theta, or with --turn the dwell-rise-dwell-return
+    turn of --law (rise) and --return-law (runtime.laws.compose)."""
+    if getattr(args, "turn", None) is None:
+        if getattr(args, "return_law", None) is not None:
+            raise CamdynInputError("argument --return-law: only with --turn")
+        return args.law, args.theta
+    from .laws import compose
+
+    try:
+        angles = [float(a) for a in args.turn.split(",")]
+    except ValueError:
+        raise CamdynInputError(f"argument --turn: {args.turn!r} is not four comma-separated "
+                               "angles in deg (rise,upper dwell,return,lower dwell)") from None
+    return compose(args.law, args.return_law, angles, args.theta), None
+
+
 def integrate_errors(args, params: dict, initial: dict, summary: dict) -> dict:
     """State name -> estimate of its error at t_end (runtime/accuracy.py): the same run at
     rtol/10 (an adaptive method; rtol 1e-8 when not given) or half the step."""
@@ -328,8 +345,9 @@ def integrate_errors(args, params: dict, initial: dict, summary: dict) -> dict:
     settings = accuracy.tighter_settings(args.method, args.rtol, args.step)
     tight = None
     if settings is not None:
+        law, theta = _law_arg(args)
         tight, _ = integrate_run(args.model, params, initial, args.t_end, args.method,
-                                 settings[0], settings[1], args.law, args.theta)
+                                 settings[0], settings[1], law, theta)
     errs = accuracy.errors(summary["state"], None if tight is None else tight["state"],
                            summary["state"], args.method)
     return {name: errs.get(f"{name}_error") for name in summary["state"]}
@@ -381,8 +399,9 @@ def _cmd_integrate(args) -> int:
         if args.rtol is not None and args.step is not None:
             raise CamdynInputError("arguments --rtol and --step: give one (rtol for dp54 and "
                                    "rodas4, step for rk4 and koster)")
+        law, theta = _law_arg(args)
         summary, res = integrate_run(args.model, params, initial, args.t_end, args.method,
-                                     args.rtol, args.step, args.law, args.theta, say)
+                                     args.rtol, args.step, law, theta, say)
         if not args.no_error_estimate:
             summary["state_error"] = integrate_errors(args, params, initial, summary)
         if args.out:
@@ -978,7 +997,19 @@ def build_parser() -> argparse.ArgumentParser:
                          "curvature and largest pressure angle (90/90/90/90 deg cam)")
     lw.add_argument("--base-radius", type=float, default=None, metavar="M")
     lw.add_argument("--roller-radius", type=float, default=None, metavar="M")
-    lw.add_argument("--out", default=None, help="folder for laws_selection.png/.csv")
+    lw.add_argument("--out", default=None, help="folder for laws_selection.png/.csv "
+                    "(laws_sweep.png/.csv with --sweep)")
+    lw.add_argument("--sweep", default=None, metavar="SCENE",
+                    help="a DYNACAM scene (camdyn scenes): run it over a grid of the shape "
+                         "parameter of --law and chart U0'' and the largest fictitious angular-"
+                         "velocity variation against it (thesis fig. 8.8)")
+    lw.add_argument("--law", default=None, choices=laws.NAMES,
+                    help="with --sweep: the law whose parameter is swept (default modified-sine)")
+    lw.add_argument("--n", type=int, default=9, help="with --sweep: grid points (default 9)")
+    lw.add_argument("--values", default=None, metavar="V1,V2,...",
+                    help="with --sweep: these parameter values instead of the grid")
+    lw.add_argument("--no-error-estimate", action="store_true",
+                    help="with --sweep: skip the second run per point at rtol/10")
     lw.set_defaults(func=_cmd_laws)
 
     _add_design(sub, laws.NAMES)
@@ -1015,6 +1046,12 @@ def build_parser() -> argparse.ArgumentParser:
     ig.add_argument("--step", type=float, default=None, help="rk4/koster step")
     ig.add_argument("--law", default="cycloidal", choices=laws.NAMES, help="cam law of the inputs")
     ig.add_argument("--theta", type=float, default=None, help="shape parameter of the law")
+    ig.add_argument("--turn", default=None, metavar="RISE,UP,RETURN,LOW",
+                    help="a full cam turn, repeated: rise by --law, upper dwell, return by "
+                         "--return-law, lower dwell, in deg summing to 360 (the input's "
+                         "argument counts rises: one turn is 360/RISE)")
+    ig.add_argument("--return-law", default=None, choices=laws.NAMES,
+                    help="with --turn: the law of the return (default: --law)")
     ig.add_argument("--json", action="store_true", help="one JSON object on stdout")
     ig.add_argument("--no-error-estimate", action="store_true",
                      help="skip the second, more accurate run that estimates each headline figure's error (sweeps)")

@@ -24,10 +24,11 @@ def _law_choices(model: CompiledModel, law, theta):
         missing = set(fams) - set(law)
         if missing:
             raise CamdynInputError(f"no cam law given for input {', '.join(sorted(missing))}")
-        chosen = {f: law[f] if isinstance(law[f], _laws.LawChoice) else _laws.choose(law[f], theta)
+        chosen = {f: law[f] if isinstance(law[f], (_laws.LawChoice, _laws.Turn))
+                  else _laws.choose(law[f], theta)
                   for f in fams}
     else:
-        choice = law if isinstance(law, _laws.LawChoice) else _laws.choose(law, theta)
+        choice = law if isinstance(law, (_laws.LawChoice, _laws.Turn)) else _laws.choose(law, theta)
         chosen = {f: choice for f in fams}
     codes = np.array([chosen[f].code for f in fams] or [0], dtype=np.intc)
     pars = np.array([chosen[f].par for f in fams] or [0.0], dtype=float)
@@ -48,7 +49,8 @@ def stop_times(model: CompiledModel, p, chosen: dict, t0: float, t_end: float) -
         a, b = ab
         if a == 0:
             continue
-        for bp in chosen[inst["family"]].breakpoints():
+        lo, hi = sorted((a * t0 + b, a * t_end + b))
+        for bp in chosen[inst["family"]].breakpoints_between(lo, hi):
             tb = (bp - b) / a
             if t0 < tb < t_end:
                 stops.add(float(tb))

@@ -90,7 +90,7 @@ def test_modified_sine_at_quarter_is_the_cycloid():
 def test_rise_boundary_and_continuity(key):
     """H(0) = 0, H(1) = 1, H'(0) = H'(1) = 0; H and H' continuous at interior breakpoints."""
     law = LAWS[key]
-    sub = {theta: sp.Rational(1, 10)}
+    sub = {law.parameter.symbol: sp.Rational(1, 10)} if law.parameter else {}
     H = [h.subs(sub) for h in law.rise]
     b = [sp.sympify(x).subs(sub) for x in law.bounds]
     assert sp.simplify(H[0].subs(T, 0)) == 0
@@ -109,8 +109,8 @@ def test_rise_boundary_and_continuity(key):
 
 def test_known_peak_accelerations():
     """Amplitudes derived from H(1) = 1 against the classical values of each law."""
-    expect = {"3-4-5": 60 * sp.Rational(1, 1), "parabolic": 4, "simple-harmonic": pi**2 / 2,
-              "4-5-6-7": 420, "modified-trapezoid": 8 * pi / (2 + pi)}
+    expect = {"3-4-5": 10 / sp.sqrt(3), "parabolic": 4, "simple-harmonic": pi**2 / 2,
+              "4-5-6-7": 84 * sp.sqrt(5) / 25, "modified-trapezoid": 8 * pi / (2 + pi)}
     for key, value in expect.items():
         assert sp.simplify(LAWS[key].amplitude - value) == 0, key
     # the classical 3-4-5 displacement
@@ -154,3 +154,106 @@ def test_law_codes_are_unique_and_those_of_the_compiled_library():
     from camdyn.generated import camlaws as lib
 
     assert {law["key"]: law["code"] for law in lib.LAWS} == codes
+
+
+# -- polynomial laws by boundary conditions ---------------------------------------------
+
+
+def test_polynomial_2n1_family_coefficients():
+    """H', ..., H^(n) zero at both ends: n = 2 is 3-4-5, n = 3 is 4-5-6-7 (the classical
+    coefficients), and H' of the family is proportional to T^n (1 - T)^n (an independent
+    form: integrating it and scaling to H(1) = 1 must give the same polynomial)."""
+    assert sp.expand(camlaws.polynomial_2n1(2) - (10 * T**3 - 15 * T**4 + 6 * T**5)) == 0
+    assert sp.expand(camlaws.polynomial_2n1(3)
+                     - (35 * T**4 - 84 * T**5 + 70 * T**6 - 20 * T**7)) == 0
+    for n in (2, 3, 4, 5):
+        v = sp.integrate(T**n * (1 - T) ** n, (T, 0, T))
+        assert sp.expand(camlaws.polynomial_2n1(n) - v / v.subs(T, 1)) == 0, n
+    # the registered laws are the builder's members
+    assert sp.expand(LAWS["3-4-5"].rise[0] - camlaws.polynomial_2n1(2)) == 0
+    assert sp.expand(LAWS["4-5-6-7"].rise[0] - camlaws.polynomial_2n1(3)) == 0
+
+
+def test_polynomial_peak_accelerations():
+    """Peak H'' of 3-4-5 is 10/sqrt 3 = 5.7735 and of 4-5-6-7 84 sqrt 5/25 = 7.5132 (roots of
+    H''' in closed form); Norton's tables print 5.7735 and 7.51.  Checked against a dense
+    numeric scan of the polynomials, tolerance 1e-9."""
+    grid = np.linspace(0, 1, 200001)
+    for n, exact, printed in ((2, 10 / sp.sqrt(3), "5.7735"), (3, 84 * sp.sqrt(5) / 25, "7.51")):
+        acc = sp.lambdify(T, camlaws.polynomial_2n1(n).diff(T, 2))(grid)
+        assert float(exact) == pytest.approx(acc.max(), abs=1e-9)
+        assert matches_printed(float(exact), printed)
+
+
+def test_polynomial_by_general_boundary_conditions():
+    """Two conditions: H(0) = 0, H(1) = 1 with H'(0) = H'(1) = 0 give the cubic 3 T^2 - 2 T^3;
+    H''(1) = 0 added gives a quartic with that property.  A rise must start from rest."""
+    assert sp.expand(camlaws.polynomial_rise({1: 0}, {1: 0}) - (3 * T**2 - 2 * T**3)) == 0
+    H = camlaws.polynomial_rise({1: 0}, {1: 0, 2: 0})
+    assert sp.degree(H, T) == 4
+    assert [H.diff(T, k).subs(T, t) for t, k in ((0, 0), (0, 1), (1, 0), (1, 1), (1, 2))] \
+        == [0, 0, 1, 0, 0]
+    law = camlaws.polynomial_law("test-quartic", 99, {}, {1: 0, 2: 0})
+    assert sp.expand(law.rise[0] - H) == 0
+    with pytest.raises(ValueError, match="H'\\(0\\) must be 0"):
+        camlaws.polynomial_law("bad", 98, {1: 1}, {1: 0})
+
+
+# -- sine-constant-cosine acceleration ---------------------------------------------------
+
+
+def _norton_scca_peak(b, d):
+    """Peak acceleration factor of the SCCA family, Norton, Cam Design and Manufacturing
+    Handbook, sec. 3 (SCCA): C_a = 4 pi^2/((pi^2 - 8)(b^2 - d^2) - 2 pi (pi - 2) b + pi^2)."""
+    return 4 * pi**2 / ((pi**2 - 8) * (b**2 - d**2) - 2 * pi * (pi - 2) * b + pi**2)
+
+
+def test_scca_peak_matches_the_published_closed_form():
+    """The amplitude that H(1) = 1 fixes, derived for symbolic b and d, equals Norton's C_a;
+    and so does that of the registered one-parameter law (b = 1/4, d = 3/4 - c)."""
+    b, d = sp.symbols("b d", positive=True)
+    bounds, acc = camlaws.scca_pieces(b, 1 - b - d, d)
+    law = camlaws.CamLaw("scca-test", 97, "", "", bounds, acc)
+    assert sp.simplify(law.amplitude - _norton_scca_peak(b, d)) == 0
+    c = camlaws.c_scca
+    got = LAWS["sine-constant-cosine"].amplitude
+    assert sp.simplify(got - _norton_scca_peak(sp.Rational(1, 4), sp.Rational(3, 4) - c)) == 0
+
+
+@pytest.mark.parametrize("bcd, printed", [
+    ((sp.Rational(1, 4), sp.Rational(1, 2), sp.Rational(1, 4)), "4.8881"),   # modified trapezoid
+    ((sp.Rational(1, 4), 0, sp.Rational(3, 4)), "5.5280"),                    # modified sine
+    ((sp.Rational(1, 2), 0, sp.Rational(1, 2)), "6.2832"),                    # cycloidal
+    ((0, 0, 1), "4.9348"),                                                     # simple harmonic
+    ((0, 1, 0), "4.0000"),                                                     # constant accel.
+])
+def test_scca_members_against_norton_table_and_numeric_integration(bcd, printed):
+    """Norton's table of the SCCA members prints these C_a to 4 decimals.  Independently of
+    SymPy's integration, the unit-amplitude acceleration is integrated twice numerically
+    (scipy quad, 1e-12): C_a = 1/H(1) for unit amplitude."""
+    from scipy.integrate import quad
+
+    bounds, acc = camlaws.scca_pieces(*bcd)
+    law = camlaws.CamLaw("scca-member", 96, "", "", bounds, acc)
+    assert matches_printed(float(law.amplitude), printed)
+    shape = [sp.lambdify(T, a.subs(camlaws._A, 1)) for a in acc]
+    b = [float(x) for x in bounds]
+
+    def a_unit(t):
+        k = min(np.searchsorted(b, t, side="right") - 1, len(shape) - 1)
+        return float(shape[k](t))
+
+    # H(1) = int_0^1 (1 - s) a(s) ds from rest
+    h1 = sum(quad(lambda s: (1 - s) * a_unit(s), b[k], b[k + 1], epsabs=1e-13)[0]
+             for k in range(len(shape)))
+    assert 1 / h1 == pytest.approx(float(law.amplitude), rel=1e-10)
+
+
+def test_scca_ends_of_its_parameter():
+    """c -> 0 is the thesis's modified sine at theta = 1/8 ((A.2.17): pi^2/(2 - 1 + pi/4)),
+    c = 1/2 the modified trapezoid of the library."""
+    got = LAWS["sine-constant-cosine"].amplitude
+    c = camlaws.c_scca
+    ms = LAWS["modified-sine"].amplitude.subs(theta, sp.Rational(1, 8))
+    assert sp.simplify(got.subs(c, 0) - ms) == 0
+    assert sp.simplify(got.subs(c, sp.Rational(1, 2)) - LAWS["modified-trapezoid"].amplitude) == 0

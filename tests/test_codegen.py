@@ -28,7 +28,7 @@ def _lambdified(model_name: str, law_key: str, par):
     eq = derive(model)
     t = model.time
     law = camlaws.LAWS[law_key]
-    lsub = {camlaws.theta: par} if law.parameter else {}
+    lsub = {law.parameter.symbol: par} if law.parameter else {}
 
     def plain(e):
         e = sp.sympify(e)

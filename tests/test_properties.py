@@ -79,7 +79,15 @@ CONTINUITY = {
     "4-5-6-7": (3, None),
     "modified-trapezoid": (2, 3),     # sine ramps meet the constant pieces with zero jerk
     "uniform": (0, None),             # H' jumps to 1: the ramp input (3.8)
+    "sine-constant-cosine": (2, 3),   # like the modified trapezoid: zero-jerk joins
 }
+
+
+def _scca_peak(c):
+    '''H''max of the SCCA law with b = 1/4, d = 3/4 - c: Norton's C_a =
+    4 pi^2/((pi^2 - 8)(b^2 - d^2) - 2 pi (pi - 2) b + pi^2).'''
+    b, d = 0.25, 0.75 - c
+    return 4 * pi**2 / ((pi**2 - 8) * (b * b - d * d) - 2 * pi * (pi - 2) * b + pi**2)
 
 
 def _modified_sine_peak(th):
@@ -92,6 +100,8 @@ def _start_jump(key, th):
     rise, from the closed forms of each law (worked by hand, not by camdyn)."""
     if key == "modified-sine":
         return 3, _modified_sine_peak(th) * pi / (2 * th)     # (A.2.21): 85 at theta = 0.1
+    if key == "sine-constant-cosine":
+        return 3, 4 * pi * _scca_peak(th)                     # H'' = A sin 4 pi T on [0, 1/8]
     trapezoid_peak = 8 * pi / (2 + pi)    # H'' = A sin 4 pi T on the first eighth, classical 4.888
     return {
         "cycloidal": (3, 4 * pi**2),        # (A.2.15): 39.4
@@ -116,6 +126,12 @@ def _interior_jumps(key, th):
     if key == "modified-trapezoid":
         j = 16 * pi**2 * 8 * pi / (2 + pi)     # (4 pi)^2 A at the ends of each sine ramp
         return [(1 / 8, 4, j), (3 / 8, 4, -j), (5 / 8, 4, -j), (7 / 8, 4, j)]
+    if key == "sine-constant-cosine":
+        # sine ramps (4 pi)^2 A as above; the cosine piece A cos(pi (T - T0)/d), d = 3/4 - c,
+        # has H'''' = -+A (pi/d)^2 at its ends, against 0 on the constant pieces
+        a, d = _scca_peak(th), 0.75 - th
+        j, k = 16 * pi**2 * a, pi**2 * a / d**2
+        return [(1 / 8, 4, j), (1 / 8 + th / 2, 4, -k), (7 / 8 - th / 2, 4, -k), (7 / 8, 4, j)]
     return []
 
 
@@ -138,9 +154,10 @@ def _symbolic(key):
     """mpmath functions (T, theta) of each segment's d^k H/dT^k (dwells included, k = 0..4), of
     the law's own Piecewise (k = 0..3), and of its breakpoints (theta)."""
     law = LAWS[key]
-    pieces = [[sp.lambdify((T, theta), e, "mpmath") for e in law.segment_exprs(k)] for k in range(5)]
-    whole = [sp.lambdify((T, theta), law.piecewise(k), "mpmath") for k in range(4)]
-    bounds = [sp.lambdify(theta, b, "mpmath") for b in law.bounds]
+    par = law.parameter.symbol if law.parameter else theta
+    pieces = [[sp.lambdify((T, par), e, "mpmath") for e in law.segment_exprs(k)] for k in range(5)]
+    whole = [sp.lambdify((T, par), law.piecewise(k), "mpmath") for k in range(4)]
+    bounds = [sp.lambdify(par, b, "mpmath") for b in law.bounds]
     return pieces, whole, bounds
 
 
@@ -363,13 +380,14 @@ def test_law_choice_takes_a_theta_only_inside_its_range(key, th):
     parameter and only as a number inside its declared open range 0 < theta < 1/2 (A.2.17);
     anything else raises CamdynInputError naming theta, never another exception."""
     spec = LAWS[key].parameter
-    inside = isinstance(th, (int, float)) and spec is not None and 0 < th < 0.5
+    inside = isinstance(th, (int, float)) and spec is not None and spec.low < th < spec.high
+    name = "theta" if spec is None else spec.symbol.name
     if th is None or inside:
         choice = rt_laws.choose(key, th)
         want = (spec.default if th is None else float(th)) if spec is not None else 0.0
         assert (choice.key, choice.par) == (key, want)
         return
-    with pytest.raises(CamdynInputError, match="theta"):
+    with pytest.raises(CamdynInputError, match=rf"\b{name}\b"):
         rt_laws.choose(key, th)
 
 

@@ -67,6 +67,8 @@ def laws(args) -> int:
     --tau, the selection criteria of sec. 9.2.2 (thesis/selection.py)."""
     from . import lawtable
 
+    if getattr(args, "sweep", None) is not None:
+        return _sweep(args)
     if getattr(args, "tau", None) is not None or getattr(args, "fa", None) is not None:
         return _selection(args)
 
@@ -104,6 +106,61 @@ def _num(v) -> str:
     if v is None:
         return "impulse"
     return {float("inf"): "inf", float("-inf"): "-inf"}.get(v, f"{v:.4g}")
+
+
+def _sweep(args) -> int:
+    """`camdyn laws --sweep SCENE`: a law's shape parameter over a grid on a DYNACAM scene,
+    U0'' and the largest fictitious angular-velocity variation against it (fig. 8.8)."""
+    from pathlib import Path
+
+    from camdyn.runtime import scene as scenes
+    from camdyn.runtime.errors import CamdynInputError, SimulationError
+
+    from . import shape_sweep
+
+    prog = "camdyn laws"
+    law = args.law or "modified-sine"
+    try:
+        sc = scenes.load(args.sweep)
+        values = None
+        if args.values:
+            try:
+                values = [float(v) for v in args.values.split(",")]
+            except ValueError:
+                raise CamdynInputError(f"argument --values: {args.values!r} is not a comma-"
+                                       "separated list of numbers") from None
+        rows = shape_sweep.sweep(sc, law, values, args.n, errors=not args.no_error_estimate,
+                                 progress=None if args.json else sys.stderr)
+    except (CamdynInputError, ValueError) as exc:
+        return fail(prog, name_argument(str(exc)))
+    except SimulationError as exc:
+        return fail(prog, f"a run of the sweep failed: {exc}")
+    name = shape_sweep.shape_parameter(law)["name"]
+    files = []
+    if args.out:
+        out = Path(args.out)
+        own = sc.theta if sc.law == law else None
+        files = [str(shape_sweep.write_csv(rows, out / "laws_sweep.csv")),
+                 str(shape_sweep.write_png(rows, name, f"{sc.title}: {law}, {name} swept",
+                                           out / "laws_sweep.png", own))]
+    if args.json:
+        print(json.dumps({"scene": sc.title, "law": law, "parameter": name, "rows": rows,
+                          "files": files}, indent=1))
+        return 0
+    head = (name, "U0''", "+-", "max speed var", "+-", "U0", "+-")
+    table = [head] + [(f"{r[name]:.4g}",) + tuple(
+        _num(r.get(k)) if r.get(k) is not None else "-"
+        for f in shape_sweep.FIELDS for k in (f, f"{f}_error")) for r in rows]
+    _print_table(table)
+    b = shape_sweep.best(rows, "U0dd")
+    v = shape_sweep.best(rows, "speed_variation_max")
+    note = (" (thesis fig. 8.8, the spring-loaded mechanism: both near theta = 0.1)"
+            if law == "modified-sine" else "")
+    print(f"\n{sc.title}, {law}: least U0'' at {name} = {b[name]:.4g}, least speed variation "
+          f"at {name} = {v[name]:.4g}{note}")
+    for f in files:
+        print(f"wrote {f}")
+    return 0
 
 
 def _selection(args) -> int:
