@@ -14,10 +14,12 @@ evaluation:
    on the dense output between the neighbours; the best of the scan and the refinements wins.
 
 With per_step = 12 and one candidate this is the reference's recipe (12 samples a step, the
-best refined).  A sweep samples each step once (the recorded points: DP54 at rtol 1e-9 takes
-about 50 steps per period of the slowest mode that carries amplitude) and refines the 4 best
-peaks; where several peaks are equal to within the integration error (the undamped dwell,
-every peak of U is U0), any of them is U0 to that error.
+best refined).  A sweep samples fewer (every 3rd recorded point at rtol 1e-9, where DP54 takes
+87 steps or more a period of the fastest mode that carries amplitude; runtime/sweep.py's
+scan_density) and refines the 4 best peaks by the parabola through each and its neighbours;
+where several peaks are equal to within the integration error (the undamped dwell, every
+peak of U is U0), any of them is U0 to that error.  Samples on recorded points read a cache
+of the outputs there, filled by one evaluation of the model's outputs per point.
 
 ``sweep_residual`` runs a chunk of parameter sets through the model's compiled loops and these
 finders in one call that holds no GIL: one record buffer reused for every run, no Python object
@@ -324,6 +326,10 @@ cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step,
         best = sc
         best_t = tq
     for k in range(c.n):
+        # a peak whose parabola lies 1e-3 of the best one's below it cannot be the largest:
+        # at 25 samples a period the parabola is within ~1e-5 of the peak
+        if by_vertex and k > 0 and c.key[k] < c.key[0] - 1e-3 * fabs(c.key[0]):
+            break
         if c.hi[k] > c.lo[k]:
             sc = _brent_min(r, which, kind, c.lo[k], c.hi[k], 1e-12 * (fabs(c.hi[k]) if fabs(c.hi[k]) > 1.0 else 1.0), &x)
             if sc > best:
@@ -463,13 +469,15 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
                    const double[::1] atol, long max_steps, const int[::1] modes0, long max_events,
                    int i_error, int i_acc, double rise_end, int i_rise, int per_step, int n_cand,
                    double[:, ::1] figures, long[:, ::1] stats, double[::1] seconds,
-                   Py_ssize_t start, Py_ssize_t stop, Py_ssize_t cap=4096, int stride=1):
+                   Py_ssize_t start, Py_ssize_t stop, Py_ssize_t cap=4096, int stride=1,
+                   bint figures_too=True):
     """Run parameter sets start..stop-1 (rows of P, initial states Y0, stop times) and write
     the FIGURE_COLUMNS of each into ``figures`` and the STAT_COLUMNS into ``stats``; seconds[j]:
     wall time of run j with its figures.  i_error, i_acc: the error and acceleration outputs
     (index among states then outputs); i_rise: the state whose crossing of rise_end ends the
     rise, or -1 (the rise ends at time rise_end).  With per_step 1 the scan samples every
     ``stride``-th recorded point (its peaks are refined between the samples around them).
+    ``figures_too`` False: integrate only (bench/sweep.py splits the cost with it).
     No GIL is held while it runs.
 
     A run that fails leaves its status (runtime/_integrate.STATUS_TEXT) and NaN figures; a run
@@ -558,7 +566,7 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
             stats[g, 4] = run.rec.n
             for j in range(5):
                 figures[g, j] = NAN
-            if status == STATUS_OK and run.rec.n > 0:
+            if status == STATUS_OK and run.rec.n > 0 and figures_too:
                 rec.m = m
                 rec.ctx = &ctx
                 rec.rows = rows

@@ -51,13 +51,24 @@ motor's speed variation are NaN where there is none (jump_occurs says which)."""
 BEAM_FIGURES = ("max_abs_tip_deflection", "max_constraint_residual", "dwell_frequency_hz")
 """The figures of a beam-follower scene sweep (runtime/beam.py's summary)."""
 
-PER_STEP = 1
-STRIDE = 2
+SAMPLES = 20.0
 CANDIDATES = 4
-"""A model sweep's scan samples every STRIDE-th recorded point (PER_STEP samples in each
-step), and refines its CANDIDATES best peaks on the dense output (runtime/_figures.pyx says
-why that suffices; tests/test_figures_compiled.py compares with the reference's 12 samples a
-step)."""
+"""A model sweep's scan takes about SAMPLES x rtol^(1/5) samples a recorded step (every
+stride-th recorded point, or several a step at loose tolerances; :func:`scan_density`) and
+refines its CANDIDATES best peaks on the dense output (runtime/_figures.pyx says why that
+suffices; tests/test_figures_compiled.py compares with the reference's 12 samples a step)."""
+
+
+def scan_density(method) -> tuple[int, int]:
+    """(per_step, stride) of a model sweep's scan.  An adaptive method's steps per period of
+    the fastest mode that carries amplitude grow as rtol^(-1/5) (DP54's error per step goes
+    as h^5): CAMSHAFT-1 at rtol 1e-9 takes 87 a period at tau = 0.06 (the grid's fastest),
+    1.4 rtol^(-1/5).  The scan keeps about SAMPLES per rtol^(-1/5) steps, i.e. 25 or more a
+    period: every 3rd recorded point at rtol 1e-9, every point at 1e-8, 2 a step at 1e-6."""
+    k = method.rtol ** -0.2
+    if k >= SAMPLES:
+        return 1, int(k // SAMPLES)
+    return math.ceil(SAMPLES / k), 1
 
 CHUNK = 32
 """Grid points per compiled call: small enough for a live progress bar and even shares."""
@@ -206,6 +217,9 @@ class SweepResult:
                 label = ", ".join(f"{names[k]} = {self.axes[names[k]][j]:g}"
                                   for k, j in zip(others, c))
                 ax.plot(x, data[tuple(idx)], lw=1.0, label=label or None)
+            finite = data[np.isfinite(data)]
+            if finite.size and finite.min() > 0 and finite.max() > 100 * finite.min():
+                ax.set_yscale("log")     # U0 and U0'' span decades between the dips of (3.5)
             ax.set_xlabel(names[x_ax])
             ax.set_ylabel(fig_name)
             ax.set_title(f"{self.target}: {fig_name}", fontsize=10)
@@ -429,6 +443,7 @@ def _model_chunk_compiled(model, sim, names, points):
     i_rise = index[spec["rise_state"]] if spec.get("rise_state") else -1
     if i_rise >= ns:
         return _model_chunk_python(sim, names, points)
+    per_step, stride = scan_density(method)
     figures = np.empty((n, len(_figures.FIGURE_COLUMNS)))
     stats = np.empty((n, len(_figures.STAT_COLUMNS)), dtype=np.int64)
     secs = np.empty(n)
@@ -437,8 +452,8 @@ def _model_chunk_compiled(model, sim, names, points):
         np.ascontiguousarray(Y0, dtype=float), S, NS, sim.t0, method.first_step or 0.0,
         min(method.max_step, sim.t_end - sim.t0), method.rtol, atol, sim.max_steps,
         np.array(sim.modes0, dtype=np.intc), 1_000_000, index[spec["error"]],
-        index[spec["acceleration"]], float(spec["rise_end"]), i_rise, PER_STEP, CANDIDATES,
-        figures, stats, secs, 0, n, 4096, STRIDE)
+        index[spec["acceleration"]], float(spec["rise_end"]), i_rise, per_step, CANDIDATES,
+        figures, stats, secs, 0, n, 4096, stride)
     bad = np.flatnonzero(stats[:, 0] != 0)
     if bad.size:
         j = int(bad[0])
@@ -525,7 +540,7 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
     if isinstance(size, bool) or not isinstance(size, int) or size < 1:
         raise CamdynInputError(f"chunk={size!r}: give a positive whole number of grid points")
     pieces = [pts[i:i + size] for i in range(0, len(pts), size)]
-    bar = _bar(len(pts), progress, str(target))
+    bar = _bar(len(pts), progress, tgt.name)
     start = time.perf_counter()
     try:
         if dask is not None:
@@ -541,7 +556,7 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
     columns = {k: pts[:, i].copy() for i, k in enumerate(names)}
     columns.update({k: figs[:, i] for i, k in enumerate(tgt.figures)})
     columns["n_steps"] = steps
-    return SweepResult(str(target), axes, tgt.figures, columns, seconds, where,
+    return SweepResult(tgt.name, axes, tgt.figures, columns, seconds, where,
                        meta={"target": tgt})
 
 

@@ -75,7 +75,8 @@ def test_camshaft2_rise_ends_where_B_reaches_one():
 
 
 def test_sweep_figures_equal_the_reference_on_a_grid(runs):
-    """The sweep's own scan (every 2nd recorded point, the 4 best peaks refined) against the
+    """The sweep's own scan (every 3rd recorded point at rtol 1e-9, the 4 best peaks refined
+    on the dense output; sweep.scan_density) against the
     reference's (12 samples a step) on the 4 x 4 grid.  Where several peaks are equal to
     within the integration error (every peak of the undamped dwell is U0), either scan may
     refine another one: measured U0, U0'' within 5e-8 relative (at rtol 1e-9, the dwell's
