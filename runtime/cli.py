@@ -1178,7 +1178,8 @@ def _cmd_sweep(args) -> int:
             raise CamdynInputError("argument --grid: a parameter is given twice")
         res = sw.sweep(args.target, grid, jobs=args.jobs, dask=args.dask,
                        progress=not args.quiet, t_end=args.t_end, method=args.method,
-                       rtol=args.rtol, law=args.law)
+                       rtol=args.rtol, law=args.law, step=args.step,
+                       errors=args.error_estimate)
         files = res.write(args.out)
     except CamdynInputError as exc:
         return fail("camdyn sweep", str(exc))
@@ -1214,8 +1215,13 @@ def _add_sweep(sub, all_methods, law_names) -> None:
                     help="integration method (default: the scene's, dp54 for a model)")
     sw.add_argument("--rtol", type=float, default=None,
                     help="relative tolerance (default: the scene's, 1e-9 for a model)")
+    sw.add_argument("--step", type=float, default=None,
+                    help="step of a fixed-step method (rk4, koster)")
     sw.add_argument("--law", choices=law_names, default=None,
                     help="cam law of a model (default: the scene's, cycloidal)")
+    sw.add_argument("--error-estimate", action="store_true",
+                    help="run the grid again at rtol/10 (half the step) and add a column "
+                         "<figure>_error per figure (twice the time)")
     sw.add_argument("--quiet", action="store_true", help="no progress bar")
     sw.set_defaults(func=_cmd_sweep)
 

@@ -66,7 +66,11 @@ def extreme(result: Result, name: str, a: float, b: float, *, absolute: bool, mi
 
     ``per_step`` samples in every recorded step, then the best sample (``candidates`` = 1,
     as :func:`extreme_reference`) or the best ``candidates`` peaks are refined by Brent's
-    bounded minimizer on the dense output."""
+    bounded minimizer on the dense output.  A run of another integrator that only offers
+    ``sample`` (runtime/peers.py) goes through :func:`extreme_reference`."""
+    if not isinstance(result, Result):
+        return extreme_reference(result, name, a, b, absolute=absolute, minimum=minimum,
+                                 per_step=per_step)
     if not (result.t[0] <= a <= b <= result.t[-1]):
         raise CamdynInputError(f"extreme of {name} on [{a:g}, {b:g}]: the span must lie in the "
                                f"run [{result.t[0]:g}, {result.t[-1]:g}]")
@@ -125,7 +129,7 @@ def rise_end(result: Result, spec: dict) -> float:
     if not spec.get("rise_state"):
         return spec["rise_end"]
     name = spec["rise_state"]
-    if name not in result.state_names:
+    if not isinstance(result, Result) or name not in result.state_names:
         return crossing_time(result, name, spec["rise_end"])
     t = _figures.crossing(*_record(result), result.state_names.index(name),
                           float(spec["rise_end"]))

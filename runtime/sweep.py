@@ -187,8 +187,8 @@ class SweepResult:
         return path
 
     def charts(self, out_dir) -> list[Path]:
-        """One PNG per figure against the last axis with more than one value, a line for
-        every combination of the other axes (up to 12, evenly picked)."""
+        """One PNG per figure (not its error estimate) against the last axis with more than
+        one value, a line for every combination of the other axes (up to 12, evenly picked)."""
         import matplotlib
 
         matplotlib.use("Agg")
@@ -206,7 +206,7 @@ class SweepResult:
             combos = [combos[int(round(j))] for j in np.linspace(0, len(combos) - 1, 12)]
         x = self.axes[names[x_ax]]
         written = []
-        for fig_name in self.figures:
+        for fig_name in [f for f in self.figures if not f.endswith("_error")]:
             data = np.asarray(self.columns[fig_name], dtype=float).reshape(shape)
             fig, ax = plt.subplots(figsize=(7, 4.2))
             for c in combos:
@@ -268,6 +268,25 @@ class Target:
     method: str | None = None
     rtol: float | None = None
     law: str | None = None
+    step: float | None = None      # fixed-step methods (rk4, koster) of a model
+
+    def tighter(self) -> "Target | None":
+        """The same target one notch more accurate (runtime/accuracy.py: rtol/10, or half the
+        step), for the error estimates; None at the tightest rtol."""
+        from . import accuracy
+
+        if self.kind == "model":
+            method, rtol = self.method, self.rtol
+        elif self.kind == "dynacam":
+            sc = _built(self)
+            method, rtol = sc.method, sc.rtol
+        else:
+            case = _built(self).case
+            method, rtol = case.method, case.rtol
+        settings = accuracy.tighter_settings(method, rtol, self.step)
+        if settings is None:
+            return None
+        return replace(self, method=method, rtol=settings[0], step=settings[1])
 
     @property
     def figures(self) -> tuple:
@@ -287,7 +306,7 @@ class Target:
                 if f.type == "float"}
 
 
-def resolve(target, *, t_end=None, method=None, rtol=None, law=None) -> Target:
+def resolve(target, *, t_end=None, method=None, rtol=None, law=None, step=None) -> Target:
     """The Target of a model name, a model file, or a scene (built-in name or TOML file)."""
     from . import scene as scenes
     from .models import available
@@ -299,9 +318,10 @@ def resolve(target, *, t_end=None, method=None, rtol=None, law=None) -> Target:
         if name.endswith(".py") and not Path(name).is_file():
             raise CamdynInputError(f"{name}: no such model file")
         model = name if name.endswith(".py") else name.replace("-", "_")
+        adaptive = (method or "dp54") in ("dp54", "rodas4")
         return Target("model", model, 3.0 if t_end is None else float(t_end),
-                      method or "dp54", 1e-9 if rtol is None and (method or "dp54") in
-                      ("dp54", "rodas4") else rtol, law or "cycloidal")
+                      method or "dp54", 1e-9 if rtol is None and adaptive else rtol,
+                      law or "cycloidal", step)
     try:
         kind, sc = scenes.load_any(name)
     except CamdynInputError as exc:
@@ -311,11 +331,13 @@ def resolve(target, *, t_end=None, method=None, rtol=None, law=None) -> Target:
         if t_end is not None and t_end <= 1.0:
             raise CamdynInputError(f"t_end={t_end:g} must exceed the end of the rise, T = 1")
         run = sc["run"]
-        return Target("model", "camshaft1", 3.0 if t_end is None else float(t_end),
-                      method or run["method"], run["rtol"] if rtol is None else rtol,
-                      law or sc["law"])
-    if any(v is not None for v in (t_end, law)):
-        raise CamdynInputError("t_end and law of a scene sweep come from the scene file")
+        method = method or run["method"]
+        adaptive = method in ("dp54", "rodas4")
+        return Target("model", "camshaft1", 3.0 if t_end is None else float(t_end), method,
+                      (run["rtol"] if rtol is None else rtol) if adaptive else None,
+                      law or sc["law"], step)
+    if any(v is not None for v in (t_end, law, step)):
+        raise CamdynInputError("t_end, law and step of a scene sweep come from the scene file")
     return Target("dynacam" if kind == "dynacam" else "beam", name, None, method, rtol, None)
 
 
@@ -344,7 +366,8 @@ def _built(target: Target):
             raise CamdynInputError(f"model {model.name} declares no residual-vibration outputs; "
                                    "sweep a model that does (camshaft1, camshaft2, one_dof, ...) "
                                    "or a scene")
-        sim = Simulator(model, target.t_end, target.method, rtol=target.rtol, law=target.law)
+        sim = Simulator(model, target.t_end, target.method, rtol=target.rtol, law=target.law,
+                        step=target.step)
         hit = (model, sim)
     else:
         kind, sc = scenes.load_any(target.name)
@@ -525,10 +548,15 @@ def default_jobs() -> int:
 
 def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: bool = True,
           t_end: float | None = None, method: str | None = None, rtol: float | None = None,
-          law: str | None = None, chunk: int | None = None) -> SweepResult:
+          law: str | None = None, step: float | None = None, chunk: int | None = None,
+          errors: bool = False) -> SweepResult:
     """Run ``target`` (module doc) at every point of ``grid`` ({name: values}); ``jobs``
-    threads (default: every core), or the Dask cluster ``dask``; a progress bar on stderr."""
-    tgt = resolve(target, t_end=t_end, method=method, rtol=rtol, law=law)
+    threads (default: every core), or the Dask cluster ``dask``; a progress bar on stderr.
+
+    ``errors``: every grid point again one notch more accurately (rtol/10, or half the step),
+    and a column ``<figure>_error`` = |v - v'| (times Richardson's factor for fixed steps) for
+    every figure (runtime/accuracy.py); twice the time."""
+    tgt = resolve(target, t_end=t_end, method=method, rtol=rtol, law=law, step=step)
     axes = _axes(grid)
     _check_names(tgt, axes)
     jobs = default_jobs() if jobs is None else jobs
@@ -540,24 +568,39 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
     if isinstance(size, bool) or not isinstance(size, int) or size < 1:
         raise CamdynInputError(f"chunk={size!r}: give a positive whole number of grid points")
     pieces = [pts[i:i + size] for i in range(0, len(pts), size)]
-    bar = _bar(len(pts), progress, tgt.name)
+    tight = None
+    if errors:
+        tight = tgt.tighter()
+        if tight is None:
+            raise CamdynInputError(f"rtol={tgt.rtol:g} is the tightest there is: no error "
+                                   "estimate (give a larger rtol)")
+    todo = [(t, p) for t in ([tgt] if tight is None else [tgt, tight]) for p in pieces]
+    bar = _bar(len(pts) * (2 if tight else 1), progress, tgt.name)
     start = time.perf_counter()
     try:
         if dask is not None:
-            results, where = _on_dask(dask, tgt, names, pieces, bar)
+            results, where = _on_dask(dask, todo, names, bar)
         else:
-            results = _local(tgt, names, pieces, jobs, bar)
+            results = _local(todo, names, jobs, bar)
             where = f"local, {jobs} thread{'s' if jobs > 1 else ''}"
     finally:
         bar.close()
     seconds = time.perf_counter() - start
-    figs = np.concatenate([r[0] for r in results])
-    steps = np.concatenate([r[1] for r in results])
+    figs = np.concatenate([r[0] for r in results[:len(pieces)]])
+    steps = np.concatenate([r[1] for r in results[:len(pieces)]])
     columns = {k: pts[:, i].copy() for i, k in enumerate(names)}
     columns.update({k: figs[:, i] for i, k in enumerate(tgt.figures)})
+    figures = tgt.figures
+    if tight is not None:
+        from .accuracy import factor
+
+        tfigs = np.concatenate([r[0] for r in results[len(pieces):]])
+        est = np.abs(figs - tfigs) * factor(tight.method or "dp54")
+        columns.update({f"{k}_error": est[:, i] for i, k in enumerate(tgt.figures)})
+        figures = tuple(x for k in tgt.figures for x in (k, f"{k}_error"))
     columns["n_steps"] = steps
-    return SweepResult(tgt.name, axes, tgt.figures, columns, seconds, where,
-                       meta={"target": tgt})
+    return SweepResult(tgt.name, axes, figures, columns, seconds, where,
+                       meta={"target": tgt, "tight": tight})
 
 
 class _NoBar:
@@ -577,24 +620,26 @@ def _bar(total: int, progress: bool, label: str):
                 mininterval=0.2)
 
 
-def _local(tgt, names, pieces, jobs, bar) -> list:
-    if jobs == 1 or len(pieces) == 1:
+def _local(todo, names, jobs, bar) -> list:
+    """run_chunk of every (target, points) of ``todo``, in order."""
+    if jobs == 1 or len(todo) == 1:
         out = []
-        for piece in pieces:
+        for tgt, piece in todo:
             out.append(run_chunk(tgt, names, piece))
             bar.update(len(piece))
         return out
-    _built(tgt)     # build once, before the threads share it
+    for tgt in {t for t, _ in todo}:
+        _built(tgt)     # build once, before the threads share it
     with ThreadPoolExecutor(max_workers=jobs) as pool:
-        futures = [pool.submit(run_chunk, tgt, names, piece) for piece in pieces]
+        futures = [pool.submit(run_chunk, tgt, names, piece) for tgt, piece in todo]
         out = []
-        for fut, piece in zip(futures, pieces):
+        for fut, (_, piece) in zip(futures, todo):
             out.append(fut.result())
             bar.update(len(piece))
     return out
 
 
-def _on_dask(dask, tgt, names, pieces, bar) -> tuple[list, str]:
+def _on_dask(dask, todo, names, bar) -> tuple[list, str]:
     try:
         from distributed import Client
     except ImportError:
@@ -612,10 +657,10 @@ def _on_dask(dask, tgt, names, pieces, bar) -> tuple[list, str]:
         client = Client(dask)
         own = True
     try:
-        futures = client.map(run_chunk, [tgt] * len(pieces), [names] * len(pieces), pieces,
-                             pure=False)
+        futures = client.map(run_chunk, [t for t, _ in todo], [names] * len(todo),
+                             [p for _, p in todo], pure=False)
         out = []
-        for fut, piece in zip(futures, pieces):
+        for fut, (_, piece) in zip(futures, todo):
             out.append(fut.result())
             bar.update(len(piece))
         where = f"dask {client.scheduler.address}"

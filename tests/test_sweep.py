@@ -156,3 +156,19 @@ def test_dynacam_scene_sweep_is_its_summary():
         assert res["U0"][k] == summary["U0"]
         assert res["speed_variation_max"][k] == summary["speed_variation_max"]
         assert bool(res["jump_occurs"][k]) == summary["jump"]["occurs"]
+
+
+def test_error_estimate_is_the_change_at_a_tenth_of_rtol():
+    """errors=True: <figure>_error = |v(rtol) - v(rtol/10)| (runtime/accuracy.py), the second
+    sweep's own figures; at tau = 0.15, Fa = 2 (thesis sec. 4.7's case) it bounds the true
+    error of U0, U0'' against rtol 1e-12 within a factor 10 (as tests/test_accuracy.py
+    asks of camdyn residual)."""
+    grid = {"Fa": [2.0], "tau": [0.15]}
+    est = sweep.sweep("camshaft1", grid, rtol=1e-8, errors=True, jobs=1, progress=False)
+    tight = sweep.sweep("camshaft1", grid, rtol=1e-9, jobs=1, progress=False)
+    ref = sweep.sweep("camshaft1", grid, rtol=1e-12, jobs=1, progress=False)
+    for name in sweep.RESIDUAL_FIGURES:
+        assert est[f"{name}_error"][0] == abs(est[name][0] - tight[name][0])
+    for name in ("U0", "U0dd"):
+        true = abs(est[name][0] - ref[name][0])
+        assert true / 10 <= est[f"{name}_error"][0] <= 10 * true, name
