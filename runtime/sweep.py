@@ -317,7 +317,8 @@ def resolve(target, *, t_end=None, method=None, rtol=None, law=None, step=None) 
     if name.endswith(".py") or name.replace("-", "_") in available():
         if name.endswith(".py") and not Path(name).is_file():
             raise CamdynInputError(f"{name}: no such model file")
-        model = name if name.endswith(".py") else name.replace("-", "_")
+        # a model file by its absolute path: a Dask worker may run elsewhere
+        model = str(Path(name).resolve()) if name.endswith(".py") else name.replace("-", "_")
         adaptive = (method or "dp54") in ("dp54", "rodas4")
         return Target("model", model, 3.0 if t_end is None else float(t_end),
                       method or "dp54", 1e-9 if rtol is None and adaptive else rtol,
