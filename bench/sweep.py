@@ -229,7 +229,9 @@ def markdown(med, times, old, dask_start, cores, same, repeat, wall) -> str:
               "| what | time | per run | note |", "|:---|---:|---:|:---|"]
     for label, t, note in rows:
         lines.append(f"| {label} | {t:.3f} s | {1e6 * t / n:.0f} us | {note} |")
-    lines += ["", "Every repeat (s): " + "; ".join(
+    lines += ["", "CPU times are the process's, every thread counted: the Dask scheduler of the "
+              "LocalCluster runs in this process and adds a little while it idles.", ""]
+    lines += ["Every repeat (s): " + "; ".join(
         f"{k} " + ", ".join(f"{x:.3f}" for x in v) for k, v in times.items()), ""]
     if old:
         lines += ["## Accuracy against the old path", "",
