@@ -253,12 +253,12 @@ cdef inline void _offer(Cands* c, double key, double lo, double hi) noexcept nog
 
 cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step, int n_cand,
                   const double* cache, int stride, double* value, double* at) noexcept nogil:
-    """The largest score on [a, b] (module doc); value (the signed v unless kind 0) and its
-    time into value/at.  ``cache``: NULL, or the value at every recorded point j > 0 as the
+    """The largest score on [a, b] (module doc); value (v for kinds 1, 2; |v| for 0, 3) and
+    its time into value/at.  ``cache``: NULL, or the value at every recorded point j > 0 as the
     dense output gives it there (step j - 1 at its end), which the scan then reads instead of
     evaluating, and of which it samples only every ``stride``-th (by index; with per_step 1).
     Returns the number of samples scanned (0: an empty span)."""
-    cdef Py_ssize_t i, j = 0, n_samples = 0, ik = -1, istep = 0
+    cdef Py_ssize_t i, n_samples = 0, ik = -1, istep = 0
     cdef double tk, tk1, tq, sc, best = -INFINITY, best_t = a, x
     cdef double t0 = 0.0, t1 = 0.0, t2 = 0.0, s0 = 0.0, s1 = 0.0, s2 = 0.0
     cdef int q, k
@@ -343,7 +343,7 @@ cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step,
 cdef double _crossing(Rec* r, int which, double level, int* ok) noexcept nogil:
     """First time the state ``which`` reaches ``level``: the first recorded point at or past
     it, then bisection on the dense output of the step before it to 1e-14."""
-    cdef Py_ssize_t k = 0, i
+    cdef Py_ssize_t k = 0
     cdef double lo, hi, mid
     cdef int it
     ok[0] = 1
@@ -358,7 +358,6 @@ cdef double _crossing(Rec* r, int which, double level, int* ok) noexcept nogil:
     hi = _t(r, k)
     if lo == hi:
         return lo
-    i = k - 1
     for it in range(200):
         if hi - lo <= 1e-14:
             break
