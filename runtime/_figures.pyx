@@ -251,93 +251,106 @@ cdef inline void _offer(Cands* c, double key, double lo, double hi) noexcept nog
         c.n += 1
 
 
+cdef struct Scan:
+    # the scan's last three samples, its best sample and its candidate peaks
+    double t0, t1, t2, s0, s1, s2, best, best_t
+    Py_ssize_t n
+    bint by_vertex
+    Cands c
+
+
+cdef inline void _take(Scan* S, double tq, double sc) noexcept nogil:
+    """One sample: slide the window and offer its middle if that is a local maximum."""
+    S.t0 = S.t1
+    S.s0 = S.s1
+    S.t1 = S.t2
+    S.s1 = S.s2
+    S.t2 = tq
+    S.s2 = sc
+    S.n += 1
+    if S.n == 2 and S.s1 >= S.s2:
+        _offer(&S.c, S.s1, S.t1, S.t2)
+    elif S.n >= 3 and S.s1 >= S.s0 and S.s1 >= S.s2:
+        _offer(&S.c, _vertex(S.t0, S.s0, S.t1, S.s1, S.t2, S.s2) if S.by_vertex else S.s1,
+               S.t0, S.t2)
+    if sc > S.best:
+        S.best = sc
+        S.best_t = tq
+
+
 cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step, int n_cand,
                   const double* cache, int stride, double* value, double* at) noexcept nogil:
     """The largest score on [a, b] (module doc); value (v for kinds 1, 2; |v| for 0, 3) and
-    its time into value/at.  ``cache``: NULL, or the value at every recorded point j > 0 as the
-    dense output gives it there (step j - 1 at its end), which the scan then reads instead of
-    evaluating, and of which it samples only every ``stride``-th (by index; with per_step 1).
-    Returns the number of samples scanned (0: an empty span)."""
-    cdef Py_ssize_t i, n_samples = 0, ik = -1, istep = 0
-    cdef double tk, tk1, tq, sc, best = -INFINITY, best_t = a, x
-    cdef double t0 = 0.0, t1 = 0.0, t2 = 0.0, s0 = 0.0, s1 = 0.0, s2 = 0.0
+    its time into value/at.  ``cache``: NULL, or the value at every ``stride``-th recorded
+    point j > 0 as the dense output gives it there (step j - 1 at its end); with it (and
+    per_step 1) the scan reads those points only.  Returns the number of samples scanned
+    (0: an empty span)."""
+    cdef Py_ssize_t i, ik = -1, istep = 0, j
+    cdef double tk, tk1, tq, x, sc
     cdef int q, k
-    cdef Cands c
+    cdef Scan S
     cdef bint more = True
-    c.n = 0
-    c.cap = n_cand if 0 < n_cand <= MAX_CAND else 1
+    S.n = 0
+    S.t1 = S.t2 = S.s1 = S.s2 = 0.0
+    S.best = -INFINITY
+    S.best_t = a
+    S.c.n = 0
+    S.c.cap = n_cand if 0 < n_cand <= MAX_CAND else 1
     # one candidate: the best sample, as the reference takes it; several: the best peaks
-    cdef bint by_vertex = c.cap > 1
+    S.by_vertex = S.c.cap > 1
     if not b >= a:
         return 0
-    # walk the knots a < record times < b, b; per_step samples in each knot interval
-    i = 0
-    while i < r.n and _t(r, i) <= a:
-        i += 1
-    tk = a
-    while more:
-        # next knot: the next distinct recorded time inside (tk, b), else b
-        while i < r.n and _t(r, i) <= tk:
+    _take(&S, a, _score(r, a, _step_of(r, a), which, kind))
+    if cache != NULL and per_step == 1:
+        # the recorded points on the stride inside (a, b), first of a pair at a stop
+        j = _step_of(r, a) + 1
+        j += (stride - j % stride) % stride
+        while j < r.n and _t(r, j) < b:
+            if _t(r, j) > a and _t(r, j) > _t(r, j - 1):
+                _take(&S, _t(r, j), _as_score(cache[j], kind))
+            j += stride
+    else:
+        # the knots a < recorded times < b, b; per_step samples in each knot interval
+        i = 0
+        while i < r.n and _t(r, i) <= a:
             i += 1
-        if i < r.n and _t(r, i) < b:
-            tk1 = _t(r, i)
-        else:
-            tk1 = b
-        if per_step > 1 and tk1 > tk:
-            istep = _step_of(r, 0.5 * (tk + tk1))   # the step every interior sample lies in
-        for q in range(per_step if tk1 > tk else 1):
-            if q == 0:
-                tq = tk
-                if ik > 0 and cache != NULL and ik % stride != 0:
-                    continue            # a recorded point off the stride: not sampled
-                if ik > 0 and cache != NULL:
-                    sc = _as_score(cache[ik], kind)
-                else:
-                    sc = _score(r, tq, _step_of(r, tq), which, kind)
+        tk = a
+        while more:
+            # next knot: the next distinct recorded time inside (tk, b), else b
+            while i < r.n and _t(r, i) <= tk:
+                i += 1
+            tk1 = _t(r, i) if i < r.n and _t(r, i) < b else b
+            if tk1 > tk and per_step > 1:
+                istep = _step_of(r, 0.5 * (tk + tk1))   # the step every sample inside lies in
+                for q in range(1, per_step):
+                    tq = tk + (tk1 - tk) * q / per_step
+                    _take(&S, tq, _score(r, tq, istep, which, kind))
+            if tk1 >= b:
+                more = False
             else:
-                tq = tk + (tk1 - tk) * q / per_step
-                sc = _score(r, tq, istep, which, kind)
-            # slide the window (t0, t1, t2) and offer t1 if it is a local maximum
-            t0, s0, t1, s1, t2, s2 = t1, s1, t2, s2, tq, sc
-            n_samples += 1
-            if n_samples == 2 and s1 >= s2:
-                _offer(&c, s1, t1, t2)
-            elif n_samples >= 3 and s1 >= s0 and s1 >= s2:
-                _offer(&c, _vertex(t0, s0, t1, s1, t2, s2) if by_vertex else s1, t0, t2)
-            if sc > best:
-                best = sc
-                best_t = tq
-        if tk1 >= b:
-            more = False
-        tk = tk1
-        ik = i
-    # b itself
-    tq = b
-    sc = _score(r, tq, _step_of(r, tq), which, kind)
-    t0, s0, t1, s1, t2, s2 = t1, s1, t2, s2, tq, sc
-    n_samples += 1
-    if n_samples >= 3 and s1 >= s0 and s1 >= s2:
-        _offer(&c, _vertex(t0, s0, t1, s1, t2, s2) if by_vertex else s1, t0, t2)
-    if n_samples >= 2 and s2 >= s1:
-        _offer(&c, s2, t1, t2)
-    if n_samples == 1:
-        _offer(&c, s2, t2, t2)
-    if sc > best:
-        best = sc
-        best_t = tq
-    for k in range(c.n):
+                _take(&S, tk1, _score(r, tk1, _step_of(r, tk1), which, kind))
+            tk = tk1
+    # b itself (once, when it is not a itself)
+    if b > a:
+        _take(&S, b, _score(r, b, _step_of(r, b), which, kind))
+    if S.n >= 2 and S.s2 >= S.s1:
+        _offer(&S.c, S.s2, S.t1, S.t2)
+    if S.n == 1:
+        _offer(&S.c, S.s2, S.t2, S.t2)
+    for k in range(S.c.n):
         # a peak whose parabola lies 1e-3 of the best one's below it cannot be the largest:
         # at 25 samples a period the parabola is within ~1e-5 of the peak
-        if by_vertex and k > 0 and c.key[k] < c.key[0] - 1e-3 * fabs(c.key[0]):
+        if S.by_vertex and k > 0 and S.c.key[k] < S.c.key[0] - 1e-3 * fabs(S.c.key[0]):
             break
-        if c.hi[k] > c.lo[k]:
-            sc = _brent_min(r, which, kind, c.lo[k], c.hi[k], 1e-12 * (fabs(c.hi[k]) if fabs(c.hi[k]) > 1.0 else 1.0), &x)
-            if sc > best:
-                best = sc
-                best_t = x
-    value[0] = -best if kind >= 2 else best
-    at[0] = best_t
-    return <int> (n_samples if n_samples < 2147483647 else 2147483647)
+        if S.c.hi[k] > S.c.lo[k]:
+            sc = _brent_min(r, which, kind, S.c.lo[k], S.c.hi[k],
+                            1e-12 * (fabs(S.c.hi[k]) if fabs(S.c.hi[k]) > 1.0 else 1.0), &x)
+            if sc > S.best:
+                S.best = sc
+                S.best_t = x
+    value[0] = -S.best if kind >= 2 else S.best
+    at[0] = S.best_t
+    return <int> (S.n if S.n < 2147483647 else 2147483647)
 
 
 cdef double _crossing(Rec* r, int which, double level, int* ok) noexcept nogil:
@@ -377,11 +390,13 @@ cdef void _fill_cache(Rec* r, int w1, int w2, double* c1, double* c2, int stride
     cdef int w = w1 if w1 >= w2 else w2
     c1[0] = NAN
     c2[0] = NAN
-    for j in range(1, r.n):
-        if j % stride == 0 and _t(r, j) > _t(r, j - 1):
+    j = stride
+    while j < r.n:
+        if _t(r, j) > _t(r, j - 1):
             _value_in(r, _t(r, j), j - 1, w)
             c1[j] = r.y[w1] if w1 < ns else r.out[w1 - ns]
             c2[j] = r.y[w2] if w2 < ns else r.out[w2 - ns]
+        j += stride
 
 
 # -- one record, from Python -------------------------------------------------------------------
