@@ -73,6 +73,8 @@ bench: build
 	$(BIN)/python bench/scene_load.py
 	$(BIN)/python bench/derive_time.py
 	$(BIN)/python bench/derive_seeds.py --seeds 0 random random
+	$(BIN)/python -c 'import distributed' 2>/dev/null || $(BIN)/python -m pip install --quiet 'dask[distributed]>=2024.1'
+	$(BIN)/python bench/sweep.py
 
 # every thesis and paper figure the models determine, with out/figures/index.html
 figures: build

@@ -408,6 +408,9 @@ OTHER_BENCHMARKS = (
     "The beam follower's two formulations: [BENCHMARKS-beam.md](BENCHMARKS-beam.md) "
     "(`bench/beam.py`).",
     "Loading a scene: [BENCHMARKS-scenes.md](BENCHMARKS-scenes.md) (`bench/scene_load.py`).",
+    "Sweeps (issue 14, item 1): [BENCHMARKS-sweep.md](BENCHMARKS-sweep.md) (`bench/sweep.py`): "
+    "the fig. 4.11 grid (6 Fa x 400 tau) through camdyn sweep on one core, every core and Dask, "
+    "against its bare integrations and the old Python path.",
     "Regeneration: [BENCHMARKS-derive.md](BENCHMARKS-derive.md), "
     "[BENCHMARKS-derive-seeds.md](BENCHMARKS-derive-seeds.md).",
 )

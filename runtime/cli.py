@@ -1114,6 +1114,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_precision(sub, all_methods)
     _add_profile(sub, laws.NAMES)
     _add_figures(sub)
+    _add_sweep(sub, all_methods, laws.NAMES)
     return top
 
 
@@ -1344,6 +1345,65 @@ def _add_design(sub, law_names) -> None:
                                    "requirement)")
     a("--quiet", action="store_true", help="no progress lines")
     ds.set_defaults(func=_cmd_design)
+# -- camdyn sweep ----------------------------------------------------------------------
+
+def _cmd_sweep(args) -> int:
+    """The headline figures over a grid of parameters (runtime/sweep.py): CSV, Parquet with
+    pyarrow, a chart per figure."""
+    from . import sweep as sw
+
+    try:
+        grid = dict(sw.parse_axis(text) for text in args.grid)
+        if len(grid) != len(args.grid):
+            raise CamdynInputError("argument --grid: a parameter is given twice")
+        res = sw.sweep(args.target, grid, jobs=args.jobs, dask=args.dask,
+                       progress=not args.quiet, t_end=args.t_end, method=args.method,
+                       rtol=args.rtol, law=args.law, step=args.step,
+                       errors=args.error_estimate)
+        files = res.write(args.out)
+    except CamdynInputError as exc:
+        return fail("camdyn sweep", str(exc))
+    except SimulationError as exc:
+        print(f"camdyn sweep: run failed: {exc}", file=sys.stderr)
+        return 1
+    print(f"{len(res)} runs of {args.target} in {res.seconds:.2f} s ({res.where}); "
+          f"figures: {', '.join(res.figures)}")
+    for path in files:
+        print(f"  {path}")
+    return 0
+
+
+def _add_sweep(sub, all_methods, law_names) -> None:
+    sw = sub.add_parser("sweep", help="headline figures over a grid of parameters: table (CSV, "
+                        "Parquet) and a chart per figure, on every core or a Dask cluster")
+    sw.add_argument("target", metavar="SCENE_OR_MODEL",
+                    help="a model (camshaft1, camshaft2, one_dof, ...), a model file (.py) or a "
+                         "scene (built-in name or TOML: default, indexing, beam_paper, ...)")
+    sw.add_argument("--grid", action="append", required=True, metavar="NAME=START:STOP:N",
+                    help="a grid axis: NAME=START:STOP:N[:lin|log|inv] (inv: uniform in 1/NAME, "
+                         "as fig. 4.11's tau) or NAME=a,b,c; repeat for more axes (the first "
+                         "varies slowest)")
+    sw.add_argument("--jobs", type=int, default=None,
+                    help="threads (default: every core)")
+    sw.add_argument("--dask", default=None, metavar="ADDRESS",
+                    help="run on the Dask scheduler at ADDRESS (tcp://host:8786) instead")
+    sw.add_argument("--out", default="out/sweep", help="folder for the table and charts "
+                                                       "(default out/sweep)")
+    sw.add_argument("--t-end", type=float, default=None,
+                    help="end of each run of a model (default 3)")
+    sw.add_argument("--method", choices=all_methods, default=None,
+                    help="integration method (default: the scene's, dp54 for a model)")
+    sw.add_argument("--rtol", type=float, default=None,
+                    help="relative tolerance (default: the scene's, 1e-9 for a model)")
+    sw.add_argument("--step", type=float, default=None,
+                    help="step of a fixed-step method (rk4, koster)")
+    sw.add_argument("--law", choices=law_names, default=None,
+                    help="cam law of a model (default: the scene's, cycloidal)")
+    sw.add_argument("--error-estimate", action="store_true",
+                    help="run the grid again at rtol/10 (half the step) and add a column "
+                         "<figure>_error per figure (twice the time)")
+    sw.add_argument("--quiet", action="store_true", help="no progress bar")
+    sw.set_defaults(func=_cmd_sweep)
 
 
 def main(argv=None) -> int:

@@ -23,6 +23,7 @@ from .envelope import envelope, tau_grid
 from .errors import CamdynInputError
 from .residual import residual
 from .simulate import simulate
+from .sweep import RESIDUAL_FIGURES, Target, sweep
 
 def load_scene(path: str | None) -> dict:
     """The study scene at ``path`` (a file or a built-in name) or the embedded default, checked
@@ -78,16 +79,13 @@ def main_job(scene: dict, out: Path, progress: bool = True) -> Path:
     # fig. 4.11: graphs against tau
     # uniform in 1/tau, so that every tuning dip of (3.5) is resolved alike (runtime/envelope.py)
     taus = tau_grid(graphs["tau_min"], graphs["tau_max"], graphs["n_tau"])
-    rows = {}
-    total = len(taus) * len(graphs["Fa"])
-    k = 0
-    for Fa in graphs["Fa"]:
-        rows[Fa] = []
-        for tau in taus:
-            k += 1
-            if k % 40 == 1 or k == total:
-                say(f"  graphs: run {k}/{total} (Fa = {Fa:g}, tau = {tau:.3f})")
-            rows[Fa].append(residual(_run(float(tau), Fa, scene)).as_dict())
+    # one compiled sweep over (Fa, tau) on every core (runtime/sweep.py)
+    say(f"  graphs: {len(taus) * len(graphs['Fa'])} runs")
+    integ = scene["run"]
+    swept = sweep(Target("model", "camshaft1", 3.0, integ["method"], integ["rtol"], scene["law"]),
+                  {"Fa": graphs["Fa"], "tau": taus}, progress=progress)
+    rows = {Fa: [{k: float(swept[k][j * len(taus) + i]) for k in RESIDUAL_FIGURES}
+                 for i in range(len(taus))] for j, Fa in enumerate(graphs["Fa"])}
     fig, ax = plt.subplots(2, 2, figsize=(11, 8))
     envelopes = {}
     for k, (Fa, vals) in enumerate(rows.items()):

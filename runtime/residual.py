@@ -7,7 +7,10 @@ Xdd_min_rise, T_at_Xdd_min
 
 Extremes are found on the dense output: a fine scan of every step, then the
 best sample is refined by bounded Brent minimization of the interpolant, so
-the figures do not depend on where the integrator happened to step.
+the figures do not depend on where the integrator happened to step.  The work is
+done in compiled code (runtime/_figures.pyx, 3-20x faster); the same recipe in
+Python and SciPy is kept as :func:`extreme_reference` and :func:`residual_reference`,
+which tests/test_figures_compiled.py compares it with.
 """
 from __future__ import annotations
 
@@ -16,6 +19,7 @@ from dataclasses import asdict, dataclass
 import numpy as np
 from scipy.optimize import minimize_scalar
 
+from . import _figures
 from .errors import CamdynInputError
 from .result import Result
 
@@ -40,9 +44,48 @@ def scan_grid(t_rec: np.ndarray, a: float, b: float, per_step: int) -> np.ndarra
     return np.append(grid, b)
 
 
+def _index(result: Result, name: str) -> int:
+    """Index of a state, or of an output after the states, as runtime/_figures.pyx takes it."""
+    if name in result.state_names:
+        return result.state_names.index(name)
+    if name in result.output_names:
+        return len(result.state_names) + result.output_names.index(name)
+    raise KeyError(f"{name!r} is neither a state nor an output of {result.model.name}; "
+                   f"known: {', '.join(result.names)}")
+
+
+def _record(result: Result) -> tuple:
+    """The arguments runtime/_figures.pyx reads a run's record from."""
+    return (result.model.capsule, result.p, result.law_codes, result.law_pars, result._rows,
+            result.mode, len(result.state_names), bool(result._extra.shape[0]))
+
+
 def extreme(result: Result, name: str, a: float, b: float, *, absolute: bool, minimum: bool,
-            per_step: int = 12) -> tuple[float, float]:
-    """Refined extreme of output ``name`` on [a, b]: (value, time)."""
+            per_step: int = 12, candidates: int = 1) -> tuple[float, float]:
+    """Refined extreme of state or output ``name`` on [a, b]: (value, time), in compiled code.
+
+    ``per_step`` samples in every recorded step, then the best sample (``candidates`` = 1,
+    as :func:`extreme_reference`) or the best ``candidates`` peaks are refined by Brent's
+    bounded minimizer on the dense output.  A run of another integrator that only offers
+    ``sample`` (runtime/peers.py) goes through :func:`extreme_reference`."""
+    if not isinstance(result, Result):
+        return extreme_reference(result, name, a, b, absolute=absolute, minimum=minimum,
+                                 per_step=per_step)
+    if not (result.t[0] <= a <= b <= result.t[-1]):
+        raise CamdynInputError(f"extreme of {name} on [{a:g}, {b:g}]: the span must lie in the "
+                               f"run [{result.t[0]:g}, {result.t[-1]:g}]")
+    if per_step < 1 or not 1 <= candidates <= 16:
+        raise CamdynInputError(f"per_step={per_step} must be >= 1 and candidates={candidates} "
+                               "in 1..16")
+    value, at = _figures.extreme(*_record(result), _index(result, name), float(a), float(b),
+                                 absolute, minimum, per_step, candidates)
+    return float(value), float(at)
+
+
+def extreme_reference(result: Result, name: str, a: float, b: float, *, absolute: bool,
+                      minimum: bool, per_step: int = 12) -> tuple[float, float]:
+    """Refined extreme of output ``name`` on [a, b]: (value, time), in Python and SciPy (the
+    reference the compiled :func:`extreme` is tested against)."""
     grid = scan_grid(result.t, a, b, per_step)
     vals = result.sample(grid)[name]
     score = np.abs(vals) if absolute else vals
@@ -81,14 +124,41 @@ def crossing_time(result: Result, name: str, level: float) -> float:
     return float(brentq(lambda t: result.sample([t])[name][0] - level, a, b, xtol=1e-14))
 
 
+def rise_end(result: Result, spec: dict) -> float:
+    """End of the rise: spec's rise_end, or the time its rise_state reaches it (compiled)."""
+    if not spec.get("rise_state"):
+        return spec["rise_end"]
+    name = spec["rise_state"]
+    if not isinstance(result, Result) or name not in result.state_names:
+        return crossing_time(result, name, spec["rise_end"])
+    t = _figures.crossing(*_record(result), result.state_names.index(name),
+                          float(spec["rise_end"]))
+    if t != t:
+        raise CamdynInputError(f"{name} never reaches {spec['rise_end']:g} in this run; run longer")
+    return float(t)
+
+
 def residual(result: Result) -> ResidualVibration:
     """U0, U0dd, Xdd_min_rise, T_at_Xdd_min of a run that covers the rise and a dwell."""
+    return _residual(result, extreme, rise_end)
+
+
+def residual_reference(result: Result) -> ResidualVibration:
+    """:func:`residual` through the Python and SciPy reference of the extremes."""
+    def end(res, spec):
+        if spec.get("rise_state"):
+            return crossing_time(res, spec["rise_state"], spec["rise_end"])
+        return spec["rise_end"]
+
+    return _residual(result, extreme_reference, end)
+
+
+def _residual(result: Result, extreme, rise_end) -> ResidualVibration:
     spec = result.model.manifest.get("residual")
     if not spec:
         raise CamdynInputError(f"model {result.model.name} declares no residual-vibration outputs")
-    t0, t1, t_end = result.t[0], spec["rise_end"], result.t[-1]
-    if spec.get("rise_state"):
-        t1 = crossing_time(result, spec["rise_state"], spec["rise_end"])
+    t0, t_end = result.t[0], result.t[-1]
+    t1 = rise_end(result, spec)
     if not (t0 <= 0.0 and t_end > t1):
         raise CamdynInputError(
             f"the run must cover the rise [0, {t1:g}] and part of the dwell after it "

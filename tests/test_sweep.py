@@ -1,0 +1,174 @@
+"""camdyn sweep (runtime/sweep.py): grids, the table, jobs and Dask, the refusals.
+
+The figures themselves are tested against the reference and the closed form in
+test_figures_compiled.py; here each grid point's figures are checked against a run of its
+own through ``residual()`` (tolerances as there), and the ways of running a sweep (threads,
+a Dask cluster, a scene instead of a model) against each other: equal to the last bit, since
+each grid point runs the same compiled code on the same numbers.
+"""
+import csv
+import math
+
+import numpy as np
+import pytest
+
+from camdyn.runtime import sweep
+from camdyn.runtime.cli import main
+from camdyn.runtime.errors import CamdynInputError
+from camdyn.runtime.residual import residual
+from camdyn.runtime.simulate import simulate
+
+GRID = {"Fa": [0.0, 2.0], "tau": [0.12, 0.17, 0.3]}   # away from the dips of (3.5) at 1/n
+
+
+@pytest.fixture(scope="module")
+def local():
+    return sweep.sweep("camshaft1", GRID, jobs=1, progress=False)
+
+
+def test_table_holds_every_combination_first_axis_slowest(local):
+    """6 rows, Fa slowest; each row's figures equal those of its own run through residual()
+    (rtol 1e-9): U0, U0'' to 2e-7 relative, X''min 1e-11, its T 2e-7 (test_figures_compiled.py
+    says why)."""
+    assert list(local["Fa"]) == [0.0, 0.0, 0.0, 2.0, 2.0, 2.0]
+    assert list(local["tau"]) == [0.12, 0.17, 0.3] * 2
+    for row in local.rows():
+        r = residual(simulate("camshaft1", {"tau": row["tau"], "Fa": row["Fa"]}, 3.0, "dp54",
+                              rtol=1e-9))
+        assert row["U0"] == pytest.approx(r.U0, rel=2e-7)
+        assert row["U0dd"] == pytest.approx(r.U0dd, rel=2e-7)
+        assert row["Xdd_min_rise"] == pytest.approx(r.Xdd_min_rise, rel=1e-11)
+        assert row["T_at_Xdd_min"] == pytest.approx(r.T_at_Xdd_min, abs=2e-7)
+
+
+def test_threads_give_the_same_table(local):
+    """jobs = 2 with chunks of 1 point (every point on either thread) equals jobs = 1 bit for
+    bit."""
+    two = sweep.sweep("camshaft1", GRID, jobs=2, progress=False, chunk=1)
+    for name in local.names:
+        assert np.array_equal(two[name], local[name]), name
+
+
+def test_study_scene_is_camshaft1_with_its_settings(local):
+    """The default scene (camshaft1-study: cycloid, dp54, rtol 1e-9, T in [0, 3]) sweeps
+    CAMSHAFT-1 as the model target does: the same table."""
+    scene = sweep.sweep("default", GRID, jobs=1, progress=False)
+    for name in local.names:
+        assert np.array_equal(scene[name], local[name]), name
+
+
+def test_dask_local_cluster_gives_the_same_table(local):
+    """A LocalCluster of two workers (threads, so that it starts in a second) runs the chunks:
+    the same table, bit for bit."""
+    distributed = pytest.importorskip("distributed")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
+                                  dashboard_address=None) as cluster:
+        on_dask = sweep.sweep("camshaft1", GRID, dask=cluster, progress=False, chunk=2)
+    assert on_dask.where.startswith("dask")
+    for name in local.names:
+        assert np.array_equal(on_dask[name], local[name]), name
+
+
+def test_csv_parquet_and_charts(local, tmp_path):
+    """sweep.csv has a column per axis, figure and statistic and reads back to the last bit;
+    sweep.parquet (with pyarrow) too; one chart per figure."""
+    files = local.write(tmp_path)
+    with open(tmp_path / "sweep.csv") as fh:
+        rows = list(csv.DictReader(fh))
+    assert list(rows[0]) == ["Fa", "tau", "U0", "U0dd", "Xdd_min_rise", "T_at_Xdd_min", "n_steps"]
+    assert len(rows) == 6
+    for k, row in enumerate(rows):
+        for name, text in row.items():
+            assert float(text) == local[name][k]
+    for fig in sweep.RESIDUAL_FIGURES:
+        assert (tmp_path / f"{fig}.png").stat().st_size > 1000
+    pq = pytest.importorskip("pyarrow.parquet")
+    table = pq.read_table(tmp_path / "sweep.parquet").to_pydict()
+    assert np.array_equal(table["U0"], local["U0"])
+    assert tmp_path / "sweep.parquet" in files
+
+
+@pytest.mark.parametrize("text,name,values", [
+    ("tau=0.1:0.3:3", "tau", [0.1, 0.2, 0.3]),
+    ("Fa=0,0.5,2", "Fa", [0.0, 0.5, 2.0]),
+    ("tau=0.1:1:3:log", "tau", [0.1, math.sqrt(0.1), 1.0]),
+    ("tau=0.1:0.5:3:inv", "tau", [0.1, 1 / 6, 0.5]),   # uniform in 1/tau: 10, 6, 2
+])
+def test_axis_syntax(text, name, values):
+    got_name, got = sweep.parse_axis(text)
+    assert got_name == name
+    assert got == pytest.approx(values, rel=1e-14)
+
+
+@pytest.mark.parametrize("grid,words", [
+    ({"stiffness": [1.0]}, ["stiffness", "tau", "Fa"]),          # unknown: lists the names
+    ({"Fa": [-1.0]}, ["Fa", "range"]),                            # out of its declared range
+    ({"tau": [0.0, 0.1]}, ["tau", "range"]),
+    ({"tau": [float("nan")]}, ["tau", "finite"]),
+])
+def test_bad_grids_are_refused_naming_the_parameter(grid, words):
+    with pytest.raises(CamdynInputError) as exc:
+        sweep.sweep("camshaft1", grid, jobs=1, progress=False)
+    for w in words:
+        assert w in str(exc.value)
+
+
+def test_cli_writes_the_table(tmp_path, capsys):
+    rc = main(["sweep", "camshaft1", "--grid", "Fa=0,2", "--grid", "tau=0.1:0.3:3",
+               "--jobs", "2", "--out", str(tmp_path), "--quiet"])
+    assert rc == 0
+    out = capsys.readouterr().out
+    assert out.startswith("6 runs of camshaft1")
+    with open(tmp_path / "sweep.csv") as fh:
+        assert fh.readline().strip() == "Fa,tau,U0,U0dd,Xdd_min_rise,T_at_Xdd_min,n_steps"
+
+
+@pytest.mark.parametrize("argv,words", [
+    (["sweep", "camshaft1", "--grid", "tau=0.1:0.3"], ["--grid", "START:STOP:N"]),
+    (["sweep", "camshaft1", "--grid", "Q=0.1:0.3:3"], ["grid Q", "parameters are"]),
+    (["sweep", "camshaft1", "--grid", "tau=0:0.3:3:log"], ["tau", "START, STOP > 0"]),
+    (["sweep", "camshaft1", "--grid", "tau=0.1:0.3:0"], ["tau", "N=0"]),
+    (["sweep", "nowhere", "--grid", "tau=0.1:0.3:3"], ["nowhere", "neither a model"]),
+    (["sweep", "camshaft1", "--grid", "tau=0.2", "--jobs", "0"], ["jobs"]),
+    (["sweep", "one_dof", "--grid", "tau=0.2", "--t-end", "0.5"], ["rise"]),
+])
+def test_cli_refusals_are_one_line(argv, words, capsys):
+    rc = main(argv + ["--quiet"])
+    err = capsys.readouterr().err
+    assert rc != 0
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
+    for w in words:
+        assert w in err
+
+
+def test_dynacam_scene_sweep_is_its_summary():
+    """A DYNACAM scene (fig. 7.2's spring-loaded follower) swept over its follower stiffness
+    c_x: each row's figures are those of runtime/dynacam.py's summary of the scene with that
+    value, bit for bit (the same run; about 1 s)."""
+    from camdyn.runtime import dynacam, scene as scenes
+
+    sc = scenes.load("spring_loaded")
+    name = "c_x"
+    values = [sc.parameters[name], 1.1 * sc.parameters[name]]
+    res = sweep.sweep("spring_loaded", {name: values}, jobs=1, progress=False)
+    for k, v in enumerate(values):
+        summary, _ = dynacam.run(scenes.replace(sc, parameters={name: v}))
+        assert res["U0"][k] == summary["U0"]
+        assert res["speed_variation_max"][k] == summary["speed_variation_max"]
+        assert bool(res["jump_occurs"][k]) == summary["jump"]["occurs"]
+
+
+def test_error_estimate_is_the_change_at_a_tenth_of_rtol():
+    """errors=True: <figure>_error = |v(rtol) - v(rtol/10)| (runtime/accuracy.py), the second
+    sweep's own figures; at tau = 0.15, Fa = 2 (thesis sec. 4.7's case) it bounds the true
+    error of U0, U0'' against rtol 1e-12 within a factor 10 (as tests/test_accuracy.py
+    asks of camdyn residual)."""
+    grid = {"Fa": [2.0], "tau": [0.15]}
+    est = sweep.sweep("camshaft1", grid, rtol=1e-8, errors=True, jobs=1, progress=False)
+    tight = sweep.sweep("camshaft1", grid, rtol=1e-9, jobs=1, progress=False)
+    ref = sweep.sweep("camshaft1", grid, rtol=1e-12, jobs=1, progress=False)
+    for name in sweep.RESIDUAL_FIGURES:
+        assert est[f"{name}_error"][0] == abs(est[name][0] - tight[name][0])
+    for name in ("U0", "U0dd"):
+        true = abs(est[name][0] - ref[name][0])
+        assert true / 10 <= est[f"{name}_error"][0] <= 10 * true, name
