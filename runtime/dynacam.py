@@ -200,9 +200,12 @@ def summarize(scene: Scene, model, res, ch: dict, cpu: float) -> dict:
         if free.any():
             jump = {"occurs": True, "T": float(T[np.flatnonzero(free)[0]])}
     out["jump"] = jump
-    out["speed_variation_max"] = float(np.abs(res["speed_var"]).max())
-    out["motor_speed_variation_max"] = (float(np.abs(res["motor_speed_var"]).max())
-                                        if "motor_speed_var" in model.output_names else None)
+    t0 = float(res.t[0])
+    out["speed_variation_max"] = extreme(res, "speed_var", t0, t_end, absolute=True,
+                                         minimum=False)[0]
+    out["motor_speed_variation_max"] = (
+        extreme(res, "motor_speed_var", t0, t_end, absolute=True, minimum=False)[0]
+        if "motor_speed_var" in model.output_names else None)
     out["n_events"] = int(res.stats["n_events"])
     out["n_steps"] = int(res.stats["n_steps"])
     # DP54's stiffness test (Hairer): where it fired, as the nominal T; fixed-step warnings
