@@ -24,7 +24,7 @@ from ..checks import Check
 
 GROUPS = (("thesis", "Thesis figures (Koster, Vibrations of cam mechanisms)"),
           ("paper", "Paper: Rayleigh-beam follower of a roller cam (figs 4-9)"),
-          ("design", "Design charts (issue 14, items 2-6)"))
+          ("design", "Design charts (issue 14, items 1-6)"))
 """Sections of the index, in order: key, heading."""
 
 TOPICS = ("ch3", "ch4", "ch5", "ch7", "ch8", "app2", "measured", "paper", "design")
