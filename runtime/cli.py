@@ -1163,6 +1163,11 @@ def _cmd_profile(args) -> int:
                          groove=args.groove, points_per_degree=args.points_per_degree,
                          max_pressure_angle_deg=args.max_pressure_angle)
         out = cam.summary()
+        try:
+            Path(args.out).mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise CamdynInputError(f"argument --out: cannot create the folder {args.out}: "
+                                   f"{exc.strerror}") from None
     except CamdynInputError as exc:
         return fail(prog, str(exc))
     out["files"] = cam.write_all(args.out)

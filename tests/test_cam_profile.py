@@ -229,12 +229,16 @@ def test_cli_writes_everything(tmp_path, capsys):
     (["--base-radius", "-1"], "base-radius"),
     (["--max-pressure-angle", "95"], "max-pressure-angle"),
     (["--law", "nope"], "--law"),
+    (["--out", "__a_file__"], "--out"),
 ])
 def test_cli_refuses_bad_input(tmp_path, capsys, argv, names):
     base = {"--stroke": "0.015", "--base-radius": "0.026", "--roller-radius": "0.005",
             "--out": str(tmp_path)}
     for k, v in zip(argv[::2], argv[1::2]):
         base[k] = v
+    if base["--out"] == "__a_file__":          # --out naming an existing file, not a folder
+        (tmp_path / "f").write_text("")
+        base["--out"] = str(tmp_path / "f")
     args = ["profile"] + [x for kv in base.items() for x in kv]
     try:
         rc = main(args)
