@@ -1413,6 +1413,12 @@ def _add_sweep(sub, all_methods, law_names) -> None:
 
 def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
+    out = getattr(args, "out", None)
+    # every --out names a folder: a file in its place is refused here, in one line, rather
+    # than by a FileExistsError deep inside a command after its runs
+    if out is not None and Path(out).exists() and not Path(out).is_dir():
+        return fail(f"camdyn {args.command}" if getattr(args, "command", None) else "camdyn",
+                    f"argument --out: {out} is a file; --out names a folder")
     return args.func(args)
 
 

@@ -183,3 +183,20 @@ def test_simulate_text_table_matches_the_json():
         assert float(value) == pytest.approx(j[key], rel=5e-4), key
         if f"{key}_error" in j:
             assert rest[0] == "±" and float(rest[1]) == pytest.approx(j[f"{key}_error"], rel=5e-2), key
+
+
+@pytest.mark.parametrize("argv", [
+    ["run"], ["laws", "--tau", "0.1", "--fa", "0"], ["simulate", "spring_loaded"],
+    ["design", "--stroke", "0.02", "--tau", "0.2", "--fa", "0.1", "--no-check"],
+    ["sweep", "one_dof", "--grid", "tau=0.1:0.2:3"],
+])
+def test_out_naming_a_file_is_refused_in_one_line(tmp_path, capsys, argv):
+    """Every --out names a folder: a file there gives one line naming --out, exit 2, before
+    any run (it was a FileExistsError traceback after the runs in five commands)."""
+    from camdyn.runtime.cli import main
+
+    f = tmp_path / "a_file"
+    f.write_text("")
+    assert main([*argv, "--out", str(f)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and "--out" in err and "is a file" in err
