@@ -5,7 +5,7 @@ of curvature along the cam angle, the undercut and pressure-angle checks, and wr
 CSV, DXF (through ezdxf) and a PNG sheet.  NumPy on the compiled cam-law library; no SymPy.
 
 The motion is :class:`camdyn.runtime.profile.RDFD` (rise, upper dwell, return with the same
-law mirrored, lower dwell to 360 deg), and the walls are the envelopes of the roller circles
+law mirrored or a law of its own, lower dwell to 360 deg), and the walls are the envelopes of the roller circles
 tested as in :func:`camdyn.runtime.profile.undercut` (the wall offset by d has tangent
 p'(1 + d kappa_p)); here the follower axis may be offset.
 
@@ -88,6 +88,9 @@ class CamProfile:
     angles_deg: tuple = (90.0, 90.0, 90.0, 90.0)
     law: str = "cycloidal"
     law_parameter: float | None = None
+    return_law: str | None = None
+    """The return's law (None: the rise's law and parameter, mirrored)."""
+    return_law_parameter: float | None = None
     groove: bool = False
     points_per_degree: int = 10
     max_pressure_angle_deg: float = 30.0
@@ -120,8 +123,13 @@ class CamProfile:
                                    f"from 1 to 1000")
         _positive("max-pressure-angle", self.max_pressure_angle_deg, high=90.0)
         r = np.radians(ang)
+        if self.return_law is None and self.return_law_parameter is not None:
+            raise CamdynInputError("return-law-parameter goes with --return-law")
+        fall = (None if self.return_law is None
+                else choose(self.return_law, self.return_law_parameter))
         cam = RDFD(h, rb, rr, choose(self.law, self.law_parameter),
-                   beta_rise=float(r[0]), dwell_outer=float(r[1]), beta_fall=float(r[2]))
+                   beta_rise=float(r[0]), dwell_outer=float(r[1]), beta_fall=float(r[2]),
+                   fall_law=fall)
         object.__setattr__(self, "offset", e)
         object.__setattr__(self, "angles_deg", ang)
         object.__setattr__(self, "cam", cam)
@@ -133,7 +141,8 @@ class CamProfile:
         stroke/beta_rise^k is this cam's S^(k)(phi))."""
         from .laws import compose
 
-        return compose(self.law, None, self.angles_deg, self.law_parameter)
+        return compose(self.law, self.return_law, self.angles_deg, self.law_parameter,
+                       self.return_law_parameter)
 
     # -- geometry at any angles --------------------------------------------------------
     @property
@@ -279,6 +288,9 @@ class CamProfile:
     def summary(self) -> dict:
         tab = self.table
         return {"law": self.law, "law_parameter": self.cam.law.par if self.law_parameter is not None else None,
+                "return_law": self.return_law or self.law,
+                "return_law_parameter": (self.cam.return_law.par if self.return_law_parameter
+                                         is not None else None),
                 "kind": "groove" if self.groove else "open",
                 "stroke": self.stroke, "base_radius": self.base_radius,
                 "roller_radius": self.roller_radius, "offset": self.offset,
@@ -360,7 +372,8 @@ class CamProfile:
         ax.set_aspect("equal")
         ax.set_xlabel("x, mm")
         ax.set_ylabel("y, mm")
-        ax.set_title(f"{self.law}, {'groove' if self.groove else 'open'} cam, "
+        laws = self.law if self.return_law in (None, self.law) else f"{self.law}/{self.return_law}"
+        ax.set_title(f"{laws}, {'groove' if self.groove else 'open'} cam, "
                      f"e = {self.offset * 1e3:g} mm")
         ax.legend(fontsize=7, loc="upper right")
         phi = tab["phi_deg"]

@@ -1160,6 +1160,8 @@ def _cmd_profile(args) -> int:
         cam = CamProfile(stroke=args.stroke, base_radius=args.base_radius,
                          roller_radius=args.roller_radius, offset=args.offset,
                          angles_deg=tuple(angles), law=args.law, law_parameter=args.law_parameter,
+                         return_law=args.return_law,
+                         return_law_parameter=args.return_law_parameter,
                          groove=args.groove, points_per_degree=args.points_per_degree,
                          max_pressure_angle_deg=args.max_pressure_angle)
         out = cam.summary()
@@ -1178,7 +1180,7 @@ def _cmd_profile(args) -> int:
     if args.json:
         print(json.dumps(out, indent=1))
         return 0
-    print(f"{out['kind']} cam, {cam.law} law, stroke {cam.stroke * 1e3:g} mm, base circle "
+    print(f"{out['kind']} cam, {cam.law}{'' if cam.return_law in (None, cam.law) else ' / ' + cam.return_law + ' return'} law, stroke {cam.stroke * 1e3:g} mm, base circle "
           f"{cam.base_radius * 1e3:g} mm, roller {cam.roller_radius * 1e3:g} mm, offset "
           f"{cam.offset * 1e3:g} mm, {out['points']} points")
     for c in cam.checks:
@@ -1200,9 +1202,14 @@ def _add_profile(sub, law_names) -> None:
                     "PNG. The undercut and pressure-angle checks that fail are warnings naming "
                     "the cam angle where they are worst (and in the JSON). SI units.")
     p.add_argument("--law", default="cycloidal", choices=law_names,
-                   help="cam law of the rise (the return is its mirror; default cycloidal)")
+                   help="cam law of the rise (the return is its mirror unless --return-law; "
+                        "default cycloidal)")
     p.add_argument("--law-parameter", type=float, default=None, metavar="X",
                    help="the law's shape parameter, for laws that have one")
+    p.add_argument("--return-law", default=None, choices=law_names,
+                   help="cam law of the return, S = h (1 - H(u)) (default: the rise's)")
+    p.add_argument("--return-law-parameter", type=float, default=None, metavar="X",
+                   help="the return law's shape parameter")
     p.add_argument("--stroke", type=float, required=True, metavar="M", help="stroke h, m, >= 0")
     p.add_argument("--base-radius", type=float, required=True, metavar="M",
                    help="base circle of the cam profile r_b, m, > 0 (roller centre on the "

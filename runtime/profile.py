@@ -38,6 +38,12 @@ class RDFD:
     beta_rise: float = math.pi / 2
     dwell_outer: float = math.pi / 2
     beta_fall: float = math.pi / 2
+    fall_law: LawChoice | None = None
+    """The return's law (S = S_T (1 - H(u)) over the return); None: the rise's law."""
+
+    @property
+    def return_law(self) -> LawChoice:
+        return self.law if self.fall_law is None else self.fall_law
 
     @classmethod
     def of(cls, S_T: float, r_b: float, r_r: float, law: str = "cycloidal",
@@ -52,9 +58,10 @@ class RDFD:
     def breakpoints(self) -> np.ndarray:
         """Segment ends in rad, the law's own breakpoints inside the rise and the fall included."""
         inside = [b for b in self.law.breakpoints() if 0.0 < b < 1.0]
+        inside_fall = [b for b in self.return_law.breakpoints() if 0.0 < b < 1.0]
         ends = {0.0, self.beta_rise, self.fall_start, self.fall_start + self.beta_fall, TWO_PI}
         ends |= {self.beta_rise * b for b in inside}
-        ends |= {self.fall_start + self.beta_fall * b for b in inside}
+        ends |= {self.fall_start + self.beta_fall * b for b in inside_fall}
         return np.array(sorted(ends))
 
     def displacement(self, th) -> np.ndarray:
@@ -69,7 +76,7 @@ class RDFD:
             for k in range(4):
                 out[k, rise] = self.S_T * H[:, k] / self.beta_rise**k
         if fall.any():
-            H = self.law.evaluate((th[fall] - self.fall_start) / self.beta_fall)
+            H = self.return_law.evaluate((th[fall] - self.fall_start) / self.beta_fall)
             out[0, fall] = self.S_T * (1.0 - H[:, 0])
             for k in range(1, 4):
                 out[k, fall] = -self.S_T * H[:, k] / self.beta_fall**k

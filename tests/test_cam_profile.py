@@ -256,3 +256,29 @@ def test_cli_subprocess_one_line(tmp_path):
                        capture_output=True, text=True)
     assert r.returncode == 2
     assert r.stderr.count("\n") == 1 and "sum to 360" in r.stderr
+
+
+def test_return_law_of_its_own():
+    """--return-law: over the return S = h (1 - H(u)) with H the 3-4-5 polynomial
+    10u^3 - 15u^4 + 6u^5 written out here, S' = -h 30 u^2 (1 - u)^2 / beta_return (to 1e-12);
+    the rise keeps its cycloid; the breakpoints are the return law's; the summary names both."""
+    h = 0.015
+    cam = CamProfile(stroke=h, base_radius=0.026, roller_radius=0.005,
+                     angles_deg=(100.0, 60.0, 120.0, 80.0), law="modified-sine",
+                     return_law="3-4-5")
+    b_ret, start = np.radians(120.0), np.radians(160.0)
+    u = np.linspace(0.0, 1.0, 201, endpoint=False)
+    S = cam.cam.displacement(start + b_ret * u)
+    np.testing.assert_allclose(S[0], h * (1 - (10 * u**3 - 15 * u**4 + 6 * u**5)), atol=1e-12 * h)
+    np.testing.assert_allclose(S[1], -h * 30 * u**2 * (1 - u)**2 / b_ret, atol=1e-12 * h)
+    rise = CamProfile(stroke=h, base_radius=0.026, roller_radius=0.005,
+                      angles_deg=(100.0, 60.0, 120.0, 80.0), law="modified-sine")
+    phi = np.radians(np.linspace(0.0, 100.0, 101, endpoint=False))
+    np.testing.assert_array_equal(cam.cam.displacement(phi), rise.cam.displacement(phi))
+    # the modified sine's breakpoints 1/8, 7/8 inside the rise only: 3-4-5 has none
+    inside = [b for b in cam.cam.breakpoints if start < b < start + b_ret]
+    assert inside == []
+    summary = cam.summary()
+    assert summary["law"] == "modified-sine" and summary["return_law"] == "3-4-5"
+    with pytest.raises(CamdynInputError, match="return-law-parameter"):
+        CamProfile(stroke=h, base_radius=0.026, roller_radius=0.005, return_law_parameter=0.1)

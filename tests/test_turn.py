@@ -57,15 +57,18 @@ def test_return_is_the_mirrored_law_by_superposition(ret):
     np.testing.assert_allclose(got[:, 1:], -ref[:, 1:], atol=1e-12)
 
 
-def test_turn_equals_the_profile_composition_over_several_turns(rng):
+@pytest.mark.parametrize("ret", [None, "4-5-6-7"])
+def test_turn_equals_the_profile_composition_over_several_turns(rng, ret):
     """runtime.profile.RDFD (the cam profile's rise-dwell-return-dwell, written in NumPy on its
     own) gives S^(k)(phi) = S_T H^(k)(T)/beta^k with T = phi/beta; the turn repeats with
-    period 360 deg/beta.  Same law both ways (RDFD mirrors its one law); 1e-12 relative."""
+    period 360 deg/beta.  The return mirrors the rise's law, or has a law of its own, both
+    ways; 1e-12 relative."""
     ang = (75.0, 40.0, 110.0, 135.0)
-    turn = laws.compose("modified-sine", None, ang, theta=0.15)
+    turn = laws.compose("modified-sine", ret, ang, theta=0.15)
     beta = math.radians(ang[0])
     cam = RDFD.of(1.0, 0.05, 0.01, "modified-sine", 0.15, beta_rise=beta,
-                  dwell_outer=math.radians(ang[1]), beta_fall=math.radians(ang[2]))
+                  dwell_outer=math.radians(ang[1]), beta_fall=math.radians(ang[2]),
+                  fall_law=None if ret is None else laws.choose(ret))
     T = rng.uniform(0, 3 * turn.period, 2000)
     got = turn.evaluate(T)
     S = cam.displacement(beta * T)
