@@ -45,7 +45,9 @@ def _graphs(data):
     return taus, {float(Fa): rows for Fa, rows in data["graphs"]["rows"].items()}
 
 
-def _fig4_11a(out_dir, quick):
+def _graph_with_envelopes(out_dir, quick, figure: str, closed_form: str, log: bool):
+    """fig. 4.11a (U0) or 4.11c (U0''): the raw graph per Fa, the envelope through its maxima
+    in bold, and the closed form (3.5) or (3.6) of Fa = 0 dotted."""
     from camdyn.runtime import closed_forms
     from camdyn.runtime.envelope import envelope
 
@@ -53,17 +55,23 @@ def _fig4_11a(out_dir, quick):
     taus, rows = _graphs(data)
     p = plt()
     fig, ax = p.subplots(figsize=(7.5, 5))
+    draw = ax.semilogy if log else ax.plot
     for k, (Fa, vals) in enumerate(rows.items()):
-        U0 = [v["U0"] for v in vals]
-        ax.semilogy(taus, U0, color=f"C{k}", lw=0.5, alpha=0.6)
-        ax.semilogy(taus, envelope(taus, U0)(taus), color=f"C{k}", lw=1.8, label=f"Fa = {Fa:g}")
+        values = [v[closed_form] for v in vals]
+        draw(taus, values, color=f"C{k}", lw=0.5, alpha=0.6)
+        draw(taus, envelope(taus, values)(taus), color=f"C{k}", lw=1.8, label=f"Fa = {Fa:g}")
     fine = np.linspace(taus.min(), min(taus.max(), 0.99), 600)
-    ax.semilogy(fine, closed_forms.U0(fine), "k:", lw=0.8, label="(3.5), Fa = 0")
+    eq = "(3.5)" if closed_form == "U0" else "(3.6)"
+    draw(fine, getattr(closed_forms, closed_form)(fine), "k:", lw=0.8, label=f"{eq}, Fa = 0")
     ax.set_xlabel("tau")
-    ax.set_ylabel("U0 (bold: through the maxima)")
-    ax.grid(alpha=0.3, which="both")
+    ax.set_ylabel(f"{closed_form.replace('dd', chr(39) * 2)} (bold: through the maxima)")
+    ax.grid(alpha=0.3, which="both" if log else "major")
     ax.legend(fontsize=7)
-    return [save(fig, out_dir, "fig4_11a")]
+    return [save(fig, out_dir, figure)]
+
+
+def _fig4_11a(out_dir, quick):
+    return _graph_with_envelopes(out_dir, quick, "fig4_11a", "U0", log=True)
 
 
 def _fig4_11b(out_dir, quick):
@@ -85,24 +93,7 @@ def _fig4_11b(out_dir, quick):
 
 
 def _fig4_11c(out_dir, quick):
-    from camdyn.runtime import closed_forms
-    from camdyn.runtime.envelope import envelope
-
-    data = study(str(out_dir), quick)
-    taus, rows = _graphs(data)
-    p = plt()
-    fig, ax = p.subplots(figsize=(7.5, 5))
-    for k, (Fa, vals) in enumerate(rows.items()):
-        U0dd = [v["U0dd"] for v in vals]
-        ax.plot(taus, U0dd, color=f"C{k}", lw=0.5, alpha=0.6)
-        ax.plot(taus, envelope(taus, U0dd)(taus), color=f"C{k}", lw=1.8, label=f"Fa = {Fa:g}")
-    fine = np.linspace(taus.min(), min(taus.max(), 0.99), 600)
-    ax.plot(fine, closed_forms.U0dd(fine), "k:", lw=0.8, label="(3.6), Fa = 0")
-    ax.set_xlabel("tau")
-    ax.set_ylabel("U0'' (bold: through the maxima)")
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
-    return [save(fig, out_dir, "fig4_11c")]
+    return _graph_with_envelopes(out_dir, quick, "fig4_11c", "U0dd", log=False)
 
 
 def _decel_trend() -> tuple[str, bool]:
