@@ -579,6 +579,14 @@ def _print_dynacam(sc, summary) -> None:
             v = f"from T = {v['T']:.4g}" if v["occurs"] else "no"
         print(f"  {key:26s} {v if isinstance(v, str) else fmt(v)}"
               f"{plus_minus(summary.get(f'{key}_error'))}")
+    if "turn" in summary:
+        t = summary["turn"]
+        print(f"  full turn: rise, upper dwell, return, lower dwell "
+              f"{', '.join(f'{a:.4g}' for a in t['angles_deg'])} deg; return law {t['return_law']}")
+        for key in ("Xdd_absmax_return", "U0dd_return", "U0_return"):
+            v = summary.get(key)
+            print(f"  {key:26s} {'not reached' if v is None else fmt(v)}"
+                  f"{plus_minus(summary.get(f'{key}_error'))}")
     for f in summary.get("figures", []):
         print(f"wrote {f}")
 

@@ -126,12 +126,11 @@ def run(scene: Scene, progress=None, method=None) -> tuple[dict, object]:
     t_end = (scene.T_end - scene.T_start) * t_m
     if method is None:
         method = METHODS[scene.method](rtol=scene.rtol)
-    sim = Simulator(model, t_end, method, law=scene.law, theta=scene.theta, modes=scene.modes,
-                    max_steps=2_000_000)
+    law = scene.cam_law()
+    sim = Simulator(model, t_end, method, law=law, modes=scene.modes, max_steps=2_000_000)
     p = model.parameter_vector(params)
     y0 = equilibrium(model, p, sim)
-    sim = Simulator(model, t_end, method, law=scene.law, theta=scene.theta, modes=scene.modes,
-                    max_steps=2_000_000, y0=y0)
+    sim = Simulator(model, t_end, method, law=law, modes=scene.modes, max_steps=2_000_000, y0=y0)
     if progress:
         progress(f"{scene.title}: {scene.variant}, T from {scene.T_start:g} to {scene.T_end:g}")
     start = time.process_time()
@@ -143,8 +142,9 @@ def run(scene: Scene, progress=None, method=None) -> tuple[dict, object]:
 
 
 FIGURES = ("Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_rise", "U0dd", "U0", "speed_variation_max",
-           "motor_speed_variation_max")
-"""The headline figures of a scene's summary that get an error estimate."""
+           "motor_speed_variation_max", "Xdd_absmax_return", "U0dd_return", "U0_return")
+"""The headline figures of a scene's summary that get an error estimate (the last three only
+with a full turn)."""
 
 
 def errors(scene: Scene, summary: dict) -> dict:
@@ -181,6 +181,25 @@ def mode_changes(scene: Scene, res, mode: str) -> list:
     return [(float(T[i + 1]), values[i + 1]) for i in np.flatnonzero(values[1:] != values[:-1])]
 
 
+def _return_figures(scene: Scene, res, turn, t_m: float, t_end: float) -> dict:
+    """A full turn's return (T from 1 + up to 1 + up + r, in units of the rise) and the lower
+    dwell after it (to the next rise or the run's end): the largest |X''| during the return,
+    and U0, U0'' after it, as after the rise (None where the run does not reach them)."""
+    ret0 = (1 + turn.up - scene.T_start) * t_m
+    ret1 = (1 + turn.up + turn.r - scene.T_start) * t_m
+    low1 = min(t_end, (turn.period - scene.T_start) * t_m)
+    out = {"turn": {"angles_deg": list(turn.angles_deg), "return_law": turn.ret.key,
+                    "period_T": turn.period},
+           "Xdd_absmax_return": None, "U0_return": None, "U0dd_return": None}
+    if t_end > ret0:
+        out["Xdd_absmax_return"] = extreme(res, "Xdd", ret0, min(ret1, t_end), absolute=True,
+                                           minimum=False)[0]
+    if low1 > ret1:
+        out["U0_return"] = extreme(res, "U", ret1, low1, absolute=True, minimum=False)[0]
+        out["U0dd_return"] = extreme(res, "Xdd", ret1, low1, absolute=True, minimum=False)[0]
+    return out
+
+
 def summarize(scene: Scene, model, res, ch: dict, cpu: float) -> dict:
     T = nominal_T(scene, res)
     t_m = res.params["beta_m"] / res.params["omega_s"]
@@ -188,12 +207,17 @@ def summarize(scene: Scene, model, res, ch: dict, cpu: float) -> dict:
     rise0, rise1, t_end = -scene.T_start * t_m, (1 - scene.T_start) * t_m, float(res.t[-1])
     xmin, t_xmin = extreme(res, "Xdd", rise0, rise1, absolute=False, minimum=True)
     xmax, _ = extreme(res, "Xdd", rise0, rise1, absolute=False, minimum=False)
-    dwell = t_end > rise1
+    turn = scene.cam_law() if scene.turn is not None else None
+    # with a full turn the dwell after the rise ends where the return starts
+    dwell_end = t_end if turn is None else min(t_end, (1 + turn.up - scene.T_start) * t_m)
+    dwell = dwell_end > rise1
     out = {"title": scene.title, "variant": scene.variant, "tau": ch["tau"], "Fa": ch["Fa"],
            "Fv": ch["Fv"], "Xdd_min_rise": xmin, "T_at_Xdd_min": t_xmin / t_m + scene.T_start,
            "Xdd_max_rise": xmax,
-           "U0dd": extreme(res, "Xdd", rise1, t_end, absolute=True, minimum=False)[0] if dwell else None,
-           "U0": extreme(res, "U", rise1, t_end, absolute=True, minimum=False)[0] if dwell else None}
+           "U0dd": extreme(res, "Xdd", rise1, dwell_end, absolute=True, minimum=False)[0] if dwell else None,
+           "U0": extreme(res, "U", rise1, dwell_end, absolute=True, minimum=False)[0] if dwell else None}
+    if turn is not None:
+        out.update(_return_figures(scene, res, turn, t_m, t_end))
     jump = {"occurs": False, "T": None}
     if scene.options.roller == "contact":
         free = res.element_mode("roller") == "free"
@@ -273,14 +297,15 @@ def plot(scene: Scene, res, summary: dict, out_dir) -> list:
         for ax, (n, v) in zip(axes[:, 0], series):
             ax.plot(T, v, lw=0.8)
             ax.axvspan(0, 1, color="0.93", zorder=0)
+            if scene.turn is not None:      # the return, shaded as the rise
+                turn = scene.cam_law()
+                ax.axvspan(1 + turn.up, 1 + turn.up + turn.r, color="0.93", zorder=0)
             ax.set_ylabel(n if key == "gaps" else ylabel)
             ax.grid(alpha=0.3)
         if key == "Xdd":
-            Tn = np.clip(T, 0, 1)
-            from .laws import choose
-
-            H = choose(scene.law, scene.theta).evaluate(Tn)
-            axes[0, 0].plot(T, np.where((T > 0) & (T < 1), H[:, 2], 0.0), "k--", lw=0.7,
+            H = scene.cam_law().evaluate(np.maximum(T, 0.0) if scene.turn else np.clip(T, 0, 1))
+            inside = (T > 0) if scene.turn else ((T > 0) & (T < 1))
+            axes[0, 0].plot(T, np.where(inside, H[:, 2], 0.0), "k--", lw=0.7,
                             label="nominal H''")
             axes[0, 0].plot([summary["T_at_Xdd_min"]], [summary["Xdd_min_rise"]], "rv")
             axes[0, 0].legend(loc="upper right", fontsize=8)

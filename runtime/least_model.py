@@ -354,6 +354,9 @@ def choose(sc, figures=DEFAULT_FIGURES, tolerance: float = TOLERANCE, build: boo
            measure_full: bool = False, progress=None) -> dict:
     """Probe the chain, pick the least candidate within ``tolerance`` on every figure, run it at
     the scene's tolerance and state its error bounds and the time saved (module docstring)."""
+    if getattr(sc, "turn", None) is not None:
+        raise CamdynInputError("--model auto: the scene has a [turn]; the reductions of sec. 8.2 "
+                               "are compared over one rise and dwell, so drop [turn] for the choice")
     figures = tuple(figures)
     bad = [f for f in figures if f not in FIGURES]
     if bad or not figures:

@@ -431,9 +431,10 @@ def from_dynacam_scene(sc, params: dict, t_end: float | None, progress=None) -> 
     par["beta_0"] = -sc.T_start * par["beta_m"]
     ch = dynacam.characteristics(sc.options, par)
     t_end = (sc.T_end - sc.T_start) * ch["t_m"]
-    sim = Simulator(model, t_end, "dp54", law=sc.law, theta=sc.theta, modes=sc.modes)
+    law = sc.cam_law()      # the law, or the scene's full turn
+    sim = Simulator(model, t_end, "dp54", law=law, modes=sc.modes)
     y0 = dynacam.equilibrium(model, model.parameter_vector(par), sim)
-    return Problem(sc.title, model, par, t_end, "dynacam", law=sc.law, theta=sc.theta, y0=y0,
+    return Problem(sc.title, model, par, t_end, "dynacam", law=law, theta=None, y0=y0,
                    modes=dict(sc.modes), T_start=sc.T_start, t_m=ch["t_m"])
 
 

@@ -10,7 +10,10 @@ Every scene says which study it is with ``kind`` and has the same top-level shap
     to the output member as in thesis sec. 2.4), ``[run]`` how long to run in the
     dimensionless time T = t/t_m of the rise (the rise starting at T = 0), ``[modes]`` the
     initial modes of force elements.  ``beta_0`` is not a scene parameter: the run places the
-    rise start itself from ``run.T_start``.
+    rise start itself from ``run.T_start``.  An optional ``[turn]`` makes the cam a full
+    turn instead of one rise and dwell: ``upper_dwell`` and ``return`` in deg (the rise is
+    ``beta_m``, the lower dwell the rest of 360 deg), ``return_law`` and ``return_theta``
+    (default: the rise's law mirrored), as :func:`camdyn.runtime.laws.compose` takes them.
 ``kind = "camshaft1-study"``
     the CAMSHAFT-1 study of thesis ch. 4 (`camdyn run`'s default): ``[study.response]`` (fig.
     4.10) and ``[study.graphs]`` (fig. 4.11), ``[run]`` method and rtol
@@ -39,7 +42,9 @@ KINDS = {"dynacam": "a DYNACAM mechanism (thesis ch. 6-8): summary and diagrams"
          "beam-follower": "the paper's Rayleigh-beam follower: tip response"}
 """The kinds of scene, with what a run of each gives."""
 
-_TOP = {"kind", "title", "reference", "note", "law", "theta", "options", "parameters", "run", "modes"}
+_TOP = {"kind", "title", "reference", "note", "law", "theta", "options", "parameters", "run", "modes",
+        "turn"}
+_TURN = {"upper_dwell", "return", "return_law", "return_theta"}
 # T_end >= 1: a run covers the whole rise, whose largest deceleration every summary reports
 _RUN = {"T_start": (-5.0, 0.0), "T_end": (1.0, 50.0), "rtol": (1e-13, 1e-2), "method": None}
 
@@ -60,11 +65,68 @@ class Scene:
     T_end: float = 1.5
     rtol: float = 1e-8
     method: str = "dp54"
+    turn: dict | None = None
+    """The ``[turn]`` table, checked: upper_dwell, return (deg), return_law, return_theta."""
 
     @property
     def variant(self) -> str:
         """Name of the generated module these options select."""
         return self.options.name
+
+    def cam_law(self):
+        """The cam input of the runs: the law (a LawChoice), or the full turn (a Turn)."""
+        from .laws import choose, compose
+
+        if self.turn is None:
+            return choose(self.law, self.theta)
+        return compose(self.law, self.turn.get("return_law"), turn_angles(self),
+                       self.theta, self.turn.get("return_theta"))
+
+
+def turn_angles(sc) -> tuple:
+    """(rise, upper dwell, return, lower dwell) in deg: the rise is beta_m, the lower dwell
+    what is left of 360 deg."""
+    rise = math.degrees(sc.parameters["beta_m"])
+    up, ret = float(sc.turn["upper_dwell"]), float(sc.turn["return"])
+    return (rise, up, ret, max(0.0, 360.0 - rise - up - ret))
+
+
+def _turn(table, params: dict) -> dict | None:
+    from .laws import choose
+
+    if table is None:
+        return None
+    if not isinstance(table, dict):
+        raise CamdynInputError("[turn] must be a table (upper_dwell, return in deg; return_law)")
+    unknown = sorted(set(table) - _TURN)
+    if unknown:
+        raise CamdynInputError(f"turn.{unknown[0]} is not a turn setting; settings are "
+                               f"{', '.join(sorted(_TURN))}")
+    for key in ("upper_dwell", "return"):
+        if key not in table:
+            raise CamdynInputError(f"turn.{key} is missing (deg)")
+    up = _number("turn.upper_dwell", table["upper_dwell"], 0.0, 360.0)
+    ret = _number("turn.return", table["return"], 0.0, 360.0)
+    if ret <= 0:
+        raise CamdynInputError(f"turn.return={ret:g} is out of range: 0 < return < 360 deg")
+    rise = math.degrees(params["beta_m"])
+    low = 360.0 - rise - up - ret
+    if low < -1e-9:
+        raise CamdynInputError(f"turn: rise (beta_m = {rise:g} deg) + upper_dwell ({up:g}) + "
+                               f"return ({ret:g}) = {rise + up + ret:g} deg exceeds 360 deg")
+    out = {"upper_dwell": up, "return": ret}
+    if "return_law" in table:
+        if not isinstance(table["return_law"], str):
+            raise CamdynInputError(f"turn.return_law must be a cam-law name, got "
+                                   f"{table['return_law']!r}")
+        out["return_law"] = table["return_law"]
+    if "return_theta" in table:
+        if "return_law" not in out:
+            raise CamdynInputError("turn.return_theta goes with turn.return_law")
+        out["return_theta"] = _number("turn.return_theta", table["return_theta"])
+    if "return_law" in out:
+        choose(out["return_law"], out.get("return_theta"))    # raises naming the law's range
+    return out
 
 
 def builtin(name: str) -> Path:
@@ -422,9 +484,10 @@ def from_dict(data: dict, path: str = "<scene>") -> Scene:
     modes = data.get("modes", {})
     if not isinstance(modes, dict) or not all(isinstance(v, str) for v in modes.values()):
         raise CamdynInputError("[modes] must map mode names to value names")
+    turn = _turn(data.get("turn"), params)
     return Scene(path=path, title=str(data.get("title", Path(path).stem)),
                  reference=str(data.get("reference", "")), law=law, theta=theta,
-                 options=options, parameters=params, modes=dict(modes), **settings)
+                 options=options, parameters=params, modes=dict(modes), turn=turn, **settings)
 
 
 def replace(sc: Scene, options: dict | None = None, parameters: dict | None = None,
@@ -440,6 +503,8 @@ def replace(sc: Scene, options: dict | None = None, parameters: dict | None = No
             "run": {"T_start": sc.T_start, "T_end": sc.T_end, "rtol": sc.rtol, "method": sc.method}}
     if sc.theta is not None:
         data["theta"] = sc.theta
+    if sc.turn is not None:
+        data["turn"] = dict(sc.turn)
     return from_dict(data, sc.path)
 
 

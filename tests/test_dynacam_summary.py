@@ -332,3 +332,75 @@ def test_speed_variation_is_refined_on_the_dense_output(name):
     assert got >= dense * (1 - 1e-12)
     assert got == pytest.approx(dense, rel=1e-8)
     assert got >= float(np.abs(res["speed_var"]).max())
+
+
+# -- a full turn (scene [turn]) -----------------------------------------------------------------
+TAU_TURN = 0.25      # sin(pi/tau) = 0: the rise leaves no residual vibration by (3.5)
+R_TURN = 1.2         # the return takes 1.2 times the rise: tau/r = 0.2083, |sin(pi r/tau)| = 0.87
+
+
+def _one_dof_turn(T_end, turn):
+    c_x = M_X * (2 * math.pi / (TAU_TURN * T_M)) ** 2
+    data = {"title": "one_dof_turn", "law": "cycloidal", **({"turn": turn} if turn else {}),
+            "options": {"shaft_y": False, "shaft_z": False},
+            "parameters": {"h_m": H_M, "beta_m": BETA_M, "R_b": 10.0, "omega_s": OMEGA_S,
+                           "J": 1e6, "k": 1e9, "q_b": 0.0, "m_x": M_X, "c_x": c_x, "q_x": 0.0},
+            "run": {"T_start": T_START, "T_end": T_end, "rtol": 1e-10}}
+    return scenes.from_dict(data, "/nonexistent/one_dof_turn.toml")
+
+
+def test_full_turn_return_residuals_3_5_3_6():
+    """A full turn on the one-DOF scene (beta_m = 57.3 deg; upper dwell 30 deg, return 1.2 x
+    57.3 deg): the return is the cycloid run backwards over r = 1.2 rise times, so after it the
+    follower vibrates as after a rise at tau/r, (3.5) U0 = (tau/r)^3 |sin(pi r/tau)| /
+    (pi (1 - (tau/r)^2)) in units of h_m, and (3.6) U0'' over r^2 in units of h_m/t_m^2 (the
+    rise at tau = 1/4 leaves none to superpose); the largest |X''| of the return is at least
+    the nominal 2 pi/r^2.  Tolerance 1e-6 relative; the rise's figures are those of the
+    plain scene to 1e-12."""
+    turn = {"upper_dwell": 30.0, "return": R_TURN * math.degrees(BETA_M)}
+    s, _ = dynacam.run(_one_dof_turn(4.0, turn))
+    t = TAU_TURN / R_TURN
+    U0 = t**3 * abs(math.sin(math.pi / t)) / (math.pi * (1 - t**2))
+    U0dd = 4 * math.pi * t * abs(math.sin(math.pi / t)) / (1 - t**2) / R_TURN**2
+    assert s["U0"] < 1e-8 and s["U0dd"] < 1e-5          # the rise at a tuning dip of (3.5)
+    assert s["U0_return"] == pytest.approx(U0, rel=1e-6)
+    assert s["U0dd_return"] == pytest.approx(U0dd, rel=1e-6)
+    assert s["Xdd_absmax_return"] >= 2 * math.pi / R_TURN**2
+    assert s["turn"]["angles_deg"][2] == pytest.approx(R_TURN * math.degrees(BETA_M), rel=1e-12)
+    plain, _ = dynacam.run(_one_dof_turn(1.5, None))
+    for key in ("Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_rise"):
+        assert s[key] == pytest.approx(plain[key], rel=1e-12, abs=1e-12), key
+
+
+@pytest.mark.parametrize("turn, words", [
+    ({"upper_dwell": 200.0, "return": 150.0}, "exceeds 360 deg"),
+    ({"upper_dwell": 30.0}, "turn.return is missing"),
+    ({"upper_dwell": 30.0, "return": 0.0}, "turn.return=0 is out of range"),
+    ({"upper_dwell": 30.0, "return": 40.0, "lower": 1.0}, "turn.lower is not a turn setting"),
+    ({"upper_dwell": 30.0, "return": 40.0, "return_law": "sine"}, "unknown cam law"),
+    ({"upper_dwell": 30.0, "return": 40.0, "return_theta": 0.1}, "return_theta goes with"),
+])
+def test_bad_turn_is_refused_naming_it(turn, words):
+    from camdyn.runtime.errors import CamdynInputError
+
+    with pytest.raises(CamdynInputError, match=words):
+        _one_dof_turn(4.0, turn)
+
+
+def test_turn_scene_file_through_the_command(tmp_path, capsys):
+    """A scene file with [turn] through `camdyn simulate`: the return's figures are printed
+    with their error estimates; `--model auto` refuses it in one line (the sec. 8.2 chain
+    compares one rise and dwell)."""
+    from camdyn.runtime.cli import main
+
+    text = (Path(scenes.builtin("spring_loaded")).read_text().replace("T_end = 1.5", "T_end = 5.0")
+            + "\n[turn]\nupper_dwell = 50\nreturn = 40\n")
+    path = tmp_path / "turn.toml"
+    path.write_text(text)
+    assert main(["simulate", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "full turn: rise, upper dwell, return, lower dwell 24.98, 50, 40, 245 deg" in out
+    assert "U0dd_return" in out and "±" in out.split("U0dd_return")[1].splitlines()[0]
+    assert main(["simulate", str(path), "--model", "auto"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and "[turn]" in err
