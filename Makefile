@@ -48,6 +48,10 @@ wheel-check:
 		sys.stdout.write(re.search(r'user-model: oscillator.py -->\s*\x60\x60\x60python\n(.*?)\x60\x60\x60', t, re.S).group(1))" \
 		> $(WHEEL_DIR)/oscillator.py
 	cd $(WHEEL_DIR) && CAMDYN_CACHE_DIR=$(WHEEL_DIR)/cache venv/bin/camdyn integrate oscillator.py --t-end 3 --json
+	cd $(WHEEL_DIR) && venv/bin/camdyn sweep camshaft1 --grid Fa=0,1 --grid tau=0.1:0.3:5 --out sweep --quiet
+	cd $(WHEEL_DIR) && venv/bin/camdyn design --stroke 0.02 --tau 0.2 --fa 0.1 --accuracy 1e-4 --no-check --quiet | tail -3
+	cd $(WHEEL_DIR) && venv/bin/camdyn simulate fig8_1b --model auto | grep chosen
+	cd $(WHEEL_DIR) && venv/bin/camdyn figures --only 3.4 --out figures --quiet | tail -2
 	rm -rf $(WHEEL_DIR)
 
 # mutation testing of the pure-Python physics in scratch copies of the tree; report in
