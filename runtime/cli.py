@@ -1059,7 +1059,8 @@ def build_parser() -> argparse.ArgumentParser:
     ig.set_defaults(func=_cmd_integrate)
 
     sm = sub.add_parser("simulate", help="a DYNACAM scene (thesis ch. 6, 7): summary and diagrams")
-    sm.add_argument("scene", help="scene TOML, or a built-in scene: indexing, spring_loaded")
+    sm.add_argument("scene", help="scene TOML, or a built-in DYNACAM scene: indexing, "
+                                   "indexing_squeeze, spring_loaded, fig8_1a, fig8_1b")
     sm.add_argument("--json", action="store_true", help="one JSON object on stdout")
     sm.add_argument("--no-error-estimate", action="store_true",
                      help="skip the second, more accurate run that estimates each headline figure's error (sweeps)")
@@ -1324,19 +1325,23 @@ def _add_design(sub, law_names) -> None:
     a("--mass", type=float, default=None, metavar="KG", help="m, equivalent mass at the output (4.39)")
     a("--stiffness", type=float, default=None, metavar="N/M",
       help="c_c, stiffness of the uncoupled follower system at the output (4.3)")
-    a("--tau", type=float, default=None, help="tau = T_e/t_m directly (instead of m and c_c)")
-    a("--fa", type=float, default=None, help="Fa directly (instead of --c-tan)")
+    a("--tau", type=float, default=None,
+      help="tau = T_e/t_m directly, 0 < tau < 0.9 (dimensionless; instead of m and c_c)")
+    a("--fa", type=float, default=None,
+      help="Fa directly, 0 <= Fa <= 12.8 (dimensionless; instead of --c-tan)")
     a("--c-tan", type=float, default=None, metavar="N/M",
       help="c_tan, tangential stiffness of the shaft at the output (4.4); Fa = (c_c/c_tan) tan^2 alpha_me")
     a("--pitch-radius", type=float, default=None, metavar="M", help="R_1/2 at the cam (4.1)")
     a("--ratio", type=float, default=None, metavar="I",
       help="transmission ratio i, h_m' = i h_m at the cam (default 1)")
-    a("--tan-alpha-me", type=float, default=None, help="mean slope (4.13) directly")
+    a("--tan-alpha-me", type=float, default=None,
+      help="tan alpha_me, the mean slope (4.13) directly (dimensionless; instead of --pitch-radius)")
     a("--accuracy", type=float, default=None, metavar="M", help="largest positional error u0 (m)")
     a("--residual-acceleration", type=float, default=None, metavar="M/S2",
       help="largest residual acceleration u0'' after the rise (m/s^2)")
-    a("--law", default="cycloidal", choices=law_names)
-    a("--theta", type=float, default=None, help="the law's shape parameter")
+    a("--law", default="cycloidal", choices=law_names, help="cam law of the rise (default cycloidal)")
+    a("--theta", type=float, default=None,
+      help="the law's shape parameter, for laws that have one (default: the law's own)")
     a("--common-shaft", action="store_true", help="the shaft drives other mechanisms (Fa <= 0.3, sec. 8.5)")
     a("--motor-rpm", type=float, default=None, help="a thesis motor by synchronous speed: "
       "3000/1500/1000/750 (T_m of fig. A.5.3)")
@@ -1344,10 +1349,13 @@ def _add_design(sub, law_names) -> None:
       "constant T_m = J_m/G (A.5.11)")
     a("--motor-tel", type=float, default=None, metavar="S",
       help="electrical time constant T_el (A.5.3): second-order slip (A.5.25) instead of (A.5.33)")
-    a("--rated-slip", type=float, default=0.085, help="delta_n (default 0.085, fig. A.5.3)")
-    a("--slip-limit", type=float, default=None, help="delta_lim, the largest slip allowed (8.1)")
-    a("--spring", action="store_true", help="a follower spring: v_v = 5 in (8.1)")
-    a("--gear-efficiency", type=float, default=None, help="eta_g of the reduction gear (8.1)")
+    a("--rated-slip", type=float, default=None, help="delta_n, the motor's rated slip, 0 < delta_n < 1 "
+      "(default 0.085, fig. A.5.3)")
+    a("--slip-limit", type=float, default=None,
+      help="delta_lim, the largest slip allowed, 0 < delta_lim < 1 (8.1); required with a motor")
+    a("--spring", action="store_true", help="a follower spring: v_v = 5 in (8.1) (with a motor)")
+    a("--gear-efficiency", type=float, default=None,
+      help="eta_g of the reduction gear, 0 < eta_g <= 1 (8.1) (with a motor; default 1)")
     a("--worm", type=float, nargs=2, default=None, metavar=("ALPHA", "MU"),
       help="worm gear lead angle and friction angle (rad): eta_g by (6.72)")
     a("--no-check", action="store_true", help="skip the check run")

@@ -100,6 +100,9 @@ def parse_axis(text: str) -> tuple[str, np.ndarray]:
     if len(parts) > 1:
         if spacing not in ("lin", "log", "inv"):
             raise syntax
+        if not (np.isfinite(a) and np.isfinite(b)):
+            # before linspace, which warns on inf and nan
+            raise CamdynInputError(f"argument --grid: {name}: {rng!r} must give finite numbers")
         if not 1 <= n <= 1_000_000:
             raise CamdynInputError(f"argument --grid: {name}: N={n} is out of range: "
                                    "1 <= N <= 1000000")
@@ -314,6 +317,9 @@ def resolve(target, *, t_end=None, method=None, rtol=None, law=None, step=None) 
     if isinstance(target, Target):
         return target
     name = str(target)
+    if rtol is not None and method in ("rk4", "koster"):
+        raise CamdynInputError(f"rtol applies to the adaptive methods dp54 and rodas4; {method} "
+                               "takes step")
     if name.endswith(".py") or name.replace("-", "_") in available():
         if name.endswith(".py") and not Path(name).is_file():
             raise CamdynInputError(f"{name}: no such model file")
@@ -537,6 +543,26 @@ def _beam_chunk(sc, names, points):
     return out, steps
 
 
+def _check_dwell(target: Target, axes: dict) -> None:
+    """U0 and U0'' are the largest |U|, |X''| in the dwell after the rise: a dwell shorter than
+    one period of the residual vibration (tau in T, (3.3), (4.12)) gives a smaller number
+    without a word.  Models with a time-dependent rise end (rise_state) are not checked."""
+    if target.kind != "model":
+        return
+    model = _built(target)[0]
+    spec = model.manifest["residual"]
+    if spec.get("rise_state") or "tau" not in model.parameter_names:
+        return
+    tau = axes["tau"].max() if "tau" in axes else \
+        model.parameter_vector()[model.parameter_names.index("tau")]
+    need = float(spec["rise_end"]) + float(tau)
+    if target.t_end < need:
+        raise CamdynInputError(f"t_end={target.t_end:g} leaves less than one period of the "
+                               f"residual vibration (tau = {tau:g}) after the rise at T = "
+                               f"{spec['rise_end']:g}: U0 would be too small; give t_end >= "
+                               f"{need:g}")
+
+
 # -- the sweep ------------------------------------------------------------------------------------
 
 def default_jobs() -> int:
@@ -560,6 +586,7 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
     tgt = resolve(target, t_end=t_end, method=method, rtol=rtol, law=law, step=step)
     axes = _axes(grid)
     _check_names(tgt, axes)
+    _check_dwell(tgt, axes)
     jobs = default_jobs() if jobs is None else jobs
     if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
         raise CamdynInputError(f"jobs={jobs!r}: give a positive whole number of threads")

@@ -280,6 +280,16 @@ def design(args) -> int:
     try:
         motor_args = None
         motor_given = [args.motor_rpm, args.motor_tm, args.slip_limit]
+        motor_only = {"--motor-tel": args.motor_tel, "--rated-slip": args.rated_slip,
+                      "--gear-efficiency": args.gear_efficiency, "--worm": args.worm,
+                      "--spring": args.spring or None}
+        stray = [k for k, v in motor_only.items() if v is not None]
+        if stray and all(v is None for v in motor_given):
+            # they enter (8.1)-(8.3) only: without a motor they would be dropped unread
+            raise CamdynInputError(f"argument {stray[0]}: applies to the motor (sec. 8.3) only; "
+                                   "give --motor-rpm or --motor-tm and --slip-limit")
+        if args.rated_slip is None:
+            args.rated_slip = 0.085        # delta_n of the motors of fig. A.5.3
         if any(v is not None for v in motor_given):
             if args.slip_limit is None:
                 raise CamdynInputError("argument --slip-limit: required with a motor (delta_lim, "

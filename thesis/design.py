@@ -283,7 +283,8 @@ def largest_tau(graphs: Graphs, Fa: float, tau0: float, req: Requirement,
     def t_m_of(t):
         return t_m if T_e is None else T_e / t
     w = 1.5 / phase_factor(graphs.law, graphs.theta, Fa)
-    lo, hi = max(tau0 / 1.5, TAU_MIN), min(tau0 * 1.5, TAU_CAP)
+    # a machine below TAU_MIN starts the search at TAU_MIN (an empty bracket otherwise)
+    lo, hi = max(tau0 / 1.5, TAU_MIN), min(max(tau0, TAU_MIN) * 1.5, TAU_CAP)
 
     def ratio_on(taus, e0, e2):
         return np.array([req.ratio(e0(t), e2(t), t_m_of(t)) for t in taus])
