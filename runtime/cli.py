@@ -1005,7 +1005,7 @@ def build_parser() -> argparse.ArgumentParser:
                          "velocity variation against it (thesis fig. 8.8)")
     lw.add_argument("--law", default=None, choices=laws.NAMES,
                     help="with --sweep: the law whose parameter is swept (default modified-sine)")
-    lw.add_argument("--n", type=int, default=9, help="with --sweep: grid points (default 9)")
+    lw.add_argument("--n", type=int, default=None, help="with --sweep: grid points (default 9)")
     lw.add_argument("--values", default=None, metavar="V1,V2,...",
                     help="with --sweep: these parameter values instead of the grid")
     lw.add_argument("--no-error-estimate", action="store_true",
@@ -1373,7 +1373,7 @@ def _cmd_sweep(args) -> int:
     from . import sweep as sw
 
     try:
-        grid = dict(sw.parse_axis(text) for text in args.grid)
+        grid = sw.parse_grid(args.grid)
         if len(grid) != len(args.grid):
             raise CamdynInputError("argument --grid: a parameter is given twice")
         res = sw.sweep(args.target, grid, jobs=args.jobs, dask=args.dask,

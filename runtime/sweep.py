@@ -120,6 +120,23 @@ def parse_axis(text: str) -> tuple[str, np.ndarray]:
     return name, values
 
 
+MAX_POINTS = 1_000_000
+"""The most grid points of one sweep, all axes combined (as N of one axis)."""
+
+
+def parse_grid(texts) -> dict:
+    """{name: values} of repeated ``--grid`` texts (:func:`parse_axis`); a name given twice
+    is refused (a dict would keep the last one without a word)."""
+    grid: dict = {}
+    for text in texts:
+        name, values = parse_axis(text)
+        if name in grid:
+            raise CamdynInputError(f"argument --grid: {name} is given twice; give each "
+                                   "parameter one axis")
+        grid[name] = values
+    return grid
+
+
 def _axes(grid: dict) -> dict:
     if not isinstance(grid, dict) or not grid:
         raise CamdynInputError("a sweep needs a grid: {parameter name: values}")
@@ -129,6 +146,11 @@ def _axes(grid: dict) -> dict:
         if v.size == 0 or not np.all(np.isfinite(v)):
             raise CamdynInputError(f"grid {name}: give finite numbers, got {values!r}")
         out[str(name)] = v
+    total = math.prod(v.size for v in out.values())
+    if total > MAX_POINTS:
+        # the table of every combination would not fit in memory (1e5 x 1e5 needed 75 GiB)
+        raise CamdynInputError(f"grid {' x '.join(f'{k} ({v.size})' for k, v in out.items())}: "
+                               f"{total:.3g} points; at most {MAX_POINTS:,} in one sweep")
     return out
 
 

@@ -88,3 +88,18 @@ def test_scca_sweep_meets_the_modified_sine_at_c_zero(spring):
     ms = shape_sweep.sweep(spring, "modified-sine", [0.125], errors=False)[0]
     for k in shape_sweep.FIELDS:
         assert scca[k] == pytest.approx(ms[k], rel=1e-5), k
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["--tau", "0.1"], ["--tau", "--sweep"]),
+    (["--theta", "0.2"], ["--theta", "--sweep"]),
+    (["--n", "3", "--values", "0.1,0.2"], ["--n", "--values"]),
+])
+def test_cli_sweep_refuses_options_it_would_drop(capsys, argv, words):
+    """Options of the selection, or --n beside --values, were dropped unread: one line, exit 2."""
+    from camdyn.runtime.cli import main
+
+    rc = main(["laws", "--sweep", "spring_loaded", *argv])
+    err = capsys.readouterr().err.strip()
+    assert rc == 2 and len(err.splitlines()) == 1, err
+    assert all(w in err for w in words), err

@@ -147,6 +147,11 @@ def test_cli_writes_the_table(tmp_path, capsys):
       "--rtol", "1e-6"], ["rtol", "rk4", "step"]),
     (["sweep", "default", "--grid", "tau=0.2", "--method", "koster", "--step", "1e-3",
       "--rtol", "1e-6"], ["rtol", "koster", "step"]),
+    # the last of two axes of one name was kept without a word
+    (["sweep", "camshaft1", "--grid", "tau=0.2", "--grid", "tau=0.3"], ["--grid", "tau", "twice"]),
+    # the table of 1e10 points raised MemoryError (75 GiB) with a traceback
+    (["sweep", "camshaft1", "--grid", "tau=0.1:0.5:100000", "--grid", "Fa=0:1:100000"],
+     ["tau (100000) x Fa (100000)", "1e+10", "1,000,000"]),
 ])
 def test_cli_refusals_are_one_line(argv, words, capsys):
     rc = main(argv + ["--quiet"])

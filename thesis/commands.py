@@ -67,6 +67,9 @@ def laws(args) -> int:
     --tau, the selection criteria of sec. 9.2.2 (thesis/selection.py)."""
     from . import lawtable
 
+    stray = _stray_laws_option(args)
+    if stray:
+        return fail("camdyn laws", stray)
     if getattr(args, "sweep", None) is not None:
         return _sweep(args)
     if getattr(args, "tau", None) is not None or getattr(args, "fa", None) is not None:
@@ -90,6 +93,30 @@ def laws(args) -> int:
           "torque M = m h_m^2/(w_s t_m^3) H' H'' (A.2.7); one-DOF residual envelope "
           "U0 <= C tau^p for tau << 1 (ch. 3).")
     return 0
+
+
+def _stray_laws_option(args) -> str | None:
+    """An option of one mode of `camdyn laws` given in another would be dropped unread: the
+    message naming it, or None."""
+    given = lambda name: getattr(args, name, None) not in (None, False)   # noqa: E731
+    sweep_only = ("law", "n", "values", "no_error_estimate")
+    selection_only = ("tau", "fa", "stroke", "base_radius", "roller_radius")
+    flag = lambda name: "--" + name.replace("_", "-")                       # noqa: E731
+    if given("sweep"):
+        bad = [n for n in selection_only + ("theta",) if given(n)]
+        if bad:
+            return f"argument {flag(bad[0])}: not with --sweep (it sweeps the law's parameter)"
+        if given("n") and given("values"):
+            return "argument --n: not with --values (the grid is either N points or the values)"
+        return None
+    bad = [n for n in sweep_only if given(n)]
+    if bad:
+        return f"argument {flag(bad[0])}: only with --sweep SCENE"
+    if not (given("tau") or given("fa")):
+        bad = [n for n in ("stroke", "base_radius", "roller_radius", "out") if given(n)]
+        if bad:
+            return f"argument {flag(bad[0])}: only with --tau (the selection) or --sweep"
+    return None
 
 
 def _print_table(table) -> None:
@@ -129,7 +156,7 @@ def _sweep(args) -> int:
             except ValueError:
                 raise CamdynInputError(f"argument --values: {args.values!r} is not a comma-"
                                        "separated list of numbers") from None
-        rows = shape_sweep.sweep(sc, law, values, args.n, errors=not args.no_error_estimate,
+        rows = shape_sweep.sweep(sc, law, values, 9 if args.n is None else args.n, errors=not args.no_error_estimate,
                                  progress=None if args.json else sys.stderr)
     except (CamdynInputError, ValueError) as exc:
         return fail(prog, name_argument(str(exc)))
@@ -232,7 +259,8 @@ def figures(args) -> int:
 
     prog = "camdyn figures"
     try:
-        only = [s.strip() for s in args.only.split(",") if s.strip()] if args.only else None
+        only = ([s.strip() for s in args.only.split(",") if s.strip()]
+                if args.only is not None else None)
         todo = figs.select(figs.registry(), only)
         out = Path(args.out)
         try:
