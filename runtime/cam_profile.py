@@ -83,7 +83,7 @@ def _positive(name, value, low=0.0, strict=True, high=None):
         or (high is not None and value >= high)
     if bad:
         rng = f"{'>' if strict else '>='} {low:g}" + (f" and < {high:g}" if high is not None else "")
-        raise CamdynInputError(f"{name}={value:g} is out of range: it must be {rng}")
+        raise CamdynInputError(f"{name}={value:g} is out of range: it must be finite and {rng}")
     return value
 
 

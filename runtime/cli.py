@@ -509,6 +509,9 @@ def _cmd_simulate(args) -> int:
             if args.out:
                 raise CamdynInputError("--out does not go with --model auto (no diagrams of the "
                                        "least model yet)")
+            if args.no_error_estimate:
+                raise CamdynInputError("--no-error-estimate does not go with --model auto (the "
+                                       "error bounds are part of the choice)")
             return _least_model(sc, args, progress)
         if args.tolerance is not None or args.figures is not None or args.build_variants:
             raise CamdynInputError("--tolerance, --figures and --build-variants go with --model auto")
@@ -1374,8 +1377,6 @@ def _cmd_sweep(args) -> int:
 
     try:
         grid = sw.parse_grid(args.grid)
-        if len(grid) != len(args.grid):
-            raise CamdynInputError("argument --grid: a parameter is given twice")
         res = sw.sweep(args.target, grid, jobs=args.jobs, dask=args.dask,
                        progress=not args.quiet, t_end=args.t_end, method=args.method,
                        rtol=args.rtol, law=args.law, step=args.step,

@@ -241,7 +241,9 @@ class SweepResult:
                 idx[x_ax] = slice(None)
                 label = ", ".join(f"{names[k]} = {self.axes[names[k]][j]:g}"
                                   for k, j in zip(others, c))
-                ax.plot(x, data[tuple(idx)], lw=1.0, label=label or None)
+                # a marker where the x axis has one value: a line of one point draws nothing
+                ax.plot(x, data[tuple(idx)], lw=1.0, label=label or None,
+                        marker="o" if len(x) == 1 else None)
             finite = data[np.isfinite(data)]
             if finite.size and finite.min() > 0 and finite.max() > 100 * finite.min():
                 ax.set_yscale("log")     # U0 and U0'' span decades between the dips of (3.5)
@@ -609,6 +611,9 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
     axes = _axes(grid)
     _check_names(tgt, axes)
     _check_dwell(tgt, axes)
+    if dask is not None and jobs is not None:
+        raise CamdynInputError("--jobs and --dask: give one (threads here, or the Dask "
+                               "cluster's workers)")
     jobs = default_jobs() if jobs is None else jobs
     if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
         raise CamdynInputError(f"jobs={jobs!r}: give a positive whole number of threads")
@@ -700,7 +705,7 @@ def _on_dask(dask, todo, names, bar) -> tuple[list, str]:
     elif isinstance(dask, str):
         try:
             client = Client(dask, timeout=10)
-        except (OSError, TimeoutError) as exc:
+        except (OSError, TimeoutError, ValueError) as exc:     # ValueError: no port in it
             raise CamdynInputError(f"argument --dask: no Dask scheduler at {dask}: {exc}") from None
         own = True
     else:                          # a cluster object (LocalCluster, ...)

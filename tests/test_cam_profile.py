@@ -231,6 +231,7 @@ def test_cli_writes_everything(tmp_path, capsys):
     (["--law", "nope"], "--law"),
     (["--out", "__a_file__"], "--out"),
     # laws.choose's message said theta; the option is named now
+    (["--stroke", "inf"], "stroke=inf is out of range: it must be finite"),   # read 'inf >= 0'
     (["--law-parameter", "0.2"], "law-parameter (cycloidal)"),
     (["--return-law", "modified-sine", "--return-law-parameter", "0.7"],
      "return-law-parameter (modified-sine)"),

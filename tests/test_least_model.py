@@ -185,6 +185,7 @@ def test_cli_model_auto_json_and_bad_input(tmp_path):
     (["--tolerance", "nan"], ["--tolerance", "0 < tolerance < 1"]),
     (["--tolerance", "inf"], ["--tolerance", "0 < tolerance < 1"]),
     (["--tolerance", "0"], ["--tolerance", "0 < tolerance < 1"]),
+    (["--no-error-estimate"], ["--no-error-estimate", "--model auto"]),   # ignored before
 ])
 def test_bad_choice_input_is_one_line(capsys, args, words):
     """Refused before any probe: one line naming the argument and what it allows, exit 2."""

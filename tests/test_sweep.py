@@ -147,7 +147,11 @@ def test_cli_writes_the_table(tmp_path, capsys):
       "--rtol", "1e-6"], ["rtol", "rk4", "step"]),
     (["sweep", "default", "--grid", "tau=0.2", "--method", "koster", "--step", "1e-3",
       "--rtol", "1e-6"], ["rtol", "koster", "step"]),
-    # the last of two axes of one name was kept without a word
+    # --jobs was ignored beside --dask; an address without a port raised ValueError
+    (["sweep", "camshaft1", "--grid", "tau=0.2", "--jobs", "2", "--dask", "tcp://127.0.0.1:1"],
+     ["--jobs", "--dask"]),
+    (["sweep", "camshaft1", "--grid", "tau=0.2", "--dask", "foo"], ["--dask", "foo"]),
+    # two axes of one name: refused naming it (the CLI said 'a parameter')
     (["sweep", "camshaft1", "--grid", "tau=0.2", "--grid", "tau=0.3"], ["--grid", "tau", "twice"]),
     # the table of 1e10 points raised MemoryError (75 GiB) with a traceback
     (["sweep", "camshaft1", "--grid", "tau=0.1:0.5:100000", "--grid", "Fa=0:1:100000"],
@@ -206,3 +210,15 @@ def test_a_dwell_shorter_than_a_period_is_refused():
         sweep.sweep("one_dof", {"tau": [0.23, 0.3]}, t_end=1.25, jobs=1, progress=False)
     res = sweep.sweep("one_dof", {"tau": [0.23, 0.3]}, t_end=1.3, jobs=1, progress=False)
     assert res["U0"] == pytest.approx([cf.U0(0.23), cf.U0(0.3)], rel=1e-6)
+
+
+def test_a_one_point_grid_is_drawn(tmp_path):
+    """A grid of one point drew an empty chart (a line through one point has no length); the
+    point is drawn as a marker: the chart holds pixels of the line colour (C0, #1f77b4)."""
+    import matplotlib.image as mpimg
+
+    res = sweep.sweep("camshaft1", {"tau": [0.3]}, jobs=1, progress=False)
+    res.charts(tmp_path)
+    img = mpimg.imread(tmp_path / "U0.png")[..., :3]
+    c0 = np.array([0x1f, 0x77, 0xb4]) / 255
+    assert (np.abs(img - c0).max(axis=-1) < 0.05).sum() >= 20
