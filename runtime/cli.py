@@ -324,8 +324,9 @@ def _law_arg(args) -> tuple:
     """(law, theta) of a run: --law and --theta, or with --turn the dwell-rise-dwell-return
     turn of --law (rise) and --return-law (runtime.laws.compose)."""
     if getattr(args, "turn", None) is None:
-        if getattr(args, "return_law", None) is not None:
-            raise CamdynInputError("argument --return-law: only with --turn")
+        for flag in ("return_law", "return_theta"):
+            if getattr(args, flag, None) is not None:
+                raise CamdynInputError(f"argument --{flag.replace('_', '-')}: only with --turn")
         return args.law, args.theta
     from .laws import compose
 
@@ -334,7 +335,8 @@ def _law_arg(args) -> tuple:
     except ValueError:
         raise CamdynInputError(f"argument --turn: {args.turn!r} is not four comma-separated "
                                "angles in deg (rise,upper dwell,return,lower dwell)") from None
-    return compose(args.law, args.return_law, angles, args.theta), None
+    return compose(args.law, args.return_law, angles, args.theta,
+                   getattr(args, "return_theta", None)), None
 
 
 def integrate_errors(args, params: dict, initial: dict, summary: dict) -> dict:
@@ -1055,6 +1057,8 @@ def build_parser() -> argparse.ArgumentParser:
                          "argument counts rises: one turn is 360/RISE)")
     ig.add_argument("--return-law", default=None, choices=laws.NAMES,
                     help="with --turn: the law of the return (default: --law)")
+    ig.add_argument("--return-theta", type=float, default=None,
+                    help="with --return-law: its shape parameter (default: the law's own)")
     ig.add_argument("--json", action="store_true", help="one JSON object on stdout")
     ig.add_argument("--no-error-estimate", action="store_true",
                      help="skip the second, more accurate run that estimates each headline figure's error (sweeps)")
