@@ -991,17 +991,22 @@ def build_parser() -> argparse.ArgumentParser:
     c.set_defaults(func=_cmd_check)
 
     lw = sub.add_parser("laws", help="cam-law characteristics (thesis App. 2), derived symbolically")
-    lw.add_argument("--theta", type=float, default=None, help="modified sine's theta (default 0.1)")
+    lw.add_argument("--theta", type=float, default=None,
+                    help="modified sine's theta, 0 < theta < 0.5 (default 0.1; not with --sweep)")
     lw.add_argument("--json", action="store_true", help="one JSON array on stdout")
     lw.add_argument("--tau", type=float, default=None,
-                    help="with --fa: the selection criteria of sec. 9.2.2 at this tau (envelope "
+                    help="0 < tau < 0.99: the selection criteria of sec. 9.2.2 at this tau (envelope "
                          "U0 and U0'' of CAMSHAFT-1, impact sensitivity, peaks)")
-    lw.add_argument("--fa", type=float, default=None, help="Fa of the selection (default 0)")
+    lw.add_argument("--fa", type=float, default=None,
+                    help="Fa of the selection, 0 <= Fa <= 100 (default 0)")
     lw.add_argument("--stroke", type=float, default=None, metavar="M",
-                    help="with --base-radius and --roller-radius: add the cam's least radius of "
-                         "curvature and largest pressure angle (90/90/90/90 deg cam)")
-    lw.add_argument("--base-radius", type=float, default=None, metavar="M")
-    lw.add_argument("--roller-radius", type=float, default=None, metavar="M")
+                    help="with --tau, --base-radius and --roller-radius: stroke in m, >= 0; "
+                         "adds the cam's least radius of curvature and largest pressure angle "
+                         "(90/90/90/90 deg cam)")
+    lw.add_argument("--base-radius", type=float, default=None, metavar="M",
+                    help="with --stroke: base circle radius in m, > 0")
+    lw.add_argument("--roller-radius", type=float, default=None, metavar="M",
+                    help="with --stroke: roller radius in m, > 0")
     lw.add_argument("--out", default=None, help="folder for laws_selection.png/.csv "
                     "(laws_sweep.png/.csv with --sweep)")
     lw.add_argument("--sweep", default=None, metavar="SCENE",
@@ -1010,7 +1015,7 @@ def build_parser() -> argparse.ArgumentParser:
                          "velocity variation against it (thesis fig. 8.8)")
     lw.add_argument("--law", default=None, choices=laws.NAMES,
                     help="with --sweep: the law whose parameter is swept (default modified-sine)")
-    lw.add_argument("--n", type=int, default=None, help="with --sweep: grid points (default 9)")
+    lw.add_argument("--n", type=int, default=None, help="with --sweep: grid points, 2 to 200 (default 9)")
     lw.add_argument("--values", default=None, metavar="V1,V2,...",
                     help="with --sweep: these parameter values instead of the grid")
     lw.add_argument("--no-error-estimate", action="store_true",
@@ -1409,19 +1414,22 @@ def _add_sweep(sub, all_methods, law_names) -> None:
                          "as fig. 4.11's tau) or NAME=a,b,c; repeat for more axes (the first "
                          "varies slowest)")
     sw.add_argument("--jobs", type=int, default=None,
-                    help="threads (default: every core)")
+                    help="threads, >= 1 (default: every core; not with --dask)")
     sw.add_argument("--dask", default=None, metavar="ADDRESS",
                     help="run on the Dask scheduler at ADDRESS (tcp://host:8786) instead")
     sw.add_argument("--out", default="out/sweep", help="folder for the table and charts "
                                                        "(default out/sweep)")
     sw.add_argument("--t-end", type=float, default=None,
-                    help="end of each run of a model (default 3)")
+                    help="end of each run of a model, in its time unit (T = t/t_m for the "
+                         "thesis models), at least one period tau past the rise (default 3)")
     sw.add_argument("--method", choices=all_methods, default=None,
                     help="integration method (default: the scene's, dp54 for a model)")
     sw.add_argument("--rtol", type=float, default=None,
-                    help="relative tolerance (default: the scene's, 1e-9 for a model)")
+                    help="relative tolerance of dp54/rodas4, 1e-14 <= rtol < 1 (default: the "
+                         "scene's, 1e-9 for a model)")
     sw.add_argument("--step", type=float, default=None,
-                    help="step of a fixed-step method (rk4, koster)")
+                    help="step of a fixed-step method (rk4, koster; required there), in the "
+                         "model's time unit; not with dp54/rodas4")
     sw.add_argument("--law", choices=law_names, default=None,
                     help="cam law of a model (default: the scene's, cycloidal)")
     sw.add_argument("--error-estimate", action="store_true",
