@@ -292,3 +292,25 @@ def test_residual_acceleration_limit():
     U2 = g.at(le["tau_max"], Fa, per_dip=2 * ds.PER_DIP)[1]
     assert U2 * h / t_m**2 == pytest.approx(a, rel=1e-6)
     assert le["T_e_max"] == pytest.approx(le["tau_max"] * t_m, rel=1e-12)
+
+
+@pytest.mark.parametrize("tau, tau_max", [(0.89, 0.3126), (0.1, 0.15), (0.2, None)])
+def test_chart_window_holds_the_design_and_the_largest_tau(tau, tau_max):
+    """The chart's tau window holds the design point and the largest tau, met or not (an
+    unmet requirement at tau = 0.89 gave tau_max = 0.3126 outside the drawn 0.71-1.33)."""
+    x_lo, x_hi = ds.chart_window(tau, tau_max)
+    for t in (tau, tau_max or tau):
+        assert 1.0 / x_hi < t < 1.0 / x_lo
+
+
+def test_envelope_past_the_last_maximum_holds_it():
+    """Between the maximum of (3.5) near tau = 0.42 and the dip at 1/2 the envelope read the
+    graph (U0 = 0.0166 at tau = 0.47), so `design` found u0 <= 2 mm met at tau = 0.47 while
+    its largest tau meeting it was 0.384.  The envelope there is the lobe's maximum (bounded
+    scalar search on (3.5), 1e-4) and the requirement is not met."""
+    r = minimize_scalar(lambda t: -cf.U0(t), bounds=(1 / 3, 1 / 2), method="bounded",
+                        options={"xatol": 1e-12})
+    d = ds.design(stroke=0.1, tau=0.47, Fa=0.0, rise_time=0.2, accuracy=2e-3, check=False)
+    assert d["envelope"]["U0"] == pytest.approx(-r.fun, rel=1e-4)
+    assert d["largest_tau"]["tau_max"] < 0.47
+    assert d["requirement"]["ratio"] > 1
