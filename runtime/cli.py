@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 from dataclasses import replace
@@ -1447,7 +1448,15 @@ def main(argv=None) -> int:
     if out is not None and Path(out).exists() and not Path(out).is_dir():
         return fail(f"camdyn {args.command}" if getattr(args, "command", None) else "camdyn",
                     f"argument --out: {out} is a file; --out names a folder")
-    return args.func(args)
+    try:
+        rc = args.func(args)
+        sys.stdout.flush()           # here, so that a closed pipe is caught below
+        return rc
+    except BrokenPipeError:
+        # the reader of stdout left (`camdyn ... | head`): stop quietly, not with a traceback,
+        # and keep the interpreter's final flush from raising it again
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
 
 
 if __name__ == "__main__":
