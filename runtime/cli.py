@@ -301,6 +301,9 @@ def integrate_run(model_arg: str, params: dict, initial: dict, t_end: float, met
     else:
         raise CamdynInputError(f"MODEL {model_arg!r} is neither a model file (.py) nor a built-in "
                                f"model; built-in models: {', '.join(available())}")
+    if not isinstance(law, str) and not model.manifest.get("cam_instances"):
+        # a Turn (--turn) drives the cam inputs; without one it would be dropped unread
+        raise CamdynInputError(f"argument --turn: {model.name} has no cam input to drive")
     p = model.parameter_vector(params)
     y0 = model.initial_state(p)
     for name, value in initial.items():

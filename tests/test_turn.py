@@ -199,3 +199,12 @@ def test_cli_integrate_return_theta(capsys):
         assert main(["integrate", "one_dof", "--t-end", "2", *bad]) == 2
         err = capsys.readouterr().err.strip()
         assert len(err.splitlines()) == 1 and word in err, err
+
+
+def test_cli_turn_needs_a_cam_input(capsys):
+    """pendulum_xy has no cam input: --turn ran it unchanged; now one line naming --turn."""
+    from camdyn.runtime.cli import main
+
+    assert main(["integrate", "pendulum_xy", "--t-end", "1", "--turn", "90,90,90,90"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "--turn" in err and "pendulum_xy" in err, err
