@@ -369,6 +369,10 @@ def resolve(target, *, t_end=None, method=None, rtol=None, law=None, step=None) 
                       law or sc["law"], step)
     if any(v is not None for v in (t_end, law, step)):
         raise CamdynInputError("t_end, law and step of a scene sweep come from the scene file")
+    if method in ("rk4", "koster"):
+        # else refused later by the first grid value's scene, as if the grid were at fault
+        raise CamdynInputError(f"method {method}: a {kind} scene takes an adaptive method, "
+                               "dp54 or rodas4")
     return Target("dynacam" if kind == "dynacam" else "beam", name, None, method, rtol, None)
 
 

@@ -151,6 +151,8 @@ def test_cli_writes_the_table(tmp_path, capsys):
     (["sweep", "camshaft1", "--grid", "tau=0.2", "--jobs", "2", "--dask", "tcp://127.0.0.1:1"],
      ["--jobs", "--dask"]),
     (["sweep", "camshaft1", "--grid", "tau=0.2", "--dask", "foo"], ["--dask", "foo"]),
+    # a fixed-step method on a scene was blamed on the grid ('grid c_x: run.method=...')
+    (["sweep", "spring_loaded", "--grid", "c_x=3e5", "--method", "rk4"], ["method rk4", "scene takes"]),
     # two axes of one name: refused naming it (the CLI said 'a parameter')
     (["sweep", "camshaft1", "--grid", "tau=0.2", "--grid", "tau=0.3"], ["--grid", "tau", "twice"]),
     # the table of 1e10 points raised MemoryError (75 GiB) with a traceback
