@@ -11,7 +11,7 @@ import json
 from pathlib import Path
 import sys
 
-from camdyn.runtime.cli import fail, fmt, name_argument
+from camdyn.runtime.cli import fail, fmt, name_argument, run_failed
 
 
 def check(args) -> int:
@@ -140,6 +140,7 @@ def _sweep(args) -> int:
     U0'' and the largest fictitious angular-velocity variation against it (fig. 8.8)."""
     from pathlib import Path
 
+    from camdyn.runtime import laws as _laws
     from camdyn.runtime import scene as scenes
     from camdyn.runtime.errors import CamdynInputError, SimulationError
 
@@ -156,12 +157,18 @@ def _sweep(args) -> int:
             except ValueError:
                 raise CamdynInputError(f"argument --values: {args.values!r} is not a comma-"
                                        "separated list of numbers") from None
+            shape_sweep.shape_parameter(law)     # --law first: has it a parameter at all
+            for v in values:                     # named --values, not --theta
+                try:
+                    _laws.choose(law, v)
+                except CamdynInputError as exc:
+                    raise CamdynInputError(f"argument --values: {exc}") from None
         rows = shape_sweep.sweep(sc, law, values, 9 if args.n is None else args.n, errors=not args.no_error_estimate,
                                  progress=None if args.json else sys.stderr)
     except (CamdynInputError, ValueError) as exc:
         return fail(prog, name_argument(str(exc)))
-    except SimulationError as exc:
-        return fail(prog, f"a run of the sweep failed: {exc}")
+    except SimulationError as exc:               # a failed run: status 1, as every command
+        return run_failed(prog, f"a run of the sweep: {exc}")
     name = shape_sweep.shape_parameter(law)["name"]
     files = []
     if args.out:
@@ -370,7 +377,7 @@ def design(args) -> int:
     except (CamdynInputError, ValueError) as exc:
         return fail(prog, name_argument(str(exc)))
     except SimulationError as exc:
-        return fail(prog, f"a graph run failed: {exc}")
+        return run_failed(prog, f"a graph run: {exc}")
     if args.json:
         print(json.dumps(result, indent=1, default=float))
     else:
