@@ -93,3 +93,17 @@ def test_bad_or_stray_options_are_one_line_before_any_run(capsys, argv, words):
     err = capsys.readouterr().err.strip()
     assert rc == 2 and len(err.splitlines()) == 1, err
     assert all(w in err for w in words), err
+
+
+@pytest.mark.parametrize("argv", [["laws", "--tau", "0.1"],
+                                  ["laws", "--sweep", "spring_loaded", "--n", "2"],
+                                  ["design", "--stroke", "0.1", "--tau", "0.1", "--fa", "0"]])
+def test_out_that_cannot_be_made_is_one_line_before_any_run(tmp_path, capsys, argv):
+    """--out below a file: an OSError traceback after the runs (laws --tau, laws --sweep,
+    design); now one line naming --out, exit 2, before any run (no progress line)."""
+    from camdyn.runtime.cli import main
+
+    (tmp_path / "f").write_text("")
+    assert main([*argv, "--out", str(tmp_path / "f" / "sub")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "argument --out" in err, err
