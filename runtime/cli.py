@@ -521,6 +521,8 @@ def _cmd_simulate(args) -> int:
             return _least_model(sc, args, progress)
         if args.tolerance is not None or args.figures is not None or args.build_variants:
             raise CamdynInputError("--tolerance, --figures and --build-variants go with --model auto")
+        if args.out:                 # made before the run, so that a bad --out costs no run
+            dynacam.out_folder(args.out)
         summary, res = dynacam.run(sc, progress=progress)
         if not args.no_error_estimate:
             summary.update(dynacam.errors(sc, summary))

@@ -202,6 +202,19 @@ def test_out_naming_a_file_is_refused_in_one_line(tmp_path, capsys, argv):
     assert "\n" not in err and "--out" in err and "is a file" in err
 
 
+@pytest.mark.parametrize("argv", [["simulate", "spring_loaded"],
+                                  ["sweep", "one_dof", "--grid", "tau=0.2", "--quiet"]])
+def test_out_below_a_file_is_one_line(tmp_path, capsys, argv):
+    """--out below a file cannot be made: simulate raised NotADirectoryError with a traceback
+    (dynacam.plot); one line naming --out, exit 2."""
+    from camdyn.runtime.cli import main
+
+    (tmp_path / "f").write_text("")
+    assert main([*argv, "--out", str(tmp_path / "f" / "sub")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and "argument --out" in err, err
+
+
 @pytest.mark.parametrize("argv", [["scenes"], ["sweep", "camshaft1", "--grid", "tau=0.2,0.3",
                                                "--quiet", "--out", "{tmp}"]])
 def test_closed_stdout_stops_without_a_traceback(tmp_path, argv):
