@@ -64,6 +64,16 @@ class Check:
                 "message": self.message}
 
 
+def _law(flag: str, key: str, parameter):
+    """choose(key, parameter), its refusal naming the option (laws.choose says theta, the
+    option is --law-parameter or --return-law-parameter)."""
+    try:
+        return choose(key, parameter)
+    except CamdynInputError as exc:
+        which = f"{flag}-parameter" if parameter is not None else flag
+        raise CamdynInputError(f"{which} ({key}): {exc}") from None
+
+
 def _positive(name, value, low=0.0, strict=True, high=None):
     try:
         value = float(value)
@@ -73,7 +83,7 @@ def _positive(name, value, low=0.0, strict=True, high=None):
         or (high is not None and value >= high)
     if bad:
         rng = f"{'>' if strict else '>='} {low:g}" + (f" and < {high:g}" if high is not None else "")
-        raise CamdynInputError(f"{name}={value:g} is out of range: it must be {rng}")
+        raise CamdynInputError(f"{name}={value:g} is out of range: it must be finite and {rng}")
     return value
 
 
@@ -126,8 +136,8 @@ class CamProfile:
         if self.return_law is None and self.return_law_parameter is not None:
             raise CamdynInputError("return-law-parameter goes with --return-law")
         fall = (None if self.return_law is None
-                else choose(self.return_law, self.return_law_parameter))
-        cam = RDFD(h, rb, rr, choose(self.law, self.law_parameter),
+                else _law("return-law", self.return_law, self.return_law_parameter))
+        cam = RDFD(h, rb, rr, _law("law", self.law, self.law_parameter),
                    beta_rise=float(r[0]), dwell_outer=float(r[1]), beta_fall=float(r[2]),
                    fall_law=fall)
         object.__setattr__(self, "offset", e)

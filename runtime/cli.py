@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import time
 from dataclasses import replace
@@ -300,6 +301,9 @@ def integrate_run(model_arg: str, params: dict, initial: dict, t_end: float, met
     else:
         raise CamdynInputError(f"MODEL {model_arg!r} is neither a model file (.py) nor a built-in "
                                f"model; built-in models: {', '.join(available())}")
+    if not isinstance(law, str) and not model.manifest.get("cam_instances"):
+        # a Turn (--turn) drives the cam inputs; without one it would be dropped unread
+        raise CamdynInputError(f"argument --turn: {model.name} has no cam input to drive")
     p = model.parameter_vector(params)
     y0 = model.initial_state(p)
     for name, value in initial.items():
@@ -324,8 +328,9 @@ def _law_arg(args) -> tuple:
     """(law, theta) of a run: --law and --theta, or with --turn the dwell-rise-dwell-return
     turn of --law (rise) and --return-law (runtime.laws.compose)."""
     if getattr(args, "turn", None) is None:
-        if getattr(args, "return_law", None) is not None:
-            raise CamdynInputError("argument --return-law: only with --turn")
+        for flag in ("return_law", "return_theta"):
+            if getattr(args, flag, None) is not None:
+                raise CamdynInputError(f"argument --{flag.replace('_', '-')}: only with --turn")
         return args.law, args.theta
     from .laws import compose
 
@@ -334,7 +339,8 @@ def _law_arg(args) -> tuple:
     except ValueError:
         raise CamdynInputError(f"argument --turn: {args.turn!r} is not four comma-separated "
                                "angles in deg (rise,upper dwell,return,lower dwell)") from None
-    return compose(args.law, args.return_law, angles, args.theta), None
+    return compose(args.law, args.return_law, angles, args.theta,
+                   getattr(args, "return_theta", None)), None
 
 
 def integrate_errors(args, params: dict, initial: dict, summary: dict) -> dict:
@@ -509,9 +515,14 @@ def _cmd_simulate(args) -> int:
             if args.out:
                 raise CamdynInputError("--out does not go with --model auto (no diagrams of the "
                                        "least model yet)")
+            if args.no_error_estimate:
+                raise CamdynInputError("--no-error-estimate does not go with --model auto (the "
+                                       "error bounds are part of the choice)")
             return _least_model(sc, args, progress)
         if args.tolerance is not None or args.figures is not None or args.build_variants:
             raise CamdynInputError("--tolerance, --figures and --build-variants go with --model auto")
+        if args.out:                 # made before the run, so that a bad --out costs no run
+            dynacam.out_folder(args.out)
         summary, res = dynacam.run(sc, progress=progress)
         if not args.no_error_estimate:
             summary.update(dynacam.errors(sc, summary))
@@ -994,17 +1005,22 @@ def build_parser() -> argparse.ArgumentParser:
     c.set_defaults(func=_cmd_check)
 
     lw = sub.add_parser("laws", help="cam-law characteristics (thesis App. 2), derived symbolically")
-    lw.add_argument("--theta", type=float, default=None, help="modified sine's theta (default 0.1)")
+    lw.add_argument("--theta", type=float, default=None,
+                    help="modified sine's theta, 0 < theta < 0.5 (default 0.1; not with --sweep)")
     lw.add_argument("--json", action="store_true", help="one JSON array on stdout")
     lw.add_argument("--tau", type=float, default=None,
-                    help="with --fa: the selection criteria of sec. 9.2.2 at this tau (envelope "
+                    help="0 < tau < 0.99: the selection criteria of sec. 9.2.2 at this tau (envelope "
                          "U0 and U0'' of CAMSHAFT-1, impact sensitivity, peaks)")
-    lw.add_argument("--fa", type=float, default=None, help="Fa of the selection (default 0)")
+    lw.add_argument("--fa", type=float, default=None,
+                    help="Fa of the selection, 0 <= Fa <= 100 (default 0)")
     lw.add_argument("--stroke", type=float, default=None, metavar="M",
-                    help="with --base-radius and --roller-radius: add the cam's least radius of "
-                         "curvature and largest pressure angle (90/90/90/90 deg cam)")
-    lw.add_argument("--base-radius", type=float, default=None, metavar="M")
-    lw.add_argument("--roller-radius", type=float, default=None, metavar="M")
+                    help="with --tau, --base-radius and --roller-radius: stroke in m, >= 0; "
+                         "adds the cam's least radius of curvature and largest pressure angle "
+                         "(90/90/90/90 deg cam)")
+    lw.add_argument("--base-radius", type=float, default=None, metavar="M",
+                    help="with --stroke: base circle radius in m, > 0")
+    lw.add_argument("--roller-radius", type=float, default=None, metavar="M",
+                    help="with --stroke: roller radius in m, > 0")
     lw.add_argument("--out", default=None, help="folder for laws_selection.png/.csv "
                     "(laws_sweep.png/.csv with --sweep)")
     lw.add_argument("--sweep", default=None, metavar="SCENE",
@@ -1013,7 +1029,7 @@ def build_parser() -> argparse.ArgumentParser:
                          "velocity variation against it (thesis fig. 8.8)")
     lw.add_argument("--law", default=None, choices=laws.NAMES,
                     help="with --sweep: the law whose parameter is swept (default modified-sine)")
-    lw.add_argument("--n", type=int, default=9, help="with --sweep: grid points (default 9)")
+    lw.add_argument("--n", type=int, default=None, help="with --sweep: grid points, 2 to 200 (default 9)")
     lw.add_argument("--values", default=None, metavar="V1,V2,...",
                     help="with --sweep: these parameter values instead of the grid")
     lw.add_argument("--no-error-estimate", action="store_true",
@@ -1060,6 +1076,8 @@ def build_parser() -> argparse.ArgumentParser:
                          "argument counts rises: one turn is 360/RISE)")
     ig.add_argument("--return-law", default=None, choices=laws.NAMES,
                     help="with --turn: the law of the return (default: --law)")
+    ig.add_argument("--return-theta", type=float, default=None,
+                    help="with --return-law: its shape parameter (default: the law's own)")
     ig.add_argument("--json", action="store_true", help="one JSON object on stdout")
     ig.add_argument("--no-error-estimate", action="store_true",
                      help="skip the second, more accurate run that estimates each headline figure's error (sweeps)")
@@ -1067,7 +1085,8 @@ def build_parser() -> argparse.ArgumentParser:
     ig.set_defaults(func=_cmd_integrate)
 
     sm = sub.add_parser("simulate", help="a DYNACAM scene (thesis ch. 6, 7): summary and diagrams")
-    sm.add_argument("scene", help="scene TOML, or a built-in scene: indexing, spring_loaded")
+    sm.add_argument("scene", help="scene TOML, or a built-in DYNACAM scene: indexing, "
+                                   "indexing_squeeze, spring_loaded, fig8_1a, fig8_1b")
     sm.add_argument("--json", action="store_true", help="one JSON object on stdout")
     sm.add_argument("--no-error-estimate", action="store_true",
                      help="skip the second, more accurate run that estimates each headline figure's error (sweeps)")
@@ -1332,19 +1351,23 @@ def _add_design(sub, law_names) -> None:
     a("--mass", type=float, default=None, metavar="KG", help="m, equivalent mass at the output (4.39)")
     a("--stiffness", type=float, default=None, metavar="N/M",
       help="c_c, stiffness of the uncoupled follower system at the output (4.3)")
-    a("--tau", type=float, default=None, help="tau = T_e/t_m directly (instead of m and c_c)")
-    a("--fa", type=float, default=None, help="Fa directly (instead of --c-tan)")
+    a("--tau", type=float, default=None,
+      help="tau = T_e/t_m directly, 0 < tau < 0.9 (dimensionless; instead of m and c_c)")
+    a("--fa", type=float, default=None,
+      help="Fa directly, 0 <= Fa <= 12.8 (dimensionless; instead of --c-tan)")
     a("--c-tan", type=float, default=None, metavar="N/M",
       help="c_tan, tangential stiffness of the shaft at the output (4.4); Fa = (c_c/c_tan) tan^2 alpha_me")
     a("--pitch-radius", type=float, default=None, metavar="M", help="R_1/2 at the cam (4.1)")
     a("--ratio", type=float, default=None, metavar="I",
       help="transmission ratio i, h_m' = i h_m at the cam (default 1)")
-    a("--tan-alpha-me", type=float, default=None, help="mean slope (4.13) directly")
+    a("--tan-alpha-me", type=float, default=None,
+      help="tan alpha_me, the mean slope (4.13) directly (dimensionless; instead of --pitch-radius)")
     a("--accuracy", type=float, default=None, metavar="M", help="largest positional error u0 (m)")
     a("--residual-acceleration", type=float, default=None, metavar="M/S2",
       help="largest residual acceleration u0'' after the rise (m/s^2)")
-    a("--law", default="cycloidal", choices=law_names)
-    a("--theta", type=float, default=None, help="the law's shape parameter")
+    a("--law", default="cycloidal", choices=law_names, help="cam law of the rise (default cycloidal)")
+    a("--theta", type=float, default=None,
+      help="the law's shape parameter, for laws that have one (default: the law's own)")
     a("--common-shaft", action="store_true", help="the shaft drives other mechanisms (Fa <= 0.3, sec. 8.5)")
     a("--motor-rpm", type=float, default=None, help="a thesis motor by synchronous speed: "
       "3000/1500/1000/750 (T_m of fig. A.5.3)")
@@ -1352,10 +1375,13 @@ def _add_design(sub, law_names) -> None:
       "constant T_m = J_m/G (A.5.11)")
     a("--motor-tel", type=float, default=None, metavar="S",
       help="electrical time constant T_el (A.5.3): second-order slip (A.5.25) instead of (A.5.33)")
-    a("--rated-slip", type=float, default=0.085, help="delta_n (default 0.085, fig. A.5.3)")
-    a("--slip-limit", type=float, default=None, help="delta_lim, the largest slip allowed (8.1)")
-    a("--spring", action="store_true", help="a follower spring: v_v = 5 in (8.1)")
-    a("--gear-efficiency", type=float, default=None, help="eta_g of the reduction gear (8.1)")
+    a("--rated-slip", type=float, default=None, help="delta_n, the motor's rated slip, 0 < delta_n < 1 "
+      "(default 0.085, fig. A.5.3)")
+    a("--slip-limit", type=float, default=None,
+      help="delta_lim, the largest slip allowed, 0 < delta_lim < 1 (8.1); required with a motor")
+    a("--spring", action="store_true", help="a follower spring: v_v = 5 in (8.1) (with a motor)")
+    a("--gear-efficiency", type=float, default=None,
+      help="eta_g of the reduction gear, 0 < eta_g <= 1 (8.1) (with a motor; default 1)")
     a("--worm", type=float, nargs=2, default=None, metavar=("ALPHA", "MU"),
       help="worm gear lead angle and friction angle (rad): eta_g by (6.72)")
     a("--no-check", action="store_true", help="skip the check run")
@@ -1373,9 +1399,7 @@ def _cmd_sweep(args) -> int:
     from . import sweep as sw
 
     try:
-        grid = dict(sw.parse_axis(text) for text in args.grid)
-        if len(grid) != len(args.grid):
-            raise CamdynInputError("argument --grid: a parameter is given twice")
+        grid = sw.parse_grid(args.grid)
         res = sw.sweep(args.target, grid, jobs=args.jobs, dask=args.dask,
                        progress=not args.quiet, t_end=args.t_end, method=args.method,
                        rtol=args.rtol, law=args.law, step=args.step,
@@ -1404,19 +1428,22 @@ def _add_sweep(sub, all_methods, law_names) -> None:
                          "as fig. 4.11's tau) or NAME=a,b,c; repeat for more axes (the first "
                          "varies slowest)")
     sw.add_argument("--jobs", type=int, default=None,
-                    help="threads (default: every core)")
+                    help="threads, >= 1 (default: every core; not with --dask)")
     sw.add_argument("--dask", default=None, metavar="ADDRESS",
                     help="run on the Dask scheduler at ADDRESS (tcp://host:8786) instead")
     sw.add_argument("--out", default="out/sweep", help="folder for the table and charts "
                                                        "(default out/sweep)")
     sw.add_argument("--t-end", type=float, default=None,
-                    help="end of each run of a model (default 3)")
+                    help="end of each run of a model, in its time unit (T = t/t_m for the "
+                         "thesis models), at least one period tau past the rise (default 3)")
     sw.add_argument("--method", choices=all_methods, default=None,
                     help="integration method (default: the scene's, dp54 for a model)")
     sw.add_argument("--rtol", type=float, default=None,
-                    help="relative tolerance (default: the scene's, 1e-9 for a model)")
+                    help="relative tolerance of dp54/rodas4, 1e-14 <= rtol < 1 (default: the "
+                         "scene's, 1e-9 for a model)")
     sw.add_argument("--step", type=float, default=None,
-                    help="step of a fixed-step method (rk4, koster)")
+                    help="step of a fixed-step method (rk4, koster; required there), in the "
+                         "model's time unit; not with dp54/rodas4")
     sw.add_argument("--law", choices=law_names, default=None,
                     help="cam law of a model (default: the scene's, cycloidal)")
     sw.add_argument("--error-estimate", action="store_true",
@@ -1434,7 +1461,15 @@ def main(argv=None) -> int:
     if out is not None and Path(out).exists() and not Path(out).is_dir():
         return fail(f"camdyn {args.command}" if getattr(args, "command", None) else "camdyn",
                     f"argument --out: {out} is a file; --out names a folder")
-    return args.func(args)
+    try:
+        rc = args.func(args)
+        sys.stdout.flush()           # here, so that a closed pipe is caught below
+        return rc
+    except BrokenPipeError:
+        # the reader of stdout left (`camdyn ... | head`): stop quietly, not with a traceback,
+        # and keep the interpreter's final flush from raising it again
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1
 
 
 if __name__ == "__main__":

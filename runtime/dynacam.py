@@ -272,6 +272,20 @@ DIAGRAMS = (
 )
 
 
+def out_folder(out_dir):
+    """The diagrams' folder, made; one that cannot be made (below a file, not writable) is a
+    CamdynInputError naming --out, not an OSError traceback."""
+    from pathlib import Path
+
+    out_dir = Path(out_dir)
+    try:
+        out_dir.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise CamdynInputError(f"argument --out: cannot create {out_dir}: "
+                               f"{exc.strerror or exc}") from None
+    return out_dir
+
+
 def plot(scene: Scene, res, summary: dict, out_dir) -> list:
     """The thesis's diagrams (figs 7.11, 7.12, 7.15, 7.16) as PNG files in ``out_dir``."""
     import matplotlib
@@ -280,8 +294,7 @@ def plot(scene: Scene, res, summary: dict, out_dir) -> list:
     import matplotlib.pyplot as plt
     from pathlib import Path
 
-    out_dir = Path(out_dir)
-    out_dir.mkdir(parents=True, exist_ok=True)
+    out_dir = out_folder(out_dir)
     T = nominal_T(scene, res)
     names = res.output_names
     written = []

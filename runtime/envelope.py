@@ -6,7 +6,7 @@ not count on a dip (the parameters are never known that well, sec. 8.2.6) and re
 through the maxima instead: the envelope.  Here it is taken from sampled graphs: every
 interior local maximum of the samples, refined by the parabola through it and its two
 neighbours (in tau), then joined by straight lines in log(value) between the maxima and held
-flat beyond the outermost ones where a dip lies between (else the graph is the envelope).  The grid must resolve the dips: :func:`tau_grid` spaces tau
+flat beyond the outermost ones where the graph dips on that side (else the graph is the envelope).  The grid must resolve the dips: :func:`tau_grid` spaces tau
 uniformly in 1/tau, in which the dips of (3.5) are equally spaced (one per unit of 1/tau).
 """
 from __future__ import annotations
@@ -33,7 +33,8 @@ class Envelope:
     """The curve through the maxima of a graph: ``tau`` and ``value`` at the maxima, the
     samples themselves (``sample_tau``, ``sample_value``), and ``__call__`` for any tau inside
     the samples: log-linear between maxima and never below the graph.  Beyond the outermost
-    maximum the maximum is held flat only past a dip of the graph; where the graph rises or
+    maximum the maximum is held flat where the graph dips on that side (on the flank before
+    the dip too, so the envelope makes no V); where the graph rises or
     falls away from it without a dip (U0 towards tau = 1 on a stiff camshaft, or a window of a
     graph without dips, as U0 at large Fa, fig. 4.11a) the graph is its own envelope."""
 
@@ -59,19 +60,23 @@ def dips(tau, values) -> np.ndarray:
 
 def through_maxima(x, mt, mv, dip_tau) -> np.ndarray:
     """The curve through the maxima (mt, mv) at x: log-linear in tau between them; beyond the
-    outermost maximum its value held flat, but only past a dip (``dip_tau``) between that
-    maximum and x, else NaN (the graph is its own envelope there); NaN everywhere without
-    maxima."""
+    outermost maximum its value held flat where the graph dips (``dip_tau``) beyond that
+    maximum, on the flank before the dip as well as past it, else NaN (the graph is its own
+    envelope there); NaN everywhere without maxima."""
     x = np.asarray(x, float)
     out = np.full(x.shape, np.nan)
     if len(mt) == 0:
         return out
     inside = (x >= mt[0]) & (x <= mt[-1])
     out[inside] = np.exp(np.interp(x[inside], mt, np.log(mv)))
+    # the flank between the outermost maximum and a dip beyond it is held too: reading the
+    # graph there made the envelope fall into the dip and rise again (a V between tau = 0.42
+    # and 1/2 at Fa = 0, where `camdyn design` found tau = 0.47 met but tau_max = 0.38)
+    after, before = np.any(dip_tau > mt[-1]), np.any(dip_tau < mt[0])
     for k in np.flatnonzero(~inside):
-        if x[k] > mt[-1] and np.any((dip_tau > mt[-1]) & (dip_tau <= x[k])):
+        if x[k] > mt[-1] and after:
             out[k] = mv[-1]
-        elif x[k] < mt[0] and np.any((dip_tau >= x[k]) & (dip_tau < mt[0])):
+        elif x[k] < mt[0] and before:
             out[k] = mv[0]
     return out
 

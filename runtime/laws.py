@@ -135,6 +135,9 @@ def compose(rise: str = "cycloidal", ret: str | None = None, angles_deg=(90, 90,
     """A :class:`Turn`: the rise law ``rise`` (shape parameter ``theta``), the return law
     ``ret`` (default: the rise law and its theta), angles rise, upper dwell, return, lower
     dwell in deg summing to 360 (dwells may be 0)."""
+    if ret is None and ret_theta is not None:
+        # the return is the rise law with the rise's theta: a ret_theta would be dropped
+        raise CamdynInputError("return theta goes with a return law of its own (--return-law)")
     rise_law = choose(rise, theta)
     ret_law = rise_law if ret is None else choose(ret, ret_theta)
     try:

@@ -359,6 +359,10 @@ def choose(sc, figures=DEFAULT_FIGURES, tolerance: float = TOLERANCE, build: boo
                                "are compared over one rise and dwell, so drop [turn] for the choice")
     figures = tuple(figures)
     bad = [f for f in figures if f not in FIGURES]
+    if not bad and len(set(figures)) < len(figures):
+        twice = next(f for f in figures if figures.count(f) > 1)
+        raise CamdynInputError(f"--figures: {twice} is given twice; give each figure once, from "
+                               f"{', '.join(FIGURES)}")
     if bad or not figures:
         raise CamdynInputError(f"--figures: {bad[0] if bad else '(none)'} is not a figure of the "
                                f"least-model choice; choose from {', '.join(FIGURES)}")

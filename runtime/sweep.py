@@ -100,6 +100,9 @@ def parse_axis(text: str) -> tuple[str, np.ndarray]:
     if len(parts) > 1:
         if spacing not in ("lin", "log", "inv"):
             raise syntax
+        if not (np.isfinite(a) and np.isfinite(b)):
+            # before linspace, which warns on inf and nan
+            raise CamdynInputError(f"argument --grid: {name}: {rng!r} must give finite numbers")
         if not 1 <= n <= 1_000_000:
             raise CamdynInputError(f"argument --grid: {name}: N={n} is out of range: "
                                    "1 <= N <= 1000000")
@@ -117,6 +120,23 @@ def parse_axis(text: str) -> tuple[str, np.ndarray]:
     return name, values
 
 
+MAX_POINTS = 1_000_000
+"""The most grid points of one sweep, all axes combined (as N of one axis)."""
+
+
+def parse_grid(texts) -> dict:
+    """{name: values} of repeated ``--grid`` texts (:func:`parse_axis`); a name given twice
+    is refused (a dict would keep the last one without a word)."""
+    grid: dict = {}
+    for text in texts:
+        name, values = parse_axis(text)
+        if name in grid:
+            raise CamdynInputError(f"argument --grid: {name} is given twice; give each "
+                                   "parameter one axis")
+        grid[name] = values
+    return grid
+
+
 def _axes(grid: dict) -> dict:
     if not isinstance(grid, dict) or not grid:
         raise CamdynInputError("a sweep needs a grid: {parameter name: values}")
@@ -126,6 +146,11 @@ def _axes(grid: dict) -> dict:
         if v.size == 0 or not np.all(np.isfinite(v)):
             raise CamdynInputError(f"grid {name}: give finite numbers, got {values!r}")
         out[str(name)] = v
+    total = math.prod(v.size for v in out.values())
+    if total > MAX_POINTS:
+        # the table of every combination would not fit in memory (1e5 x 1e5 needed 75 GiB)
+        raise CamdynInputError(f"grid {' x '.join(f'{k} ({v.size})' for k, v in out.items())}: "
+                               f"{total:.3g} points; at most {MAX_POINTS:,} in one sweep")
     return out
 
 
@@ -216,7 +241,9 @@ class SweepResult:
                 idx[x_ax] = slice(None)
                 label = ", ".join(f"{names[k]} = {self.axes[names[k]][j]:g}"
                                   for k, j in zip(others, c))
-                ax.plot(x, data[tuple(idx)], lw=1.0, label=label or None)
+                # a marker where the x axis has one value: a line of one point draws nothing
+                ax.plot(x, data[tuple(idx)], lw=1.0, label=label or None,
+                        marker="o" if len(x) == 1 else None)
             finite = data[np.isfinite(data)]
             if finite.size and finite.min() > 0 and finite.max() > 100 * finite.min():
                 ax.set_yscale("log")     # U0 and U0'' span decades between the dips of (3.5)
@@ -314,6 +341,9 @@ def resolve(target, *, t_end=None, method=None, rtol=None, law=None, step=None) 
     if isinstance(target, Target):
         return target
     name = str(target)
+    if rtol is not None and method in ("rk4", "koster"):
+        raise CamdynInputError(f"rtol applies to the adaptive methods dp54 and rodas4; {method} "
+                               "takes step")
     if name.endswith(".py") or name.replace("-", "_") in available():
         if name.endswith(".py") and not Path(name).is_file():
             raise CamdynInputError(f"{name}: no such model file")
@@ -339,6 +369,10 @@ def resolve(target, *, t_end=None, method=None, rtol=None, law=None, step=None) 
                       law or sc["law"], step)
     if any(v is not None for v in (t_end, law, step)):
         raise CamdynInputError("t_end, law and step of a scene sweep come from the scene file")
+    if method in ("rk4", "koster"):
+        # else refused later by the first grid value's scene, as if the grid were at fault
+        raise CamdynInputError(f"method {method}: a {kind} scene takes an adaptive method, "
+                               "dp54 or rodas4")
     return Target("dynacam" if kind == "dynacam" else "beam", name, None, method, rtol, None)
 
 
@@ -537,6 +571,26 @@ def _beam_chunk(sc, names, points):
     return out, steps
 
 
+def _check_dwell(target: Target, axes: dict) -> None:
+    """U0 and U0'' are the largest |U|, |X''| in the dwell after the rise: a dwell shorter than
+    one period of the residual vibration (tau in T, (3.3), (4.12)) gives a smaller number
+    without a word.  Models with a time-dependent rise end (rise_state) are not checked."""
+    if target.kind != "model":
+        return
+    model = _built(target)[0]
+    spec = model.manifest["residual"]
+    if spec.get("rise_state") or "tau" not in model.parameter_names:
+        return
+    tau = axes["tau"].max() if "tau" in axes else \
+        model.parameter_vector()[model.parameter_names.index("tau")]
+    need = float(spec["rise_end"]) + float(tau)
+    if target.t_end < need:
+        raise CamdynInputError(f"t_end={target.t_end:g} leaves less than one period of the "
+                               f"residual vibration (tau = {tau:g}) after the rise at T = "
+                               f"{spec['rise_end']:g}: U0 would be too small; give t_end >= "
+                               f"{need:g}")
+
+
 # -- the sweep ------------------------------------------------------------------------------------
 
 def default_jobs() -> int:
@@ -560,6 +614,10 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
     tgt = resolve(target, t_end=t_end, method=method, rtol=rtol, law=law, step=step)
     axes = _axes(grid)
     _check_names(tgt, axes)
+    _check_dwell(tgt, axes)
+    if dask is not None and jobs is not None:
+        raise CamdynInputError("--jobs and --dask: give one (threads here, or the Dask "
+                               "cluster's workers)")
     jobs = default_jobs() if jobs is None else jobs
     if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
         raise CamdynInputError(f"jobs={jobs!r}: give a positive whole number of threads")
@@ -651,7 +709,7 @@ def _on_dask(dask, todo, names, bar) -> tuple[list, str]:
     elif isinstance(dask, str):
         try:
             client = Client(dask, timeout=10)
-        except (OSError, TimeoutError) as exc:
+        except (OSError, TimeoutError, ValueError) as exc:     # ValueError: no port in it
             raise CamdynInputError(f"argument --dask: no Dask scheduler at {dask}: {exc}") from None
         own = True
     else:                          # a cluster object (LocalCluster, ...)

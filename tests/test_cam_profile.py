@@ -230,6 +230,13 @@ def test_cli_writes_everything(tmp_path, capsys):
     (["--max-pressure-angle", "95"], "max-pressure-angle"),
     (["--law", "nope"], "--law"),
     (["--out", "__a_file__"], "--out"),
+    # laws.choose's message said theta; the option is named now
+    (["--stroke", "inf"], "stroke=inf is out of range: it must be finite"),   # read 'inf >= 0'
+    (["--law-parameter", "0.2"], "law-parameter (cycloidal)"),
+    (["--return-law", "modified-sine", "--return-law-parameter", "0.7"],
+     "return-law-parameter (modified-sine)"),
+    (["--return-law", "cycloidal", "--return-law-parameter", "0.2"],
+     "return-law-parameter (cycloidal)"),
 ])
 def test_cli_refuses_bad_input(tmp_path, capsys, argv, names):
     base = {"--stroke": "0.015", "--base-radius": "0.026", "--roller-radius": "0.005",

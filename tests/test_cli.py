@@ -200,3 +200,35 @@ def test_out_naming_a_file_is_refused_in_one_line(tmp_path, capsys, argv):
     assert main([*argv, "--out", str(f)]) == 2
     err = capsys.readouterr().err.strip()
     assert "\n" not in err and "--out" in err and "is a file" in err
+
+
+@pytest.mark.parametrize("argv", [["simulate", "spring_loaded"],
+                                  ["sweep", "one_dof", "--grid", "tau=0.2", "--quiet"]])
+def test_out_below_a_file_is_one_line(tmp_path, capsys, argv):
+    """--out below a file cannot be made: simulate raised NotADirectoryError with a traceback
+    (dynacam.plot); one line naming --out, exit 2."""
+    from camdyn.runtime.cli import main
+
+    (tmp_path / "f").write_text("")
+    assert main([*argv, "--out", str(tmp_path / "f" / "sub")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and "argument --out" in err, err
+
+
+@pytest.mark.parametrize("argv", [["scenes"], ["sweep", "camshaft1", "--grid", "tau=0.2,0.3",
+                                               "--quiet", "--out", "{tmp}"]])
+def test_closed_stdout_stops_without_a_traceback(tmp_path, argv):
+    """`camdyn ... | head -1`: stdout's reader gone, the command printed a BrokenPipeError
+    traceback (or 'Exception ignored' at exit). Now: no traceback, exit status 1."""
+    import os
+
+    r, w = os.pipe()
+    os.close(r)                                  # no reader: the first flush gets EPIPE
+    try:
+        p = subprocess.run([sys.executable, "-m", "camdyn.runtime.cli",
+                            *[a.replace("{tmp}", str(tmp_path)) for a in argv]],
+                           stdout=w, stderr=subprocess.PIPE, text=True, timeout=120)
+    finally:
+        os.close(w)
+    assert p.returncode == 1, p.stderr
+    assert "Traceback" not in p.stderr and "Exception ignored" not in p.stderr, p.stderr

@@ -95,12 +95,9 @@ def test_largest_Fa_meets_the_requirement_exactly(follower_design):
                                             rel=1e-12)
 
 
-def test_largest_tau_at_Fa0_against_closed_form_envelope():
-    """Fa = 0: the largest tau for u0 <= 0.1 mm at h_m' = 50 mm against the envelope through the
-    maxima of (3.5) built independently (each lobe's maximum by a bounded scalar search,
-    log-linear between them, as sec. 3.5 draws it), its crossing by Brent: to 1e-5, and within
-    the stated error.  The check run takes the one-DOF model (Fa = 0) and gives U0 = (3.5) at
-    tau = 0.12 to 1e-7."""
+def _closed_form_largest_tau(stroke=0.05, accuracy=1e-4):
+    """The tau where the envelope through the maxima of (3.5) (each lobe's maximum by a bounded
+    scalar search, log-linear between them, as sec. 3.5 draws it) gives u0 = accuracy."""
     def lobe(n):
         r = minimize_scalar(lambda t: -cf.U0(t), bounds=(1 / (n + 1), 1 / n), method="bounded",
                             options={"xatol": 1e-13})
@@ -111,7 +108,24 @@ def test_largest_tau_at_Fa0_against_closed_form_envelope():
     def env(t):
         return max(math.exp(np.interp(t, mt, mv)), cf.U0(t))
 
-    root = brentq(lambda t: env(t) * 0.05 - 1e-4, 0.05, 0.29, xtol=1e-14)
+    return brentq(lambda t: env(t) * stroke - accuracy, 0.05, 0.29, xtol=1e-14)
+
+
+def test_largest_tau_from_a_machine_below_the_search_range():
+    """A machine at tau = 0.01 < TAU_MIN (accepted input) raised an IndexError: the bracket
+    [tau/1.5, 1.5 tau] clipped to TAU_MIN was empty.  The search now starts at TAU_MIN and
+    finds the same largest tau as from tau = 0.12 (the closed-form envelope of (3.5), 1e-5)."""
+    lt = ds.largest_tau(ds.Graphs(), 0.0, 0.01, ds.Requirement(0.05, 1e-4), T_e=0.001)
+    assert lt["tau_max"] == pytest.approx(_closed_form_largest_tau(), rel=1e-5)
+
+
+def test_largest_tau_at_Fa0_against_closed_form_envelope():
+    """Fa = 0: the largest tau for u0 <= 0.1 mm at h_m' = 50 mm against the envelope through the
+    maxima of (3.5) built independently (each lobe's maximum by a bounded scalar search,
+    log-linear between them, as sec. 3.5 draws it), its crossing by Brent: to 1e-5, and within
+    the stated error.  The check run takes the one-DOF model (Fa = 0) and gives U0 = (3.5) at
+    tau = 0.12 to 1e-7."""
+    root = _closed_form_largest_tau()
     d = ds.design(stroke=0.05, tau=0.12, Fa=0.0, rise_time=0.1, accuracy=1e-4)
     lt = d["largest_tau"]
     assert lt["tau_max"] == pytest.approx(root, rel=1e-5)
@@ -227,6 +241,12 @@ def test_cli_json(capsys, tmp_path):
     (["--tau", "0.1", "--fa", "1", "--rise-time", "0.1", "--motor-rpm", "3000"], "--slip-limit"),
     (["--tau", "0.1", "--fa", "1", "--rise-time", "0.1", "--law", "3-4-5", "--motor-rpm", "3000",
       "--slip-limit", "0.01"], "--law"),
+    # motor-only options without a motor were dropped unread
+    (["--tau", "0.1", "--fa", "1", "--worm", "nan", "0.05"], "--worm"),
+    (["--tau", "0.1", "--fa", "1", "--gear-efficiency", "2"], "--gear-efficiency"),
+    (["--tau", "0.1", "--fa", "1", "--spring"], "--spring"),
+    (["--tau", "0.1", "--fa", "1", "--rated-slip", "0.1"], "--rated-slip"),
+    (["--tau", "0.1", "--fa", "1", "--motor-tel", "0.01"], "--motor-tel"),
 ])
 def test_cli_bad_input(capsys, argv, flag):
     """Bad input: one line on stderr naming the argument and its range, exit status 2."""
@@ -272,3 +292,25 @@ def test_residual_acceleration_limit():
     U2 = g.at(le["tau_max"], Fa, per_dip=2 * ds.PER_DIP)[1]
     assert U2 * h / t_m**2 == pytest.approx(a, rel=1e-6)
     assert le["T_e_max"] == pytest.approx(le["tau_max"] * t_m, rel=1e-12)
+
+
+@pytest.mark.parametrize("tau, tau_max", [(0.89, 0.3126), (0.1, 0.15), (0.2, None)])
+def test_chart_window_holds_the_design_and_the_largest_tau(tau, tau_max):
+    """The chart's tau window holds the design point and the largest tau, met or not (an
+    unmet requirement at tau = 0.89 gave tau_max = 0.3126 outside the drawn 0.71-1.33)."""
+    x_lo, x_hi = ds.chart_window(tau, tau_max)
+    for t in (tau, tau_max or tau):
+        assert 1.0 / x_hi < t < 1.0 / x_lo
+
+
+def test_envelope_past_the_last_maximum_holds_it():
+    """Between the maximum of (3.5) near tau = 0.42 and the dip at 1/2 the envelope read the
+    graph (U0 = 0.0166 at tau = 0.47), so `design` found u0 <= 2 mm met at tau = 0.47 while
+    its largest tau meeting it was 0.384.  The envelope there is the lobe's maximum (bounded
+    scalar search on (3.5), 1e-4) and the requirement is not met."""
+    r = minimize_scalar(lambda t: -cf.U0(t), bounds=(1 / 3, 1 / 2), method="bounded",
+                        options={"xatol": 1e-12})
+    d = ds.design(stroke=0.1, tau=0.47, Fa=0.0, rise_time=0.2, accuracy=2e-3, check=False)
+    assert d["envelope"]["U0"] == pytest.approx(-r.fun, rel=1e-4)
+    assert d["largest_tau"]["tau_max"] < 0.47
+    assert d["requirement"]["ratio"] > 1

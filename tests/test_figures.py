@@ -110,6 +110,15 @@ def test_selection_and_bad_ids(capsys):
     assert len(err) == 1 and "--only" in err[0] and "9.99" in err[0]
 
 
+@pytest.mark.parametrize("only", ["", ",", " , "])
+def test_empty_only_is_refused_not_everything(capsys, tmp_path, only):
+    """--only "" drew all 35 figures (80 s) as if --only were left out: one line, exit 2."""
+    assert cli.main(["figures", "--only", only, "--out", str(tmp_path), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--only" in err[0], err
+    assert not any(tmp_path.iterdir())
+
+
 def test_registry_is_consistent():
     """Every figure named in the task is in the registry, each with a builder or a reason, and
     every check key a figure cites exists in thesis/checks."""

@@ -1,4 +1,6 @@
 """Cam-law characteristics (App. 2): the table against independent computations."""
+import json
+
 import numpy as np
 import pytest
 
@@ -52,3 +54,13 @@ def test_theta_is_checked():
         properties("modified-sine", 0.7)
     with pytest.raises(ValueError, match="no shape parameter"):
         properties("cycloidal", 0.2)
+
+
+def test_json_has_no_infinity():
+    """The uniform law's H'' is an impulse at both ends (H''max = inf in the table); its JSON
+    row printed the token Infinity, which is not JSON.  Every row dumps with allow_nan=False,
+    the impulse as null."""
+    for key in sorted(camlaws.LAWS):
+        json.dumps(properties(key).as_dict(), allow_nan=False)
+    d = properties("uniform").as_dict()
+    assert d["H2_max"] is None and d["H2_min"] is None and d["H1_max"] == 1.0

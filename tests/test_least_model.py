@@ -179,6 +179,24 @@ def test_cli_model_auto_json_and_bad_input(tmp_path):
         assert "Traceback" not in p.stderr
 
 
+@pytest.mark.parametrize("args, words", [
+    (["--figures", "U0,U0"], ["--figures", "U0", "twice"]),     # ran, printing U0 twice
+    (["--figures", ","], ["--figures", "choose from"]),
+    (["--tolerance", "nan"], ["--tolerance", "0 < tolerance < 1"]),
+    (["--tolerance", "inf"], ["--tolerance", "0 < tolerance < 1"]),
+    (["--tolerance", "0"], ["--tolerance", "0 < tolerance < 1"]),
+    (["--no-error-estimate"], ["--no-error-estimate", "--model auto"]),   # ignored before
+])
+def test_bad_choice_input_is_one_line(capsys, args, words):
+    """Refused before any probe: one line naming the argument and what it allows, exit 2."""
+    from camdyn.runtime.cli import main
+
+    rc = main(["simulate", "fig8_1b", "--model", "auto", *args])
+    err = capsys.readouterr().err.strip()
+    assert rc == 2 and len(err.splitlines()) == 1, err
+    assert all(w in err for w in words), err
+
+
 @pytest.mark.slow
 def test_fig8_1a_with_built_variants_drops_y_not_z(tmp_path, monkeypatch):
     """With the 3-DOF variants built on demand (about 7 s each, into an empty cache):

@@ -74,3 +74,36 @@ def test_cli_table_json_and_bad_input(tmp_path):
     for bad in (["--tau", "1.5"], ["--tau", "0.2", "--stroke", "0.01"], ["--fa", "0.3"]):
         p = camdyn("laws", *bad)
         assert p.returncode == 2 and len(p.stderr.strip().splitlines()) == 1, (bad, p.stderr)
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["--tau", "0.1", "--fa", "inf"], ["--fa", "0 <= Fa <= 100"]),      # failed after a run
+    (["--tau", "0.1", "--theta", "0.7"], ["--theta", "0.5"]),           # after two laws ran
+    (["--tau", "0.1", "--law", "cycloidal"], ["--law", "--sweep"]),     # dropped unread
+    (["--stroke", "0.01", "--base-radius", "0.05", "--roller-radius", "0.01"],
+     ["--stroke", "--tau"]),                                            # table without them
+    (["--out", "x"], ["--out", "--tau"]),
+    (["--n", "3"], ["--n", "--sweep"]),
+])
+def test_bad_or_stray_options_are_one_line_before_any_run(capsys, argv, words):
+    """Refused before the first law runs: one line on stderr (no progress line), exit 2."""
+    from camdyn.runtime.cli import main
+
+    rc = main(["laws", *argv])
+    err = capsys.readouterr().err.strip()
+    assert rc == 2 and len(err.splitlines()) == 1, err
+    assert all(w in err for w in words), err
+
+
+@pytest.mark.parametrize("argv", [["laws", "--tau", "0.1"],
+                                  ["laws", "--sweep", "spring_loaded", "--n", "2"],
+                                  ["design", "--stroke", "0.1", "--tau", "0.1", "--fa", "0"]])
+def test_out_that_cannot_be_made_is_one_line_before_any_run(tmp_path, capsys, argv):
+    """--out below a file: an OSError traceback after the runs (laws --tau, laws --sweep,
+    design); now one line naming --out, exit 2, before any run (no progress line)."""
+    from camdyn.runtime.cli import main
+
+    (tmp_path / "f").write_text("")
+    assert main([*argv, "--out", str(tmp_path / "f" / "sub")]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "argument --out" in err, err

@@ -88,3 +88,33 @@ def test_scca_sweep_meets_the_modified_sine_at_c_zero(spring):
     ms = shape_sweep.sweep(spring, "modified-sine", [0.125], errors=False)[0]
     for k in shape_sweep.FIELDS:
         assert scca[k] == pytest.approx(ms[k], rel=1e-5), k
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["--tau", "0.1"], ["--tau", "--sweep"]),
+    (["--theta", "0.2"], ["--theta", "--sweep"]),
+    (["--n", "3", "--values", "0.1,0.2"], ["--n", "--values"]),
+    (["--values", "0.1,nan"], ["argument --values", "theta=nan"]),      # said --theta
+])
+def test_cli_sweep_refuses_options_it_would_drop(capsys, argv, words):
+    """Options of the selection, or --n beside --values, were dropped unread: one line, exit 2."""
+    from camdyn.runtime.cli import main
+
+    rc = main(["laws", "--sweep", "spring_loaded", *argv])
+    err = capsys.readouterr().err.strip()
+    assert rc == 2 and len(err.splitlines()) == 1, err
+    assert all(w in err for w in words), err
+
+
+def test_cli_sweep_failed_run_is_status_1(capsys, monkeypatch):
+    """A failed run is not bad input: status 1 with 'run failed', as every command (it was
+    status 2, the input errors' status)."""
+    from camdyn.runtime.cli import main
+    from camdyn.runtime.errors import SimulationError
+
+    def fails(*args, **kwargs):
+        raise SimulationError("step budget used up")
+    monkeypatch.setattr(shape_sweep, "sweep", fails)
+    assert main(["laws", "--sweep", "spring_loaded", "--n", "2"]) == 1
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "run failed" in err, err

@@ -8,6 +8,7 @@ each grid point runs the same compiled code on the same numbers.
 """
 import csv
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -100,6 +101,16 @@ def test_axis_syntax(text, name, values):
     assert got == pytest.approx(values, rel=1e-14)
 
 
+@pytest.mark.parametrize("text", ["tau=inf:0.5:3", "tau=0.1:nan:3:log", "tau=-inf:1:2:inv"])
+def test_infinite_ends_are_refused_before_spacing(text):
+    """inf and nan ends are refused by name before numpy spaces them (which printed
+    RuntimeWarnings on stderr beside the one-line error)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(CamdynInputError, match="tau.*finite"):
+            sweep.parse_axis(text)
+
+
 @pytest.mark.parametrize("grid,words", [
     ({"stiffness": [1.0]}, ["stiffness", "tau", "Fa"]),          # unknown: lists the names
     ({"Fa": [-1.0]}, ["Fa", "range"]),                            # out of its declared range
@@ -131,11 +142,27 @@ def test_cli_writes_the_table(tmp_path, capsys):
     (["sweep", "nowhere", "--grid", "tau=0.1:0.3:3"], ["nowhere", "neither a model"]),
     (["sweep", "camshaft1", "--grid", "tau=0.2", "--jobs", "0"], ["jobs"]),
     (["sweep", "one_dof", "--grid", "tau=0.2", "--t-end", "0.5"], ["rise"]),
+    # an rtol beside a fixed step was ignored without a word
+    (["sweep", "camshaft1", "--grid", "tau=0.2", "--method", "rk4", "--step", "1e-3",
+      "--rtol", "1e-6"], ["rtol", "rk4", "step"]),
+    (["sweep", "default", "--grid", "tau=0.2", "--method", "koster", "--step", "1e-3",
+      "--rtol", "1e-6"], ["rtol", "koster", "step"]),
+    # --jobs was ignored beside --dask; an address without a port raised ValueError
+    (["sweep", "camshaft1", "--grid", "tau=0.2", "--jobs", "2", "--dask", "tcp://127.0.0.1:1"],
+     ["--jobs", "--dask"]),
+    (["sweep", "camshaft1", "--grid", "tau=0.2", "--dask", "foo"], ["--dask", "foo"]),
+    # a fixed-step method on a scene was blamed on the grid ('grid c_x: run.method=...')
+    (["sweep", "spring_loaded", "--grid", "c_x=3e5", "--method", "rk4"], ["method rk4", "scene takes"]),
+    # two axes of one name: refused naming it (the CLI said 'a parameter')
+    (["sweep", "camshaft1", "--grid", "tau=0.2", "--grid", "tau=0.3"], ["--grid", "tau", "twice"]),
+    # the table of 1e10 points raised MemoryError (75 GiB) with a traceback
+    (["sweep", "camshaft1", "--grid", "tau=0.1:0.5:100000", "--grid", "Fa=0:1:100000"],
+     ["tau (100000) x Fa (100000)", "1e+10", "1,000,000"]),
 ])
 def test_cli_refusals_are_one_line(argv, words, capsys):
     rc = main(argv + ["--quiet"])
     err = capsys.readouterr().err
-    assert rc != 0
+    assert rc == 2
     assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
     for w in words:
         assert w in err
@@ -172,3 +199,28 @@ def test_error_estimate_is_the_change_at_a_tenth_of_rtol():
     for name in ("U0", "U0dd"):
         true = abs(est[name][0] - ref[name][0])
         assert true / 10 <= est[f"{name}_error"][0] <= 10 * true, name
+
+
+def test_a_dwell_shorter_than_a_period_is_refused():
+    """U0 is the largest |U| in the dwell: with less than one period tau of the residual
+    vibration after T = 1 it came out too small (camshaft1 at tau = 0.1, t_end = 1.0001:
+    7.0e-4 against 1.76e-3).  Refused below 1 + tau; from 1 + tau on, the one-DOF model's U0
+    is (3.5), tau^3/(1 - tau^2)/pi |sin(pi/tau)|, to 1e-6."""
+    from camdyn.runtime import closed_forms as cf
+
+    with pytest.raises(CamdynInputError, match=r"t_end >= 1\.3"):
+        sweep.sweep("one_dof", {"tau": [0.23, 0.3]}, t_end=1.25, jobs=1, progress=False)
+    res = sweep.sweep("one_dof", {"tau": [0.23, 0.3]}, t_end=1.3, jobs=1, progress=False)
+    assert res["U0"] == pytest.approx([cf.U0(0.23), cf.U0(0.3)], rel=1e-6)
+
+
+def test_a_one_point_grid_is_drawn(tmp_path):
+    """A grid of one point drew an empty chart (a line through one point has no length); the
+    point is drawn as a marker: the chart holds pixels of the line colour (C0, #1f77b4)."""
+    import matplotlib.image as mpimg
+
+    res = sweep.sweep("camshaft1", {"tau": [0.3]}, jobs=1, progress=False)
+    res.charts(tmp_path)
+    img = mpimg.imread(tmp_path / "U0.png")[..., :3]
+    c0 = np.array([0x1f, 0x77, 0xb4]) / 255
+    assert (np.abs(img - c0).max(axis=-1) < 0.05).sum() >= 20

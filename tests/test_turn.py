@@ -170,3 +170,41 @@ def test_cli_integrate_turn(tmp_path):
     for bad in (["--turn", "90,90,90"], ["--turn", "90,x,90,180"], ["--return-law", "cycloidal"]):
         p = camdyn("integrate", "one_dof", "--t-end", "2", *bad)
         assert p.returncode == 2 and len(p.stderr.strip().splitlines()) == 1, (bad, p.stderr)
+
+
+def test_cli_integrate_return_theta(capsys):
+    """--return-theta sets the return law's shape parameter (it could not be set: --theta
+    went to the rise law only): the final state equals the library's run with that Turn
+    (1e-12) and differs from the run at the law's default (T = 7, in the lower dwell after
+    the second return: the residual vibration depends on the law).  Without --return-law (the
+    return then is the rise law with its theta) or without --turn it is refused."""
+    import json
+
+    from camdyn.runtime.cli import main
+
+    argv = ["integrate", "one_dof", "--t-end", "7", "--turn", "90,45,90,135", "--return-law",
+            "modified-sine", "--no-error-estimate", "--json"]
+    assert main(argv + ["--return-theta", "0.3"]) == 0
+    got = json.loads(capsys.readouterr().out)["state"]["X"]
+    want = simulate("one_dof", {}, 7.0, "dp54", rtol=1e-8,
+                    law=laws.compose("cycloidal", "modified-sine", (90, 45, 90, 135), None, 0.3))
+    default = simulate("one_dof", {}, 7.0, "dp54", rtol=1e-8,
+                       law=laws.compose("cycloidal", "modified-sine", (90, 45, 90, 135)))
+    assert got == pytest.approx(float(want.y[-1, 0]), rel=1e-12)
+    assert abs(got - float(default.y[-1, 0])) > 1e-6
+    with pytest.raises(CamdynInputError, match="return law of its own"):
+        laws.compose("modified-sine", None, (90, 90, 90, 90), 0.2, 0.3)
+    for bad, word in ((["--turn", "90,90,90,90", "--return-theta", "0.3"], "return"),
+                      (["--return-theta", "0.3"], "--return-theta")):
+        assert main(["integrate", "one_dof", "--t-end", "2", *bad]) == 2
+        err = capsys.readouterr().err.strip()
+        assert len(err.splitlines()) == 1 and word in err, err
+
+
+def test_cli_turn_needs_a_cam_input(capsys):
+    """pendulum_xy has no cam input: --turn ran it unchanged; now one line naming --turn."""
+    from camdyn.runtime.cli import main
+
+    assert main(["integrate", "pendulum_xy", "--t-end", "1", "--turn", "90,90,90,90"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and "--turn" in err and "pendulum_xy" in err, err

@@ -11,7 +11,7 @@ import json
 from pathlib import Path
 import sys
 
-from camdyn.runtime.cli import fail, fmt, name_argument
+from camdyn.runtime.cli import fail, fmt, name_argument, run_failed
 
 
 def check(args) -> int:
@@ -67,6 +67,9 @@ def laws(args) -> int:
     --tau, the selection criteria of sec. 9.2.2 (thesis/selection.py)."""
     from . import lawtable
 
+    stray = _stray_laws_option(args)
+    if stray:
+        return fail("camdyn laws", stray)
     if getattr(args, "sweep", None) is not None:
         return _sweep(args)
     if getattr(args, "tau", None) is not None or getattr(args, "fa", None) is not None:
@@ -92,6 +95,30 @@ def laws(args) -> int:
     return 0
 
 
+def _stray_laws_option(args) -> str | None:
+    """An option of one mode of `camdyn laws` given in another would be dropped unread: the
+    message naming it, or None."""
+    given = lambda name: getattr(args, name, None) not in (None, False)   # noqa: E731
+    sweep_only = ("law", "n", "values", "no_error_estimate")
+    selection_only = ("tau", "fa", "stroke", "base_radius", "roller_radius")
+    flag = lambda name: "--" + name.replace("_", "-")                       # noqa: E731
+    if given("sweep"):
+        bad = [n for n in selection_only + ("theta",) if given(n)]
+        if bad:
+            return f"argument {flag(bad[0])}: not with --sweep (it sweeps the law's parameter)"
+        if given("n") and given("values"):
+            return "argument --n: not with --values (the grid is either N points or the values)"
+        return None
+    bad = [n for n in sweep_only if given(n)]
+    if bad:
+        return f"argument {flag(bad[0])}: only with --sweep SCENE"
+    if not (given("tau") or given("fa")):
+        bad = [n for n in ("stroke", "base_radius", "roller_radius", "out") if given(n)]
+        if bad:
+            return f"argument {flag(bad[0])}: only with --tau (the selection) or --sweep"
+    return None
+
+
 def _print_table(table) -> None:
     """Rows of strings, the first the head: the name left, the numbers right, a rule under
     the head."""
@@ -113,6 +140,7 @@ def _sweep(args) -> int:
     U0'' and the largest fictitious angular-velocity variation against it (fig. 8.8)."""
     from pathlib import Path
 
+    from camdyn.runtime import laws as _laws
     from camdyn.runtime import scene as scenes
     from camdyn.runtime.errors import CamdynInputError, SimulationError
 
@@ -122,6 +150,7 @@ def _sweep(args) -> int:
     law = args.law or "modified-sine"
     try:
         sc = scenes.load(args.sweep)
+        _out_folder(args.out)
         values = None
         if args.values:
             try:
@@ -129,12 +158,18 @@ def _sweep(args) -> int:
             except ValueError:
                 raise CamdynInputError(f"argument --values: {args.values!r} is not a comma-"
                                        "separated list of numbers") from None
-        rows = shape_sweep.sweep(sc, law, values, args.n, errors=not args.no_error_estimate,
+            shape_sweep.shape_parameter(law)     # --law first: has it a parameter at all
+            for v in values:                     # named --values, not --theta
+                try:
+                    _laws.choose(law, v)
+                except CamdynInputError as exc:
+                    raise CamdynInputError(f"argument --values: {exc}") from None
+        rows = shape_sweep.sweep(sc, law, values, 9 if args.n is None else args.n, errors=not args.no_error_estimate,
                                  progress=None if args.json else sys.stderr)
     except (CamdynInputError, ValueError) as exc:
         return fail(prog, name_argument(str(exc)))
-    except SimulationError as exc:
-        return fail(prog, f"a run of the sweep failed: {exc}")
+    except SimulationError as exc:               # a failed run: status 1, as every command
+        return run_failed(prog, f"a run of the sweep: {exc}")
     name = shape_sweep.shape_parameter(law)["name"]
     files = []
     if args.out:
@@ -163,6 +198,24 @@ def _sweep(args) -> int:
     return 0
 
 
+def _out_folder(out):
+    """The --out folder, made before any run: one that cannot be made is refused then, in
+    one line (laws --tau, laws --sweep and design raised OSError after their runs)."""
+    from pathlib import Path
+
+    from camdyn.runtime.errors import CamdynInputError
+
+    if out is None:
+        return None
+    path = Path(out)
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise CamdynInputError(f"argument --out: cannot create {path}: {exc.strerror or exc}") \
+            from None
+    return path
+
+
 def _selection(args) -> int:
     """`camdyn laws --tau T --fa F`: the criteria of sec. 9.2.2 for every law, table and chart."""
     import csv
@@ -178,6 +231,7 @@ def _selection(args) -> int:
     try:
         if args.tau is None:
             raise CamdynInputError("argument --tau: required with --fa (0 < tau < 0.99)")
+        _out_folder(args.out)
         geo_args = (args.stroke, args.base_radius, args.roller_radius)
         if any(g is not None for g in geo_args) and not all(g is not None for g in geo_args):
             raise CamdynInputError("arguments --stroke, --base-radius, --roller-radius: give all "
@@ -232,13 +286,10 @@ def figures(args) -> int:
 
     prog = "camdyn figures"
     try:
-        only = [s.strip() for s in args.only.split(",") if s.strip()] if args.only else None
+        only = ([s.strip() for s in args.only.split(",") if s.strip()]
+                if args.only is not None else None)
         todo = figs.select(figs.registry(), only)
-        out = Path(args.out)
-        try:
-            out.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise CamdynInputError(f"argument --out: cannot create {out}: {exc}") from None
+        out = _out_folder(args.out)
     except CamdynInputError as exc:
         return fail(prog, str(exc))
     t0 = time.perf_counter()
@@ -278,8 +329,19 @@ def design(args) -> int:
     prog = "camdyn design"
     say = (lambda msg: print(f"{prog}: {msg}", file=sys.stderr, flush=True))
     try:
+        _out_folder(args.out)
         motor_args = None
         motor_given = [args.motor_rpm, args.motor_tm, args.slip_limit]
+        motor_only = {"--motor-tel": args.motor_tel, "--rated-slip": args.rated_slip,
+                      "--gear-efficiency": args.gear_efficiency, "--worm": args.worm,
+                      "--spring": args.spring or None}
+        stray = [k for k, v in motor_only.items() if v is not None]
+        if stray and all(v is None for v in motor_given):
+            # they enter (8.1)-(8.3) only: without a motor they would be dropped unread
+            raise CamdynInputError(f"argument {stray[0]}: applies to the motor (sec. 8.3) only; "
+                                   "give --motor-rpm or --motor-tm and --slip-limit")
+        if args.rated_slip is None:
+            args.rated_slip = 0.085        # delta_n of the motors of fig. A.5.3
         if any(v is not None for v in motor_given):
             if args.slip_limit is None:
                 raise CamdynInputError("argument --slip-limit: required with a motor (delta_lim, "
@@ -332,7 +394,7 @@ def design(args) -> int:
     except (CamdynInputError, ValueError) as exc:
         return fail(prog, name_argument(str(exc)))
     except SimulationError as exc:
-        return fail(prog, f"a graph run failed: {exc}")
+        return run_failed(prog, f"a graph run: {exc}")
     if args.json:
         print(json.dumps(result, indent=1, default=float))
     else:

@@ -88,8 +88,8 @@ def phase_factor(law: str, theta, Fa: float) -> float:
 
 class Upper:
     """The envelope through the maxima of a sampled graph, as runtime/envelope.py's Envelope
-    draws it (log-linear between the maxima, held flat beyond the outermost one only past a
-    dip, never below the graph), with two refinements the design solver needs: the answer
+    draws it (log-linear between the maxima, held flat beyond the outermost one where the
+    graph dips on that side, never below the graph), with two refinements the design solver needs: the answer
     is flagged where it rests on a held maximum (the top of the tau range at small Fa,
     :meth:`unbracketed`), and the graph between samples is a spline, not a line.
     Extrapolating the maxima instead (a power law through the outermost two) fails where
@@ -283,7 +283,8 @@ def largest_tau(graphs: Graphs, Fa: float, tau0: float, req: Requirement,
     def t_m_of(t):
         return t_m if T_e is None else T_e / t
     w = 1.5 / phase_factor(graphs.law, graphs.theta, Fa)
-    lo, hi = max(tau0 / 1.5, TAU_MIN), min(tau0 * 1.5, TAU_CAP)
+    # a machine below TAU_MIN starts the search at TAU_MIN (an empty bracket otherwise)
+    lo, hi = max(tau0 / 1.5, TAU_MIN), min(max(tau0, TAU_MIN) * 1.5, TAU_CAP)
 
     def ratio_on(taus, e0, e2):
         return np.array([req.ratio(e0(t), e2(t), t_m_of(t)) for t in taus])
@@ -727,6 +728,14 @@ def design(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None,
     return out
 
 
+def chart_window(tau: float, tau_max: float | None) -> tuple[float, float]:
+    """(1/tau_hi, 1/tau_lo) of the chart: the design's tau and the largest tau, with room
+    on both sides.  An unmet requirement puts tau_max below tau (the window started at
+    0.8 tau and left the largest tau's line beside no envelope)."""
+    taus = [tau] + ([tau_max] if tau_max is not None else [])
+    return 1.0 / (1.5 * max(taus)), 1.0 / (0.8 * min(taus))
+
+
 def chart(d: dict, graphs: Graphs, M: Machine, path) -> str:
     """The design on fig. 4.11a's axes: the envelope u0 = U0 h_m' over tau at the design's Fa
     (with its graph), at the largest Fa that meets the requirement and at Fa = 0, the required
@@ -737,8 +746,7 @@ def chart(d: dict, graphs: Graphs, M: Machine, path) -> str:
     import matplotlib.pyplot as plt
 
     lf, lt = d.get("largest_Fa") or {}, d.get("largest_tau") or {}
-    tau_hi = max(M.tau, lt.get("tau_max") or 0.0) * 1.5
-    x_lo, x_hi = 1.0 / tau_hi, 1.0 / (0.8 * M.tau)
+    x_lo, x_hi = chart_window(M.tau, lt.get("tau_max"))
     fig, ax = plt.subplots(figsize=(7.5, 4.6))
     curves = [(M.Fa, f"Fa = {M.Fa:.3g} (design)", "tab:blue")]
     if lf.get("Fa_max") is not None:

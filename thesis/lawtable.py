@@ -22,6 +22,7 @@ For every law of :mod:`camdyn.derive.camlaws`:
 """
 from __future__ import annotations
 
+import math
 from dataclasses import asdict, dataclass
 from functools import lru_cache
 
@@ -47,7 +48,10 @@ class LawProperties:
     residual_coeff: float         # C in U0 <= C tau^p
 
     def as_dict(self) -> dict:
-        return asdict(self)
+        """The fields for JSON: an infinite peak (the uniform law's H'' impulses) is None, as
+        the impulsive jerks are, since JSON has no infinity."""
+        return {k: (None if isinstance(v, float) and not math.isfinite(v) else v)
+                for k, v in asdict(self).items()}
 
 
 def _pieces(law: CamLaw, theta):

@@ -54,11 +54,17 @@ def envelopes_at(key: str, tau: float, Fa: float, theta=None, n: int = 41) -> tu
     return float(envelope(taus, u0)(tau)), float(envelope(taus, u2)(tau))
 
 
+FA_MAX = 100.0
+"""The largest Fa that CAMSHAFT-1, whose envelopes the selection reads, accepts."""
+
+
 def check(tau: float, Fa: float) -> None:
     if not 0 < tau < 0.99:
         raise CamdynInputError(f"tau={tau:g} is out of range: 0 < tau < 0.99")
-    if not Fa >= 0:
-        raise CamdynInputError(f"Fa={Fa:g} is out of range: Fa >= 0")
+    if not 0 <= Fa <= FA_MAX:
+        # inf passed here and failed in the first run, after its progress line
+        raise CamdynInputError(f"Fa={Fa:g} is out of range: 0 <= Fa <= {FA_MAX:g} (CAMSHAFT-1's "
+                               "declared range, (4.14))")
 
 
 def criteria(key: str, tau: float, Fa: float, theta=None, geometry: dict | None = None) -> dict:
@@ -95,6 +101,8 @@ def criteria(key: str, tau: float, Fa: float, theta=None, geometry: dict | None 
 def table(tau: float, Fa: float, theta=None, geometry=None, progress=None) -> list[dict]:
     """The criteria of every law of the library (modified sine at ``theta``)."""
     check(tau, Fa)                      # before the first run: one error, no progress lines
+    if theta is not None:
+        lawtable.properties("modified-sine", theta)     # its range, before the first law runs
     if geometry:
         from camdyn.runtime.cam_profile import CamProfile
 

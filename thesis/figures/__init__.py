@@ -120,9 +120,15 @@ def registry(topics=TOPICS) -> list[Figure]:
 
 def select(figures: list[Figure], only) -> list[Figure]:
     """The figures whose id is in ``only`` (ids as listed; "4.11" also picks 4.11a-c,
-    "paper" every paper figure), in registry order; every name must match something."""
-    if not only:
+    "paper" every paper figure), in registry order; every name must match something.  None
+    selects all; an empty selection (--only "" or ",") is refused rather than drawing all."""
+    if only is None:
         return list(figures)
+    if not only:
+        from camdyn.runtime.errors import CamdynInputError
+
+        raise CamdynInputError("argument --only: no figure id given; give ids such as 3.3,4.11 "
+                               "or thesis, paper, design (or leave --only out for all)")
     chosen, unknown = [], []
     for name in only:
         hits = [f for f in figures if f.id == name or f.group == name
