@@ -28,7 +28,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from .accuracy import plus_minus
-from .errors import CamdynInputError, SimulationError
+from .errors import CamdynInputError, SimulationError, out_folder
 
 
 class _Parser(argparse.ArgumentParser):
@@ -367,11 +367,7 @@ def write_series(res, out_dir) -> list:
     import matplotlib.pyplot as plt
     import numpy as np
 
-    out = Path(out_dir)
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise CamdynInputError(f"argument --out: cannot create {out}: {exc}") from None
+    out = out_folder(out_dir)
     m = res.model
     names = m.state_names + m.output_names
     units = {s["name"]: s.get("unit", "") for s in m.manifest["states"] + m.manifest["outputs"]}
@@ -443,7 +439,7 @@ def _cmd_run(args) -> int:
         kind, sc = scenes.load_any(args.scene or "default")
         if args.method is not None:
             sc = _with_method(kind, sc, args.method)
-        out_dir = Path(args.out)
+        out_dir = out_folder(args.out)       # before the runs
         if kind == "camshaft1-study":
             path = report.main_job(sc, out_dir, progress=not args.quiet)
             print(f"report: {path}")
@@ -464,7 +460,6 @@ def _cmd_run(args) -> int:
     except SimulationError as exc:
         print(f"camdyn run: run failed: {exc}", file=sys.stderr)
         return 1
-    out_dir.mkdir(parents=True, exist_ok=True)
     (out_dir / "report.json").write_text(json.dumps({"kind": kind, "scene": sc.path,
                                                      "title": sc.title, **summary}, indent=1))
     print(f"report: {out_dir / 'report.json'}")
@@ -522,7 +517,7 @@ def _cmd_simulate(args) -> int:
         if args.tolerance is not None or args.figures is not None or args.build_variants:
             raise CamdynInputError("--tolerance, --figures and --build-variants go with --model auto")
         if args.out:                 # made before the run, so that a bad --out costs no run
-            dynacam.out_folder(args.out)
+            out_folder(args.out)
         summary, res = dynacam.run(sc, progress=progress)
         if not args.no_error_estimate:
             summary.update(dynacam.errors(sc, summary))
@@ -652,10 +647,7 @@ def beam_follower_run(case, out_dir=None, progress=None, announce_run=True) -> d
                         f"argument --out: {name} sets {field}={v:g}, which this case does not "
                         f"allow: {exc}") from None
                 planned.append(f"{name}, {field} = {v:g}")
-        try:
-            Path(out_dir).mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise CamdynInputError(f"argument --out: cannot create {out_dir}: {exc}") from None
+        out_folder(out_dir)
     cut = RDFD.of(case.rise, case.base_radius, case.roller_radius, case.law).undercut()
     summary, _ = beam.run(case, progress if announce_run else None)
     out = {key: getattr(case, key) for key in _BEAM_FLAGS}
@@ -749,11 +741,7 @@ def _cmd_precision(args) -> int:
         if args.no_peers and args.peers:
             raise CamdynInputError("arguments --peers and --no-peers: give one")
         pr = precision.problem(args.target, params, args.t_end, say)
-        out = Path(args.out)
-        try:
-            out.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise CamdynInputError(f"argument --out: cannot create {out}: {exc}") from None
+        out = out_folder(args.out)
         st = precision.study(pr, args.methods, () if args.no_peers else args.peers,
                              quick=args.quick, progress=say)
     except CamdynInputError as exc:
@@ -917,12 +905,8 @@ def _cmd_stability(args) -> int:
                                    f"0 < threshold < 1")
         if not args.t_end > 0:
             raise CamdynInputError(f"argument --t-end: {args.t_end:g} must be positive")
+        out = out_folder(args.out)       # before the runs
         m, model = stability_run(args, say)
-        out = Path(args.out)
-        try:
-            out.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise CamdynInputError(f"argument --out: cannot create {out}: {exc}") from None
         stem = out / f"stability_{model.name}_{m.param}"
         files = [m.plot(f"{stem}.png"), m.write_csv(f"{stem}.csv"), m.write_json(f"{stem}.json")]
     except CamdynInputError as exc:
@@ -1192,11 +1176,7 @@ def _cmd_profile(args) -> int:
                          groove=args.groove, points_per_degree=args.points_per_degree,
                          max_pressure_angle_deg=args.max_pressure_angle)
         out = cam.summary()
-        try:
-            Path(args.out).mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise CamdynInputError(f"argument --out: cannot create the folder {args.out}: "
-                                   f"{exc.strerror}") from None
+        out_folder(args.out)
     except CamdynInputError as exc:
         return fail(prog, str(exc))
     out["files"] = cam.write_all(args.out)
@@ -1400,6 +1380,7 @@ def _cmd_sweep(args) -> int:
 
     try:
         grid = sw.parse_grid(args.grid)
+        out_folder(args.out)       # before the runs
         res = sw.sweep(args.target, grid, jobs=args.jobs, dask=args.dask,
                        progress=not args.quiet, t_end=args.t_end, method=args.method,
                        rtol=args.rtol, law=args.law, step=args.step,

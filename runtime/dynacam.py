@@ -17,7 +17,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from . import _integrate
-from .errors import CamdynInputError, SimulationError
+from .errors import SimulationError, out_folder
 from .models import load
 from .residual import extreme
 from .scene import Scene
@@ -270,20 +270,6 @@ DIAGRAMS = (
     ("speed_var", "dOmega_fic/w_s", "variation of the fictitious angular velocity"),
     ("motor_speed_var", "dw/w_s", "speed variation of the motor"),
 )
-
-
-def out_folder(out_dir):
-    """The diagrams' folder, made; one that cannot be made (below a file, not writable) is a
-    CamdynInputError naming --out, not an OSError traceback."""
-    from pathlib import Path
-
-    out_dir = Path(out_dir)
-    try:
-        out_dir.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise CamdynInputError(f"argument --out: cannot create {out_dir}: "
-                               f"{exc.strerror or exc}") from None
-    return out_dir
 
 
 def plot(scene: Scene, res, summary: dict, out_dir) -> list:

@@ -24,3 +24,20 @@ class UnstableStep(SimulationError):
     def __init__(self, message: str, estimate=None):
         super().__init__(message)
         self.estimate = estimate
+
+
+def out_folder(out):
+    """The folder an --out names, made: one that cannot be made (below a file, not writable)
+    is a CamdynInputError naming --out, raised before any run rather than an OSError after.
+    None stays None."""
+    from pathlib import Path
+
+    if out is None:
+        return None
+    path = Path(out)
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise CamdynInputError(f"argument --out: cannot create the folder {path}: "
+                               f"{exc.strerror or exc}") from None
+    return path

@@ -37,7 +37,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .errors import CamdynInputError, SimulationError
+from .errors import CamdynInputError, SimulationError, out_folder
 
 RESIDUAL_FIGURES = ("U0", "U0dd", "Xdd_min_rise", "T_at_Xdd_min")
 """The figures of a model sweep (runtime/residual.py), in the table's order."""
@@ -262,11 +262,7 @@ class SweepResult:
 
     def write(self, out_dir) -> list[Path]:
         """sweep.csv, sweep.parquet (with pyarrow) and the charts into ``out_dir``."""
-        out_dir = Path(out_dir)
-        try:
-            out_dir.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise CamdynInputError(f"argument --out: cannot create {out_dir}: {exc}") from None
+        out_dir = out_folder(out_dir)
         files = [self.to_csv(out_dir / "sweep.csv")]
         try:
             files.append(self.to_parquet(out_dir / "sweep.parquet"))

@@ -232,3 +232,23 @@ def test_closed_stdout_stops_without_a_traceback(tmp_path, argv):
         os.close(w)
     assert p.returncode == 1, p.stderr
     assert "Traceback" not in p.stderr and "Exception ignored" not in p.stderr, p.stderr
+
+
+@pytest.mark.parametrize("argv", [
+    ["sweep", "one_dof", "--grid", "tau=0.1:0.2:3", "--quiet"],
+    ["profile", "--stroke", "0.015", "--base-radius", "0.026", "--roller-radius", "0.005"],
+    ["stability", "one_dof", "--param", "tau=0.1:0.2:2"],
+    ["run"],
+])
+def test_out_below_a_file_is_refused_before_the_runs(tmp_path, capsys, argv):
+    """An --out folder that cannot be made (below a file) is one line naming --out from
+    runtime/errors.out_folder, the one place every command makes its folder, before any run
+    (camdyn sweep reported it after its runs)."""
+    from camdyn.runtime.cli import main
+
+    (tmp_path / "f").write_text("")
+    assert main([*argv, "--out", str(tmp_path / "f" / "sub")]) == 2
+    cap = capsys.readouterr()
+    assert "runs of" not in cap.out
+    err = cap.err.strip()
+    assert "\n" not in err and "argument --out: cannot create the folder" in err

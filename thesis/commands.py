@@ -12,6 +12,7 @@ from pathlib import Path
 import sys
 
 from camdyn.runtime.cli import fail, fmt, name_argument, run_failed
+from camdyn.runtime.errors import out_folder
 
 
 def check(args) -> int:
@@ -150,7 +151,7 @@ def _sweep(args) -> int:
     law = args.law or "modified-sine"
     try:
         sc = scenes.load(args.sweep)
-        _out_folder(args.out)
+        out_folder(args.out)
         values = None
         if args.values:
             try:
@@ -198,24 +199,6 @@ def _sweep(args) -> int:
     return 0
 
 
-def _out_folder(out):
-    """The --out folder, made before any run: one that cannot be made is refused then, in
-    one line (laws --tau, laws --sweep and design raised OSError after their runs)."""
-    from pathlib import Path
-
-    from camdyn.runtime.errors import CamdynInputError
-
-    if out is None:
-        return None
-    path = Path(out)
-    try:
-        path.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise CamdynInputError(f"argument --out: cannot create {path}: {exc.strerror or exc}") \
-            from None
-    return path
-
-
 def _selection(args) -> int:
     """`camdyn laws --tau T --fa F`: the criteria of sec. 9.2.2 for every law, table and chart."""
     import csv
@@ -231,7 +214,7 @@ def _selection(args) -> int:
     try:
         if args.tau is None:
             raise CamdynInputError("argument --tau: required with --fa (0 < tau < 0.99)")
-        _out_folder(args.out)
+        out_folder(args.out)
         geo_args = (args.stroke, args.base_radius, args.roller_radius)
         if any(g is not None for g in geo_args) and not all(g is not None for g in geo_args):
             raise CamdynInputError("arguments --stroke, --base-radius, --roller-radius: give all "
@@ -277,7 +260,6 @@ def figures(args) -> int:
     """`camdyn figures`: every figure the models determine, drawn into --out with index.html
     beside them (thesis/figures/, issue 14 item 7)."""
     import time
-    from pathlib import Path
 
     from camdyn.runtime.errors import CamdynInputError
 
@@ -289,7 +271,7 @@ def figures(args) -> int:
         only = ([s.strip() for s in args.only.split(",") if s.strip()]
                 if args.only is not None else None)
         todo = figs.select(figs.registry(), only)
-        out = _out_folder(args.out)
+        out = out_folder(args.out)
     except CamdynInputError as exc:
         return fail(prog, str(exc))
     t0 = time.perf_counter()
@@ -329,7 +311,7 @@ def design(args) -> int:
     prog = "camdyn design"
     say = (lambda msg: print(f"{prog}: {msg}", file=sys.stderr, flush=True))
     try:
-        _out_folder(args.out)
+        out_folder(args.out)
         motor_args = None
         motor_given = [args.motor_rpm, args.motor_tm, args.slip_limit]
         motor_only = {"--motor-tel": args.motor_tel, "--rated-slip": args.rated_slip,
