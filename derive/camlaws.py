@@ -240,6 +240,8 @@ def polynomial_law(key: str, code: int, at0: dict | None = None, at1: dict | Non
 def polynomial_2n1(n: int) -> sp.Expr:
     """The (2n+1)-degree member: H', ..., H^(n) zero at both ends (3-4-5 for n = 2,
     4-5-6-7 for n = 3).  H' is proportional to T^n (1 - T)^n."""
+    if isinstance(n, bool) or not isinstance(n, int) or n < 1:
+        raise ValueError(f"n={n!r}: the 2n+1 family needs a whole n >= 1 (n = 1: 3-2, the cubic)")
     zero = {k: 0 for k in range(1, n + 1)}
     return polynomial_rise(zero, zero)
 

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:88c4a8a3e7d2dd16b01dc91d60077604f3930b54b5001aeaaed7d6cbfef0557b
-# Text hash: sha256:80f8869fd63095136b96579b964df470efdb5416cfdaabd47925247036be7843
+# Derivation key: sha256:280ab49f2851ff93de75c38b43d884b10354e709eefa21438685744199b1ee19
+# Text hash: sha256:929092f95f83c651b047e26b22cfb5a0f499d8dc621a9c1caf40dfa5128caad9
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:88c4a8a3e7d2dd16b01dc91d60077604f3930b54b5001aeaaed7d6cbfef0557b
-# Text hash: sha256:eb63a1dfc101f6a0ee69a7318f285ac78aef03f830101dad190503af6e486e84
+# Derivation key: sha256:280ab49f2851ff93de75c38b43d884b10354e709eefa21438685744199b1ee19
+# Text hash: sha256:5f5daa871cf1890af96db76eac6eb7780599886c8251b1138248922a27b99593
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

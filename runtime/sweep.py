@@ -316,6 +316,13 @@ class Target:
         return {"model": RESIDUAL_FIGURES, "dynacam": DYNACAM_FIGURES,
                 "beam": BEAM_FIGURES}[self.kind]
 
+    @property
+    def estimated(self) -> tuple:
+        """The figures that get an error estimate: not a DYNACAM scene's tau, Fa, Fv (they
+        follow from its parameters, not from the run) nor its jump_occurs (a yes or no)."""
+        return tuple(f for f in self.figures
+                     if not (self.kind == "dynacam" and f in ("tau", "Fa", "Fv", "jump_occurs")))
+
     def allowed(self) -> dict:
         """Grid names this target takes: name -> a description of the allowed range."""
         built = _built(self)
@@ -651,8 +658,10 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
 
         tfigs = np.concatenate([r[0] for r in results[len(pieces):]])
         est = np.abs(figs - tfigs) * factor(tight.method or "dp54")
-        columns.update({f"{k}_error": est[:, i] for i, k in enumerate(tgt.figures)})
-        figures = tuple(x for k in tgt.figures for x in (k, f"{k}_error"))
+        columns.update({f"{k}_error": est[:, i] for i, k in enumerate(tgt.figures)
+                        if k in tgt.estimated})
+        figures = tuple(x for k in tgt.figures
+                        for x in ((k, f"{k}_error") if k in tgt.estimated else (k,)))
     columns["n_steps"] = steps
     return SweepResult(tgt.name, axes, figures, columns, seconds, where,
                        meta={"target": tgt, "tight": tight})

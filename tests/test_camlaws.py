@@ -257,3 +257,15 @@ def test_scca_ends_of_its_parameter():
     ms = LAWS["modified-sine"].amplitude.subs(theta, sp.Rational(1, 8))
     assert sp.simplify(got.subs(c, 0) - ms) == 0
     assert sp.simplify(got.subs(c, sp.Rational(1, 2)) - LAWS["modified-trapezoid"].amplitude) == 0
+
+
+@pytest.mark.parametrize("n", [0, -1, 2.5, True])
+def test_polynomial_2n1_needs_a_whole_n(n):
+    """n < 1 or not whole is refused (n = -1 gave the uniform law, 2.5 a TypeError)."""
+    with pytest.raises(ValueError, match="whole n >= 1"):
+        camlaws.polynomial_2n1(n)
+
+
+def test_polynomial_2n1_n1_is_the_cubic():
+    """n = 1: H' zero at both ends only, H = 3T^2 - 2T^3."""
+    assert sp.expand(camlaws.polynomial_2n1(1) - (3 * T**2 - 2 * T**3)) == 0

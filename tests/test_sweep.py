@@ -224,3 +224,20 @@ def test_a_one_point_grid_is_drawn(tmp_path):
     img = mpimg.imread(tmp_path / "U0.png")[..., :3]
     c0 = np.array([0x1f, 0x77, 0xb4]) / 255
     assert (np.abs(img - c0).max(axis=-1) < 0.05).sum() >= 20
+
+
+def test_dynacam_error_estimates_are_for_run_figures_only():
+    """--error-estimate on a DYNACAM scene: a column <figure>_error for the run's figures, each
+    |v - v'| of the run at rtol/10 (runtime/accuracy.py), and none for tau, Fa, Fv (they follow
+    from the parameters) or jump_occurs (a yes or no)."""
+    from camdyn.runtime import dynacam, scene as scenes
+
+    sc = scenes.load("fig8_1b")
+    res = sweep.sweep("fig8_1b", {"c_x": [sc.parameters["c_x"]]}, jobs=1, progress=False,
+                      errors=True)
+    names = set(res.names)
+    assert {"tau_error", "Fa_error", "Fv_error", "jump_occurs_error"}.isdisjoint(names)
+    summary, _ = dynacam.run(sc)
+    errs = dynacam.errors(sc, summary)
+    for key in ("U0", "U0dd", "Xdd_min_rise"):
+        assert res[f"{key}_error"][0] == pytest.approx(errs[f"{key}_error"], rel=1e-9, abs=1e-15)
