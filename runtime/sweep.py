@@ -48,6 +48,9 @@ DYNACAM_FIGURES = ("tau", "Fa", "Fv", "Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_r
 """The figures of a DYNACAM scene sweep (runtime/dynacam.py's summary); jump_T and a missing
 motor's speed variation are NaN where there is none (jump_occurs says which)."""
 
+RETURN_FIGURES = ("Xdd_absmax_return", "U0dd_return", "U0_return")
+"""With a [turn] a DYNACAM scene sweep adds the return's figures (runtime/dynacam.py)."""
+
 BEAM_FIGURES = ("max_abs_tip_deflection", "max_constraint_residual", "dwell_frequency_hz")
 """The figures of a beam-follower scene sweep (runtime/beam.py's summary)."""
 
@@ -313,8 +316,9 @@ class Target:
 
     @property
     def figures(self) -> tuple:
-        return {"model": RESIDUAL_FIGURES, "dynacam": DYNACAM_FIGURES,
-                "beam": BEAM_FIGURES}[self.kind]
+        if self.kind == "dynacam":
+            return dynacam_figures(_built(self))
+        return {"model": RESIDUAL_FIGURES, "beam": BEAM_FIGURES}[self.kind]
 
     @property
     def estimated(self) -> tuple:
@@ -541,15 +545,21 @@ def _model_chunk_python(sim, names, points):
     return out, steps
 
 
+def dynacam_figures(sc) -> tuple:
+    """A DYNACAM scene's figures: its summary's, and the return's with a [turn]."""
+    return DYNACAM_FIGURES + (RETURN_FIGURES if sc.turn is not None else ())
+
+
 def _dynacam_chunk(sc, names, points):
     from . import dynacam, scene as scenes
 
-    out = np.full((len(points), len(DYNACAM_FIGURES)), np.nan)
+    figures = dynacam_figures(sc)
+    out = np.full((len(points), len(figures)), np.nan)
     steps = np.empty(len(points))
     for j, pt in enumerate(points):
         s = scenes.replace(sc, parameters=dict(zip(names, map(float, pt))))
         summary, _ = dynacam.run(s)
-        for k, key in enumerate(DYNACAM_FIGURES):
+        for k, key in enumerate(figures):
             if key == "jump_occurs":
                 out[j, k] = float(summary["jump"]["occurs"])
             elif key == "jump_T":

@@ -241,3 +241,18 @@ def test_dynacam_error_estimates_are_for_run_figures_only():
     errs = dynacam.errors(sc, summary)
     for key in ("U0", "U0dd", "Xdd_min_rise"):
         assert res[f"{key}_error"][0] == pytest.approx(errs[f"{key}_error"], rel=1e-9, abs=1e-15)
+
+
+def test_turn_scene_sweep_adds_the_return(tmp_path):
+    """A DYNACAM scene with a [turn]: the sweep's table has the return's figures too, each
+    equal to the summary of a plain `simulate` run of that scene (the same run, bit for bit)."""
+    from camdyn.runtime import dynacam, scene as scenes
+
+    text = (scenes.builtin("spring_loaded").read_text().replace("T_end = 1.5", "T_end = 5.0")
+            + "\n[turn]\nupper_dwell = 50\nreturn = 40\n")
+    path = tmp_path / "turn.toml"
+    path.write_text(text)
+    res = sweep.sweep(str(path), {"c_x": [0.407e6]}, jobs=1, progress=False)
+    summary, _ = dynacam.run(scenes.load(str(path)))
+    for key in ("U0", "Xdd_absmax_return", "U0dd_return", "U0_return"):
+        assert res[key][0] == summary[key], key
