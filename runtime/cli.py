@@ -439,7 +439,7 @@ def _cmd_run(args) -> int:
         kind, sc = scenes.load_any(args.scene or "default")
         if args.method is not None:
             sc = _with_method(kind, sc, args.method)
-        out_dir = out_folder(args.out)       # before the runs
+        out_dir = out_folder(args.out, create=False)       # checked before the runs
         if kind == "camshaft1-study":
             path = report.main_job(sc, out_dir, progress=not args.quiet)
             print(f"report: {path}")
@@ -460,6 +460,7 @@ def _cmd_run(args) -> int:
     except SimulationError as exc:
         print(f"camdyn run: run failed: {exc}", file=sys.stderr)
         return 1
+    out_folder(out_dir)
     (out_dir / "report.json").write_text(json.dumps({"kind": kind, "scene": sc.path,
                                                      "title": sc.title, **summary}, indent=1))
     print(f"report: {out_dir / 'report.json'}")
@@ -905,8 +906,9 @@ def _cmd_stability(args) -> int:
                                    f"0 < threshold < 1")
         if not args.t_end > 0:
             raise CamdynInputError(f"argument --t-end: {args.t_end:g} must be positive")
-        out = out_folder(args.out)       # before the runs
+        out = out_folder(args.out, create=False)       # checked before the runs
         m, model = stability_run(args, say)
+        out_folder(out)
         stem = out / f"stability_{model.name}_{m.param}"
         files = [m.plot(f"{stem}.png"), m.write_csv(f"{stem}.csv"), m.write_json(f"{stem}.json")]
     except CamdynInputError as exc:
@@ -1380,7 +1382,7 @@ def _cmd_sweep(args) -> int:
 
     try:
         grid = sw.parse_grid(args.grid)
-        out_folder(args.out)       # before the runs
+        out_folder(args.out, create=False)       # checked before the runs
         res = sw.sweep(args.target, grid, jobs=args.jobs, dask=args.dask,
                        progress=not args.quiet, t_end=args.t_end, method=args.method,
                        rtol=args.rtol, law=args.law, step=args.step,

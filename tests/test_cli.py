@@ -252,3 +252,16 @@ def test_out_below_a_file_is_refused_before_the_runs(tmp_path, capsys, argv):
     assert "runs of" not in cap.out
     err = cap.err.strip()
     assert "\n" not in err and "argument --out: cannot create the folder" in err
+
+
+def test_refused_input_leaves_no_out_folder(tmp_path, capsys):
+    """--out is checked before the runs but made only when there is something to write: a
+    refused input leaves no empty folder behind (the checks of sweep, run and stability)."""
+    from camdyn.runtime.cli import main
+
+    for argv in (["sweep", "camshaft1", "--grid", "Q=0.1:0.3:3"],
+                 ["stability", "one_dof", "--param", "tau=0.1:0.2:2", "--threshold", "2"]):
+        new = tmp_path / argv[0]
+        assert main([*argv, "--out", str(new)]) == 2
+        assert not new.exists(), argv[0]
+    capsys.readouterr()
