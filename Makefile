@@ -5,9 +5,9 @@ PYTHON ?= python3
 VENV   ?= .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.camdyn-built
-SOURCES := pyproject.toml setup.py $(wildcard generated/*.pyx generated/*.pxd runtime/*.pyx runtime/*.pxd runtime/*.pxi)
+SOURCES := pyproject.toml setup.py $(wildcard generated/*.pyx generated/*.pxd runtime/engine/*.pyx runtime/engine/*.pxd runtime/engine/*.pxi)
 
-.PHONY: all build run test test-slow wheel-check mutation mutation-findings bench figures derive check-generated clean
+.PHONY: all build run test test-slow wheel-check mutation mutation-findings bench bench-quick figures derive check-generated clean
 
 all: build
 
@@ -54,31 +54,61 @@ wheel-check:
 	cd $(WHEEL_DIR) && venv/bin/camdyn figures --only 3.4 --out figures --quiet | tail -2
 	rm -rf $(WHEEL_DIR)
 
+# The requirements an extra of pyproject.toml adds, its references to other extras
+# (camdyn[dask]) followed, installed by pip: make bench and make mutation install their extra
+# so, not by reinstalling camdyn (which would compile every extension again). pip passes over
+# what is installed already in a second or two, so a requirement added to an extra is installed
+# by the next run, whatever it is.
+define INSTALL_EXTRA
+import subprocess, sys, tomllib
+extras = tomllib.load(open("pyproject.toml", "rb"))["project"]["optional-dependencies"]
+def follow(name):
+    for req in extras[name]:
+        if req.startswith("camdyn["):
+            for sub in req[len("camdyn["):req.index("]")].split(","):
+                yield from follow(sub.strip())
+        else:
+            yield req
+reqs = list(dict.fromkeys(follow(sys.argv[1])))
+subprocess.run([sys.executable, "-m", "pip", "install", "--quiet", *reqs], check=True)
+endef
+export INSTALL_EXTRA
+install-extra = $(BIN)/python -c "$$INSTALL_EXTRA" $(1)
+
 # mutation testing of the pure-Python physics in scratch copies of the tree; report in
 # out/mutation/report.md (targets, sample and time budget: tests/mutation/targets.toml)
-# (the mutation extra is installed once: a reinstall of the package would recompile everything)
-MUTATION_TOOLS = $(BIN)/python -c 'import cosmic_ray, Cython' 2>/dev/null || \
-	$(BIN)/python -m pip install --quiet -e '.[test,mutation]'
-
 mutation: build
-	$(MUTATION_TOOLS)
+	$(call install-extra,mutation)
 	$(BIN)/python tests/mutation/run.py
 
-# the five findings of issue 11 as mutants, each with the test that kills it now
+# the five gaps a review of the suite found, as mutants, each with the test that kills it now
 mutation-findings: build
-	$(MUTATION_TOOLS)
+	$(call install-extra,mutation)
 	$(BIN)/python tests/mutation/findings.py
 
+# the benchmarks; each writes its report into bench/results/ (BENCHMARKS.md is the index)
 bench: build
-	$(BIN)/python -c 'import Cython' 2>/dev/null || $(BIN)/python -m pip install --quiet -e '.[test,bench]'
+	$(call install-extra,bench)
 	$(BIN)/python bench/run.py
 	$(BIN)/python bench/beam.py
 	$(BIN)/python bench/stiff.py
 	$(BIN)/python bench/scene_load.py
 	$(BIN)/python bench/derive_time.py
 	$(BIN)/python bench/derive_seeds.py --seeds 0 random random
-	$(BIN)/python -c 'import distributed' 2>/dev/null || $(BIN)/python -m pip install --quiet 'dask[distributed]>=2024.1'
 	$(BIN)/python bench/sweep.py
+
+# every benchmark in miniature (seconds each), through the same code, reports and charts
+# written into temporary folders (bench/results/ untouched): CI runs it, so that no benchmark
+# rots unnoticed
+bench-quick: build
+	$(call install-extra,bench)
+	$(BIN)/python bench/run.py --quick
+	$(BIN)/python bench/beam.py --quick
+	$(BIN)/python bench/stiff.py --quick
+	$(BIN)/python bench/scene_load.py --quick
+	$(BIN)/python bench/derive_time.py --quick
+	$(BIN)/python bench/derive_seeds.py --quick
+	$(BIN)/python bench/sweep.py --quick
 
 # every thesis and paper figure the models determine, with out/figures/index.html
 figures: build

@@ -1,18 +1,20 @@
-"""Build the Cython extensions (the integration driver and every generated model) and list the
-packages.
+"""What of the build must be code: the compiled extensions, the Cython headers they cimport, the
+subpackages.  Everything that can be declared (metadata, dependencies, extras, which folder is
+which package, package data) is in pyproject.toml.
 
-The packages are discovered, not listed by hand: every folder under a room (derive/, generated/,
-runtime/, thesis/) is a package camdyn.<room>.<sub>..., so a new subpackage cannot be left out of the
-wheel (one was: camdyn.thesis.checks, while only the editable install was tested).
+The subpackages are discovered, not listed by hand: every folder below a package folder of
+pyproject.toml's [tool.setuptools.package-dir] (camdyn.derive = derive/, ...) is a package
+camdyn.<room>.<sub>..., so a new subpackage cannot be left out of the wheel (one was:
+camdyn.thesis.checks, while only the editable install was tested).
 
 Cython finds cimported .pxd and included .pxi files by package path
-(camdyn/runtime/abi.pxd, camdyn/runtime/loops.pxi),
-but the design card keeps the sources in top-level folders (runtime/,
-generated/).  So the headers are copied into build/cython_include/camdyn/
-first and that tree is put on Cython's include path.
+(camdyn/runtime/engine/abi.pxd, camdyn/runtime/engine/loops.pxi), but the design card keeps the
+sources in top-level folders (runtime/, generated/).  So the headers are copied into
+build/cython_include/camdyn/ first and that tree is put on Cython's include path.
 """
 import os
 import shutil
+import tomllib
 from pathlib import Path
 
 from Cython.Build import cythonize
@@ -21,39 +23,49 @@ from setuptools.command.build_ext import build_ext
 
 ROOT = Path(__file__).parent.resolve()
 INCLUDE = ROOT / "build" / "cython_include"
-FOLDERS = {"runtime": "runtime", "generated": "generated"}
-ROOMS = ("derive", "generated", "runtime", "thesis")   # camdyn.<room>: the top-level folder <room>/
+PACKAGE_DIR = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["package-dir"]
+COMPILED = ("camdyn.runtime.engine", "camdyn.generated")   # the packages with .pyx modules
 # -fno-math-errno: sqrt becomes an instruction; nothing here reads errno
 COMPILE_ARGS = ["-O3", "-fno-math-errno"]
+
+
+def _folder(package: str) -> Path:
+    """The source folder of ``package``, through the package folder it lies in."""
+    top = next(p for p in PACKAGE_DIR if package == p or package.startswith(p + "."))
+    return ROOT / PACKAGE_DIR[top] / Path(*package[len(top):].split(".")[1:])
 
 
 def _stage_headers():
     pkg = INCLUDE / "camdyn"
     pkg.mkdir(parents=True, exist_ok=True)
     (pkg / "__init__.pxd").write_text("")
-    for sub, folder in FOLDERS.items():
-        dst = pkg / sub
-        dst.mkdir(exist_ok=True)
-        (dst / "__init__.pxd").write_text("")
-        for header in sorted([*(ROOT / folder).glob("*.pxd"), *(ROOT / folder).glob("*.pxi")]):
+    for package in COMPILED:
+        dst = INCLUDE.joinpath(*package.split("."))
+        dst.mkdir(parents=True, exist_ok=True)
+        for level in (dst, *dst.parents):
+            if level == pkg:
+                break
+            (level / "__init__.pxd").write_text("")
+        folder = _folder(package)
+        for header in sorted([*folder.glob("*.pxd"), *folder.glob("*.pxi")]):
             shutil.copyfile(header, dst / header.name)
 
 
 def _extensions():
     exts = []
-    for sub, folder in FOLDERS.items():
-        for pyx in sorted((ROOT / folder).glob("*.pyx")):
-            exts.append(Extension(f"camdyn.{sub}.{pyx.stem}", [f"{folder}/{pyx.name}"],
+    for package in COMPILED:
+        for pyx in sorted(_folder(package).glob("*.pyx")):
+            exts.append(Extension(f"{package}.{pyx.stem}", [str(pyx.relative_to(ROOT))],
                                   extra_compile_args=COMPILE_ARGS))
     return exts
 
 
 def _packages():
     packages = []
-    for room in ROOMS:
+    for top, room in PACKAGE_DIR.items():
         for folder in sorted(p for p in [ROOT / room, *(ROOT / room).rglob("*")]
                              if p.is_dir() and p.name != "__pycache__"):
-            packages.append(".".join(("camdyn", room, *folder.relative_to(ROOT / room).parts)))
+            packages.append(".".join((top, *folder.relative_to(ROOT / room).parts)))
     return packages
 
 
@@ -69,7 +81,6 @@ class ParallelBuildExt(build_ext):
 _stage_headers()
 setup(
     packages=_packages(),
-    package_dir={f"camdyn.{room}": room for room in ROOMS},
     cmdclass={"build_ext": ParallelBuildExt},
     ext_modules=cythonize(
         _extensions(),

@@ -7,7 +7,7 @@ from pathlib import Path
 
 HERE = Path(__file__).parent.resolve()
 SOURCES = ["yardstick.pyx", "probe.pyx"]
-HEADERS = HERE.parent / "build" / "cython_include" / "camdyn" / "runtime"  # staged by setup.py
+HEADERS = HERE.parent / "build" / "cython_include" / "camdyn" / "runtime" / "engine"  # setup.py stages it
 
 
 def _stale() -> bool:

@@ -12,16 +12,16 @@ default for CAMSHAFT-1, whose state scales are 1).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Callable
 
 import numpy as np
 from scipy.integrate import odeint, solve_ivp
 
-from camdyn.runtime import _integrate
-from camdyn.runtime import laws as camlaws
-from camdyn.runtime.models import load
-from camdyn.runtime.simulate import Simulator, simulate
+from camdyn.runtime.engine import driver
+from camdyn.runtime.core import laws as camlaws
+from camdyn.runtime.core.models import load
+from camdyn.runtime.core.simulator import Simulator, simulate
 
 import yardstick
 from problem import FA, MODEL, PARAMS, T_BREAK, T_END, TAU, rhs_dwell, rhs_rise, state_at_break
@@ -99,7 +99,7 @@ def bare_arguments(method: str, x: float) -> tuple:
     p = sim.model.parameter_vector(PARAMS)
     stops = sim.stops(p)
     if method == "rk4":
-        cap = _integrate.fixed_step_points(0.0, stops, x)
+        cap = driver.fixed_step_points(0.0, stops, x)
     else:
         n_points = sim.run(PARAMS).t.shape[0]  # the record size simulate() would reserve
         cap = n_points + n_points // 4
@@ -116,7 +116,7 @@ def camdyn_bare(method: str) -> Competitor:
     def info(x):
         out = runner(x)()
         if out.status != 0:
-            raise RuntimeError(_integrate.STATUS_TEXT[out.status])
+            raise RuntimeError(driver.STATUS_TEXT[out.status])
         rows = out.rows[:out.n]
         return (*state_at_break(rows[:, 0], rows[:, 1:3]), int(out.n_rhs))
 
@@ -190,8 +190,16 @@ def scipy_odeint() -> Competitor:
     return Competitor("odeint", "odeint (LSODA)", "rtol", rtol_grid(), runner, info, "scipy")
 
 
-def sweep_groups() -> list[list[Competitor]]:
-    """The competitors in groups timed side by side; each group shares its grid."""
-    return [[camdyn_simulate("rk4"), camdyn_bare("rk4"), yardstick_rk4()],
-            [camdyn_simulate("dp54"), camdyn_bare("dp54")],
-            [scipy_ivp("DOP853")], [scipy_ivp("RK45")], [scipy_odeint()]]
+# three settings a method, loose, middling and tight, for a quick run (bench/run.py --quick)
+THIN_GRIDS = {"h": (1 / 20, 1 / 200, 1 / 2000), "rtol": (1e-4, 1e-7, 1e-10)}
+
+
+def sweep_groups(thin: bool = False) -> list[list[Competitor]]:
+    """The competitors in groups timed side by side; each group shares its grid (with
+    ``thin``, three settings of it)."""
+    groups = [[camdyn_simulate("rk4"), camdyn_bare("rk4"), yardstick_rk4()],
+              [camdyn_simulate("dp54"), camdyn_bare("dp54")],
+              [scipy_ivp("DOP853")], [scipy_ivp("RK45")], [scipy_odeint()]]
+    if thin:
+        groups = [[replace(c, grid=THIN_GRIDS[c.setting]) for c in g] for g in groups]
+    return groups

@@ -1,4 +1,4 @@
-"""How long deriving a model takes under different PYTHONHASHSEED values (issue 12, item 7).
+"""How long deriving a model takes under different PYTHONHASHSEED values.
 
 Python randomizes str hashes per process, so the iteration order of sets and the order in
 which SymPy meets equal-ranked terms can change from run to run; a derivation whose cost
@@ -10,6 +10,9 @@ byte-identity promise of generated/).
     python bench/derive_seeds.py                                  slow models, 3 fixed + 3 random seeds
     python bench/derive_seeds.py --models camshaft2 beam3 --seeds 0 1 random random
     python bench/derive_seeds.py --all --timeout 300
+    python bench/derive_seeds.py --quick      camshaft1 under seeds 0 and 1, into a temporary folder
+
+Written to bench/results/BENCHMARKS-derive-seeds.md.
 
 A run over the time limit is reported as "> LIMIT" (and the bench exits 1), so a
 pathological seed shows up as such instead of hanging the bench.
@@ -25,10 +28,12 @@ import sys
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+HERE = Path(__file__).parent.resolve()
+ROOT = HERE.parent
+REPORT = "BENCHMARKS-derive-seeds.md"
 
-# the models that took longest to derive before issue 12 (and dynacam_axial_ideal_backlash_groove_shafty_shaftz, the variant
-# whose derivation ran away under some seeds)
+# the models that took longest to derive (and dynacam_axial_ideal_backlash_groove_shafty_shaftz,
+# the variant whose derivation once ran away under some seeds)
 SLOW = ("dynacam_axial_ideal_backlash_groove_shafty_shaftz", "dynacam_axial_ideal_gearsqueeze_groovesqueeze_shafty_shaftz", "dynacam_radial_ideal_rigidgear_contact_shafty_shaftz_camfriction_linkfriction_spring", "dynacam_radial_motor2_rigidgear_contact_shafty_shaftz_spring",
         "beam6", "camlaws")
 
@@ -69,8 +74,20 @@ def main(argv=None) -> int:
     ap.add_argument("--seeds", nargs="+", default=["0", "1", "12345", "random", "random", "random"],
                     help="PYTHONHASHSEED values; 'random' draws one (printed in the table)")
     ap.add_argument("--timeout", type=float, default=180.0, help="seconds per run (default 180)")
-    ap.add_argument("--out", type=Path, default=ROOT / "BENCHMARKS-derive-seeds.md")
+    ap.add_argument("--quick", action="store_true",
+                    help="--models camshaft1 --seeds 0 1, into a temporary folder")
+    ap.add_argument("--out", type=Path, help=f"the report (default: bench/results/{REPORT})")
     args = ap.parse_args(argv)
+    if args.quick:
+        args.models, args.seeds, args.all = ["camshaft1"], ["0", "1"], False
+    sys.path.insert(0, str(HERE))
+    from where import report_folder
+
+    with report_folder(args.quick) as folder:
+        return measure(args, args.out or folder / REPORT)
+
+
+def measure(args, report: Path) -> int:
 
     models = args.models
     if args.all:
@@ -104,12 +121,12 @@ def main(argv=None) -> int:
                   f"{len(digests[model])}")
             rows.append(f"| {model} | {min(ts):.1f} | {statistics.median(ts):.1f} | {max(ts):.1f} | "
                         f"{len(ts)} | {len(digests[model])} |")
-    args.out.write_text("\n".join([
-        "# Derivation time under different hash seeds (`python bench/derive_seeds.py`, issue 12, item 7)",
+    report.write_text("\n".join([
+        "# Derivation time under different hash seeds (`python bench/derive_seeds.py`)",
         "", f"Seeds: {', '.join(map(str, seeds))}; CPU seconds of one derivation in a fresh process.",
         "", "| model | CPU s min | median | max | runs | distinct texts |",
         "|---|---:|---:|---:|---:|---:|", *rows]) + "\n")
-    print(f"wrote {args.out}")
+    print(f"wrote {report}")
     differing = [m for m in models if len(digests[m]) > 1]
     if differing:
         print("different text under different seeds: " + ", ".join(differing))

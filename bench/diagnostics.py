@@ -1,7 +1,7 @@
 """Where camdyn's time goes: right-hand-side cost and per-call overheads.
 
 rhs_costs()        one evaluation of (4.15): camdyn's generated rhs (measured in C
-                   by _integrate.rhs_cost_ns), the yardstick's inlined one, NumPy's
+                   by driver.rhs_cost_ns), the yardstick's inlined one, NumPy's
 overheads(h)       one RK4 run at step h five ways, from the public call down to
                    the yardstick without a trajectory record
 malloc_effect(hs)  the compiled loop with and without glibc returning the
@@ -28,7 +28,7 @@ T_RISE, T_DWELL = 0.3, 2.0
 
 def rhs_costs(repeat: int) -> dict:
     """ns per right-hand-side evaluation of (4.15), medians of `repeat` loops."""
-    from camdyn.runtime import _integrate
+    from camdyn.runtime.engine import driver
 
     import yardstick
     from competitors import model_arguments
@@ -39,7 +39,7 @@ def rhs_costs(repeat: int) -> dict:
     y = np.array([0.1, 0.2])
 
     def c_cost(t):
-        return statistics.median(_integrate.rhs_cost_ns(cap, p, codes, pars, t, y, RHS_CALLS)
+        return statistics.median(driver.rhs_cost_ns(cap, p, codes, pars, t, y, RHS_CALLS)
                                  for _ in range(repeat))
 
     return {

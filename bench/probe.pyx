@@ -15,7 +15,7 @@ from libc.math cimport ceil
 
 import numpy as np
 
-from camdyn.runtime.abi cimport CAMDYN_ABI, Ctx, ModelC
+from camdyn.runtime.engine.abi cimport CAMDYN_ABI, Ctx, ModelC
 
 
 cdef inline long n_steps(double length, double h) noexcept nogil:

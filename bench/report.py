@@ -1,4 +1,5 @@
-"""Tables (stdout and BENCHMARKS.md), the goal verdicts and the error-vs-time chart."""
+"""Tables (stdout and bench/results/BENCHMARKS-camshaft1.md), the goal verdicts and the
+error-vs-time chart of bench/run.py."""
 from __future__ import annotations
 
 import platform
@@ -121,7 +122,7 @@ def sec_reference(res) -> Section:
 def sec_rhs(res) -> Section:
     rows = [[name, f"{ns:.1f}"] for name, ns in res["rhs"].items()]
     return Section("Cost of one right-hand-side call of (4.15)", ["right-hand side", "ns per call"], rows,
-                   ["camdyn's: _integrate.rhs_cost_ns (a C loop through the model's function pointer, "
+                   ["camdyn's: driver.rhs_cost_ns (a C loop through the model's function pointer, "
                     "a new time at every call, so the cam law is evaluated every time); the yardstick's: "
                     "the same loop over its inlined function; NumPy's: timeit.  The calls in these loops "
                     "do not depend on each other (throughput); in an integrator each stage waits for the "
@@ -290,7 +291,7 @@ def sec_overheads(res) -> Section:
         f"cam-law dispatch); recording t, y costs the yardstick {_ns(f['record_per_step'])} per step.",
         f"The probe calls camdyn's generated rhs through its function pointer from the yardstick's "
         f"loop: {f['pointer_per_call'] * 1e9:.1f} ns per call more than the inlined hand-written "
-        f"rhs.  camdyn's loops avoid that cost: runtime/loops.pxi is compiled into every generated "
+        f"rhs.  camdyn's loops avoid that cost: runtime/engine/loops.pxi is compiled into every generated "
         f"model with the rhs inlined, and cam-law values are reused between stages at the same "
         f"time (RK4: two cam evaluations per step instead of four).",
         "These runs are timed side by side on their own, so their times differ a little from the "
@@ -379,12 +380,13 @@ atol = 1e-3 rtol.  Times: median of {repeat} repeats (timeit, GC off), wall cloc
 the same run; the ratios at matched error come from side-by-side timing (interleaved repeats), which
 keeps them steadier than the absolute times when the machine's speed drifts (virtual machines).
 
-Chart: `bench/out/error_vs_time.png` (written by `make bench`; not committed).
+Chart: `bench/out/error_vs_time.png` (written by `make bench`; not committed).  The other
+benchmarks: [BENCHMARKS.md](BENCHMARKS.md).
 """
 
 
 def markdown(res) -> str:
-    lines = ["# Benchmarks", "",
+    lines = ["# Benchmark: CAMSHAFT-1, speed and accuracy", "",
              "Written by `make bench` (`bench/run.py`); rerun it to refresh every figure below.", "",
              MD_INTRO.format(tau=TAU, fa=FA, t_end=T_END, omega=OMEGA, repeat=res["repeat"]),
              "## Machine", ""]
@@ -395,25 +397,7 @@ def markdown(res) -> str:
     for s in sections(res):
         lines += [f"## {s.title}", ""] + _md_table(s.headers, s.rows) + [""]
         lines += [n + "  " for n in s.notes] + [""]
-    lines += ["## The other benchmarks", ""] + [f"- {x}" for x in OTHER_BENCHMARKS] + [""]
     return "\n".join(lines).rstrip() + "\n"
-
-
-OTHER_BENCHMARKS = (
-    "Stiff cases (issue 13, item 8): [BENCHMARKS-stiff.md](BENCHMARKS-stiff.md), written by "
-    "`bench/stiff.py` with its charts in `bench/charts/stiff_*.png`: the roller on its contact "
-    "spring (kappa 100 and 1000, zeta 0 and 0.1) and the beam follower at N = 6 and E x 1e6, "
-    "camdyn's rodas4 against its dp54 and SciPy's Radau, BDF, LSODA on the same compiled "
-    "right-hand side and Jacobian.",
-    "The beam follower's two formulations: [BENCHMARKS-beam.md](BENCHMARKS-beam.md) "
-    "(`bench/beam.py`).",
-    "Loading a scene: [BENCHMARKS-scenes.md](BENCHMARKS-scenes.md) (`bench/scene_load.py`).",
-    "Sweeps (issue 14, item 1): [BENCHMARKS-sweep.md](BENCHMARKS-sweep.md) (`bench/sweep.py`): "
-    "the fig. 4.11 grid (6 Fa x 400 tau) through camdyn sweep on one core, every core and Dask, "
-    "against its bare integrations and the old Python path.",
-    "Regeneration: [BENCHMARKS-derive.md](BENCHMARKS-derive.md), "
-    "[BENCHMARKS-derive-seeds.md](BENCHMARKS-derive-seeds.md).",
-)
 
 
 STYLE = {"camdyn-rk4": ("C0", "o", "-"), "camdyn-rk4-bare": ("C0", "o", ":"),

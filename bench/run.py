@@ -7,10 +7,12 @@ loop) with the error of U0; a hand-written compiled RK4 loop (the yardstick,
 bench/yardstick.pyx) on the same steps; solve_ivp (DOP853, RK45) and odeint
 on a NumPy right-hand side; the speed ratios at matched error.
 
-Prints the tables, writes bench/out/error_vs_time.png and BENCHMARKS.md.
+Prints the tables, writes bench/results/BENCHMARKS-camshaft1.md and the chart
+bench/out/error_vs_time.png.
 
-    python bench/run.py            full run (about a minute here), rewrites BENCHMARKS.md
-    python bench/run.py --quick    3 repeats instead of 7, BENCHMARKS.md untouched
+    python bench/run.py            full run (about a minute here)
+    python bench/run.py --quick    the same in miniature (three settings a method, one repeat,
+                                   seconds), into a temporary folder: bench/results untouched
 """
 from __future__ import annotations
 
@@ -18,6 +20,7 @@ import argparse
 import os
 import sys
 import time
+from dataclasses import dataclass
 from pathlib import Path
 
 # single-threaded timing: keep OpenBLAS's idle worker threads out of the picture
@@ -25,14 +28,30 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 HERE = Path(__file__).parent.resolve()
 ROOT = HERE.parent
-OUT = HERE / "out"
-RK4_TABLE_STEPS = (2e-2, 1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4)
-DP54_TABLE_RTOLS = (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10)
-TRIVIAL_STEP = 0.5              # 2 + 4 steps: what a call costs besides integrating
-MALLOC_STEPS = (1e-3, 1e-4)
+REPORT = "BENCHMARKS-camshaft1.md"
+# 20 + 40 steps: what a call costs besides integrating; the coarsest round step that simulate()'s
+# stability check lets RK4 take here (h rho <= 2.83 with rho = 2 pi/tau = 41.9)
+TRIVIAL_STEP = 0.05
 REF_RTOL, REF_CHECK_STEP = 1e-13, 1e-4
 SAME_STEPS_CHECK = 0.01
 FINAL_REPEAT_FACTOR = 2         # matched-error timings: 2 repeat + 1 repeats (15 in a full run)
+
+
+@dataclass(frozen=True)
+class Plan:
+    """How much is measured: the tables' settings, the steps of the malloc comparison, the
+    repeats, and whether the sweeps are thinned to three settings a method."""
+
+    rk4_table: tuple
+    dp54_table: tuple
+    malloc_steps: tuple
+    repeat: int
+    thin: bool
+
+
+FULL = Plan((2e-2, 1e-2, 5e-3, 2e-3, 1e-3, 5e-4, 2e-4),
+            (1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10), (1e-3, 1e-4), 7, False)
+QUICK = Plan((2e-2, 1e-3), (1e-4, 1e-8), (1e-3,), 1, True)
 
 
 def _progress(msg: str) -> None:
@@ -58,7 +77,7 @@ def same_steps(h: float) -> dict:
     import numpy as np
 
     import yardstick
-    from camdyn.runtime.simulate import simulate
+    from camdyn.runtime.core.simulator import simulate
     from problem import FA, MODEL, PARAMS, T_END, TAU
 
     r = simulate(MODEL, PARAMS, T_END, "rk4", step=h)
@@ -104,13 +123,14 @@ def finals(bench, comps, sweeps_, repeat) -> dict:
     return out
 
 
-def collect(repeat: int) -> dict:
+def collect(plan: Plan) -> dict:
     """Every measurement of the benchmark, in one process and one run."""
     import diagnostics
     from competitors import sweep_groups
     from matching import Bench
 
-    groups = sweep_groups()
+    repeat = plan.repeat
+    groups = sweep_groups(thin=plan.thin)
     rk4_trio, dp54_pair = groups[0], groups[1]
     ref = reference()
     _progress(f"reference U0 = {ref['u0']:.15g}")
@@ -119,23 +139,27 @@ def collect(repeat: int) -> dict:
     res["rhs"] = diagnostics.rhs_costs(repeat)
     res["sweeps"] = sweeps(bench, groups)
     res["rk4_table"] = [dict(zip((c.key for c in rk4_trio), bench.points(rk4_trio, h)))
-                        for h in RK4_TABLE_STEPS]
+                        for h in plan.rk4_table]
     res["dp54_table"] = [dict(zip((c.key for c in dp54_pair), bench.points(dp54_pair, r)))
-                         for r in DP54_TABLE_RTOLS]
+                         for r in plan.dp54_table]
     res["final_repeat"] = FINAL_REPEAT_FACTOR * repeat + 1
     res["matched"] = finals(bench, res["comps"], res["sweeps"], res["final_repeat"])
     _progress("overhead breakdown")
     steps = sorted({v["camdyn-rk4"].setting for v in res["matched"].values() if "camdyn-rk4" in v},
                    reverse=True)
+    # the per-step costs are slopes between the trivial run and a fine one: one is needed even
+    # where RK4 reached no target (a thinned sweep)
+    steps = steps or [min(plan.rk4_table)]
     res["overheads"] = {h: diagnostics.overheads(h, repeat) for h in (TRIVIAL_STEP, *steps)}
-    res["malloc"] = diagnostics.malloc_effect(list(MALLOC_STEPS), repeat)
+    res["malloc"] = diagnostics.malloc_effect(list(plan.malloc_steps), repeat)
     return res
 
 
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true", help="3 repeats, do not write BENCHMARKS.md")
-    ap.add_argument("--no-write", action="store_true", help="do not write BENCHMARKS.md")
+    ap.add_argument("--quick", action="store_true",
+                    help="a miniature run in seconds, written to a temporary folder")
+    ap.add_argument("--no-write", action="store_true", help=f"print only, do not write {REPORT}")
     args = ap.parse_args(argv)
 
     sys.path.insert(0, str(HERE))
@@ -143,17 +167,18 @@ def main(argv=None) -> int:
 
     build.build()
     import report
+    from where import report_folder, scratch_folder
 
     t0 = time.perf_counter()
-    res = collect(3 if args.quick else 7)
+    res = collect(QUICK if args.quick else FULL)
     res["machine"] = report.machine_info(ROOT)
     res["elapsed"] = time.perf_counter() - t0
-    OUT.mkdir(exist_ok=True)
-    chart = report.chart(res, OUT / "error_vs_time.png")
-    print(report.text(res, chart))
-    if not (args.quick or args.no_write):
-        (ROOT / "BENCHMARKS.md").write_text(report.markdown(res))
-        print(f"wrote {ROOT / 'BENCHMARKS.md'}")
+    with report_folder(args.quick) as folder:
+        chart = report.chart(res, scratch_folder(args.quick, folder) / "error_vs_time.png")
+        print(report.text(res, chart))
+        if not args.no_write:
+            (folder / REPORT).write_text(report.markdown(res))
+            print(f"wrote {folder / REPORT}")
     return 0
 
 

@@ -1,13 +1,15 @@
-"""How long loading a built-in scene takes (issue 12, item 2: under 50 ms without SymPy).
+"""How long loading a built-in scene takes (goal: under 50 ms, without loading SymPy: the
+runtime never imports it while it simulates, README "What is in it").
 
 Each measurement is a fresh process (nothing cached in memory), repeated; the table gives the
 medians of
-  import   `import numpy` and `import camdyn.runtime.scene` (every camdyn process has NumPy),
-  load     the first `scene.load_any(name)` after that: read, check against the catalog and the
+  import   `import numpy` and `import camdyn.runtime.targets.scene_files` (every camdyn process has NumPy),
+  load     the first `resolve.load_scene(name)` after that: read, check against the catalog and the
            variant's compiled manifest (or the CAMSHAFT-1 manifest, or the beam case),
-and whether SymPy was loaded at all.  Written to BENCHMARKS-scenes.md.
+and whether SymPy was loaded at all.  Written to bench/results/BENCHMARKS-scenes.md.
 
     python bench/scene_load.py [--repeat 7]
+    python bench/scene_load.py --quick     one measurement a scene, into a temporary folder
 """
 from __future__ import annotations
 
@@ -18,15 +20,17 @@ import subprocess
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[1]
+HERE = Path(__file__).parent.resolve()
+ROOT = HERE.parent
+REPORT = "BENCHMARKS-scenes.md"
 
 CHILD = r"""
 import json, sys, time
 t0 = time.perf_counter()
 import numpy  # noqa: F401  (every camdyn process has it; not part of the load)
-from camdyn.runtime import scene
+from camdyn.runtime.targets.resolve import load_scene
 t1 = time.perf_counter()
-kind, sc = scene.load_any(sys.argv[1])
+kind, sc = load_scene(sys.argv[1])
 t2 = time.perf_counter()
 print(json.dumps({"import": t1 - t0, "load": t2 - t1, "kind": kind,
                   "sympy": "sympy" in sys.modules}))
@@ -36,9 +40,20 @@ print(json.dumps({"import": t1 - t0, "load": t2 - t1, "kind": kind,
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=7)
-    ap.add_argument("--out", type=Path, default=ROOT / "BENCHMARKS-scenes.md")
+    ap.add_argument("--quick", action="store_true",
+                    help="one measurement a scene, written to a temporary folder")
+    ap.add_argument("--out", type=Path, help=f"the report (default: bench/results/{REPORT})")
     args = ap.parse_args(argv)
-    sys.path.insert(0, str(ROOT))
+    if args.quick:
+        args.repeat = 1
+    sys.path.insert(0, str(HERE))
+    from where import report_folder
+
+    with report_folder(args.quick) as folder:
+        return measure(args, args.out or folder / REPORT)
+
+
+def measure(args, report: Path) -> int:
     names = json.loads(subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", "scenes",
                                        "--json"], capture_output=True, text=True,
                                       check=True).stdout)
@@ -60,17 +75,17 @@ def main(argv=None) -> int:
               f"sympy {'yes' if row['sympy'] else 'no'}", file=sys.stderr)
     lines = ["# Loading a built-in scene (make bench: bench/scene_load.py)", "",
              f"Fresh process per measurement, median of {args.repeat}. `load` is the first "
-             "`scene.load_any(name)` after `import numpy, camdyn.runtime.scene` (the import column): "
-             "reading the file and "
-             "checking it against the catalog and the compiled manifest. Before issue 12 the "
-             "loader imported SymPy to list a variant's parameters: 1.4 s per scene.", "",
+             "`resolve.load_scene(name)` after `import numpy, camdyn.runtime.targets.resolve` "
+             "(the import column): reading the file and checking it against the catalog and the "
+             "compiled manifest. A loader that imported SymPy to list a variant's parameters "
+             "took 1.4 s per scene.", "",
              "| scene | kind | import [ms] | load [ms] | load, slowest [ms] | SymPy loaded |",
              "|---|---|---:|---:|---:|---|"]
     for r in rows:
         lines.append(f"| {r['name']} | {r['kind']} | {r['import_ms']:.1f} | {r['load_ms']:.1f} | "
                      f"{r['load_max_ms']:.1f} | {'yes' if r['sympy'] else 'no'} |")
-    args.out.write_text("\n".join(lines) + "\n")
-    print(f"wrote {args.out}", file=sys.stderr)
+    report.write_text("\n".join(lines) + "\n")
+    print(f"wrote {report}", file=sys.stderr)
     slow = [r["name"] for r in rows if r["load_ms"] >= 50 or r["sympy"]]
     if slow:
         # reported, not fatal: a machine busy with other work slows every process alike (the

@@ -1,5 +1,5 @@
 """`make bench` (stiff part): camdyn's implicit method against its explicit one and SciPy's
-implicit peers on the stiff cases (issue 13, item 8).
+implicit peers on the stiff cases (README "Failures and stiffness").
 
 Cases
     roller_bilateral   the roller on its contact spring in series with the follower linkage
@@ -18,14 +18,17 @@ against DP54 at rtol 1e-12; the beam: |max |v_E| - reference| / reference.
 Contestants, on the same generated right-hand side and Jacobian: camdyn dp54, camdyn rodas4,
 camdyn rodas4 with per-state tolerances (the roller's states R, R' left to the follower's error
 control: state_atol R = 1, R' = 1e3, so that the L-stable method steps over the ringing
-contact mode), and SciPy's Radau, BDF, LSODA (runtime/peers.py: the compiled rhs one point
+contact mode), and SciPy's Radau, BDF, LSODA (runtime/studies/peers.py: the compiled rhs one point
 per call, the generated Jacobian).  Times: CPU time of the integration, median of repeats
 (camdyn 5, a peer 3 when a run is under 0.5 s, else 1).  Matched error: the cost of a method
 at a target error is read off its work-precision curve (log-log interpolation between the two
 rungs around the target; the cheapest run if that is already below it).
 
-    python bench/stiff.py            writes BENCHMARKS-stiff.md and bench/charts/stiff_*.png
-    python bench/stiff.py --quick    fewer settings and repeats, nothing written
+    python bench/stiff.py            writes bench/results/BENCHMARKS-stiff.md and its charts,
+                                     bench/results/charts/stiff_*.png
+    python bench/stiff.py --quick    the same in miniature (one roller on its spring, the roller
+                                     in its groove, the beam follower with two modes; two
+                                     tolerances, one repeat), into a temporary folder
 """
 from __future__ import annotations
 
@@ -51,6 +54,8 @@ from report import machine_info  # noqa: E402
 T_GRID = np.linspace(0.0, 3.0, 3001)
 TARGETS = (1e-4, 1e-5, 1e-6)
 ROLLER_ATOL = (("R", 1.0), ("Rd", 1e3))
+REPORT = "BENCHMARKS-stiff.md"
+CHARTS = "charts"           # beside the report
 
 
 def _progress(msg: str) -> None:
@@ -108,10 +113,11 @@ def _median_cpu(fn, repeat: int):
 
 
 def roller_case(model: str, params: dict, rtols, peer_rtols, repeat: int) -> CaseResult:
-    from camdyn.runtime import methods as M, peers
-    from camdyn.runtime.errors import SimulationError
-    from camdyn.runtime.models import load
-    from camdyn.runtime.simulate import Simulator
+    from camdyn.runtime.core import methods as M
+    from camdyn.runtime.studies import peers
+    from camdyn.runtime.core.errors import SimulationError
+    from camdyn.runtime.core.models import load
+    from camdyn.runtime.core.simulator import Simulator
 
     title = f"{model} " + ", ".join(f"{k} = {v:g}" for k, v in params.items())
     res = CaseResult(f"{model}_" + "_".join(f"{k}{v:g}" for k, v in params.items()), title)
@@ -159,9 +165,9 @@ def beam_case(key: str, title: str, case_kw: dict, settings, repeat: int,
               budget: int = 2_000_000) -> CaseResult:
     """The beam follower: each (method, rtol, step budget) against DP54 at rtol 1e-9 (none
     where that exceeds its budget too: then steps and times only)."""
-    from camdyn.runtime import stability_beam
-    from camdyn.runtime.beam_case import Case
-    from camdyn.runtime.errors import SimulationError
+    from camdyn.runtime.studies import stability_beam
+    from camdyn.runtime.targets.beam_case import Case
+    from camdyn.runtime.core.errors import SimulationError
 
     res = CaseResult(key, title)
     try:
@@ -243,13 +249,13 @@ def ratio_rows(res: CaseResult, fast: str, slow: str) -> list[str]:
 
 def markdown(results: list, info: dict, wall: float) -> str:
     lines = ["# Stiff benchmarks", "",
-             "Written by `make bench` (`bench/stiff.py`); rerun it to refresh every figure below. "
-             "Issue 13, item 8.", "", (__doc__ or "").split("\n\n", 1)[1].split("    python")[0].strip(),
+             "Written by `make bench` (`bench/stiff.py`); rerun it to refresh every figure below.",
+             "", (__doc__ or "").split("\n\n", 1)[1].split("    python")[0].strip(),
              "", "## Machine", ""]
     lines += [f"- {k}: {v}" for k, v in info.items()] + [f"- benchmark wall time: {wall:.0f} s", ""]
     lines += ["## Verdict", ""] + verdict(results) + [""]
     for res in results:
-        lines += [f"## {res.title}", "", f"![{res.key}](bench/charts/stiff_{res.key}.png)", ""]
+        lines += [f"## {res.title}", "", f"![{res.key}]({CHARTS}/stiff_{res.key}.png)", ""]
         lines += ["| method | rtol | error | CPU ms | steps | rhs calls | status |",
                   "|---|---|---|---|---|---|---|"]
         for p in res.points:
@@ -312,24 +318,19 @@ def verdict(results: list) -> list[str]:
     return out
 
 
-def main(argv=None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--quick", action="store_true", help="fewer settings and repeats; nothing written")
-    ap.add_argument("--no-beam", action="store_true", help="leave the beam follower out")
-    args = ap.parse_args(argv)
-    start = time.time()
-    rtols = (1e-3, 1e-5, 1e-7) if args.quick else tuple(
-        10.0 ** (-k / 2) for k in range(6, 17))          # 1e-3 ... 1e-8, two per decade
-    peer_rtols = (1e-4, 1e-6) if args.quick else (1e-3, 1e-4, 1e-5, 1e-6)
-    repeat = 3 if args.quick else 5
+def full_run(with_beam: bool) -> list:
+    """The cases of the module docstring, every method over its tolerance ladder."""
+    rtols = tuple(10.0 ** (-k / 2) for k in range(6, 17))          # 1e-3 ... 1e-8, two per decade
+    peer_rtols = (1e-3, 1e-4, 1e-5, 1e-6)
+    repeat = 5
     results = []
     for kappa in (100.0, 1000.0):
         for zeta in (0.0, 0.1):
             results.append(roller_case("roller_bilateral", {"kappa": kappa, "zeta": zeta}, rtols,
                                        peer_rtols, repeat))
     results.append(roller_case("roller", {"kappa": 1000.0, "zeta": 0.1}, rtols, (), repeat))
-    if not args.no_beam:
-        from camdyn.runtime.beam_case import Case
+    if with_beam:
+        from camdyn.runtime.targets.beam_case import Case
         E = Case().E
         results.append(beam_case("beam6", "beam follower, N = 6, one revolution", {"modes": 6},
                                  [("dp54", 1e-4, 2_000_000), ("dp54", 1e-6, 2_000_000),
@@ -338,17 +339,41 @@ def main(argv=None) -> int:
                                  {"modes": 6, "E": E * 1e6},
                                  [("dp54", 1e-4, 1_000_000), ("rodas4", 1e-4, 200_000)], 1,
                                  budget=1_000_000))
+    return results
+
+
+def quick_run(with_beam: bool) -> list:
+    """Every kind of case once, cheaply: what a full run does, in seconds."""
+    results = [roller_case("roller_bilateral", {"kappa": 100.0, "zeta": 0.1}, (1e-3, 1e-5),
+                           (1e-4,), 1),
+               roller_case("roller", {"kappa": 1000.0, "zeta": 0.1}, (1e-3,), (), 1)]
+    if with_beam:
+        results.append(beam_case("beam2", "beam follower, N = 2, one revolution", {"modes": 2},
+                                 [("dp54", 1e-4, 200_000), ("rodas4", 1e-4, 200_000)], 1,
+                                 budget=200_000))
+    return results
+
+
+def main(argv=None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--quick", action="store_true",
+                    help="a miniature run in seconds, written to a temporary folder")
+    ap.add_argument("--no-beam", action="store_true", help="leave the beam follower out")
+    args = ap.parse_args(argv)
+    from where import report_folder
+
+    start = time.time()
+    results = (quick_run if args.quick else full_run)(not args.no_beam)
     wall = time.time() - start
     for line in verdict(results):
         print(line)
-    if args.quick:
-        return 0
-    charts = ROOT / "bench" / "charts"
-    charts.mkdir(parents=True, exist_ok=True)
-    for res in results:
-        chart(res, charts / f"stiff_{res.key}.png")
-    (ROOT / "BENCHMARKS-stiff.md").write_text(markdown(results, machine_info(ROOT), wall) + "\n")
-    print(f"wrote BENCHMARKS-stiff.md and {len(results)} charts in bench/charts/")
+    with report_folder(args.quick) as folder:
+        charts = folder / CHARTS
+        charts.mkdir(parents=True, exist_ok=True)
+        for res in results:
+            chart(res, charts / f"stiff_{res.key}.png")
+        (folder / REPORT).write_text(markdown(results, machine_info(ROOT), wall) + "\n")
+        print(f"wrote {folder / REPORT} and {len(results)} charts in {charts}")
     return 0
 
 

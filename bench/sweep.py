@@ -1,11 +1,13 @@
-"""`make bench` (sweep part): the fig. 4.11 grid through camdyn sweep (issue 14, item 1).
+"""`make bench` (sweep part): the fig. 4.11 grid through camdyn sweep (README "Sweeps").
 
 Grid: CAMSHAFT-1 (4.15), cycloidal rise and dwell, T in [0, 3], DP54 at rtol 1e-9 (atol 1e-12),
 Fa = 0, 0.1, 0.3, 1, 3, 10 and 400 values of tau from 0.06 to 0.7 uniform in 1/tau
-(runtime/envelope.py's tau_grid): 2400 runs, each giving U0, U0'', X''min in the rise and its T.
+(runtime/measure/envelope.py's tau_grid): 2400 runs, each giving U0, U0'', X''min in the rise and its T.
 
 Timed (wall clock, median of repeats taken in turn, so that a drift of the machine's speed
-touches all alike; CPU time of the process beside the one-core figures):
+touches all alike; CPU time of the process beside the one-core figures), every sweep without
+its error estimate (estimate=False): the estimate runs the grid again one notch tighter, so a
+sweep with it takes the time of this one at rtol 1e-9 plus this one at 1e-10:
   bare integrations   Integrator.run of every grid point with its parameter vector and stop
                       times made beforehand: the compiled loops and their record, nothing else
   sweep, one core     sweep(jobs=1): the compiled chunks, integration and figures
@@ -19,8 +21,9 @@ touches all alike; CPU time of the process beside the one-core figures):
 Accuracy: the sweep's figures against the old path's, the largest difference per figure over
 the grid relative to the figure's largest value.
 
-    python bench/sweep.py            writes BENCHMARKS-sweep.md
-    python bench/sweep.py --quick    fewer repeats, no old path, nothing written
+    python bench/sweep.py            writes bench/results/BENCHMARKS-sweep.md
+    python bench/sweep.py --quick    the same in miniature (2 Fa x 20 tau, one repeat, Dask
+                                     included), into a temporary folder
 """
 from __future__ import annotations
 
@@ -44,7 +47,9 @@ from report import machine_info  # noqa: E402
 
 FA = (0.0, 0.1, 0.3, 1.0, 3.0, 10.0)
 N_TAU = 400
-GOAL = 1.0      # s, one core
+QUICK_FA, QUICK_N_TAU = (0.0, 1.0), 20
+GOAL = 1.0      # s, one core, the full grid
+REPORT = "BENCHMARKS-sweep.md"
 
 
 def _say(msg: str) -> None:
@@ -60,23 +65,27 @@ def _timed(fn):
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=5)
-    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--quick", action="store_true",
+                    help="a miniature run in seconds, written to a temporary folder")
     args = ap.parse_args(argv)
-    repeat = 2 if args.quick else args.repeat
+    repeat = 1 if args.quick else args.repeat
+    fa, n_tau = (QUICK_FA, QUICK_N_TAU) if args.quick else (FA, N_TAU)
 
-    from camdyn.runtime import sweep as sw
-    from camdyn.runtime.envelope import tau_grid
-    from camdyn.runtime.residual import residual, residual_reference
+    from camdyn.runtime.studies import sweep as sw
+    from camdyn.runtime.measure.envelope import tau_grid
+    from camdyn.runtime.measure.residual import FIGURES, residual, residual_reference
+    from camdyn.runtime.targets.grid import default_jobs, run_chunk
+    from camdyn.runtime.targets.model import ModelTarget
 
     t_bench = time.perf_counter()
-    taus = tau_grid(0.06, 0.7, N_TAU)
-    grid = {"Fa": list(FA), "tau": taus}
-    target = sw.resolve("camshaft1", t_end=3.0, method="dp54", rtol=1e-9, law="cycloidal")
-    model, sim = sw._built(target)
-    pts = sw._points(grid)
+    taus = tau_grid(0.06, 0.7, n_tau)
+    grid = {"Fa": list(fa), "tau": taus}
+    target = ModelTarget.of("camshaft1", t_end=3.0, method="dp54", rtol=1e-9, law="cycloidal")
+    model, sim = target.model, target.simulator
+    pts = np.array([[a, b] for a in fa for b in taus])
     ps = [model.parameter_vector({"Fa": float(a), "tau": float(b)}) for a, b in pts]
     stops = [sim.stops(p) for p in ps]
-    cores = sw.default_jobs()
+    cores = default_jobs()
     chunks = [pts[i:i + 200] for i in range(0, len(pts), 200)]
 
     def bare():
@@ -87,7 +96,7 @@ def main(argv=None) -> int:
 
     def processes():
         with ProcessPoolExecutor(max_workers=cores) as pool:
-            return list(pool.map(sw.run_chunk, [target] * len(chunks), [("Fa", "tau")] * len(chunks),
+            return list(pool.map(run_chunk, [target] * len(chunks), [("Fa", "tau")] * len(chunks),
                                  chunks))
 
     try:
@@ -102,22 +111,22 @@ def main(argv=None) -> int:
                                dashboard_address=None)
         client = Client(cluster)
         dask_start = time.perf_counter() - t0
-        sw.sweep(target, grid, dask=client, progress=False)      # warm the workers (imports)
+        sw.sweep(target, grid, dask=client, progress=False, estimate=False)  # warm the workers (imports)
 
     times = {k: [] for k in ("bare", "bare_cpu", "bare_loops", "driver_cpu", "one", "one_cpu",
                              "all", "proc", "dask")}
     from functools import partial
 
-    from camdyn.runtime import _figures
-    with_figures = _figures.sweep_residual
+    from camdyn.runtime.engine import finder
+    with_figures = finder.sweep_residual
 
     def driver_only():
         # the sweep's own compiled driver with the figures left out: the integration's share
-        _figures.sweep_residual = partial(with_figures, figures_too=False)
+        finder.sweep_residual = partial(with_figures, figures_too=False)
         try:
-            sw.sweep(target, grid, jobs=1, progress=False)
+            sw.sweep(target, grid, jobs=1, progress=False, estimate=False)
         finally:
-            _figures.sweep_residual = with_figures
+            finder.sweep_residual = with_figures
     result_one = None
     for r in range(repeat):
         _say(f"repeat {r + 1}/{repeat}")
@@ -127,16 +136,19 @@ def main(argv=None) -> int:
         times["bare_loops"].append(loops)
         w, c, _ = _timed(driver_only)
         times["driver_cpu"].append(c)
-        w, c, res = _timed(lambda: sw.sweep(target, grid, jobs=1, progress=False))
+        w, c, res = _timed(lambda: sw.sweep(target, grid, jobs=1, progress=False,
+                                            estimate=False))
         times["one"].append(w)
         times["one_cpu"].append(c)
         result_one = res
-        w, c, res_all = _timed(lambda: sw.sweep(target, grid, jobs=cores, progress=False))
+        w, c, res_all = _timed(lambda: sw.sweep(target, grid, jobs=cores, progress=False,
+                                                estimate=False))
         times["all"].append(w)
         w, c, _ = _timed(processes)
         times["proc"].append(w)
         if client is not None:
-            w, c, res_dask = _timed(lambda: sw.sweep(target, grid, dask=client, progress=False))
+            w, c, res_dask = _timed(lambda: sw.sweep(target, grid, dask=client, progress=False,
+                                                     estimate=False))
             times["dask"].append(w)
         else:
             res_dask = result_one
@@ -146,42 +158,43 @@ def main(argv=None) -> int:
         cluster.close()
     same = {name: bool(np.array_equal(res_all[name], result_one[name])
                        and np.array_equal(res_dask[name], result_one[name]))
-            for name in sw.RESIDUAL_FIGURES}
+            for name in FIGURES}
 
     med = {k: statistics.median(v) for k, v in times.items()}
     old = {}
-    if not args.quick:
-        _say("the Python paths, once each (about 20 s)")
-        runs = []
-        w, c, _ = _timed(lambda: runs.extend(sim.run({"Fa": float(a), "tau": float(b)})
-                                             for a, b in pts))
-        old["runs"] = w
-        w, c, figs = _timed(lambda: [residual(r) for r in runs])
-        old["residual"] = w
-        w, c, ref = _timed(lambda: [residual_reference(r) for r in runs])
-        old["reference"] = w
-        dev = {}
-        for name in sw.RESIDUAL_FIGURES:
-            a = result_one[name]
-            b = np.array([getattr(x, name) for x in ref])
-            dev[name] = float(np.abs(a - b).max() / np.abs(b).max())
-        old["deviation"] = dev
+    _say("the Python paths, once each (about 20 s on the full grid)")
+    runs = []
+    w, c, _ = _timed(lambda: runs.extend(sim.run({"Fa": float(a), "tau": float(b)})
+                                         for a, b in pts))
+    old["runs"] = w
+    w, c, figs = _timed(lambda: [residual(r) for r in runs])
+    old["residual"] = w
+    w, c, ref = _timed(lambda: [residual_reference(r) for r in runs])
+    old["reference"] = w
+    dev = {}
+    for name in FIGURES:
+        a = result_one[name]
+        b = np.array([getattr(x, name) for x in ref])
+        dev[name] = float(np.abs(a - b).max() / np.abs(b).max())
+    old["deviation"] = dev
 
     wall = time.perf_counter() - t_bench
-    text = markdown(med, times, old, dask_start, cores, same, repeat, wall)
+    text = markdown(med, times, old, dask_start, cores, same, repeat, wall, fa, n_tau)
     if args.quick:
         print(text)
-    else:
-        (ROOT / "BENCHMARKS-sweep.md").write_text(text)
-        print("wrote BENCHMARKS-sweep.md")
-    print(f"sweep of the fig. 4.11 grid: one core {med['one']:.3f} s "
+    from where import report_folder
+
+    with report_folder(args.quick) as folder:
+        (folder / REPORT).write_text(text)
+        print(f"wrote {folder / REPORT}")
+    print(f"sweep of the {'miniature' if args.quick else 'fig. 4.11'} grid: one core {med['one']:.3f} s "
           f"({med['one'] / med['bare']:.2f} x the bare integrations, {med['bare']:.3f} s); "
           f"{cores} cores {med['all']:.3f} s; Dask (2 workers) {med['dask']:.3f} s")
     return 0
 
 
-def markdown(med, times, old, dask_start, cores, same, repeat, wall) -> str:
-    n = len(FA) * N_TAU
+def markdown(med, times, old, dask_start, cores, same, repeat, wall, fa=FA, n_tau=N_TAU) -> str:
+    n = len(fa) * n_tau
     ms = lambda s: f"{1e3 * s:.0f} ms"   # noqa: E731
     rows = [
         ("bare integrations (Integrator.run, prebuilt inputs)", med["bare"],
@@ -202,7 +215,7 @@ def markdown(med, times, old, dask_start, cores, same, repeat, wall) -> str:
     lines = ["# Sweep benchmark: the fig. 4.11 grid", "",
              "Written by `make bench` (`bench/sweep.py`; its docstring says what is timed).", "",
              f"CAMSHAFT-1 (4.15), cycloidal rise and dwell, T in [0, 3], DP54 rtol 1e-9; Fa = "
-             f"{', '.join(f'{f:g}' for f in FA)} x {N_TAU} tau from 0.06 to 0.7 (uniform in "
+             f"{', '.join(f'{f:g}' for f in fa)} x {n_tau} tau from 0.06 to 0.7 (uniform in "
              f"1/tau) = {n} runs, U0, U0'', X''min in the rise and its T each.", "",
              "## Machine", ""]
     lines += [f"- {k}: {v}" for k, v in machine_info(ROOT).items()]
@@ -243,7 +256,7 @@ def markdown(med, times, old, dask_start, cores, same, repeat, wall) -> str:
         lines += [f"| {k} | {v:.1e} |" for k, v in old["deviation"].items()]
         lines.append("")
     lines += ["## Threads or processes", "",
-              "A chunk of grid points runs in compiled code holding no GIL (runtime/_figures.pyx),",
+              "A chunk of grid points runs in compiled code holding no GIL (runtime/engine/finder.pyx),",
               "so threads share the cores without copying anything; processes must start, import",
               "camdyn and pickle their chunks back. camdyn sweep uses threads; the process row",
               "above is the measured alternative.  On a machine whose cores are busy with other",

@@ -1,7 +1,7 @@
 """Build one model on demand: declaration -> Lagrange's equations -> Cython -> compiled module.
 
 The runtime starts this as a program of its own when a scene or `camdyn integrate` asks for a
-model that is not among the pre-generated ones (:mod:`camdyn.runtime.ondemand`), so the
+model that is not among the pre-generated ones (:mod:`camdyn.runtime.core.ondemand`), so the
 process that simulates never loads SymPy, and a failed build cannot leave a half-imported
 model behind:
 
@@ -93,19 +93,22 @@ def _provenance(args) -> str:
         return str(args.file)
     if args.dynacam:
         return "camdyn/derive/models/dynacam.py"
-    from .codegen import source_of
     from .models import REGISTRY
+    from .render import source_of
 
     return source_of(REGISTRY[args.registered])
 
 
 def _stage_headers(include: Path) -> None:
-    """camdyn/runtime/*.pxd, *.pxi and camdyn/generated/camlaws.pxd under ``include``, the
-    paths the generated code cimports and includes."""
-    for pkg, patterns in (("runtime", ("*.pxd", "*.pxi")), ("generated", ("camlaws.pxd",))):
-        src, dst = _package_dir(f"camdyn.{pkg}"), include / "camdyn" / pkg
+    """camdyn/runtime/engine/*.pxd, *.pxi and camdyn/generated/camlaws.pxd under ``include``,
+    the paths the generated code cimports and includes."""
+    for pkg, patterns in (("runtime.engine", ("*.pxd", "*.pxi")), ("generated", ("camlaws.pxd",))):
+        src, dst = _package_dir(f"camdyn.{pkg}"), include / "camdyn" / pkg.replace(".", "/")
         dst.mkdir(parents=True, exist_ok=True)
-        (dst / "__init__.pxd").write_text("")
+        for level in (dst, *dst.parents):
+            if level == include / "camdyn":
+                break
+            (level / "__init__.pxd").write_text("")
         for pattern in patterns:
             for header in src.glob(pattern):
                 shutil.copyfile(header, dst / header.name)
@@ -179,7 +182,7 @@ def main(argv=None) -> int:
         model, source = declaration(args)
         stage("declaration", t0)
         t0 = time.perf_counter()
-        from .codegen import render_model
+        from .render import render_model
 
         try:
             pyx = render_model(model, _provenance(args))

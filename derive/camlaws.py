@@ -42,7 +42,7 @@ theta = sp.Symbol("theta", positive=True)
 
 c_scca = sp.Symbol("c", positive=True)
 """Constant-acceleration fraction c of the sine-constant-cosine law (Norton's b, c, d with
-b = 1/4, d = 3/4 - c): see :func:`scca_law`."""
+b = 1/4, d = 3/4 - c): see :func:`scca_pieces`."""
 
 _A = sp.Symbol("A", real=True)  # unknown acceleration amplitude while building
 
@@ -279,12 +279,6 @@ def scca_pieces(b, c, d):
     return tuple(bounds), tuple(pieces)
 
 
-def scca_law(key: str, code: int, b, c, d, title: str | None = None) -> CamLaw:
-    """One member of the SCCA family (:func:`scca_pieces`) as a law."""
-    bounds, acc = scca_pieces(b, c, d)
-    return _law(key, code, title or f"SCCA b={b}, c={c}, d={d}",
-                "sine-constant-cosine acceleration (Norton)", bounds, acc)
-
 LAWS: dict[str, CamLaw] = {}
 for _l in (
     _law("cycloidal", 0, "Cycloidal", "(A.2.8)-(A.2.11)", (0, 1),
@@ -326,7 +320,7 @@ LAW_BY_CODE = {law.code: law for law in LAWS.values()}
 TURN_CODE = 1000
 """Law code of the dwell-rise-dwell-return composition over a full cam turn, which the
 generated library evaluates from a rise law and a return law of this table (its par is the
-index of the turn's description, written at run time: camdyn.runtime.laws.compose)."""
+index of the turn's description, written at run time: camdyn.runtime.core.laws.compose)."""
 TURN_SLOTS = 256
 """Different turns one process can hold at once."""
 assert TURN_CODE not in LAW_BY_CODE

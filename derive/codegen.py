@@ -1,148 +1,27 @@
-"""Generate one Cython module per model, plus the cam-law library, from templates.
+"""The Cython module of a model without constraints: M(q, t) q'' = f, first-order states z.
 
-The templates live in ``templates/`` and are rendered with StrictUndefined, so
-a missing value is an error, never an empty string.  Output is deterministic:
-the same model and the same SymPy version give byte-identical files (sympy is
-pinned in pyproject.toml for that reason), and every file carries the hash of
-the symbolic equations it was generated from.
+What ``model.pyx.j2`` prints from the model's equations (:mod:`camdyn.derive.lagrange`): the
+right-hand side (q'' solved symbolically for a diagonal M, else M and f for a dense solve), its
+dwell variants and parameter constants (:mod:`camdyn.derive.optimize`), the Jacobian and df/dT,
+the outputs, the frozen M and K of the stability check, the events and the cam inputs, and the
+manifest.  Output is deterministic: the same model and the same SymPy version give
+byte-identical files (SymPy is pinned in pyproject.toml for that reason), and every file
+carries the hash of the symbolic equations it was generated from.  Constrained models are
+printed by :mod:`camdyn.derive.dae`; what both share is in :mod:`camdyn.derive.emit`.
 """
 from __future__ import annotations
 
-import hashlib
 import json
-from dataclasses import dataclass
-from pathlib import Path
 
-import jinja2
 import sympy as sp
 
-from . import camlaws
+from .emit import (Plain, doc_lines, manifest_common, math_imports, number, option_entries,
+                   plainer, render as render_template, state_entries, time_functions,
+                   with_source_hash)
 from .lagrange import Equations, derive
 from .model import CamFunction, Model
 from .optimize import ConstantTable, dwell_variants
-from .printer import MATH_FUNCTIONS, CythonPrinter, cse_block
-
-TEMPLATES = Path(__file__).parent / "templates"
-
-
-def _env() -> jinja2.Environment:
-    return jinja2.Environment(
-        loader=jinja2.FileSystemLoader(str(TEMPLATES)),
-        undefined=jinja2.StrictUndefined,
-        keep_trailing_newline=True,
-        trim_blocks=True,
-        lstrip_blocks=True,
-        autoescape=False,
-    )
-
-
-def _num(value):
-    """A number for the manifest; an expression of the parameters as its text."""
-    value = sp.sympify(value)
-    return float(value) if value.is_number else str(value)
-
-
-def _state_entries(m: Model) -> list:
-    """Manifest entries of q and q'."""
-    return ([{"name": c.name, "unit": c.unit, "scale": c.scale, "doc": c.doc,
-              "initial": _num(c.initial)} for c in m.coordinates]
-            + [{"name": c.name + "d", "unit": f"{c.unit}/{m.time_unit}", "scale": c.scale,
-                "doc": f"rate of {c.name}", "initial": _num(c.initial_rate)} for c in m.coordinates])
-
-
-def manifest_common(m: Model) -> dict:
-    """The manifest entries every generated model has: names, time, coordinates, parameters."""
-    return {
-        "name": m.name,
-        "title": m.title,
-        "reference": m.reference,
-        "time": {"name": m.time.name, "unit": m.time_unit},
-        "n_q": len(m.coordinates),
-        "parameters": [{"name": p.name, "default": p.default, "unit": p.unit, "doc": p.doc,
-                        "low": p.low if p.low != -float("inf") else None,
-                        "high": p.high if p.high != float("inf") else None,
-                        "open_low": p.open_low, "open_high": p.open_high,
-                        "range": p.range_text()} for p in m.parameters],
-    }
-
-
-# -- model modules --------------------------------------------------------------
-
-
-@dataclass
-class _Plain:
-    """How model expressions become plain symbols, and how those are printed."""
-
-    model: Model
-    names: dict       # plain symbol -> code
-    instances: list   # (family, plain argument) per cam input instance
-    orders: list      # highest derivative order used per instance
-    cam: dict         # cam function atom -> plain symbol
-    states: set       # plain symbols of q, q', z (state dependence of cam arguments)
-    time_functions: dict  # q'' -> Xdd, q' -> Xd, q -> X, z -> z (built once: costly on many q)
-
-    def __call__(self, expr):
-        m, t = self.model, self.model.time
-        expr = sp.sympify(expr)
-        # xreplace, not subs: exact subtrees (derivatives before the functions inside them,
-        # as xreplace replaces the largest match first) without subs' costly rewriting
-        if m.first_order:
-            expr = expr.xreplace({z(t).diff(t): z.rate for z in m.first_order})
-        expr = expr.xreplace(self.cam) if self.cam else expr
-        return expr.xreplace(self.time_functions)
-
-
-def _time_functions(m: Model) -> dict:
-    """Derivatives first: q'' -> Xdd, q' -> Xd, q -> X, z -> z."""
-    t = m.time
-    out = {}
-    for c in m.coordinates:
-        out[c(t).diff(t, 2)] = sp.Symbol(c.name + "dd", real=True)
-    for c in m.coordinates:
-        out[c(t).diff(t)] = sp.Symbol(c.name + "d", real=True)
-    for c in m.coordinates:
-        out[c(t)] = sp.Symbol(c.name, real=True)
-    for z in m.first_order:
-        out[z(t)] = sp.Symbol(z.name, real=True)
-    return out
-
-
-def _plainer(m: Model, exprs) -> _Plain:
-    t = m.time
-    tf = _time_functions(m)
-    rates = {z(t).diff(t): z.rate for z in m.first_order}
-    found = set()
-    for e in exprs:
-        e = sp.sympify(e)
-        if rates:
-            e = e.xreplace(rates)
-        found |= e.atoms(CamFunction)
-    # one instance per family and argument; arguments are compared expanded, because
-    # Lagrange's equations may have expanded (beta - beta_0)/beta_m in some terms only
-    def key_of(a):
-        return (a.family, sp.srepr(sp.expand(a.args[0].xreplace(tf))))
-
-    keyed = {}
-    for a in sorted(found, key=sp.srepr):
-        key = key_of(a)
-        keyed.setdefault(key, [a.args[0].xreplace(tf), 0])
-        keyed[key][1] = max(keyed[key][1], a.order)
-    order = sorted(keyed)
-    index = {key: i for i, key in enumerate(order)}
-    names = {p.symbol: p.name for p in m.parameters}
-    names[t] = "t"
-    cam = {}
-    for a in sorted(found, key=sp.srepr):
-        i = index[key_of(a)]
-        sym = sp.Symbol(f"_cam{i}_{a.order}", real=True)
-        names[sym] = f"_cam{i}[{a.order}]"
-        cam[a] = sym
-    ncam = len(order)
-    for j, mode in enumerate(m.modes):
-        names[mode.symbol] = f"ctx.mode[{ncam + j}]"
-    states = {v for k, v in tf.items() if not (isinstance(k, sp.Derivative) and k.derivative_count == 2)}
-    return _Plain(m, names, [(key[0], keyed[key][0]) for key in order],
-                  [keyed[key][1] for key in order], cam, states, tf)
+from .printer import CythonPrinter, cse_block
 
 
 def _time_affine(arg, t, states: set):
@@ -173,8 +52,8 @@ def _stiffness(m: Model, f: sp.Matrix) -> sp.Matrix:
     The same matrix as ``-f.jacobian(m.q)`` (SymPy treats q' as independent of q there too),
     but SymPy differentiates with respect to a function q(t) by swapping it for a dummy
     symbol in every term, which takes more than half of the time on the large squeeze-film
-    equations of DYNACAM (issue 12, item 7)."""
-    tf = _time_functions(m)
+    equations of DYNACAM."""
+    tf = time_functions(m)
     back = {v: k for k, v in tf.items()}
     return (-f.xreplace(tf).jacobian([tf[q] for q in m.q])).xreplace(back)
 
@@ -182,7 +61,7 @@ def _stiffness(m: Model, f: sp.Matrix) -> sp.Matrix:
 MAX_VARIANT_INSTANCES = 3  # 2^3 dwell variants at most; beyond that, one general rhs
 
 
-def _rhs_expressions(m: Model, eq: Equations, plain: _Plain):
+def _rhs_expressions(m: Model, eq: Equations, plain: Plain):
     """(expressions of the right-hand side, whether M is diagonal): q'' divided out
     symbolically for a diagonal M, else the entries of M and f for a solve, then z'."""
     n = len(m.coordinates)
@@ -208,7 +87,7 @@ def _cam_symbol(i: int, k: int) -> sp.Symbol:
     return sp.Symbol(f"_cam{i}_{k}", real=True)
 
 
-def jacobian_plain(exprs, plain: _Plain, ys: list) -> list:
+def jacobian_plain(exprs, plain: Plain, ys: list) -> list:
     """Rows d e/d y of the plain expressions ``exprs`` with respect to the plain states ``ys``.
 
     A cam input value ``_cam{i}_{k}`` = d^k H/darg^k at the instance's argument a_i depends on a
@@ -255,7 +134,7 @@ def jacobian_plain(exprs, plain: _Plain, ys: list) -> list:
     return rows
 
 
-def _time_column(m: Model, plain: _Plain, exprs: list):
+def _time_column(m: Model, plain: Plain, exprs: list):
     """d e/dT of the plain expressions (explicit time and the cam arguments a T + b, by the
     chain rule of jacobian_plain), or None when that needs a cam derivative above the order
     the cam-law library evaluates (the implicit loops then difference the rhs in time)."""
@@ -265,7 +144,7 @@ def _time_column(m: Model, plain: _Plain, exprs: list):
         return None
 
 
-def _jacobian_context(m: Model, plain: _Plain, diagonal: bool, rhs_exprs: list,
+def _jacobian_context(m: Model, plain: Plain, diagonal: bool, rhs_exprs: list,
                       consts: ConstantTable):
     """(sparse Jacobian entries (row, column, expr), the entries R of the non-diagonal
     correction, the time column: entries (row, expr) of df/dT and its correction R_t, or
@@ -319,7 +198,7 @@ def _jacobian_context(m: Model, plain: _Plain, diagonal: bool, rhs_exprs: list,
     return entries, R, time
 
 
-def _event_entries(m: Model, plain: _Plain, printer: CythonPrinter) -> list:
+def _event_entries(m: Model, plain: Plain, printer: CythonPrinter) -> list:
     """The model's own events, with their arming condition and branches (modes, resets)."""
     modes = {mode.name: mode for mode in m.modes}
     events = []
@@ -339,7 +218,7 @@ def _event_entries(m: Model, plain: _Plain, printer: CythonPrinter) -> list:
     return events
 
 
-def _cam_instances(m: Model, plain: _Plain, printer: CythonPrinter) -> tuple[list, list]:
+def _cam_instances(m: Model, plain: Plain, printer: CythonPrinter) -> tuple[list, list]:
     """(cam-input instances, their breakpoint events): an instance whose argument is not
     affine in time is driven by a state, and its segment ends are located as events."""
     instances, events = [], []
@@ -364,8 +243,8 @@ def _model_manifest(m: Model, eq: Equations, instances: list, events: list,
     events, options) with the source hash of the equations it was generated from."""
     manifest = {
         **manifest_common(m),
-        "states": _state_entries(m) + [{"name": z.name, "unit": z.unit, "scale": z.scale, "doc": z.doc,
-                                        "initial": _num(z.initial)} for z in m.first_order],
+        "states": state_entries(m) + [{"name": z.name, "unit": z.unit, "scale": z.scale, "doc": z.doc,
+                                       "initial": number(z.initial)} for z in m.first_order],
         "outputs": [{"name": o.name, "unit": o.unit, "doc": o.doc} for o in m.outputs],
         "cam_families": sorted({d["family"] for d in instances}),
         "cam_instances": [{"family": d["family"], "argument": d["arg_text"],
@@ -376,19 +255,17 @@ def _model_manifest(m: Model, eq: Equations, instances: list, events: list,
         "residual": None if m.residual is None else {
             "error": m.residual.error, "acceleration": m.residual.acceleration,
             "rise_end": m.residual.rise_end, "rise_state": m.residual.rise_state},
-        "options": [list(o) if isinstance(o, tuple) else o for o in m.options],
+        "options": option_entries(m),
         # d(dy/dt)/dy (ModelC.jac): derived symbolically with the equations
         "jacobian": "symbolic",
         # df/dT with it (jacobian()'s ft), for the Rosenbrock method's f_t terms
         "time_derivative": "symbolic" if time_symbolic else "finite-difference",
     }
-    canonical = json.dumps({"M": sp.srepr(eq.M), "f": sp.srepr(eq.f), "Phi": sp.srepr(eq.Phi),
-                            "rates": [sp.srepr(z.rate) for z in m.first_order],
-                            "events": [sp.srepr(e.g) for e in m.events],
-                            "outputs": [sp.srepr(o.expr) for o in m.outputs],
-                            "manifest": manifest}, sort_keys=True)
-    manifest["source_hash"] = "sha256:" + hashlib.sha256(canonical.encode()).hexdigest()
-    return manifest
+    return with_source_hash(manifest, {
+        "M": sp.srepr(eq.M), "f": sp.srepr(eq.f), "Phi": sp.srepr(eq.Phi),
+        "rates": [sp.srepr(z.rate) for z in m.first_order],
+        "events": [sp.srepr(e.g) for e in m.events],
+        "outputs": [sp.srepr(o.expr) for o in m.outputs]})
 
 
 def model_context(eq: Equations) -> dict:
@@ -409,7 +286,7 @@ def model_context(eq: Equations) -> dict:
             event_exprs += [sp.sympify(b.condition)] + list(b.resets.values())
     all_exprs = (list(eq.M) + list(eq.f) + list(K_raw) + [z.rate for z in m.first_order]
                  + [o.expr for o in m.outputs] + event_exprs)
-    plain = _plainer(m, all_exprs)
+    plain = plainer(m, all_exprs)
 
     rhs_exprs, diagonal = _rhs_expressions(m, eq, plain)
     cam_syms = [[sp.Symbol(f"_cam{i}_{k}", real=True) for k in range(order + 1)]
@@ -472,7 +349,7 @@ def model_context(eq: Equations) -> dict:
     instances, cam_events = _cam_instances(m, plain, printer)
     events += cam_events
     used |= printer.used
-    used = sorted(used & (set(MATH_FUNCTIONS) | {"M_PI"}))
+    used = math_imports(used)
     manifest = _model_manifest(m, eq, instances, events, jac_time is not None)
 
     initial = ([c.initial for c in m.coordinates] + [c.initial_rate for c in m.coordinates]
@@ -484,7 +361,7 @@ def model_context(eq: Equations) -> dict:
         "name": m.name,
         "title": m.title,
         "reference": m.reference,
-        "doc_lines": [line.rstrip() for line in m.doc.strip().splitlines()],
+        "doc_lines": doc_lines(m),
         "variant_lines": list(m.variant),
         "n": n,
         "nz": nz,
@@ -523,82 +400,7 @@ def _state_index(m: Model, name: str) -> int:
     return names.index(name)
 
 
-def source_of(build) -> str:
-    """The source file of a model's build function, as the provenance line of its generated
-    file names it (``camdyn/derive/models/dynacam.py`` for every DYNACAM variant)."""
-    module = getattr(build, "func", build).__module__
-    return module.replace(".", "/") + ".py"
-
-
-def render_model(model: Model, source: str) -> str:
-    """The generated module of ``model``; ``source`` is the file its declaration comes from
-    (the provenance line of the preamble)."""
-    if model.constraints:
-        from .dae import render_constrained
-
-        return render_constrained(model, source)
-    return _env().get_template("model.pyx.j2").render(**model_context(derive(model)), source=source)
-
-
-# -- cam-law library ------------------------------------------------------------
-
-
-def camlaws_context() -> dict:
-    laws = []
-    for law in sorted(camlaws.LAWS.values(), key=lambda l: l.code):
-        names = {camlaws.T: "T"}
-        if law.parameter is not None:
-            names[law.parameter.symbol] = "par"
-        printer = CythonPrinter(names)
-        segs = []
-        for k in range(law.n_segments):
-            exprs = [law.segment_exprs(order)[k] for order in range(4)]
-            lines, code, _ = cse_block(exprs, names, prefix="c")
-            segs.append({"index": k, "lines": lines, "code": code})
-        laws.append({
-            "key": law.key,
-            "code": law.code,
-            "title": law.title,
-            "reference": law.reference,
-            "bounds": [printer.doprint(b) for b in law.bounds],
-            "segments": segs,
-            "parameter": None if law.parameter is None else {
-                "name": law.parameter.symbol.name, "default": law.parameter.default,
-                "low": law.parameter.low, "high": law.parameter.high,
-                "doc": law.parameter.doc},
-            "amplitude": str(law.amplitude),
-        })
-    info = [{k: v for k, v in law.items() if k not in ("segments",)} for law in laws]
-    turn = {"code": camlaws.TURN_CODE, "slots": camlaws.TURN_SLOTS, "width": 13}
-    return {"laws": laws, "laws_json": json.dumps(info, indent=1, sort_keys=True), "turn": turn}
-
-
-def render_camlaws() -> dict[str, str]:
-    env, ctx = _env(), camlaws_context()
-    return {"camlaws.pxd": env.get_template("camlaws.pxd.j2").render(**ctx),
-            "camlaws.pyx": env.get_template("camlaws.pyx.j2").render(**ctx)}
-
-
-# -- the catalog: declarations the runtime reads as data ---------------------------
-
-def render_catalog() -> dict[str, str]:
-    """``catalog.json``: what the runtime needs of the declarations without SymPy (the DYNACAM
-    option set and how a variant is named), so that checking a scene loads no derive code."""
-    from .models import dynacam
-
-    head = ("written by `camdyn derive` from camdyn/derive/models/dynacam.py; do not edit, "
-            "edit the declaration and regenerate")
-    return {"catalog.json": json.dumps({"generated": head, "dynacam": dynacam.catalog()},
-                                       indent=1) + "\n"}
-
-
-# -- all files ----------------------------------------------------------------------
-
-
-def render_registered(name: str) -> str:
-    from .models import REGISTRY
-
-    model = REGISTRY[name]()
-    if model.name != name:
-        raise ValueError(f"registry key {name!r} differs from model name {model.name!r}")
-    return render_model(model, source_of(REGISTRY[name]))
+def render(model: Model, source: str) -> str:
+    """The generated module of the unconstrained ``model``; ``source`` is the file its
+    declaration comes from (the provenance line of the preamble)."""
+    return render_template("model.pyx.j2", **model_context(derive(model)), source=source)

@@ -1,7 +1,7 @@
 """Code generation for constrained models: M Q'' + Phi_Q^T lambda = f, Phi(Q, t) = 0.
 
-The generated module has the same C interface as every other model (runtime/abi.pxd), so
-the compiled integrators of runtime/loops.pxi run it unchanged; what differs is how its
+The generated module has the same C interface as every other model (runtime/engine/abi.pxd), so
+the compiled integrators of runtime/engine/loops.pxi run it unchanged; what differs is how its
 right-hand side finds Q'' (template ``constrained.pyx.j2``), in one of two formulations
 chosen at run time by the parameter the model's :class:`~camdyn.derive.model.ConstraintSolver`
 names as ``formulation``:
@@ -24,16 +24,17 @@ ends are the model's events, pure breakpoints: nothing switches, the step just e
 """
 from __future__ import annotations
 
-import hashlib
 import json
 
 import sympy as sp
 
-from .codegen import _env, _num, _plainer, _state_entries, manifest_common
+from .emit import (doc_lines, manifest_common, math_imports, option_entries, plainer,
+                   render as render_template, state_entries, with_source_hash)
 from .lagrange import Equations, derive
 from .model import Model
 from .optimize import ConstantTable
-from .printer import MATH_FUNCTIONS, CythonPrinter, cse_block
+from .printer import CythonPrinter, cse_block
+
 
 def constrained_context(eq: Equations) -> dict:
     """Everything ``constrained.pyx.j2`` needs, printed as Cython strings.
@@ -55,7 +56,7 @@ def constrained_context(eq: Equations) -> dict:
     Phi_t = eq.Phi.diff(t).xreplace(rates)
     exprs = (list(eq.M) + list(eq.f) + list(eq.Phi) + list(eq.Phi_q) + list(eq.gamma)
              + list(Phi_t) + [o.expr for o in m.outputs] + [e.g for e in m.events])
-    plain = _plainer(m, exprs)
+    plain = plainer(m, exprs)
     if m.profile is None and plain.instances:
         raise ValueError(f"{m.name}: cam input {plain.instances[0][0]} is used but no profile "
                          "is declared (Model.profile)")
@@ -93,7 +94,7 @@ def constrained_context(eq: Equations) -> dict:
     initial = [c.initial for c in m.coordinates] + [c.initial_rate for c in m.coordinates]
     initial_code = [printer.doprint(sp.sympify(v)) for v in initial]
     used |= printer.used
-    used = sorted(used & (set(MATH_FUNCTIONS) | {"M_PI"}))
+    used = math_imports(used)
     profile, cam_profile = None, None
     if m.profile is not None:
         family, arg = plain.instances[0]
@@ -111,7 +112,7 @@ def constrained_context(eq: Equations) -> dict:
         **manifest_common(m),
         "n_constraints": nc,
         "dependent": [c.name for c in m.coordinates[n - nc:]],
-        "states": _state_entries(m),
+        "states": state_entries(m),
         "outputs": outputs,
         "constraints": [{"name": c.name, "multiplier": c.multiplier} for c in m.constraints],
         "solver": {role: params[k] for role, k in solver.items()},
@@ -121,21 +122,19 @@ def constrained_context(eq: Equations) -> dict:
         "modes": [],
         "events": [e.name for e in m.events],
         "residual": None,
-        "options": [list(o) if isinstance(o, tuple) else o for o in m.options],
+        "options": option_entries(m),
         # d(dy/dt)/dy (ModelC.jac): central differences of the compiled rhs (template)
         "jacobian": "finite-difference",
         "time_derivative": "finite-difference",
     }
-    canonical = json.dumps({"M": sp.srepr(eq.M), "f": sp.srepr(eq.f), "Phi": sp.srepr(eq.Phi),
-                            "events": [sp.srepr(e.g) for e in m.events],
-                            "outputs": [sp.srepr(o.expr) for o in m.outputs],
-                            "manifest": manifest}, sort_keys=True)
-    manifest["source_hash"] = "sha256:" + hashlib.sha256(canonical.encode()).hexdigest()
+    with_source_hash(manifest, {"M": sp.srepr(eq.M), "f": sp.srepr(eq.f), "Phi": sp.srepr(eq.Phi),
+                                "events": [sp.srepr(e.g) for e in m.events],
+                                "outputs": [sp.srepr(o.expr) for o in m.outputs]})
     return {
         "name": m.name,
         "title": m.title,
         "reference": m.reference,
-        "doc_lines": [line.rstrip() for line in m.doc.strip().splitlines()],
+        "doc_lines": doc_lines(m),
         "n": n,
         "nc": nc,
         "na": n + nc,
@@ -164,6 +163,8 @@ def constrained_context(eq: Equations) -> dict:
     }
 
 
-def render_constrained(model: Model, source: str) -> str:
-    ctx = constrained_context(derive(model))
-    return _env().get_template("constrained.pyx.j2").render(**ctx, source=source)
+def render(model: Model, source: str) -> str:
+    """The generated module of the constrained ``model``; ``source`` is the file its
+    declaration comes from (the provenance line of the preamble)."""
+    return render_template("constrained.pyx.j2", **constrained_context(derive(model)),
+                           source=source)

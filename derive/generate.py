@@ -5,12 +5,12 @@ Every generated file carries two lines under its "GENERATED FILE" notice:
     # Derivation key: sha256:...   hash of everything the file is derived from
     # Text hash: sha256:...        hash of the file itself, without this line
 
-The derivation key hashes the inputs of the file (issue 12, item 7): the model's declaration
-as built (every field of the :class:`~camdyn.derive.model.Model`, expressions as ``srepr``;
-for the cam-law library the source of ``camlaws.py``), the source of the derive code that
-turns it into text (``lagrange.py``, ``codegen.py``, ``printer.py``, ``optimize.py``,
-``model.py``, ``dae.py`` for constrained models) and the templates, the pinned SymPy version
-and the camdyn version.  A file whose recorded key equals the key of the current inputs and
+The derivation key hashes the inputs of the file: the model's declaration as built (every
+field of the :class:`~camdyn.derive.model.Model`, expressions as ``srepr``; for the cam-law
+library the source of ``camlaws.py``), the source of the derive code that turns it into text
+(``render.py``, ``emit.py``, ``lagrange.py``, ``printer.py``, ``optimize.py``, ``model.py``, and
+``codegen.py`` or, for constrained models, ``dae.py``; ``camlaws_code.py`` for the library) and
+the templates, the pinned SymPy version and the camdyn version.  A file whose recorded key equals the key of the current inputs and
 whose text still hashes to its recorded text hash was written by ``camdyn derive`` from these
 very inputs, so it is not derived again; every other file is (a model edit re-derives that
 model only).  The files derived are compared byte for byte with the files on disk
@@ -47,9 +47,11 @@ STAMP_FORMAT = 1
 DERIVE = Path(__file__).parent
 # the derive code each kind of file is printed by; generate.py itself only stamps and compares
 _CODE = {
-    "model": ("codegen.py", "lagrange.py", "model.py", "optimize.py", "printer.py"),
-    "constrained": ("codegen.py", "dae.py", "lagrange.py", "model.py", "optimize.py", "printer.py"),
-    CAMLAWS: ("camlaws.py", "codegen.py", "printer.py"),
+    "model": ("codegen.py", "emit.py", "lagrange.py", "model.py", "optimize.py", "printer.py",
+              "render.py"),
+    "constrained": ("dae.py", "emit.py", "lagrange.py", "model.py", "optimize.py", "printer.py",
+                    "render.py"),
+    CAMLAWS: ("camlaws.py", "camlaws_code.py", "emit.py", "printer.py"),
 }
 _KEY_LINE = re.compile(r"^# Derivation key: (sha256:[0-9a-f]{64})\n", re.M)
 _HASH_LINE = re.compile(r"^# Text hash: (sha256:[0-9a-f]{64})\n", re.M)
@@ -190,7 +192,7 @@ def files_of(unit: str) -> list[str]:
 def _unit_job(unit: str, recorded: dict, full: bool):
     """(key, {file: stamped text} or None): derive the unit unless every file of it records
     the current key and is intact (``recorded``: file -> (key, intact))."""
-    from .codegen import render_camlaws, render_catalog, render_model, source_of
+    from .render import render_camlaws, render_catalog, render_model, source_of
 
     if unit == CATALOG:
         return None, render_catalog()

@@ -1,7 +1,7 @@
 """A model is a declaration: coordinates, energies, forces, constraints, inputs.
 
 Nothing here derives anything; :mod:`camdyn.derive.lagrange` turns a
-:class:`Model` into equations of motion and :mod:`camdyn.derive.codegen` into
+:class:`Model` into equations of motion and :mod:`camdyn.derive.render` into
 Cython.  Names follow the thesis (tau, Fa, Fv, H, X, ...), so a declaration
 reads next to the cited equations.
 """

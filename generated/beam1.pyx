@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a46d691428dc4bab27f4e4065c8ec5c0af347d8a38619905a1665f591236309a
-# Text hash: sha256:6ec5b42bb51dbccf6e07584d3d6b6c3a9844fd16e49bcbff5f6e665d0336a4e5
+# Derivation key: sha256:408b1023bc359bf0f065d3bfb8968ffc8d9c4c2ba8da024c6f7485c69af9bd1f
+# Text hash: sha256:5be4b6ca442d1fd682aa97c8529cc174cd534621bfc3a784252536b79af94f62
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:bfb311a2dc642912ccf96df03b945a685fb049d1c1bb63babea364e48a9d993c
@@ -76,9 +76,9 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport atan, cos, fabs, fmod, M_PI, pow, sin
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport camlaw_eval, camlaw_segment
-from camdyn.runtime.linalg cimport solve_inplace
+from camdyn.runtime.engine.linalg cimport solve_inplace
 
 # sizes, known when the integration loops (loops.pxi) are compiled into this module
 cdef enum:
@@ -1087,7 +1087,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d6ff7b7ecae29be5ff1693c3dda2efde07ace20e39a11ecc70b4465b310c93e2
-# Text hash: sha256:d85cdd63a6f5a7fd24971c24cfe33811dd556887bc0531b1a18762a2077cdc14
+# Derivation key: sha256:5d31bc24976f7ca227e18658d3843f2857ef692cf0234b4941e9959faef80001
+# Text hash: sha256:fa2884bd23ad3b30f267e6128f63e36a6b77b82411be31846421381ed3a0974d
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:1d8106cbb4c080dc1d4baa1e57662f2dae7c6b7184e85535a26798dca84a5c31
@@ -76,9 +76,9 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport atan, cos, fabs, fmod, M_PI, pow, sin
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport camlaw_eval, camlaw_segment
-from camdyn.runtime.linalg cimport solve_inplace
+from camdyn.runtime.engine.linalg cimport solve_inplace
 
 # sizes, known when the integration loops (loops.pxi) are compiled into this module
 cdef enum:
@@ -1928,7 +1928,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

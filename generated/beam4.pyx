@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:3469c3a24e117b74b0531537991be9e5835cd043c70e196e8a5144c965c03ea7
-# Text hash: sha256:6d59c6a1c10a08dc1ded813805b00773621e5eed32a7caeda1925e9e03839c10
+# Derivation key: sha256:99dfc69dd1cbd4ad795e27267138879b374f615cf0079971447a42ad575066c1
+# Text hash: sha256:fa21af700781f8a386326d755412abcbac09af2e8c55ea49fb03ec620889d4e6
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:005fc6dd88930eeb16af7091c0a74ba4fe7f9c436ef794c0f2976a8de40a1269
@@ -76,9 +76,9 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport atan, cos, fabs, fmod, M_PI, pow, sin
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport camlaw_eval, camlaw_segment
-from camdyn.runtime.linalg cimport solve_inplace
+from camdyn.runtime.engine.linalg cimport solve_inplace
 
 # sizes, known when the integration loops (loops.pxi) are compiled into this module
 cdef enum:
@@ -2634,7 +2634,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

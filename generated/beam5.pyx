@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7a24e421924c6bdb2e272f1501371311e23570e305ad6976b341a79715dc3dee
-# Text hash: sha256:316c51809ee7d5c8ffc130f594b3b99a52889db1042e06564562fa59ddc00850
+# Derivation key: sha256:7ee9c6a077679d25361e8960996c71279530a0759415f574da408efaea40cea2
+# Text hash: sha256:b1787c83b08292601d61393ecab38c07b36869231323cb03a42472d3a105992d
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:a91861c5ef9ef871d0972bdd6fadc95fb8bd8aa9c22b166a68b2e22724f00536
@@ -76,9 +76,9 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport atan, cos, fabs, fmod, M_PI, pow, sin
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport camlaw_eval, camlaw_segment
-from camdyn.runtime.linalg cimport solve_inplace
+from camdyn.runtime.engine.linalg cimport solve_inplace
 
 # sizes, known when the integration loops (loops.pxi) are compiled into this module
 cdef enum:
@@ -3458,7 +3458,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

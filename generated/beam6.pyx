@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c32148256f7a6b66393d407e362de3dfc3845ac27032b4249b0fbc357b16ce7b
-# Text hash: sha256:e00b5e55a3171fac1f415d37d75f363987f656c3a84f702cae87cc901733f262
+# Derivation key: sha256:148d367efdc1f4a7d443c219e3469683b5b66dfbab83a390ffc85b8352729a42
+# Text hash: sha256:5ecae0100a605093d9aea23ee7b56b6ba304c4d08796a94b605816673b0061ef
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:9d4ce2ed01f1ecad9d62194db1151f10c3655da69963e1cb0de52220801b3e5b
@@ -76,9 +76,9 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport atan, cos, fabs, fmod, M_PI, pow, sin
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport camlaw_eval, camlaw_segment
-from camdyn.runtime.linalg cimport solve_inplace
+from camdyn.runtime.engine.linalg cimport solve_inplace
 
 # sizes, known when the integration loops (loops.pxi) are compiled into this module
 cdef enum:
@@ -4466,7 +4466,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:280ab49f2851ff93de75c38b43d884b10354e709eefa21438685744199b1ee19
-# Text hash: sha256:929092f95f83c651b047e26b22cfb5a0f499d8dc621a9c1caf40dfa5128caad9
+# Derivation key: sha256:43878fe427f7d0b205359d18ac1704fe958ee69e4dd378aee44dbf9e01c5dc5a
+# Text hash: sha256:dae5204435ca9c67ac265d3d965a34f7b3bdf27ccccdc5d4633ad49730ae9df1
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),
@@ -281,7 +281,7 @@ cdef inline int _turn_piece(const double* q, int seg, int* k, int* j) noexcept n
 
 cdef inline int _turn_segment(const double* q, double T) noexcept nogil:
     """The last segment whose lower end (_turn_lo, the same floating-point expressions as the
-    breakpoints of camdyn.runtime.laws.Turn) is <= T, so that a breakpoint itself belongs to
+    breakpoints of camdyn.runtime.core.laws.Turn) is <= T, so that a breakpoint itself belongs to
     the segment it starts."""
     if T < 0.0:
         return 0

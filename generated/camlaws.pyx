@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:280ab49f2851ff93de75c38b43d884b10354e709eefa21438685744199b1ee19
-# Text hash: sha256:5f5daa871cf1890af96db76eac6eb7780599886c8251b1138248922a27b99593
+# Derivation key: sha256:43878fe427f7d0b205359d18ac1704fe958ee69e4dd378aee44dbf9e01c5dc5a
+# Text hash: sha256:06fc20e49f214aabd976475c4f278b513681f30f577bd87e56ceb29d20e8b04a
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.
@@ -165,7 +165,7 @@ def turn_slot(int rise, double rise_par, int ret, double ret_par, double up, dou
     `up`, the return law over length `r` and a lower dwell `low`, all in units of the rise.
 
     Equal turns share a slot and a written slot never changes, so runs in other threads keep
-    reading what they were given.  The caller checks the values (camdyn.runtime.laws)."""
+    reading what they were given.  The caller checks the values (camdyn.runtime.core.laws)."""
     spec = (rise, rise_par, ret, ret_par, up, r, low)
     if spec in _turn_index:
         return _turn_index[spec]

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:877e489985eb1503f1271ce260e70cff14767a99b939f98307f5eb1c8d8eb240
-# Text hash: sha256:c9600f171e3906a735bdd7a201a6b057ee6449ad1107feba2f4c76e0f8a7bade
+# Derivation key: sha256:0c371bbb7cc5490315c3a70c63e8648ef7fcad6d9365cf3e8669be117410efe6
+# Text hash: sha256:13eaf29250ce3dec731f3fa70f0312389b9d60fb7904cb77d8d00353e23282c3
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233
@@ -33,7 +33,7 @@ import json
 
 from cpython.pycapsule cimport PyCapsule_New
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -206,7 +206,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ea773befa9d548ab834c84d12c1b8056852cd28554969a246f3e37536d9a62a7
-# Text hash: sha256:49c5531271cc892829b4df19b84be8547452a2b53c18c0cb7e24115ddf267740
+# Derivation key: sha256:d416a2d919a9ef1e2ce40576e5c28baab152c3e0f3e0f34baf562ac4e5abc357
+# Text hash: sha256:7fe2842f05416470e2357a0d39fd0d5702fc6a07a3e1625c7d3d1093988f5ac0
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a
@@ -34,7 +34,7 @@ import json
 
 from cpython.pycapsule cimport PyCapsule_New
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -298,7 +298,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:11bc7533a48fcf44b46a57b63c8a0ebc6ad842ca8d5e8001de2be269e8eab996
-# Text hash: sha256:ba871c7ff097651572154ad2ee3249864f8912846cd884a3c023dd06ce67cc64
+# Derivation key: sha256:9371f7132e9ba8509555cf679aaf6e9bc715ec7882d7ca2792dbed5fb438938d
+# Text hash: sha256:94dd3922d8059c97cfadf83adb7f4375c69a604e452e16960eff48490720dfa8
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f
@@ -29,7 +29,7 @@ import json
 
 from cpython.pycapsule cimport PyCapsule_New
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -310,7 +310,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:da35ec2ce4a36611918b340ef02eca3cf10cfccb62e2e8c87910c5c895b284b3
-# Text hash: sha256:699c736cfe495979d7ff2dfe11344f1b0adcc47a9605e8ca89b7cbbe2124a7e1
+# Derivation key: sha256:f06b6d54f0d141eacfbcc4373533078f5586ae5d8bcc046582beafcb872bd37e
+# Text hash: sha256:64d6fcde03464125beab0bd80004afbbd7c2cc471995e66936d8e870a1d41c6f
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:8f77dd07c8ed4b4688df2d3c19ff019f5740d09221661f3282e318623b001c96
@@ -66,7 +66,7 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport sqrt
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -978,7 +978,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

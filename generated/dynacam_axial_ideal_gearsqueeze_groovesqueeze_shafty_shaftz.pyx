@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:292dc42ef521cc0b2637f229883a0d071120117dfe085297280b5393a5628680
-# Text hash: sha256:b3b18a24bd6a737ff558f9b40b2f7329d978609f2afa4869083b06eb02389feb
+# Derivation key: sha256:5fcd671fbda2d1888ea135d4ea0e9caaed15e938cd139b04d9aaee03925a447c
+# Text hash: sha256:8200ecdbe6be55c9a5357f75dd67810c7961d29668155561b95ac966736031e8
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:8a86b6ab0f64a1ad41aa3dc8c8942dc37aa336ef30396ea9acf74fbea9619acb
@@ -66,7 +66,7 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport pow, sqrt
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -2635,7 +2635,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

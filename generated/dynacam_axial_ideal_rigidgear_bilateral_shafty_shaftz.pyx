@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b15e1ef803c6deaffa657b717dbe40af671382aacd07fcfc8fe08a11301251e6
-# Text hash: sha256:f43c83e39282d9412f1dc3c081dff94eea38f8cd1446f2d512e6cbd2f28eca58
+# Derivation key: sha256:7d2c1f855c734fa8e2fa2a684ba18630050bda18103e6b13d8146d6fd0d225a3
+# Text hash: sha256:4c5f1d1e17199cfa93cc4056bd75568310651a3a2149dd9d0027eccbe3cf00b9
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:f356169a69c515b9c42fefe373cc8acfc9be03f74c16a9cdb47e148eb2a59dfb
@@ -66,7 +66,7 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport pow, sqrt
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -1402,7 +1402,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:22db1a5c2e932abf69b52e38eab49667994811fd49edcfe6a048088334c68fd8
-# Text hash: sha256:bc885a57648ef14bd5aa4066f4545d6d651ae2598dcce86ea51eb0087d3a9510
+# Derivation key: sha256:786215bbf9eb6d6240654e902a04eb1648f890c70d38674bafef05fa40ae1dc0
+# Text hash: sha256:95d0297cc4badca735b88e2e4b98e23a123321d1076b9043204ff588394da7f2
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:68a26e070d019d08a18b136de438a3ead39168a76ade198c22c7707fe2202b40
@@ -66,7 +66,7 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport sqrt
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -673,7 +673,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

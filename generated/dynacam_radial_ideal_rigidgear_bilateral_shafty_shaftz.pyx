@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ab49df9fc36ceeb8c2849524dd4a671c87e5b5f0102c7c75db8fea321ec266b2
-# Text hash: sha256:fbbf5e913a178d626df095ff1c4d0a6c7c5b15c8d392ba39c62c13c6cbf44f30
+# Derivation key: sha256:c172f74631eb1917ce5e6ae5324b9e69e017b70a90cb150bb55c41f373407415
+# Text hash: sha256:5676c075aad02cc31e5013c26cd778ecfe6c8ed3f0197317edda7ed2fa4d304a
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:52d0b492daa23ff0a6038d3692472c97bd3181f873d8a79b32f30d87ae0a259a
@@ -66,7 +66,7 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport pow, sqrt
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -2141,7 +2141,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:bf051619ee95912d56a84e1e4e471bf8ced9e947e1f23326d68a8a7920dbb5e7
-# Text hash: sha256:12f59f62f672ba9da832bf390227984360d612d3eb8e08edfd3233742f80c371
+# Derivation key: sha256:19f6376c16af61453a3349914763402aa8a31c89fef0f6ed29d13c1de9c0d4f5
+# Text hash: sha256:c29b4cabe92eb8a1a79b7b9e200484493e6bea166677010c21d1c5f78a4c922b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:4ac8bafb400a1646f69be4722317a3e6a1340e3e939fdbc69644456c4bc14bca
@@ -66,7 +66,7 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport fabs, sqrt
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -1404,7 +1404,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:522e010d9fd509a62923e03d420395964795d88be2f02c18fe5095a648f1cce7
-# Text hash: sha256:971b1cc755ee186953e2dbfbd7ea4538536f5afa257664d9b1d954056b5d9594
+# Derivation key: sha256:d98c2fd9afc70da4d1113670d375637e47dedbec7a2e45d2c23600df7948f4a5
+# Text hash: sha256:71827b40e4acd9b7e38f44db26d6007a14b70b209d0b7042f5e934a2d6fa4e8b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:1862b6bf75d2cf1f5185cac2d07e5bdde467e7941a088e8b8accffb28b9684a6
@@ -66,7 +66,7 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport sqrt
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -1091,7 +1091,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:5be688b2ed3fa4544b60245cff97fe470e608712ba087c3df3ece1ad673ecdcb
-# Text hash: sha256:ad0e627f2cefe731822596bee6389b493f29a7e5f2c4090c2f9d0900bd21175a
+# Derivation key: sha256:f895a0adacd3bd82760437f9dd8868aad7bed909dfafcf1bfc9c5a9a8b1e7e14
+# Text hash: sha256:e6f832912df616558ef14bac3406fb4333648250cad03e988a84f325853711c0
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7842898e4fc68e8102d2800cc75353ff3970859773edaaef2a378a7c26cacd8a
@@ -66,7 +66,7 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport sqrt, tan
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -1286,7 +1286,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

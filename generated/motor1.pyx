@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e1b911be379388e7f1ef51c598365e961b04ff4b7f616cd8e89ec4df9ddc1d8b
-# Text hash: sha256:a9abeba262047b8faab461ae0924421ee0077f92624b3959d877e7a3c72fcc12
+# Derivation key: sha256:28c5e998f9a07bcfe7b666c6fc5e621bb14d145ce58ed4d7a5ea6c8a82c0ffca
+# Text hash: sha256:dc7004b8c006bfd26339e3b64483075e8f3cb0342753141bdf44f7c8d3746013
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68
@@ -31,7 +31,7 @@ import json
 
 from cpython.pycapsule cimport PyCapsule_New
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -201,7 +201,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:5b1d279c27a95b3bdf5e67aa18ecc656725363891d21abd4d140d899782e0ed4
-# Text hash: sha256:dc3d14ca597ccdb280a9afba5d48b3be1b57229c9d675467d0e149f204531ad3
+# Derivation key: sha256:a1bf20a1f9425a1ee65b238bc7ce44e21d64dde31b78f1bcecc7e8d0e153b27b
+# Text hash: sha256:ee3464f6a9774641f03bc47969693e7b93a15bc4d593069d54139d128e82736e
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71
@@ -31,7 +31,7 @@ import json
 
 from cpython.pycapsule cimport PyCapsule_New
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -228,7 +228,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

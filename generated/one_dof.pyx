@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c74d962e7d29e81fbeb0bd47b7e40485497afca43ab1b0a5ece6fa47c90c751c
-# Text hash: sha256:e80a65ad9494014adab671f3a8def8ceef7b3e5f992a28fc7492f7f60a193876
+# Derivation key: sha256:bbaee0218f24df8348467545f5350b98e5ecb998ea70e9d1976ddec6eeef70da
+# Text hash: sha256:e8099131b7c1f9b94033453e6f8def0ecfaed3ada78df9022b019f7a699ab45c
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073
@@ -30,7 +30,7 @@ import json
 
 from cpython.pycapsule cimport PyCapsule_New
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -208,7 +208,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:9b8f6969fb99fc8ea4a40ae7c8f9c244545bebe66b2cf3efb377c604e46973a5
-# Text hash: sha256:553de7d57e258e94d5a9ebfcafef5389a998e7ae0e7e509508e3814ddb410ac6
+# Derivation key: sha256:bb040bc5cd283e5d906256bf44a28f9781db838f674d481da0d651662de158d6
+# Text hash: sha256:fbca86544d3cb4b1d4091c7618c4bb52630330213aa8d65c4e360caade88e64a
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:e017c1589554bffedb179ec1f3fe3f8fdb43bb82d0bdd5e3f88df9f352e7786a
@@ -45,8 +45,8 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport atan2, cos, fabs, sin
 
-from camdyn.runtime.abi cimport *
-from camdyn.runtime.linalg cimport solve_inplace
+from camdyn.runtime.engine.abi cimport *
+from camdyn.runtime.engine.linalg cimport solve_inplace
 
 # sizes, known when the integration loops (loops.pxi) are compiled into this module
 cdef enum:
@@ -346,7 +346,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

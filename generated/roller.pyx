@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:3b51d86830c695e994a9c22b6f5a4a84f53552d9407b485cb4af1e51429773b7
-# Text hash: sha256:301cf288486e715bb99632bf3f0dd2b139128d5c84e68e57bfa2ee35a15cdeb4
+# Derivation key: sha256:31a585284111899812fa2b315db5e64e9c2f7c8abbcb96f661bdb9a59fca2f96
+# Text hash: sha256:b7191c08d279b333fd2cc2fcd6245b5c7a1e2821993aaa7431e61e411b8af82a
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27
@@ -53,7 +53,7 @@ import json
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport pow, sqrt
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -538,7 +538,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4024098250c9ced8b4cb2d9465890b50db4a7a1d4546b90c7830b3b4722a5139
-# Text hash: sha256:a2213bbb27d300f0810817ced0ccc52eac952eccfff92a8870740daaea625011
+# Derivation key: sha256:fa1024889c7a4d3ba27806c958257e6a4ac5fb4bbca382bb5bfdeebd10d04702
+# Text hash: sha256:55aa852c00deb7a1bf34fdd8d968488252c8abf5b7f88097da3700061f2d6714
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360
@@ -12,14 +12,14 @@
 #     ways (F_c = kappa omega^2 delta + 2 zeta sqrt(mu kappa) omega delta', linear), so the
 #     contact never opens and there are no modes or events.  The smooth stiff case of the
 #     benchmarks: a fast mode of omega sqrt((kappa + 1)/mu) that only rings, undamped at
-#     zeta = 0, in series with the follower (issue 13, item 8).
+#     zeta = 0, in series with the follower (thesis sec. 9.2.1).
 
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport sqrt
 
-from camdyn.runtime.abi cimport *
+from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
                                        camlaw_lo, camlaw_segment)
 
@@ -328,7 +328,7 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
-include "camdyn/runtime/loops.pxi"
+include "camdyn/runtime/engine/loops.pxi"
 
 
 def initial_state(p):

@@ -16,7 +16,7 @@ What is typed here from the physics, not taken from camdyn:
 
 ``p`` is a dict of the generated model's parameter values by manifest name: ``Result.params``
 (Omega, d, r_b, r_r, S_T, beta_r, a_rod, E, rho, m_r, J_r, rayleigh, L_g, ...), or
-``camdyn.runtime.beam.parameters(case)`` for the dwell functions, which need no beta_r, L_g.
+``camdyn.runtime.targets.beam.parameters(case)`` for the dwell functions, which need no beta_r, L_g.
 """
 import math
 

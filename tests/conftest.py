@@ -9,7 +9,7 @@ for _var in ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"):
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
-from camdyn.thesis.checks.spine import residual_of  # noqa: F401  (cached runs, shared with the checks)
+from camdyn.thesis.checks.spine_checks import residual_of  # noqa: F401  (cached runs, shared with the checks)
 
 
 @pytest.fixture

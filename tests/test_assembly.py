@@ -11,8 +11,8 @@ import pytest
 import scipy.linalg
 import sympy as sp
 
-from camdyn.thesis import assembly as A
-from camdyn.thesis import elements as E
+from camdyn.thesis.theory import assembly as A
+from camdyn.thesis.theory import elements as E
 
 # a plausible steel mechanism in SI units (only for the numerical properties below)
 VALUES = {

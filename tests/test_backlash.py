@@ -32,8 +32,8 @@ import math
 import numpy as np
 import pytest
 
-from camdyn.runtime.models import load
-from camdyn.runtime.simulate import Simulator
+from camdyn.runtime.core.models import load
+from camdyn.runtime.core.simulator import Simulator
 
 MODEL = "dynacam_axial_ideal_backlash_groove_shafty_shaftz"
 

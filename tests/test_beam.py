@@ -1,9 +1,9 @@
-"""Rayleigh-beam follower (issue 5): solver checks (item 3) and the paper's results (item 4).
+"""Rayleigh-beam follower of the paper: solver checks and the paper's results.
 
 Paper: "Transverse vibration analysis of a translating roller-follower cam using cycloidal
 profile for RDFD motion" (cited as "paper (n)"; README, "Rayleigh-beam follower").  Model:
 derive/models/beam.py, generated modules camdyn.generated.beam1..beam6, runtime
-camdyn.runtime.beam.
+camdyn.runtime.targets.beam.
 
 The references are independent of the generated code: the cycloidal RDFD motion typed from
 paper (1) into NumPy (``rdfd``), the equations of ``derive`` lambdified and solved with
@@ -21,10 +21,11 @@ import pytest
 import scipy.linalg as sla
 from scipy.optimize import curve_fit
 
-from camdyn.runtime import _integrate, beam
-from camdyn.runtime.errors import CamdynInputError
-from camdyn.runtime.laws import choose
-from camdyn.runtime.models import load
+from camdyn.runtime.engine import driver
+from camdyn.runtime.targets import beam
+from camdyn.runtime.core.errors import CamdynInputError
+from camdyn.runtime.core.laws import choose
+from camdyn.runtime.core.models import load
 
 from . import beam_reference
 
@@ -160,8 +161,8 @@ def _generated(p, t, Y):
     law = choose("cycloidal")
     codes, pars = np.array([law.code], dtype=np.intc), np.array([law.par])
     T = np.full(len(Y), t) if np.ndim(t) == 0 else np.asarray(t, dtype=float)
-    dy = _integrate.eval_rhs(model.capsule, p, codes, pars, T, Y)
-    out = _integrate.eval_outputs(model.capsule, p, codes, pars, T, Y)
+    dy = driver.eval_rhs(model.capsule, p, codes, pars, T, Y)
+    out = driver.eval_outputs(model.capsule, p, codes, pars, T, Y)
     on = model.output_names
     lam = out[:, [on.index("lambda1"), on.index("lambda2")]]
     return dy, np.column_stack([dy[:, 4:], lam])
@@ -252,7 +253,7 @@ def _phi_from_states(res, case):
 
 
 def test_constraint_residual_below_1e_8_m(default_runs):
-    """Issue 5, item 3: max |Phi| over one revolution < 1e-8 m.  Augmented (w_B = 2000 rad/s):
+    """max |Phi| over one revolution < 1e-8 m.  Augmented (w_B = 2000 rad/s):
     Phi computed here from the recorded states with (6), (7) and paper (1): 9.4e-16 m (Phi1),
     5.1e-16 m (Phi2).  Partitioned: the outputs at the recovered states 2.8e-17 m; the x_E,
     theta carried in the state (Newton's starting values) drift by 4.2e-15 m only.  (With
@@ -281,12 +282,12 @@ def test_formulations_give_the_same_tip_response(default_runs):
 
 # -- 4 (i). rigid limit ------------------------------------------------------------------------
 
-# E x 1e4, not the issue's 1e6: the step of the explicit DP54 is stability-limited by the
+# E x 1e4, not 1e6: the step of the explicit DP54 is stability-limited by the
 # stiffest Ritz mode (~ sqrt(E)); one revolution takes 5.5e5 steps (5 s) at E x 1e4, and
 # ~3.9e6 steps (~40 s CPU) at E x 1e6 (measured over 1/50 revolution).  rtol = 1e-6 since
 # the step count does not depend on it there.
 RIGID = replace(DEFAULT, E=DEFAULT.E * 1e4, roller_inertia=0.0, rtol=1e-6)
-# the issue's E x 1e6 with one assumed mode: its only transverse frequency rises by 1e3 to
+# E x 1e6 with one assumed mode: its only transverse frequency rises by 1e3 to
 # ~0.8 MHz, 1.2e5 steps (0.4 s) a revolution
 RIGID_1E6 = replace(DEFAULT, modes=1, E=DEFAULT.E * 1e6, roller_inertia=0.0, rtol=1e-6)
 
@@ -389,7 +390,7 @@ def test_frozen_dwell_frequency_is_the_tip_mass_cantilever(modes, measured):
     """Frozen outer dwell with rayleigh=False, roller_inertia=0 (Euler-Bernoulli rod, L =
     free_length_raised = 66 mm, tip mass m_r, I = pi a^4/4): beam.dwell_frequency against
     cantilever_tip_mass_frequency, 676.282322 Hz.  Measured relative excess: N = 3 +8.15e-6,
-    N = 4 +5.9e-8 (Ritz: from above).  Asserted: 0.5 % (issue), below 2x the measured value,
+    N = 4 +5.9e-8 (Ritz: from above).  Asserted: 0.5 %, below 2x the measured value,
     and not below the exact value by more than 1e-9.  The same frequency equals NumPy's
     Rayleigh-Ritz with the model's N polynomials (x/d)^2 .. (x/d)^(N+1): measured 7e-13
     (N = 3), 2e-12 (N = 4), asserted 1e-9 -- the generated M and stiffness in the dwell are the
@@ -631,7 +632,7 @@ def test_initial_state_is_consistent_with_the_constraints():
     h = 1e-7
 
     def phi(t, yy):
-        return _integrate.eval_outputs(m.capsule, p, codes, pars, np.array([t]), yy[None, :])[0][phis]
+        return driver.eval_outputs(m.capsule, p, codes, pars, np.array([t]), yy[None, :])[0][phis]
 
     assert np.abs(phi(0.0, y)).max() < 1e-15
     yp, ym = y.copy(), y.copy()

@@ -1,4 +1,4 @@
-"""The Rayleigh-beam follower's physics checked from outside its derivation (issue 11, item 4).
+"""The Rayleigh-beam follower's physics checked from outside its derivation.
 
 Everything on the reference side is NumPy typed from the physics in ``tests/beam_reference.py``
 (no SymPy, no generated code): the energies the model declares (derive/models/beam.py, paper
@@ -40,9 +40,9 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from camdyn.runtime import beam
-from camdyn.runtime.models import load
-from camdyn.runtime.simulate import Simulator
+from camdyn.runtime.targets import beam
+from camdyn.runtime.core.models import load
+from camdyn.runtime.core.simulator import Simulator
 
 from . import beam_reference as ref
 

@@ -1,4 +1,4 @@
-"""Grooved disk cam of the Rayleigh-beam paper (issue 5, item 1): motion, envelope, curvature.
+"""Grooved disk cam of the Rayleigh-beam paper: motion, envelope, curvature.
 
 The references below are computed independently of ``camdyn.derive.beam.geometry``:
 paper (1) typed into NumPy, the laws' own ``CamLaw.numeric`` scaled by hand, the
@@ -274,10 +274,10 @@ def test_wall_curvature_is_rho_p_minus_plus_r_r():
         assert np.abs(1 / rho_w[flat] - 1 / (rho[flat] + d)).max() < 1e-12
 
 
-# -- undercut (camdyn.runtime.profile: NumPy on the compiled laws) ----------------------------
+# -- undercut (camdyn.runtime.cam.motion: NumPy on the compiled laws) ----------------------------
 
 def _runtime_cam(geom, law="cycloidal"):
-    from camdyn.runtime.profile import RDFD
+    from camdyn.runtime.cam.motion import RDFD
 
     return RDFD.of(geom.S_T, geom.r_b, geom.r_r, law, beta_rise=float(geom.beta_rise),
                    dwell_outer=float(geom.dwell_outer), beta_fall=float(geom.beta_fall))
@@ -315,7 +315,7 @@ def test_paper_cam_has_no_undercut():
 
 def test_tiny_base_circle_big_rise_is_undercut_on_the_concave_parts():
     """r_b = 2 mm, S_T = 22 mm, r_r = 5 mm: the outer wall fails where the rise starts and the fall ends."""
-    from camdyn.runtime.profile import UndercutError
+    from camdyn.runtime.cam.motion import UndercutError
 
     geom = g.CamGeometry(S_T=0.022, r_b=0.002, r_r=0.005)
     u = _runtime_cam(geom).undercut()
@@ -328,7 +328,7 @@ def test_tiny_base_circle_big_rise_is_undercut_on_the_concave_parts():
 
 def test_fast_rise_undercuts_the_inner_wall_on_a_convex_part():
     """Rise and fall over pi/4: the end of the rise is convex with rho_p < r_r."""
-    from camdyn.runtime.profile import UndercutError
+    from camdyn.runtime.cam.motion import UndercutError
 
     geom = g.CamGeometry(S_T=0.022, r_b=0.002, r_r=0.005, beta_rise=pi / 4, beta_fall=pi / 4)
     u = _runtime_cam(geom).undercut()

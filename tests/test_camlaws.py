@@ -5,10 +5,10 @@ import sympy as sp
 
 from camdyn.derive import camlaws
 from camdyn.derive.camlaws import LAWS, T, theta
-from camdyn.runtime import laws as rt_laws
-from camdyn.runtime.errors import CamdynInputError
+from camdyn.runtime.core import laws as rt_laws
+from camdyn.runtime.core.errors import CamdynInputError
 
-from camdyn.thesis.checks import matches_printed
+from camdyn.thesis.checks.check import matches_printed
 
 pi = sp.pi
 

@@ -2,9 +2,10 @@
 import numpy as np
 import pytest
 
-from camdyn.thesis import closed_forms as cf
-from camdyn.runtime.residual import extreme, residual
-from camdyn.runtime.simulate import simulate
+from camdyn.thesis.theory import numeric as cf
+from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.measure.extremes import extreme
+from camdyn.runtime.core.simulator import simulate
 
 from .conftest import residual_of
 
@@ -79,7 +80,7 @@ def test_approximation_4_22_is_3_5_with_tau_stretched():
     0.7, where the factor 1/(1 - tau^2 (1 + xi Fa)) matters most (measured 4e-16)."""
     import sympy as sp
 
-    from camdyn.thesis import theory as th
+    from camdyn.thesis.theory import forms as th
 
     stretched = th.U0.subs(th.tau, th.tau * sp.sqrt(1 + th.xi * th.Fa))
     assert sp.simplify(th.U0_approx - stretched) == 0

@@ -6,12 +6,12 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from camdyn.thesis import equivalent as eq
-from camdyn.thesis import closed_forms as cf
-from camdyn.thesis.checks import camshaft2 as c2
-from camdyn.thesis.checks import matches_printed
-from camdyn.runtime.residual import residual
-from camdyn.runtime.simulate import simulate
+from camdyn.thesis.theory import equivalent as eq
+from camdyn.thesis.theory import numeric as cf
+from camdyn.thesis.checks import camshaft2_checks as c2
+from camdyn.thesis.checks.check import matches_printed
+from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.core.simulator import simulate
 
 
 # -- the frozen system (sec. 5.5.7) ----------------------------------------------------------------
@@ -105,7 +105,7 @@ def test_sec_5_5_5_wind_up_at_T_0_68():
     camdyn puts the largest |T - B| of the rise at T = 0.682, the instant printed, but its size is
     0.0174 beta_m (1.7 %), a tenth of the printed 17 %; the independent scipy integration gives the
     same 0.0174.  Perhaps the scan lost a decimal point ("1.7 %"); the size is not asserted against
-    the thesis (see thesis/checks/camshaft2.py, ch5.sec5_5_5.windup_time)."""
+    the thesis (see thesis/checks/camshaft2_checks.py, ch5.sec5_5_5.windup_time)."""
     size, instant = c2.windup_extreme(**c2.FIG_5_6)
     assert matches_printed(instant, "0.68")
     T = np.linspace(0.6, 0.76, 16001)
@@ -131,7 +131,7 @@ def test_fv_to_zero_is_the_one_dof_model(k):
 
 def test_fv_to_zero_table_3_I():
     """Sec. 5.7 (2): "the characteristic Fv = 0 agrees with table 3-I", to the printed digits, for
-    the rows whose printed values are not misprints (thesis/checks/spine.py)."""
+    the rows whose printed values are not misprints (thesis/checks/spine_checks.py)."""
     for k, name, printed in ((9, "U0", "3.75e-4"), (9, "U0dd", "1.34"), (3, "U0dd", "3.91"),
                              (2, "U0", "2.43e-2"), (2, "U0dd", "5.98")):
         value = getattr(c2.residual2(2 / (2 * k + 1), 1.0, c2.FV_ZERO), name)
@@ -201,7 +201,7 @@ def test_thesis_scheme_step_change_sec_5_4():
     1.9 %" (sec. 5.4).  The thesis does not say where; camdyn's "koster" method (mid-step
     acceleration held constant) with dT = 0.1 and 0.01 min(tau, tau_b) over tau = 0.07 .. 0.25,
     Fa = 0.5 .. 2, Fv = 0.7 .. 7.5 (table 5-I) changes U0 by 1.4 % (median): within a factor 2."""
-    assert 0.019 / 2 <= c2._step_change_median() <= 0.019 * 2
+    assert 0.019 / 2 <= c2.step_change_median() <= 0.019 * 2
 
 
 def test_thesis_scheme_agrees_with_dp54_at_fine_step():

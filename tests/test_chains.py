@@ -3,7 +3,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from camdyn.thesis import chains
+from camdyn.thesis.checks.chains_checks import simulated_modal_amplitudes
+from camdyn.thesis.theory import chains
 
 
 @pytest.mark.parametrize("n", [1, 2, 3, 4, 5])
@@ -40,7 +41,7 @@ def test_compiled_chain_splits_into_one_dof_systems(tau1, output):
     """The residual amplitude of each mode of the compiled chain3 model equals the one-DOF
     law (3.5) weighted by its partial-fraction gain (3.20), to 1e-6: the modal picture of
     sec. 3.7.3 holds for the generated equations."""
-    sim = chains.simulated_modal_amplitudes(tau1, output)
+    sim = simulated_modal_amplitudes(tau1, output)
     pred = chains.predicted_modal_amplitudes(tau1, output)
     np.testing.assert_allclose(sim, pred, rtol=1e-6)
 
@@ -48,6 +49,6 @@ def test_compiled_chain_splits_into_one_dof_systems(tau1, output):
 def test_lowest_mode_dominates_unequal_chain():
     """A heavy output mass (m3 = 10, the usual case, sec. 3.7.3) makes the lowest mode even
     more dominant than in the unit chain."""
-    unit = chains.simulated_modal_amplitudes(2 / 7, 2)
-    heavy = chains.simulated_modal_amplitudes(2 / 7, 2, masses=(1, 1, 10))
+    unit = simulated_modal_amplitudes(2 / 7, 2)
+    heavy = simulated_modal_amplitudes(2 / 7, 2, masses=(1, 1, 10))
     assert heavy[0] / heavy.sum() > unit[0] / unit.sum() > 0.99

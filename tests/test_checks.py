@@ -1,6 +1,6 @@
 """The registry behind `camdyn check`: every comparison with the thesis must pass.
 
-Each check carries its thesis reference and tolerance (camdyn/thesis/checks);
+Each check carries its thesis reference and tolerance (camdyn/thesis/checks/);
 printed values shown to be misprints pass only while they are *not* reproduced.
 """
 import json
@@ -9,9 +9,10 @@ import sys
 
 import pytest
 
-from camdyn.thesis import checks
+from camdyn.thesis.checks import check as checks
+from camdyn.thesis.checks import suite
 
-REGISTRY = checks.registry()
+REGISTRY = suite.registry()
 
 
 @pytest.mark.parametrize("check", REGISTRY, ids=[c.key for c in REGISTRY])

@@ -1,4 +1,4 @@
-"""`camdyn beam-follower` (issue 5): the JSON, the table, the figures, and bad input refused
+"""`camdyn beam-follower`: the JSON, the table, the figures, and bad input refused
 with one line naming the flag, status 2.  Runs in-process through cli.main, short runs."""
 import json
 import math
@@ -9,7 +9,8 @@ from pathlib import Path
 
 import pytest
 
-from camdyn.runtime import beam, cli
+from camdyn.runtime.targets import beam
+from camdyn.runtime import cli
 
 SHORT = ["--revolutions", "0.25"]   # the rise and the start of the outer dwell
 
@@ -31,12 +32,14 @@ def run_json(capsys, *args):
 
 
 def test_help_defaults_are_those_of_the_case(capsys):
-    """The help quotes beam.Case's own defaults (one home: runtime/beam_case.py), every flag is
+    """The help quotes beam.Case's own defaults (one home: runtime/targets/beam_case.py), every flag is
     a field of the case, and N runs to the largest beam<N> that camdyn derive declares."""
     from camdyn.derive.models import beam as declared
 
     case = beam.Case()
-    assert set(cli._BEAM_FLAGS) <= {f.name for f in fields(beam.Case)}
+    from camdyn.runtime.cli import beam_follower
+
+    assert set(beam_follower.FLAGS) <= {f.name for f in fields(beam.Case)}
     assert beam.N_MAX == declared.N_MAX
     rc, out, _ = run_cli(capsys, "--help")
     assert rc == 0

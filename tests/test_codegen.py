@@ -10,13 +10,13 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from camdyn.derive import camlaws, codegen, generate
+from camdyn.derive import camlaws, emit, generate, render
 from camdyn.derive.lagrange import derive
 from camdyn.derive.model import CamFunction
 from camdyn.derive.models import REGISTRY
-from camdyn.runtime import _integrate
-from camdyn.runtime import laws as rt_laws
-from camdyn.runtime.models import load
+from camdyn.runtime.engine import driver
+from camdyn.runtime.core import laws as rt_laws
+from camdyn.runtime.core.models import load
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -98,8 +98,8 @@ def test_generated_equals_lambdify(model_name, law_key, rng):
         em = np.array([rng.integers(len(m.values)) for m in model.modes], dtype=np.intc)
         y = Y[k:k + 1]
         tk = t[k:k + 1].copy()
-        got_dy.append(_integrate.eval_rhs(cm.capsule, p, codes, pars, tk, y, element_modes=em)[0])
-        got_out.append(_integrate.eval_outputs(cm.capsule, p, codes, pars, tk, y, element_modes=em)[0])
+        got_dy.append(driver.eval_rhs(cm.capsule, p, codes, pars, tk, y, element_modes=em)[0])
+        got_out.append(driver.eval_outputs(cm.capsule, p, codes, pars, tk, y, element_modes=em)[0])
         args = [t[k], *Y[k], *p, *em]
         ref_dy.append(np.array(f_dy(*args), dtype=float))
         ref_out.append(np.array(f_out(*args), dtype=float))
@@ -149,7 +149,7 @@ def derived(monkeypatch):
     """Names of the units derived (not merely key-checked) by generate.check/write, which
     run in this process (workers=1) so that the spy and monkeypatched declarations hold."""
     calls = []
-    render_model, render_camlaws = codegen.render_model, codegen.render_camlaws
+    render_model, render_camlaws = render.render_model, render.render_camlaws
 
     def spy_model(model, source):
         calls.append(model.name)
@@ -164,8 +164,8 @@ def derived(monkeypatch):
 
     memo = []
 
-    monkeypatch.setattr(codegen, "render_model", spy_model)
-    monkeypatch.setattr(codegen, "render_camlaws", spy_camlaws)
+    monkeypatch.setattr(render, "render_model", spy_model)
+    monkeypatch.setattr(render, "render_camlaws", spy_camlaws)
     return calls
 
 
@@ -242,8 +242,8 @@ def test_full_derives_everything_and_sees_what_the_key_does_not(tmp_path, derive
     out = _copy_generated(tmp_path, only)
     assert generate.check(out, only, full=True, workers=1) == []
     assert sorted(derived) == ["camlaws", "camshaft1"]
-    render = codegen.render_model
-    monkeypatch.setattr(codegen, "render_model", lambda m, s: render(m, s).replace("_k0", "_k9"))
+    render_model = render.render_model
+    monkeypatch.setattr(render, "render_model", lambda m, s: render_model(m, s).replace("_k0", "_k9"))
     assert generate.check(out, only, workers=1) == []
     assert generate.check(out, only, full=True, workers=1)[0] == (
         "stale: camshaft1.pyx: differs from a fresh derivation of the same inputs")
@@ -287,7 +287,7 @@ def test_check_names_files_no_model_generates(tmp_path):
 
 
 def test_templates_are_strict():
-    env = codegen._env()
+    env = emit.environment()
     with pytest.raises(jinja2.UndefinedError):
         env.get_template("model.pyx.j2").render(name="x")
 

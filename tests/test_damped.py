@@ -1,5 +1,5 @@
 """Residual vibration of the damped one-DOF model against its closed-form solution
-(issue 11, item 2).
+(thesis (6.47), (3.7)).
 
 The one-DOF model (3.1) with relative damping q, the damper d = 2 q sqrt(m c) (6.47)
 in parallel with the spring, reads in u = X - H (w = 2 pi/tau, dots d/dT):
@@ -21,9 +21,10 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from camdyn.thesis.checks import matches_printed
-from camdyn.runtime.residual import extreme, residual
-from camdyn.runtime.simulate import simulate
+from camdyn.thesis.checks.check import matches_printed
+from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.measure.extremes import extreme
+from camdyn.runtime.core.simulator import simulate
 
 OMEGA = 2 * math.pi   # circular frequency of the cycloid's acceleration, in 1/t_m
 T_END = 3.0

@@ -42,7 +42,7 @@ def test_one_dof_closed_form_3_4a_solves_the_derived_equation():
     """(3.4a) with the cycloid satisfies the derived equation and starts from rest; (3.4b)
     continues it after T = 1 with matching position and velocity."""
     from camdyn.derive import camlaws
-    from camdyn.thesis import theory
+    from camdyn.thesis.theory import forms
 
     m = one_dof.build()
     T, tau = m.time, one_dof.tau.symbol
@@ -50,12 +50,12 @@ def test_one_dof_closed_form_3_4a_solves_the_derived_equation():
     cyc = camlaws.LAWS["cycloidal"].rise[0]
     Xsym = one_dof.X(T)
     Hf = one_dof.H(T)
-    X_rise = theory.X_rise.subs(theory.tau, tau).subs(theory.T, T)
+    X_rise = forms.X_rise.subs(forms.tau, tau).subs(forms.T, T)
     rise = acc.subs(Hf, cyc).subs(Xsym, X_rise)
     assert sp.simplify(X_rise.diff(T, 2) - rise) == 0
     assert sp.simplify(X_rise.subs(T, 0)) == 0
     assert sp.simplify(X_rise.diff(T).subs(T, 0)) == 0
-    X_dwell = 1 + theory.u_dwell.subs(theory.tau, tau).subs(theory.T, T)
+    X_dwell = 1 + forms.u_dwell.subs(forms.tau, tau).subs(forms.T, T)
     dwell = acc.subs(Hf, 1).subs(Xsym, X_dwell)
     assert sp.simplify(X_dwell.diff(T, 2) - dwell) == 0
     assert sp.simplify(sp.expand_trig(X_dwell.subs(T, 1) - X_rise.subs(T, 1))) == 0
@@ -64,15 +64,15 @@ def test_one_dof_closed_form_3_4a_solves_the_derived_equation():
 
 def test_3_6_is_3_5_times_omega_squared():
     """The residual motion is harmonic: U0'' = (2 pi/tau)^2 U0, (3.5) and (3.6)."""
-    from camdyn.thesis import theory
+    from camdyn.thesis.theory import forms
 
-    assert sp.simplify(theory.U0dd - (2 * pi / theory.tau) ** 2 * theory.U0) == 0
+    assert sp.simplify(forms.U0dd - (2 * pi / forms.tau) ** 2 * forms.U0) == 0
 
 
 def test_stiffness_dip_4_19_from_the_model():
     """c = c_c/(1 + H'^2 Fa) (4.18): max over min for the cycloid (H'max = 2) is 1 + 4 Fa."""
     from camdyn.derive import camlaws
-    from camdyn.thesis import theory
+    from camdyn.thesis.theory import forms
 
     m = camshaft1.build()
     T = m.time
@@ -83,7 +83,7 @@ def test_stiffness_dip_4_19_from_the_model():
     crit = sp.solve(sp.diff(Hd, T), T)
     c_min = min((c_of_T.subs(T, t) for t in crit if 0 < t < 1), key=lambda e: e.subs(camshaft1.Fa.symbol, 1))
     dip = sp.simplify(c_max / c_min)
-    assert sp.simplify(dip - theory.stiffness_dip.subs(theory.Fa, camshaft1.Fa.symbol)) == 0
+    assert sp.simplify(dip - forms.stiffness_dip.subs(forms.Fa, camshaft1.Fa.symbol)) == 0
 
 
 def test_averaged_stiffness_4_21():

@@ -1,4 +1,4 @@
-"""`camdyn design`: the thesis's design method (secs 8.3, 8.5, App. 7) - thesis/design.py.
+"""`camdyn design`: the thesis's design method (secs 8.3, 8.5, App. 7) - thesis/design/.
 
 App. 7's two worked examples go through `design` as a designer would give them (SI, at the
 output member) and must reproduce the printed figures to the printed digits; the limits it
@@ -15,21 +15,25 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq, minimize_scalar
 
-from camdyn.runtime import closed_forms as cf
+from camdyn.runtime.measure import references as cf
 from camdyn.runtime.cli import main
-from camdyn.runtime.errors import CamdynInputError
-from camdyn.runtime.residual import residual
-from camdyn.runtime.simulate import simulate
-from camdyn.thesis import design as ds
-from camdyn.thesis.checks import matches_printed
-from camdyn.thesis.mechanisms import INDEXING, SPRING_LOADED
+from camdyn.runtime.core.errors import CamdynInputError
+from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.core.simulator import simulate
+from camdyn.thesis.design.check_run import least_model
+from camdyn.thesis.design.graphs import PER_DIP, Graphs
+from camdyn.thesis.design.limits import Requirement, largest_Fa, largest_tau
+from camdyn.thesis.design.machine import machine
+from camdyn.thesis.design.method import chart_window, design
+from camdyn.thesis.checks.check import matches_printed
+from camdyn.thesis.theory.mechanisms import INDEXING, SPRING_LOADED
 
 
 def _indexing(**kw):
     """App. 7 A.7.2 as a designer gives it: stroke at R_red (i h_m), beta_m and 60 r.p.m.,
     m = 45 kg (fig. 7.14), c_c = 3.65e6 N/m (5), 1/c_tan = 6.365e-6 m/N (10), R_1/2 = 85 mm."""
     m = INDEXING
-    return ds.design(stroke=m.i.value * m.h_m.value, cam_angle_rad=m.beta_m.value,
+    return design(stroke=m.i.value * m.h_m.value, cam_angle_rad=m.beta_m.value,
                      speed=m.speed.value, mass=45.0, stiffness=3.65e6, c_tan=1 / m.flex_tan.value,
                      pitch_radius=m.R_half.value, ratio=m.i.value, **kw)
 
@@ -38,7 +42,7 @@ def _follower(c_c=SPRING_LOADED.c_c.value, **kw):
     """App. 7 A.7.3.1: stroke i h_m, beta_m = 0.436 rad at 47.5 r.p.m., m = 1.46 kg (6),
     c_c (5), 1/c_tan = 26.14e-6 m/N (10), R_1/2 = 75 mm, i = 2.06 (2)."""
     m = SPRING_LOADED
-    return ds.design(stroke=m.i.value * m.h_m.value, cam_angle_rad=m.beta_m.value,
+    return design(stroke=m.i.value * m.h_m.value, cam_angle_rad=m.beta_m.value,
                      speed=m.speed.value, mass=m.m.value, stiffness=c_c,
                      c_tan=1 / m.flex_tan.value, pitch_radius=m.R_half.value, ratio=m.i.value,
                      **kw)
@@ -56,12 +60,12 @@ def test_app7_indexing_printed_figures():
 def test_app7_follower_printed_figures():
     """A.7.3.1 (7) T_e = 1.24e-2 s, (8) t_m = 0.088 s, (9) tau = 0.141, (11) tan alpha_me = 0.458
     (0.4587, truncated as printed) with c_c = 0.376e6 N/m (5); (12) Fa = 2.04 follows from the
-    0.37e6 N/m of table 7-I and fig. A.7.7 (0.376e6 gives 2.07: thesis/checks/examples.py)."""
+    0.37e6 N/m of table 7-I and fig. A.7.7 (0.376e6 gives 2.07: thesis/checks/examples_checks.py)."""
     d = _follower(check=False)["machine"]
     p = SPRING_LOADED.printed
     for key in ("T_e", "t_m", "tau", "tan_alpha_me"):
         assert matches_printed(d[key], p[key].text), (key, d[key], p[key].text)
-    assert matches_printed(d["Fa"], "2.07")          # as thesis/checks/examples.py notes
+    assert matches_printed(d["Fa"], "2.07")          # as thesis/checks/examples_checks.py notes
     table = _follower(c_c=SPRING_LOADED.c_c_table.value, check=False)["machine"]
     assert matches_printed(table["Fa"], p["Fa"].text)
 
@@ -115,7 +119,7 @@ def test_largest_tau_from_a_machine_below_the_search_range():
     """A machine at tau = 0.01 < TAU_MIN (accepted input) raised an IndexError: the bracket
     [tau/1.5, 1.5 tau] clipped to TAU_MIN was empty.  The search now starts at TAU_MIN and
     finds the same largest tau as from tau = 0.12 (the closed-form envelope of (3.5), 1e-5)."""
-    lt = ds.largest_tau(ds.Graphs(), 0.0, 0.01, ds.Requirement(0.05, 1e-4), T_e=0.001)
+    lt = largest_tau(Graphs(), 0.0, 0.01, Requirement(0.05, 1e-4), T_e=0.001)
     assert lt["tau_max"] == pytest.approx(_closed_form_largest_tau(), rel=1e-5)
 
 
@@ -126,7 +130,7 @@ def test_largest_tau_at_Fa0_against_closed_form_envelope():
     the stated error.  The check run takes the one-DOF model (Fa = 0) and gives U0 = (3.5) at
     tau = 0.12 to 1e-7."""
     root = _closed_form_largest_tau()
-    d = ds.design(stroke=0.05, tau=0.12, Fa=0.0, rise_time=0.1, accuracy=1e-4)
+    d = design(stroke=0.05, tau=0.12, Fa=0.0, rise_time=0.1, accuracy=1e-4)
     lt = d["largest_tau"]
     assert lt["tau_max"] == pytest.approx(root, rel=1e-5)
     assert abs(lt["tau_max"] - root) <= 3 * lt["tau_max_error"]
@@ -142,9 +146,9 @@ def test_sec_8_2_8_runs_25_percent_faster():
     25 % faster (at tau = 0.2 and Fa = 0.8)'.  The largest tau at Fa = 0.8 for that
     requirement: 0.2 to the printed digit, the speed factor 1.25 to 0.02 (measured 0.2024,
     1.265)."""
-    g = ds.Graphs()
-    allowed = g.at(0.16, 1.64, per_dip=2 * ds.PER_DIP)[0]
-    lt = ds.largest_tau(g, 0.8, 0.16, ds.Requirement(1.0, allowed), T_e=0.016)
+    g = Graphs()
+    allowed = g.at(0.16, 1.64, per_dip=2 * PER_DIP)[0]
+    lt = largest_tau(g, 0.8, 0.16, Requirement(1.0, allowed), T_e=0.016)
     assert lt["tau_max"] == pytest.approx(0.2, abs=0.005)
     assert lt["tau_max"] / 0.16 == pytest.approx(1.25, abs=0.02)
     assert not lt["beyond_last_maximum"]
@@ -155,9 +159,9 @@ def test_sec_8_4_halving_Fa_gains_a_factor_3():
     decrease in vibration' as the modified sine's factor 3, read from fig. 4.11a by eye.  The
     largest Fa for a third of the envelope's u0: 1.02 within 15 % (measured 1.155, a factor
     1.77; the thesis's graph reading is coarse)."""
-    g = ds.Graphs()
-    u0 = g.at(0.141, 2.04, per_dip=2 * ds.PER_DIP)[0]
-    lf = ds.largest_Fa(g, 0.141, ds.Requirement(1.0, u0 / 3), None)
+    g = Graphs()
+    u0 = g.at(0.141, 2.04, per_dip=2 * PER_DIP)[0]
+    lf = largest_Fa(g, 0.141, Requirement(1.0, u0 / 3), None)
     assert lf["Fa_max"] == pytest.approx(2.04 / 2, rel=0.15)
 
 
@@ -182,7 +186,7 @@ def test_rules_of_sec_8_5_flagged():
     Fa = 0.2 neither; sec. 8.2.7 (3): tan alpha_me above 1/2; (8.4): a slip limit above the
     rated slip; a requirement not met names (8.5)'s remedies."""
     def statuses(**kw):
-        d = ds.design(stroke=0.02, tau=0.2, check=False, **kw)
+        d = design(stroke=0.02, tau=0.2, check=False, **kw)
         return {(r["rule"], r["status"]) for r in d["rules"]}, d
 
     s, _ = statuses(Fa=0.5, common_shaft=True)
@@ -203,9 +207,9 @@ def test_rules_of_sec_8_5_flagged():
 
 def test_least_model():
     """The one-DOF model stands in when Fa changes the envelope by less than 2 %."""
-    assert ds.least_model(1.0, 1.0, 0.0)[0] == "one-dof"
-    assert ds.least_model(1.01, 1.0, 0.01)[0] == "one-dof"
-    assert ds.least_model(1.5, 1.0, 0.5)[0] == "camshaft1"
+    assert least_model(1.0, 1.0, 0.0)[0] == "one-dof"
+    assert least_model(1.01, 1.0, 0.01)[0] == "one-dof"
+    assert least_model(1.5, 1.0, 0.5)[0] == "camshaft1"
 
 
 def test_cli_json(capsys, tmp_path):
@@ -258,7 +262,7 @@ def test_cli_bad_input(capsys, argv, flag):
 
 def test_stroke_must_be_positive():
     with pytest.raises(CamdynInputError, match="--stroke"):
-        ds.machine(stroke=-1.0, tau=0.1, Fa=0.0)
+        machine(stroke=-1.0, tau=0.1, Fa=0.0)
 
 
 def test_envelope_is_read_through_the_maxima_not_in_a_dip():
@@ -272,7 +276,7 @@ def test_envelope_is_read_through_the_maxima_not_in_a_dip():
     (t1, v1), (t2, v2) = lobe(7), lobe(6)
     expected = math.exp(np.interp(1 / 7, [t1, t2], [math.log(v1), math.log(v2)]))
     assert cf.U0(1 / 7) < 1e-12
-    U0, _ = ds.Graphs().at(1 / 7, 0.0, per_dip=2 * ds.PER_DIP)
+    U0, _ = Graphs().at(1 / 7, 0.0, per_dip=2 * PER_DIP)
     assert U0 == pytest.approx(expected, rel=1e-4)
 
 
@@ -282,14 +286,14 @@ def test_residual_acceleration_limit():
     tau_max read anew, U0'' h_m' tau^2/T_e^2 = 20 m/s^2 to 1e-6 (sec. 3.3: x'' = X'' h_m'/t_m^2,
     t_m = T_e/tau); at this t_m instead, U0'' h_m'/t_m^2 = 20 m/s^2."""
     h, t_m, tau, Fa, a = 0.02, 0.1, 0.15, 0.3, 20.0
-    d = ds.design(stroke=h, tau=tau, Fa=Fa, rise_time=t_m, residual_acceleration=a, check=False)
+    d = design(stroke=h, tau=tau, Fa=Fa, rise_time=t_m, residual_acceleration=a, check=False)
     lt, le = d["largest_tau"], d["largest_T_e"]
     assert lt["limited_by"] == "residual acceleration"
-    g = ds.Graphs()
+    g = Graphs()
     T_e = tau * t_m
-    U2 = g.at(lt["tau_max"], Fa, per_dip=2 * ds.PER_DIP)[1]
+    U2 = g.at(lt["tau_max"], Fa, per_dip=2 * PER_DIP)[1]
     assert U2 * h * lt["tau_max"] ** 2 / T_e**2 == pytest.approx(a, rel=1e-6)
-    U2 = g.at(le["tau_max"], Fa, per_dip=2 * ds.PER_DIP)[1]
+    U2 = g.at(le["tau_max"], Fa, per_dip=2 * PER_DIP)[1]
     assert U2 * h / t_m**2 == pytest.approx(a, rel=1e-6)
     assert le["T_e_max"] == pytest.approx(le["tau_max"] * t_m, rel=1e-12)
 
@@ -298,7 +302,7 @@ def test_residual_acceleration_limit():
 def test_chart_window_holds_the_design_and_the_largest_tau(tau, tau_max):
     """The chart's tau window holds the design point and the largest tau, met or not (an
     unmet requirement at tau = 0.89 gave tau_max = 0.3126 outside the drawn 0.71-1.33)."""
-    x_lo, x_hi = ds.chart_window(tau, tau_max)
+    x_lo, x_hi = chart_window(tau, tau_max)
     for t in (tau, tau_max or tau):
         assert 1.0 / x_hi < t < 1.0 / x_lo
 
@@ -310,7 +314,7 @@ def test_envelope_past_the_last_maximum_holds_it():
     scalar search on (3.5), 1e-4) and the requirement is not met."""
     r = minimize_scalar(lambda t: -cf.U0(t), bounds=(1 / 3, 1 / 2), method="bounded",
                         options={"xatol": 1e-12})
-    d = ds.design(stroke=0.1, tau=0.47, Fa=0.0, rise_time=0.2, accuracy=2e-3, check=False)
+    d = design(stroke=0.1, tau=0.47, Fa=0.0, rise_time=0.2, accuracy=2e-3, check=False)
     assert d["envelope"]["U0"] == pytest.approx(-r.fun, rel=1e-4)
     assert d["largest_tau"]["tau_max"] < 0.47
     assert d["requirement"]["ratio"] > 1

@@ -9,8 +9,8 @@ import math
 import numpy as np
 import pytest
 
-from camdyn.runtime import dynacam, scene as scenes
-from camdyn.runtime.methods import DP54
+from camdyn.runtime.targets import dynacam, scene_files as scenes
+from camdyn.runtime.core.methods import DP54
 
 NOMINAL_MAX = 2 * math.pi      # cycloid: max |H''| = 2 pi (A.2.10)
 
@@ -98,7 +98,7 @@ def test_indexing_without_backlash_fig_7_15_and_impact_estimate(indexing):
     """Fig. 7.15: without backlash X'' = -7.4 at T = 0.68 (tolerance 5 %); Van der Hoek's
     estimate X''_(s=0) - U_sn'' (3.12), (3.16), (4.32) from that simulated value agrees with
     the simulation with backlash to 10 %, as the thesis concludes (sec. 7.4.4)."""
-    from camdyn.thesis import examples
+    from camdyn.thesis.theory import examples
 
     sc, s, res = indexing
     sc0 = scenes.without_backlash(sc)
@@ -121,7 +121,7 @@ def test_indexing_amplitude_grows_towards_T_1_without_damping(indexing):
     assert late > early
 
 
-# -- item 7: a reduced variant agrees with the full one with the dropped element made ideal ----
+# -- a reduced variant agrees with the full one with the dropped element made ideal ----
 def test_constant_speed_variant_is_the_stiff_motor_limit(spring_loaded):
     """radial_ideal_rigidgear_contact_shafty_shaftz_spring (no motor states) against radial_motor2_rigidgear_contact_shafty_shaftz_spring with a motor of huge inertia and torque
     slope (J_ma = 1e6 kg m^2, G_a = 1e9 N m s/rad: speed deviation M/G_a ~ 1e-8 rad/s): the
@@ -154,7 +154,7 @@ def test_backlash_variant_tends_to_the_backlash_free_one(indexing):
     assert diffs[1] < 0.01 < diffs[0]
 
 
-# -- item 5: the model comparison of sec. 8.2 (fig. 8.1a/b, 8.3a/b curves (4), (5), (6)) -----------
+# -- the model comparison of sec. 8.2 (fig. 8.1a/b, 8.3a/b curves (4), (5), (6)) -----------
 @pytest.fixture(scope="module")
 def comparison():
     """fig8_1a.toml (c_z' << c_x) and fig8_1b.toml (c_z' >> c_x): the 4-DOF run and the U0dd of
@@ -208,7 +208,7 @@ def test_one_dof_model_close_to_two_dof_at_high_Fv_sec_8_2_5(comparison, case):
     assert u["1dof"] / u["2dof"] == pytest.approx(1.0, abs=0.10)
 
 
-# -- item 5: squeeze, sec. 7.4.6 (fig. 7.11b against fig. 7.20) --------------------------------------
+# -- squeeze, sec. 7.4.6 (fig. 7.11b against fig. 7.20) --------------------------------------
 @pytest.fixture(scope="module")
 def squeeze():
     """indexing_squeeze.toml (squeeze films in gear and groove, fig. 7.19b damping) and the same
@@ -224,9 +224,9 @@ def squeeze():
 
 
 def test_squeeze_coefficients_of_the_scene_are_the_derived_ones():
-    """The scene file's V_T, V_R are camdyn.thesis.examples.indexing_squeeze's (6.6), (6.38), to
+    """The scene file's V_T, V_R are camdyn.thesis.theory.examples.indexing_squeeze's (6.6), (6.38), to
     the six digits written."""
-    from camdyn.thesis import examples
+    from camdyn.thesis.theory import examples
 
     p = scenes.load("indexing_squeeze").parameters
     sq = examples.indexing_squeeze()

@@ -1,4 +1,4 @@
-"""What runtime/dynacam.py makes of a run: initial state, time axis, mode switches, summary, figures.
+"""What runtime/targets/dynacam.py makes of a run: initial state, time axis, mode switches, summary, figures.
 
 Each quantity is checked against a hand computation on a scene small enough to have one:
 
@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize_scalar
 
-from camdyn.runtime import dynacam, scene as scenes
+from camdyn.runtime.targets import dynacam, dynacam_diagrams, scene_files as scenes
 
 T_START = -0.1
 # t_m = beta_m/w_s = 0.25 s, and beta_m w_s = 4: a time axis built with the product, or
@@ -157,7 +157,7 @@ def figures(tmp_path_factory):
     mp = pytest.MonkeyPatch()
     mp.setattr(plt, "close", lambda fig=None: kept.append(fig))
     try:
-        written = dynacam.plot(sc, res, s, out)
+        written = dynacam_diagrams.plot(sc, res, s, out)
     finally:
         mp.undo()
     yield out, written, dict(zip((Path(p).stem.split("one_dof_", 1)[1] for p in written), kept)), res
@@ -381,7 +381,7 @@ def test_full_turn_return_residuals_3_5_3_6():
     ({"upper_dwell": 30.0, "return": 40.0, "return_theta": 0.1}, "return_theta goes with"),
 ])
 def test_bad_turn_is_refused_naming_it(turn, words):
-    from camdyn.runtime.errors import CamdynInputError
+    from camdyn.runtime.core.errors import CamdynInputError
 
     with pytest.raises(CamdynInputError, match=words):
         _one_dof_turn(4.0, turn)

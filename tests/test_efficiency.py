@@ -1,4 +1,4 @@
-"""Step counts of the integration methods are guarded (issue 11, item 1).
+"""Step counts of the integration methods are guarded.
 
 Accuracy tests cannot see an integrator that is right but needlessly slow: a
 wrong coefficient of the DP54 error estimator (E3 = -71/16695 mistyped as
@@ -26,10 +26,10 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from camdyn.runtime import laws
-from camdyn.runtime.errors import SimulationError
-from camdyn.runtime.models import load
-from camdyn.runtime.simulate import Simulator
+from camdyn.runtime.core import laws
+from camdyn.runtime.core.errors import SimulationError
+from camdyn.runtime.core.models import load
+from camdyn.runtime.core.simulator import Simulator
 
 T_END = 3.0
 RTOLS = (1e-4, 1e-6, 1e-8, 1e-10)

@@ -1,4 +1,4 @@
-"""Element energies of thesis sec. 2.2.2 beyond the registry checks (thesis/checks/elements.py).
+"""Element energies of thesis sec. 2.2.2 beyond the registry checks (thesis/checks/elements_checks.py).
 
 Independent computations here: boundary conditions of the displacement
 functions, Clapeyron's theorem (V = work of the nodal force), numerical
@@ -14,8 +14,8 @@ import sympy as sp
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-from camdyn.thesis import elements as E
-from camdyn.thesis.checks.elements import omega_exact
+from camdyn.thesis.theory import elements as E
+from camdyn.thesis.checks.elements_checks import omega_exact
 
 x1, x2, h, x = sp.symbols("x1 x2 h x", real=True)
 EA, EI, GIp, l, m, J, r2, i, a = sp.symbols("EA EI GIp l m J r2 i a", positive=True)
@@ -165,7 +165,7 @@ def test_lagrange_equations_of_mass_spring_and_lever_force():
 
 def test_exact_cantilever_root():
     """First root of 1 + cos(bl) cosh(bl) = 0 is bl = 1.8751 (so omega = 3.516, printed 3.52)."""
-    from camdyn.thesis.checks.elements import cantilever_beta
+    from camdyn.thesis.checks.elements_checks import cantilever_beta
     b = cantilever_beta(0.0)
     assert 1 + math.cos(b) * math.cosh(b) == pytest.approx(0, abs=1e-12)
     assert b == pytest.approx(1.8751, abs=1e-4)

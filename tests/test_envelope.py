@@ -1,4 +1,4 @@
-"""Envelopes through the maxima of the response graphs (issue 14, item 2; thesis secs 3.5,
+"""Envelopes through the maxima of the response graphs (thesis secs 3.5,
 8.2.6, fig. 4.11), against the closed form (3.5) of the cycloidal rise on the one-DOF model,
 U0 = tau^3 |sin(pi/tau)| / (pi (1 - tau^2)), whose local maxima are found here independently
 by a bounded scalar search between its dips tau = 1/(k + 1) and 1/k."""
@@ -9,11 +9,11 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize_scalar
 
-from camdyn.runtime import closed_forms
-from camdyn.runtime.envelope import envelope, maxima, tau_grid
-from camdyn.runtime.report import main_job
-from camdyn.runtime.residual import residual
-from camdyn.runtime.simulate import simulate
+from camdyn.runtime.measure import references as closed_forms
+from camdyn.runtime.measure.envelope import envelope, maxima, tau_grid
+from camdyn.runtime.targets.camshaft1_study import StudyTarget
+from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.core.simulator import simulate
 
 
 def closed_form_maxima(tau_min, tau_max):
@@ -88,16 +88,21 @@ def test_simulated_graph_envelope_matches_the_closed_form():
 
 
 def test_report_writes_the_envelopes(tmp_path):
-    """`camdyn run`'s study writes envelopes.csv (U0, U0dd and their envelopes per Fa and tau)
-    and the maxima in report.json; the envelope never lies below its graph."""
+    """`camdyn run`'s study writes envelopes.csv (U0, U0dd and their envelopes per Fa and tau,
+    with U0's and U0dd's error estimates) and the maxima in report.json; the envelope never
+    lies below its graph, and every estimate is a number below 1e-6 of the largest figure at
+    rtol 1e-9 (at a dip of (3.5) the figure itself is near zero)."""
     scene = {"title": "small", "law": "cycloidal",
              "study": {"response": {"tau": 0.15, "Fa": [0.0]},
                        "graphs": {"tau_min": 0.1, "tau_max": 0.5, "n_tau": 40, "Fa": [0.0, 1.0]}},
              "run": {"method": "dp54", "rtol": 1e-9}}
-    main_job(scene, tmp_path, progress=False)
+    StudyTarget.from_scene(scene).study(tmp_path)
     rows = list(csv.DictReader((tmp_path / "envelopes.csv").open()))
     assert len(rows) == 80
+    top = {k: max(float(r[k]) for r in rows) for k in ("U0", "U0dd")}
     for r in rows:
+        assert 0 <= float(r["U0_error"]) <= 1e-6 * top["U0"]
+        assert 0 <= float(r["U0dd_error"]) <= 1e-6 * top["U0dd"]
         assert float(r["U0_envelope"]) >= float(r["U0"]) * (1 - 1e-12)
         assert float(r["U0dd_envelope"]) >= float(r["U0dd"]) * (1 - 1e-12)
     env = json.loads((tmp_path / "report.json").read_text())["envelopes"]

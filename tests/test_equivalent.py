@@ -1,5 +1,5 @@
 """Natural frequencies and equivalent masses of CAMSHAFT-2 (thesis secs 5.5.7, 5.6):
-the closed forms of thesis/equivalent.py against each other and against derivations
+the closed forms of thesis/theory/equivalent.py against each other and against derivations
 from the energies of the frozen system."""
 import math
 
@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from camdyn.thesis import equivalent as eq
-from camdyn.thesis.checks import matches_printed
+from camdyn.thesis.theory import equivalent as eq
+from camdyn.thesis.checks.check import matches_printed
 
 S, FA, FV, W2 = eq.slope, eq.Fa, eq.Fv, eq.w_ex2_sym
 

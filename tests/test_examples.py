@@ -1,5 +1,5 @@
 """The mechanisms of thesis ch. 7 / App. 7 and their worked examples, beyond the registry checks
-of camdyn/thesis/checks/examples.py: the data themselves, the readings taken, and where the
+of camdyn/thesis/checks/examples_checks.py: the data themselves, the readings taken, and where the
 thesis's printed chain rounds."""
 import itertools
 import math
@@ -9,11 +9,11 @@ import numpy as np
 import pytest
 from scipy.linalg import eigh
 
-from camdyn.thesis import examples as ex
-from camdyn.thesis import impact as im
-from camdyn.thesis.mechanisms import INDEXING, MECHANISMS, SPRING_LOADED, Quantity, quantities
-from camdyn.thesis.checks import matches_printed
-from camdyn.thesis.checks.examples import camshaft1_Xdd
+from camdyn.thesis.theory import examples as ex
+from camdyn.thesis.theory import impact as im
+from camdyn.thesis.theory.mechanisms import INDEXING, MECHANISMS, SPRING_LOADED, Quantity, quantities
+from camdyn.thesis.checks.check import matches_printed
+from camdyn.thesis.checks.examples_checks import camshaft1_Xdd
 
 # printed unit -> (SI unit of Quantity.value, factor)
 UNITS = {"mm": ("m", 1e-3), "m": ("m", 1.0), "kg": ("kg", 1.0), "N/m": ("N/m", 1.0),
@@ -151,7 +151,7 @@ def test_sec_7_4_4_with_camshaft1_instead_of_fig_7_15():
     of fig. 7.14, undamped) gives -7.63 at T = 0.68; with the full-precision impact amplitude the
     estimate is -16.24 against the printed -16.2.  The closeness is partly luck: CAMSHAFT-1 is
     3 % more negative, the unrounded U_sn'' 2 % smaller.  The 4-DOF run with backlash (fig.
-    7.11b: -14; fig. 7.16: -16) needs the DYNACAM model of a later issue."""
+    7.11b: -14; fig. 7.16: -16) is the DYNACAM scene's (tests/test_dynacam.py)."""
     x0 = camshaft1_Xdd(0.08, 3.34, 0.68)
     assert -7.8 < x0 < -7.5
     est = ex.indexing_impact(Xdd_s0=x0).Xdd
@@ -197,13 +197,13 @@ def test_contact_ratio_is_the_listing_expression():
 
 
 def test_squeeze_coefficients_by_the_thesis_reduction():
-    """V_T and V_R against (A.4.11) itself (camdyn.thesis.reduction.squeeze_force): the film
+    """V_T and V_R against (A.4.11) itself (camdyn.thesis.theory.reduction.squeeze_force): the film
     force at a gap and approach velocity, (a) at the worm wheel, turned into a camshaft torque,
     equals V_T dphi' dphi^(-3/2); (b) at the roller reduced by (2.55), (2.59), equals
     V_R w' s'^(-3/2).  To 1e-12."""
     import sympy as sp
 
-    from camdyn.thesis import reduction as R
+    from camdyn.thesis.theory import reduction as R
 
     sq = ex.indexing_squeeze()
     m = INDEXING

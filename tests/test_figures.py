@@ -1,16 +1,18 @@
-"""`camdyn figures` (issue 14, item 7): thesis/figures/ draws a subset into a temporary folder;
+"""`camdyn figures` (README, "Figures"): thesis/figures/ draws a subset into a temporary folder;
 the pictures are images, the index shows each figure's number, caption and statements, and
 each statement's value, computed now, agrees with the printed one."""
 import html
 import math
+import re
 
 import numpy as np
 import pytest
 
 from camdyn.runtime import cli
-from camdyn.runtime.errors import CamdynInputError
-from camdyn.thesis import figures as figs
-from camdyn.thesis import motor_theory as mt
+from camdyn.runtime.core.errors import CamdynInputError
+from camdyn.thesis.figures import build as figs
+from camdyn.thesis.figures.figure import Claim, Figure, Trend
+from camdyn.thesis.theory import motor_theory as mt
 
 SUBSET = ("3.4", "7.14", "8.6")
 """Three quick figures of three chapters: a generated model with damping (3.4), CAMSHAFT-1 with
@@ -89,6 +91,77 @@ def test_statements_reproduce_the_printed_values(built):
     assert abs(float(slip.derived) / 0.018 - 1) <= 0.15
 
 
+NUMBER = r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?"
+
+
+def test_index_carries_an_estimate_beside_each_computed_number(built):
+    """Beside every statement's computed value the index shows its error estimate, "v ± e"
+    with e = |v - v'| and v' the value computed again with every run one notch tighter, or
+    marks it exact (a closed form, a parameter): no computed number stands alone.  The subset
+    has both kinds."""
+    out, _, by_id = built
+    page = (out / "index.html").read_text()
+    cells = [re.sub(r"<br>.*", "", row[3], flags=re.S)
+             for row in (re.findall(r"<td[^>]*>(.*?)</td>", r, re.S)
+                         for r in re.findall(r"<tr><td>.*?</tr>", page, re.S))]
+    assert len(cells) == sum(len(by_id[f].claims) for f in SUBSET)
+    kinds = set()
+    for cell in cells:
+        if cell.endswith(" (exact)"):
+            kinds.add("exact")
+            assert re.fullmatch(NUMBER + " \\(exact\\)", cell), cell
+        else:
+            kinds.add("estimate")
+            assert re.fullmatch(NUMBER + " ± " + NUMBER, cell), cell
+    assert kinds == {"exact", "estimate"}
+    for fid in SUBSET:
+        for c in by_id[fid].claims:
+            assert c.exact or (c.estimates and all(e is not None for e in c.estimates)), c.text
+
+
+def test_exact_statements_do_not_depend_on_the_runs(built):
+    """A statement marked exact has the same value with every run one notch tighter; one with
+    an estimate has a value that moves, however little (else its estimate would be no test)."""
+    from camdyn.runtime.core.methods import tightened
+
+    _, _, by_id = built
+    by_key = figs.checks_by_key(figs.registry())
+    for fid in SUBSET:
+        for claim in by_id[fid].figure.claims:
+            c = by_key[claim.check] if isinstance(claim.check, str) else claim.check
+            v = c.compute()
+            with tightened():
+                w = c.compute()
+            assert (v == w) == c.exact, (c.key, v, w)
+
+
+def test_an_estimate_wider_than_the_tolerance_is_marked(tmp_path):
+    """A statement whose value moves more, one notch tighter, than its rule's tolerance (here
+    half the last printed digit of 6.28) keeps its agreement test but is marked in the index:
+    the runs do not resolve it."""
+    from camdyn.runtime.core.methods import notches
+    from camdyn.thesis.checks.check import Check
+    from camdyn.thesis.figures import index
+
+    loose = Check("test.loose", "2 pi from a run that moves by 0.01 one notch tighter", "nowhere",
+                  "6.28", lambda: 2 * math.pi + 0.01 * notches())
+    fig = Figure("9.3", "thesis", "a statement the runs do not resolve", None, claims=(Claim(loose),),
+                 not_reproduced="a test")
+    built = figs.build([fig], tmp_path)
+    c = built[0].claims[0]
+    assert c.passed and c.estimates == (pytest.approx(0.01),) and c.wide
+    page = open(index.write(built, tmp_path, 1.0, False)).read()
+    assert "6.283 ± 0.01<br><span class=\"wide\">estimate larger than the tolerance 0.005" in page
+    assert "1 statement carries an" in page
+
+
+def test_a_trend_shows_each_number_with_its_estimate():
+    t = Trend("peaks {:.4g}, {:.4g} mm; {:.1e} relative", (0.21951, 0.2193, 3e-4), True)
+    assert t.shown() == "peaks 0.2195, 0.2193 mm; 3.0e-04 relative"
+    assert t.shown((3.3e-10, 1.8e-12, None)) == ("peaks 0.2195 ± 3.3e-10, 0.2193 ± 1.8e-12 mm; "
+                                                 "3.0e-04 (no estimate) relative")
+
+
 def test_fig8_6_curve_has_the_inertia_limit():
     """The curve of fig. 8.6 (peak slip/rated slip at P = 1 against tau_m, first order (A.5.33))
     tends to the static slip 1 for tau_m -> 0 and to 4/(3^(3/2) pi tau_m) for large tau_m (the
@@ -120,7 +193,7 @@ def test_empty_only_is_refused_not_everything(capsys, tmp_path, only):
 
 
 def test_registry_is_consistent():
-    """Every figure named in the task is in the registry, each with a builder or a reason, and
+    """Every figure of the thesis and the paper the models determine is in the registry, each with a builder or a reason, and
     every check key a figure cites exists in thesis/checks."""
     reg = figs.registry()
     ids = {f.id for f in reg}
@@ -135,17 +208,17 @@ def test_registry_is_consistent():
 def test_failures_are_reported_not_hidden(tmp_path):
     """A builder that raises and a statement the computation does not reproduce both show in
     the index (build failed / FAIL) and make the figure fail; the other figures still build."""
-    from camdyn.thesis.checks import Check
+    from camdyn.thesis.checks.check import Check
     from camdyn.thesis.figures import index
 
     def broken(out_dir, quick):
         raise RuntimeError("no such run")
 
     wrong = Check("test.wrong", "2 pi printed as 7", "nowhere", "7", lambda: 2 * math.pi)
-    bad = figs.Figure("9.1", "thesis", "a figure that cannot be drawn", broken)
-    off = figs.Figure("9.2", "thesis", "a figure whose statement is off",
+    bad = Figure("9.1", "thesis", "a figure that cannot be drawn", broken)
+    off = Figure("9.2", "thesis", "a figure whose statement is off",
                       next(f for f in figs.registry() if f.id == "8.6").build,
-                      claims=(figs.Claim(wrong),))
+                      claims=(Claim(wrong),))
     built = figs.build([bad, off], tmp_path, quick=True)
     assert built[0].error == "RuntimeError: no such run" and not built[0].passed
     assert built[1].pngs and not built[1].error

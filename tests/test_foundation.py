@@ -1,7 +1,7 @@
 """The cam mechanism on a low-tuned foundation, sec. 7.2 (7.1)-(7.6).
 
 The printed numbers are compared by `camdyn check --topic foundation`
-(camdyn/thesis/checks/foundation.py); these tests check the formulas against
+(camdyn/thesis/checks/foundation_checks.py); these tests check the formulas against
 independent computations, including a direct integration of the two-DOF system.
 """
 import math
@@ -13,8 +13,8 @@ import scipy.linalg
 import sympy as sp
 from scipy.integrate import solve_ivp
 
-from camdyn.thesis import foundation as fd
-from camdyn.thesis.checks import matches_printed
+from camdyn.thesis.theory import foundation as fd
+from camdyn.thesis.checks.check import matches_printed
 
 D = fd.THESIS
 

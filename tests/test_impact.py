@@ -1,5 +1,5 @@
 """Impact after backlash (thesis sec. 3.6, (3.8)-(3.16)) and damping over a dwell ((3.7), (7.10)),
-beyond the registry checks of camdyn/thesis/checks/impact.py."""
+beyond the registry checks of camdyn/thesis/checks/impact_checks.py."""
 import math
 
 import numpy as np
@@ -7,10 +7,10 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 
-from camdyn.thesis import impact as im
-from camdyn.thesis.checks import matches_printed
-from camdyn.runtime.residual import extreme
-from camdyn.runtime.simulate import simulate
+from camdyn.thesis.theory import impact as im
+from camdyn.thesis.checks.check import matches_printed
+from camdyn.runtime.measure.extremes import extreme
+from camdyn.runtime.core.simulator import simulate
 
 
 def _ramp_run(tau, y0=None):

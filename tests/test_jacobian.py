@@ -1,5 +1,5 @@
 """The generated Jacobians d(dy/dt)/dy, and df/dt with them, against central differences of
-the right-hand side (issue 13, item 1).
+the right-hand side.
 
 Every registered model, loaded compiled, at random admissible points: states near the default
 initial state, perturbed by a few per cent of each state's manifest "scale", parameters at
@@ -36,8 +36,9 @@ import pytest
 import sympy as sp
 
 from camdyn.derive.models import REGISTRY
-from camdyn.runtime import _integrate, laws
-from camdyn.runtime.models import load
+from camdyn.runtime.engine import driver
+from camdyn.runtime.core import laws
+from camdyn.runtime.core.models import load
 
 TOL = 1e-6
 LAWS = ("cycloidal", "modified-trapezoid")
@@ -107,7 +108,7 @@ def _place_cam(model, p, y, T, choice):
         # its start: at t = 0 it came back near 0 whatever the angle (or, from far starts,
         # on the other branch x_E = d + r, theta near pi), i.e. within ~1e-5 rad of a segment
         # end, where differences of different steps see the profile's switch (and the branch
-        # flipped with the start: ~180 relative, issue 13, item 1).
+        # flipped with the start: ~180 relative).
         y[names.index(profile["argument"])] = angle
         return angle / values["Omega"], y
     t = 0.0
@@ -133,7 +134,7 @@ def _differences(model, p, law, law_par, t, y, modes, h):
     for j in range(ns):
         for k, c in enumerate((1.0, -1.0, 0.5, -0.5)):
             Y[1 + k * ns + j, j] += c * h[j]
-    F = _integrate.eval_rhs(model.capsule, p, law, law_par, np.full(4 * ns + 1, t), Y,
+    F = driver.eval_rhs(model.capsule, p, law, law_par, np.full(4 * ns + 1, t), Y,
                             element_modes=modes)
     f0 = F[0]
     fp, fm, fp2, fm2 = (F[1 + k * ns:1 + (k + 1) * ns] for k in range(4))
@@ -162,7 +163,7 @@ def _time_scale(model, p, y, f) -> float:
 def _time_differences(model, p, law, law_par, t, y, modes, h):
     """(extrapolated, d1, d2): df/dt by central differences of eval_rhs in t, steps h, h/2."""
     ts = t + np.array([h, -h, h / 2, -h / 2])
-    F = _integrate.eval_rhs(model.capsule, p, law, law_par, ts, np.repeat(y[None, :], 4, axis=0),
+    F = driver.eval_rhs(model.capsule, p, law, law_par, ts, np.repeat(y[None, :], 4, axis=0),
                             element_modes=modes)
     d1 = (F[0] - F[1]) / (ts[0] - ts[1])
     d2 = (F[2] - F[3]) / (ts[2] - ts[3])
@@ -233,13 +234,13 @@ def _check(model, rng, formulations=(None,), tol=TOL):
                                 if not np.all(np.isfinite(D)) or _kink(D1, D2, se, f0):
                                     skipped += 1
                                     continue
-                                J, ft = _integrate.eval_jacobian(model.capsule, p, law, law_par,
+                                J, ft = driver.eval_jacobian(model.capsule, p, law, law_par,
                                                                  t, y, element_modes=modes,
                                                                  with_time=True)
                                 J = np.column_stack([J, ft])
                             else:
                                 se = s
-                                J = _integrate.eval_jacobian(model.capsule, p, law, law_par, t,
+                                J = driver.eval_jacobian(model.capsule, p, law, law_par, t,
                                                              y, element_modes=modes)
                             err = _relative_error(J, D, se, f0)
                             assert err <= tol, (model.name, key, T, modes, form, err)

@@ -5,9 +5,9 @@ import numpy as np
 import pytest
 
 from camdyn.derive import camlaws
-from camdyn.thesis.lawtable import properties
-from camdyn.runtime.residual import residual
-from camdyn.runtime.simulate import simulate
+from camdyn.thesis.theory.lawtable import properties
+from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.core.simulator import simulate
 
 
 @pytest.mark.parametrize("key", sorted(camlaws.LAWS))

@@ -1,4 +1,4 @@
-"""The least model of a DYNACAM scene (runtime/least_model.py; issue 14, item 5) on the two
+"""The least model of a DYNACAM scene (runtime/studies/least_model.py; thesis sec. 8.2) on the two
 mechanisms of thesis fig. 8.1, whose model comparison is sec. 8.2.4-8.2.5 (fig. 8.3).
 
 Every error bound is checked against independent full runs: the scene's own 4-DOF model at
@@ -13,8 +13,9 @@ import sys
 
 import pytest
 
-from camdyn.runtime import dynacam, least_model, scene as scenes
-from camdyn.runtime.methods import DP54
+from camdyn.runtime.targets import dynacam, scene_files as scenes
+from camdyn.runtime.studies import least_model
+from camdyn.runtime.core.methods import DP54
 
 FIGS = least_model.DEFAULT_FIGURES
 TOL = least_model.TOLERANCE

@@ -1,7 +1,7 @@
 """The asynchronous motor (App. 5), motor selection (sec. 8.3) and the worm gear (sec. 6.7).
 
 The printed values and the symbolic identities are compared by `camdyn check --topic
-motor` (camdyn/thesis/checks/motor.py, run by tests/test_checks.py); these tests
+motor` (camdyn/thesis/checks/motor_checks.py, run by tests/test_checks.py); these tests
 check the analytic solutions against independent integrations, the generated
 models motor2/motor1 against the analytic solutions, and the selection rules.
 """
@@ -14,9 +14,9 @@ import sympy as sp
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq, minimize_scalar
 
-from camdyn.thesis import motor_theory as mt
-from camdyn.thesis.checks import matches_printed
-from camdyn.runtime.simulate import simulate
+from camdyn.thesis.theory import motor_theory as mt
+from camdyn.thesis.checks.check import matches_printed
+from camdyn.runtime.core.simulator import simulate
 
 D = mt.THESIS
 TAU_M = D["T_m"][3000] / D["t_m"]      # 1.284, test motor (fig. A.5.7)

@@ -1,4 +1,4 @@
-"""The nonsmooth force elements of DYNACAM against hand-computable answers (issue 4, item 2).
+"""The nonsmooth force elements of DYNACAM against hand-computable answers.
 
 Each test puts a generated variant into a configuration small enough to solve by hand.
 """
@@ -7,9 +7,10 @@ import math
 import numpy as np
 import pytest
 
-from camdyn.runtime import _integrate, laws
-from camdyn.runtime.models import load
-from camdyn.runtime.simulate import Simulator
+from camdyn.runtime.engine import driver
+from camdyn.runtime.core import laws
+from camdyn.runtime.core.models import load
+from camdyn.runtime.core.simulator import Simulator
 
 
 def _p(model, **values):
@@ -30,7 +31,7 @@ def test_squeeze_film_approach_velocity_A_4_11():
         y[names.index("betad")] = 1.0            # turning, still in the dwell before beta_0
         y[names.index("hr")] = gap                # h_c = 0 in the dwell: the gap is h_r
         y[names.index("x")] = gap - load_N / 1e6  # linkage compressed by N/c_x
-        f = _integrate.eval_rhs(m.capsule, p, codes, pars, np.zeros(1), y[None, :])[0]
+        f = driver.eval_rhs(m.capsule, p, codes, pars, np.zeros(1), y[None, :])[0]
         expected = -load_N * gap**1.5 / 2e-5
         assert f[names.index("hr")] == pytest.approx(expected, rel=1e-12)
 
@@ -59,7 +60,7 @@ def test_gear_squeeze_film_closes_on_the_loaded_flank_6_9(flank):
             y[names.index("phir")] = s_g - gap
             N = -torque
         y[names.index("beta")] = y[names.index("phir")] - N / k
-        f = _integrate.eval_rhs(m.capsule, p, codes, pars, np.zeros(1), y[None, :])[0]
+        f = driver.eval_rhs(m.capsule, p, codes, pars, np.zeros(1), y[None, :])[0]
         rate = f[names.index("phir")] - w_s       # d(phi_r - phi)/dt
         assert rate == pytest.approx(-N * gap**1.5 / V_T, rel=1e-12)
         closing = -rate if flank == "driving" else rate
@@ -145,8 +146,8 @@ def test_cam_friction_torque_6_13(mode, sign):
     acc = {}
     for key, nu_b in (("with", nu), ("without", 0.0)):
         p = _p(m, **base, nu_b=nu_b)
-        f = _integrate.eval_rhs(m.capsule, p, codes, pars, np.zeros(1), y[None, :], element_modes=modes)[0]
-        out = _integrate.eval_outputs(m.capsule, p, codes, pars, np.zeros(1), y[None, :],
+        f = driver.eval_rhs(m.capsule, p, codes, pars, np.zeros(1), y[None, :], element_modes=modes)[0]
+        out = driver.eval_outputs(m.capsule, p, codes, pars, np.zeros(1), y[None, :],
                                       element_modes=modes)[0]
         acc[key] = f[names.index("betad")]
         Fx = out[m.output_names.index("Fx")]
@@ -175,8 +176,8 @@ def test_worm_gear_passes_the_shaft_torque_with_its_efficiency_6_71(mode):
     specs = m.manifest["modes"]
     w = [s["name"] for s in specs].index("worm")
     modes[w] = specs[w]["values"].index(mode)
-    f = _integrate.eval_rhs(m.capsule, p, codes, pars, np.zeros(1), y[None, :], element_modes=modes)[0]
-    out = _integrate.eval_outputs(m.capsule, p, codes, pars, np.zeros(1), y[None, :], element_modes=modes)[0]
+    f = driver.eval_rhs(m.capsule, p, codes, pars, np.zeros(1), y[None, :], element_modes=modes)[0]
+    out = driver.eval_outputs(m.capsule, p, codes, pars, np.zeros(1), y[None, :], element_modes=modes)[0]
     M = out[m.output_names.index("torque")]
     assert M > 1.0
     eta = math.tan(a) / math.tan(a + mu)

@@ -1,4 +1,4 @@
-"""Models on demand (issue 12, item 4): a user's model file and a DYNACAM option set outside
+"""Models on demand (README "Any model on demand"): a user's model file and a DYNACAM option set outside
 generated/ are derived, generated and compiled on first use into the cache, loaded from it
 afterwards, and bad files are refused in one line.
 
@@ -194,7 +194,8 @@ def test_dynacam_variant_outside_generated_is_built_on_first_use(tmp_path, monke
     import copy
     import tomllib
 
-    from camdyn.runtime import dynacam, ondemand, scene as scenes
+    from camdyn.runtime.targets import dynacam, scene_files as scenes
+    from camdyn.runtime.core import ondemand
 
     monkeypatch.setenv("CAMDYN_CACHE_DIR", str(tmp_path))
     d = tomllib.loads(scenes.builtin("indexing").read_text())
@@ -220,6 +221,6 @@ def test_dynacam_variant_outside_generated_is_built_on_first_use(tmp_path, monke
 
 
 def ondemand_available():
-    from camdyn.runtime.models import available
+    from camdyn.runtime.core.models import available
 
     return available()

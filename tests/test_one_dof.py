@@ -2,18 +2,18 @@
 import numpy as np
 import pytest
 
-from camdyn.thesis import closed_forms as cf
-from camdyn.runtime.residual import residual
-from camdyn.runtime.simulate import simulate
+from camdyn.thesis.theory import numeric as cf
+from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.core.simulator import simulate
 
-from camdyn.thesis.checks import matches_printed
-from camdyn.thesis.checks.spine import TABLE_3_I
+from camdyn.thesis.checks.check import matches_printed
+from camdyn.thesis.checks.spine_checks import TABLE_3_I
 
 from .conftest import residual_of
 
 def test_table_3_I_errata():
     """Why five printed entries of Table 3-I cannot be reproduced (the entries themselves
-    are compared by `camdyn check`, camdyn/thesis/checks/spine.py).
+    are compared by `camdyn check`, camdyn/thesis/checks/spine_checks.py).
 
     (3.5) and (3.6) describe one harmonic residual motion, so U0dd = (2 pi/tau)^2 U0
     holds whatever the cam law.  The printed pairs of rows 0.222 and 0.286 break that
@@ -117,7 +117,7 @@ def test_damping_removes_residual_vibration_gradually():
     n periods (3.7); the compiled damped model reproduces the decay between two peaks."""
     tau, q = 0.15, 0.06
     res = simulate("one_dof", {"tau": tau, "q": q}, 3.0, "dp54", rtol=1e-11)
-    from camdyn.runtime.residual import extreme
+    from camdyn.runtime.measure.extremes import extreme
 
     a1, t1 = extreme(res, "U", 1.0, 1.0 + tau, absolute=True, minimum=False)
     a2, t2 = extreme(res, "U", 2.5 - tau, 2.5, absolute=True, minimum=False)
@@ -129,11 +129,11 @@ def test_damping_removes_residual_vibration_gradually():
 
 
 def test_runtime_closed_forms_are_the_theory_module_s():
-    """The runtime's hand-written NumPy (3.5), (3.6) (camdyn.runtime.closed_forms, which `camdyn
+    """The runtime's hand-written NumPy (3.5), (3.6) (camdyn.runtime.measure.references, which `camdyn
     residual` and the main job's chart use without SymPy) against the SymPy forms of
-    camdyn.thesis.theory, lambdified, on 2000 tau in (0.02, 0.98) and at array input: 1e-13
+    camdyn.thesis.theory.forms, lambdified, on 2000 tau in (0.02, 0.98) and at array input: 1e-13
     relative (measured: rounding, <= 4e-16)."""
-    from camdyn.runtime import closed_forms as rt
+    from camdyn.runtime.measure import references as rt
 
     taus = np.linspace(0.02, 0.98, 2000)
     np.testing.assert_allclose(rt.U0(taus), cf.evaluate("U0", tau=taus), rtol=1e-13, atol=0)

@@ -23,9 +23,9 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import brentq
 from scipy.special import ellipk
 
-from camdyn.runtime import _integrate
-from camdyn.runtime.models import load
-from camdyn.runtime.simulate import simulate
+from camdyn.runtime.engine import driver
+from camdyn.runtime.core.models import load
+from camdyn.runtime.core.simulator import simulate
 
 ROOT = Path(__file__).resolve().parents[1]
 FORMULATIONS = {"augmented": 0.0, "partitioned": 1.0}
@@ -191,8 +191,8 @@ def test_right_hand_side_is_the_multiplier_form_solved_by_hand(rng):
         x, y, xd, yd = rng.uniform(-1.5, 1.5, 4) * L
         Y = np.array([[x, y, xd, yd]])
         t0 = np.zeros(1)
-        dy = _integrate.eval_rhs(model.capsule, p, law, par, t0, Y)[0]
-        out = dict(zip(model.output_names, _integrate.eval_outputs(model.capsule, p, law, par, t0, Y)[0]))
+        dy = driver.eval_rhs(model.capsule, p, law, par, t0, Y)[0]
+        out = dict(zip(model.output_names, driver.eval_outputs(model.capsule, p, law, par, t0, Y)[0]))
         phi, phid = x * x + y * y - L * L, 2 * (x * xd + y * yd)
         gam = -2 * (xd * xd + yd * yd) - 2 * w * phid - w * w * phi
         lam = -(m * gam + 2 * c * (x * xd + y * yd) + 2 * m * g * y) / (4 * (x * x + y * y))

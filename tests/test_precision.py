@@ -1,5 +1,4 @@
-"""Work-precision studies (runtime/precision.py) and the SciPy peers (runtime/peers.py), issue 13
-item 5: the reference is good enough, the scores are true errors, errors fall at the methods'
+"""Work-precision studies (runtime/studies/precision.py) and the SciPy peers (runtime/studies/peers.py): the reference is good enough, the scores are true errors, errors fall at the methods'
 orders, a peer on the generated rhs converges to the same answer, the command writes its files
 and refuses bad input in one line."""
 import csv
@@ -8,18 +7,20 @@ import json
 import numpy as np
 import pytest
 
-from camdyn.runtime import closed_forms, peers, precision
+from camdyn.runtime.measure import references as closed_forms
+from camdyn.runtime.studies import peers, precision
 from camdyn.runtime.cli import main
-from camdyn.runtime.models import load
-from camdyn.runtime.residual import residual
-from camdyn.runtime.simulate import simulate
+from camdyn.runtime.targets.resolve import load_scene
+from camdyn.runtime.core.models import load
+from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.core.simulator import simulate
 
 TAU = 0.15
 
 
 @pytest.fixture(scope="module")
 def problem():
-    return precision.from_model(load("one_dof"), {"tau": TAU}, None)
+    return precision.problem("one_dof", {"tau": TAU}, None)
 
 
 @pytest.fixture(scope="module")
@@ -143,16 +144,16 @@ def test_cli_refuses_bad_input_in_one_line(tmp_path, capsys, argv, word):
 
 
 def test_beam_scene_figure_is_the_beam_followers():
-    """`camdyn precision beam_paper` scores max |v_E|, taken as runtime/beam.py's summary takes
+    """`camdyn precision beam_paper` scores max |v_E|, taken as runtime/targets/beam.py's summary takes
     it: the same run (N = 1, DP54 at rtol 1e-8) gives the same figure to 1e-12."""
     from dataclasses import replace
 
-    from camdyn.runtime import beam, scene
-    from camdyn.runtime.methods import DP54
+    from camdyn.runtime.targets import beam, scene_files as scene
+    from camdyn.runtime.core.methods import DP54
 
     pr = precision.problem("beam_paper", {"modes": 1}, None)
-    assert pr.kind == "beam" and pr.model.name == "beam1"
+    assert pr.kind == "beam-follower" and pr.model.name == "beam1"
     got = pr.figures(pr.simulator(DP54(rtol=1e-8)).run(pr.params))["max_abs_tip_deflection"]
-    case = replace(scene.load_any("beam_paper")[1].case, modes=1, rtol=1e-8, method="dp54")
+    case = replace(load_scene("beam_paper")[1].case, modes=1, rtol=1e-8, method="dp54")
     want = beam.run(case)[0]["max_abs_tip_deflection"]
     assert got == pytest.approx(want, rel=1e-12)

@@ -2,7 +2,7 @@
 
 Cam laws.  Each law is checked twice: as the symbolic law of ``camdyn.derive.camlaws``
 (its pieces evaluated in 40-digit mpmath, so the reference carries no rounding of its own)
-and as the compiled library that simulations use (``camdyn.runtime.laws.choose(...).evaluate``,
+and as the compiled library that simulations use (``camdyn.runtime.core.laws.choose(...).evaluate``,
 the generated ``camlaws`` module).  Properties, for T and theta drawn by Hypothesis:
 
 * the rise joins the dwells, H = 0 before T = 0 and H = 1 after T = 1 (A.2.1)-(A.2.3),
@@ -54,10 +54,10 @@ from hypothesis import strategies as st
 
 from camdyn.derive.camlaws import LAWS, T, theta
 from camdyn.derive.models import dynacam as dynacam_model
-from camdyn.runtime import laws as rt_laws
-from camdyn.runtime import report
-from camdyn.runtime import scene as scenes
-from camdyn.runtime.errors import CamdynInputError
+from camdyn.runtime.core import laws as rt_laws
+from camdyn.runtime.targets import camshaft1_study as report
+from camdyn.runtime.targets import scene_files as scenes
+from camdyn.runtime.core.errors import CamdynInputError
 
 settings.register_profile("camdyn-fast", max_examples=60, deadline=None, derandomize=True,
                           database=None, suppress_health_check=[HealthCheck.too_slow])
@@ -527,7 +527,7 @@ def _invalid_option(key):
 
 
 RUN_RANGES = {"T_start": (-5.0, 0.0), "T_end": (1.0, 50.0), "rtol": (1e-13, 1e-2)}
-"""The run settings' ranges, restated from runtime/scene.py (_RUN; T in units of the rise)."""
+"""The run settings' ranges, restated from runtime/targets/scene_files.py (_RUN; T in units of the rise)."""
 
 
 @st.composite

@@ -1,7 +1,7 @@
 """Rayleigh's method (sec. 4.6, (4.33)-(4.40)) and its accuracy study (App. 3).
 
 The printed values are compared by `camdyn check --topic rayleigh`
-(camdyn/thesis/checks/rayleigh.py); these tests cover the properties around
+(camdyn/thesis/checks/rayleigh_checks.py); these tests cover the properties around
 them, each against the thesis or an independent computation.
 """
 import math
@@ -12,8 +12,8 @@ import scipy.linalg
 import sympy as sp
 from scipy.optimize import brentq
 
-from camdyn.thesis import rayleigh as r
-from camdyn.thesis.checks import matches_printed
+from camdyn.thesis.theory import rayleigh as r
+from camdyn.thesis.checks.check import matches_printed
 
 
 def _random_chain(rng, n):

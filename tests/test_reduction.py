@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from camdyn.thesis import assembly as A
-from camdyn.thesis import elements as E
-from camdyn.thesis import reduction as R
+from camdyn.thesis.theory import assembly as A
+from camdyn.thesis.theory import elements as E
+from camdyn.thesis.theory import reduction as R
 
 xA, xB, x2 = sp.symbols("xA xB x2", real=True)
 m1, m2, c1, c2, d1 = sp.symbols("m1 m2 c1 c2 d1", positive=True)

@@ -1,4 +1,4 @@
-"""The residual-vibration figures' building blocks (runtime/residual.py) against closed forms:
+"""The residual-vibration figures' building blocks (runtime/measure/residual.py) against closed forms:
 ``crossing_time`` (the first time a state or output reaches a level), ``extreme`` (a refined
 extreme on a window, including one that lies inside the first or last interval of the scan
 grid) and ``residual``'s window checks (runs starting before T = 0, after it, ending one step
@@ -18,9 +18,10 @@ import pytest
 from scipy.integrate import solve_ivp
 from scipy.optimize import brentq, minimize_scalar
 
-from camdyn.runtime.errors import CamdynInputError
-from camdyn.runtime.residual import crossing_time, extreme, residual
-from camdyn.runtime.simulate import simulate
+from camdyn.runtime.core.errors import CamdynInputError
+from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.measure.extremes import crossing_time, extreme
+from camdyn.runtime.core.simulator import simulate
 
 from .test_damped import DampedOneDof, damped_sinusoid_max, derivative
 
@@ -177,9 +178,9 @@ def test_extreme_at_the_window_end_of_a_monotone_output(run):
     """H increases through the rise (A.2.11): its maximum on [0.2, 0.6] is at T = 0.6, its
     minimum at T = 0.2, the closed form there to 1e-14 (measured 0)."""
     h = lambda T: T - math.sin(2 * math.pi * T) / (2 * math.pi)  # noqa: E731
-    assert extreme(run, "H", 0.2, 0.6, absolute=False, minimum=False) == \
+    assert tuple(extreme(run, "H", 0.2, 0.6, absolute=False, minimum=False)) == \
         pytest.approx((h(0.6), 0.6), abs=1e-14)
-    assert extreme(run, "H", 0.2, 0.6, absolute=False, minimum=True) == \
+    assert tuple(extreme(run, "H", 0.2, 0.6, absolute=False, minimum=True)) == \
         pytest.approx((h(0.2), 0.2), abs=1e-14)
 
 
@@ -234,7 +235,7 @@ def test_residual_of_a_run_ending_one_step_after_the_rise(ref):
 
 
 def test_residual_figures_are_immutable(run):
-    """residual_of (checks/spine.py) caches the figures and hands the same object to every
+    """residual_of (checks/spine_checks.py) caches the figures and hands the same object to every
     caller: it must be frozen (and so hashable), or one caller could change another's."""
     fig = residual(run)
     with pytest.raises(dataclasses.FrozenInstanceError):

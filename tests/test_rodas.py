@@ -1,4 +1,4 @@
-"""RODAS4, the stiff solver (issue 13, item 2): order, stiffness, first-order states, events
+"""RODAS4, the stiff solver (Hairer & Wanner II, sec. IV.7): order, stiffness, first-order states, events
 and modes, the beam follower, and --method rodas4 on every command.
 
 References are DP54 runs at rtol 1e-12 (the explicit method, far from its stability limit
@@ -12,11 +12,12 @@ import sys
 import numpy as np
 import pytest
 
-from camdyn.runtime import cli, scene as scenes
-from camdyn.runtime.errors import CamdynInputError
-from camdyn.runtime.methods import METHODS, RODAS4, make
-from camdyn.runtime.models import load
-from camdyn.runtime.simulate import Simulator, simulate
+from camdyn.runtime import cli
+from camdyn.runtime.targets import scene_files as scenes
+from camdyn.runtime.core.errors import CamdynInputError
+from camdyn.runtime.core.methods import METHODS, RODAS4, make
+from camdyn.runtime.core.models import load
+from camdyn.runtime.core.simulator import Simulator, simulate
 
 
 def _rel_err(model, res, ref, T):
@@ -43,7 +44,7 @@ def test_error_follows_rtol_on_a_smooth_model():
 def test_fixed_step_ladder_shows_order_four():
     """Steps held at h (first step = max step = h, a tolerance that accepts every step):
     halving h divides the error at T = 3 by 2^p.  Measured p = 3.96, 4.00, 4.00 for
-    n = 50 -> 100 -> 200 -> 400; asserted p > 3.5 (the issue asks for order >= 3)."""
+    n = 50 -> 100 -> 200 -> 400; asserted p > 3.5 (the method's order is 4)."""
     params = {"tau": 0.3, "Fa": 0.5}
     y_ref = simulate("camshaft1", params, 3.0, "dp54", rtol=1e-13).y[-1]
     errs = []
@@ -127,7 +128,7 @@ def test_mode_changes_coincide(scene, element, n_changes):
     DP54 lets the indexing gear go free at T = -0.063 and drive again at T = 0.0012, RODAS4
     keeps it driving; spring_loaded has the same with the methods swapped.  Those switches
     at zero force change nothing the run reports (test above)."""
-    from camdyn.runtime import dynacam
+    from camdyn.runtime.targets import dynacam
 
     sc = scenes.load(scene)
     runs = [dynacam.run(sc, method=make(m, rtol=sc.rtol))[1] for m in ("dp54", "rodas4")]
@@ -145,7 +146,7 @@ def test_beam_follower_one_revolution():
     largest tip deflection, within 1e-6 relative (measured 1e-9)."""
     from dataclasses import replace
 
-    from camdyn.runtime import beam
+    from camdyn.runtime.targets import beam
 
     ref, _ = beam.run(beam.Case())
     out, res = beam.run(replace(beam.Case(), method="rodas4", rtol=1e-6))
@@ -206,16 +207,16 @@ def test_method_options_and_scene_setting():
 
 
 def test_state_atol_takes_a_state_out_of_the_error_control():
-    """``state_atol`` (runtime/methods.py) sets single states' absolute tolerances: on
+    """``state_atol`` (runtime/core/methods.py) sets single states' absolute tolerances: on
     CAMSHAFT-1 at rtol 1e-8, loosening the rate X' to 1e3 leaves the steps to the position
     alone (fewer steps, for dp54 and rodas4 alike; measured 1161 -> 393 and 2964 -> 809), and
     the position's error at the end stays within 100 rtol of a tight reference (DP54 at rtol
     1e-12; measured 2.3e-7, 2.7e-7, against 5e-10 with every state controlled: the consequence
     of the looser control, stated in the method's docstring); an unknown state is refused by
     name."""
-    from camdyn.runtime.errors import CamdynInputError
-    from camdyn.runtime.methods import DP54, RODAS4
-    from camdyn.runtime.simulate import Simulator
+    from camdyn.runtime.core.errors import CamdynInputError
+    from camdyn.runtime.core.methods import DP54, RODAS4
+    from camdyn.runtime.core.simulator import Simulator
 
     p = {"tau": 0.15, "Fa": 1.0}
     ref = Simulator("camshaft1", 3.0, DP54(rtol=1e-12)).run(p)
@@ -233,12 +234,12 @@ def test_state_atol_takes_a_state_out_of_the_error_control():
 def test_beam6_keeps_the_order_when_a_modal_rate_crosses_zero():
     """beam6 (augmented), t in [0, 1.6 ms], RODAS4 at rtol 1e-4 and 1e-6: the steps grow like
     rtol^(-1/4) (measured 4,615 and 15,867 steps, ratio 3.4).  Before the Jacobian's increment
-    had the floors ymag_j and |h f_j| (runtime/loops.pxi _jacobian), a modal rate b_i' passing
+    had the floors ymag_j and |h f_j| (runtime/engine/loops.pxi _jacobian), a modal rate b_i' passing
     through zero got the increment 6e-6 * 1e-5 (its declared scale), at which the rhs's rounding
     (2e-7 |f| from the ill-conditioned augmented solve) made that Jacobian column 30 % wrong: the
     step collapsed to 1e-12 s in bursts, 4,839 and 40,265 steps here (ratio 8.3), 98,415 and
     1,368,843 over a revolution (114 s at rtol 1e-6; now 86,179 and 293,409, 23 s)."""
-    from camdyn.runtime import beam
+    from camdyn.runtime.targets import beam
 
     steps = {}
     for rtol in (1e-4, 1e-6):

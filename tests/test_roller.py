@@ -1,9 +1,9 @@
-"""Roller vibration (thesis sec. 9.2.1; issue 13, item 7): the roller's mass and the contact
+"""Roller vibration (thesis sec. 9.2.1): the roller's mass and the contact
 stiffness in series with the follower linkage (derive/models/roller.py, generated/roller.pyx).
 
 References, each independent of the model's own output:
 * the massless, rigid-contact limit is the one-DOF follower of sec. 3.3, whose residual
-  vibration has the closed form (3.5) (camdyn.runtime.closed_forms.U0) and whose largest
+  vibration has the closed form (3.5) (camdyn.runtime.measure.references.U0) and whose largest
   deceleration comes from the one_dof model checked against (3.4) elsewhere;
 * the natural frequencies with the roller on its wall solve det(K - w^2 M) = 0 of the two-mass
   chain (closed form below), compared with the eigenvalues of a central-difference Jacobian of
@@ -19,10 +19,11 @@ import math
 import numpy as np
 import pytest
 
-from camdyn.runtime import _integrate, closed_forms
-from camdyn.runtime.models import load
-from camdyn.runtime.residual import residual
-from camdyn.runtime.simulate import Simulator
+from camdyn.runtime.engine import driver
+from camdyn.runtime.measure import references as closed_forms
+from camdyn.runtime.core.models import load
+from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.core.simulator import Simulator
 
 TAU = 0.15
 W = 2 * math.pi / TAU
@@ -68,7 +69,7 @@ def test_natural_frequencies_of_the_roller_on_its_wall(mu, kappa):
         yp, ym = y.copy(), y.copy()
         yp[j] += h
         ym[j] -= h
-        f = _integrate.eval_rhs(m.capsule, p, codes, pars, np.full(2, t), np.array([yp, ym]))
+        f = driver.eval_rhs(m.capsule, p, codes, pars, np.full(2, t), np.array([yp, ym]))
         J[:, j] = (f[0] - f[1]) / (2 * h)
     w_num = np.sort(np.abs(np.linalg.eigvals(J).imag))[::2]
     M = np.diag([mu, 1.0])

@@ -1,11 +1,15 @@
-"""The rooms and their one-way doors (issue 12, item 2), read from the source.
+"""The rooms and their one-way doors, read from the source (README "The house").
 
 derive/ (SymPy, Jinja2) -> generated/ -> runtime/ (NumPy, SciPy, the compiled modules); the
-thesis room may import both sides and nothing in the pipeline imports it.  Checked on every
+thesis room may import both sides and nothing in the pipeline imports it.  Inside runtime/ the
+floors open downwards only: engine < core < cam, measure < targets < studies < cli, and nothing
+imports the command line.  No import circle anywhere, counting imports inside functions; no
+module reads another module's private (underscore) names.  Checked on every
 import statement (module level and inside functions) of every module, with relative imports
 resolved, and on the cimports of the generated Cython.  The one sanctioned crossing is the
 command line's dispatch: camdyn.runtime.cli hands `camdyn derive` to camdyn.derive and
-`camdyn check`, `camdyn laws` to camdyn.thesis, inside those commands' functions only.
+`camdyn check`, `camdyn laws`, `camdyn design` and `camdyn figures` to camdyn.thesis, inside
+those commands' run() only.
 """
 import ast
 import json
@@ -19,11 +23,11 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 ROOMS = ("derive", "generated", "runtime", "thesis")
-DISPATCH = {("runtime/cli.py", "_cmd_derive"): "camdyn.derive",
-            ("runtime/cli.py", "_cmd_check"): "camdyn.thesis",
-            ("runtime/cli.py", "_cmd_laws"): "camdyn.thesis",
-            ("runtime/cli.py", "_cmd_figures"): "camdyn.thesis",
-            ("runtime/cli.py", "_cmd_design"): "camdyn.thesis"}
+DISPATCH = {("runtime/cli/derive.py", "run"): "camdyn.derive",
+            ("runtime/cli/check.py", "run"): "camdyn.thesis",
+            ("runtime/cli/laws.py", "run"): "camdyn.thesis",
+            ("runtime/cli/figures.py", "run"): "camdyn.thesis",
+            ("runtime/cli/design.py", "run"): "camdyn.thesis"}
 
 
 def _module_name(path: Path) -> str:
@@ -85,8 +89,8 @@ def _crossings(room, targets):
 def test_the_import_census_sees_the_known_crossing():
     """The census must find the command line's sanctioned dispatch (else it finds nothing)."""
     seen = {(str(p.relative_to(ROOT)), f, m) for p, f, m in IMPORTS}
-    assert ("runtime/cli.py", "_cmd_check", "camdyn.thesis.commands") in seen
-    assert ("runtime/cli.py", "_cmd_derive", "camdyn.derive.generate") in seen
+    assert ("runtime/cli/check.py", "run", "camdyn.thesis.checks.suite") in seen
+    assert ("runtime/cli/derive.py", "run", "camdyn.derive.generate") in seen
     assert len(IMPORTS) > 300
 
 
@@ -145,6 +149,17 @@ def test_no_import_cycles_between_modules():
             dfs(node, [])
 
 
+def test_the_theory_never_imports_the_runtime():
+    """thesis/theory/ is typed in from the thesis and compared with the runs: it imports nothing
+    of camdyn.runtime, not even inside a function."""
+    assert _crossings("thesis/theory", ("camdyn.runtime",)) == []
+
+
+def test_the_thesis_never_imports_the_command_line():
+    """The command line hands commands to the thesis room, never the other way round."""
+    assert _crossings("thesis", ("camdyn.runtime.cli",)) == []
+
+
 RUNTIME_COMMANDS = {
     "residual": ["residual", "--model", "camshaft1", "--tau", "0.15", "--fa", "2", "--json"],
     "beam-follower": ["beam-follower", "--revolutions", "0.05", "--json"],
@@ -170,3 +185,140 @@ def test_a_simulating_command_never_loads_sympy(name, tmp_path):
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env,
                        timeout=300, cwd=tmp_path)
     assert json.loads(p.stderr.strip().splitlines()[-1]) == {"rc": 0, "loaded": []}, p.stderr
+
+
+# -- the floors of the house, every import counted (module level and inside functions) --------
+
+NAMES = {_module_name(p) for room in ROOMS for p in (ROOT / room).rglob("*.py")}
+PACKAGES = {_module_name(p) for room in ROOMS for p in (ROOT / room).rglob("__init__.py")}
+
+
+def _edges():
+    """(importer, imported) of every import between the rooms' modules: ``from pkg import mod``
+    is an edge to the module only (the package itself is not what is read)."""
+    edges = set()
+    for path in sorted(p for room in ROOMS for p in (ROOT / room).rglob("*.py")):
+        tree = ast.parse(path.read_text(), str(path))
+        me = _module_name(path)
+        package = me if path.name == "__init__.py" else me.rsplit(".", 1)[0]
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                for a in node.names:
+                    if a.name in NAMES:
+                        edges.add((me, a.name))
+            elif isinstance(node, ast.ImportFrom):
+                base = node.module or ""
+                if node.level:
+                    up = package.split(".")
+                    base = ".".join(up[:len(up) - node.level + 1] + ([base] if base else []))
+                subs = [f"{base}.{a.name}" for a in node.names if f"{base}.{a.name}" in NAMES]
+                for s in subs:
+                    edges.add((me, s))
+                if len(subs) < len(node.names) and base in NAMES:
+                    edges.add((me, base))
+    return {(a, b) for a, b in edges if a != b and not b.startswith(a + ".")}
+
+
+EDGES = _edges()
+
+
+def test_the_edges_are_seen():
+    """The census must see known imports, at module level and inside functions."""
+    assert ("camdyn.runtime.targets.model", "camdyn.runtime.core.simulator") in EDGES
+    assert ("camdyn.runtime.cli.run", "camdyn.runtime.targets.resolve") in EDGES   # in run()
+    assert len(EDGES) > 300
+
+
+def test_no_import_circle_anywhere():
+    """The import graph of every module of the rooms, imports inside functions counted, has no
+    circle (a function-level import is still a door one way)."""
+    graph = {}
+    for a, b in EDGES:
+        graph.setdefault(a, set()).add(b)
+    state = {}
+
+    def dfs(node, stack):
+        state[node] = 1
+        for nxt in sorted(graph.get(node, ())):
+            if state.get(nxt) == 1:
+                raise AssertionError(" -> ".join(stack + [node, nxt]))
+            if state.get(nxt) is None:
+                dfs(nxt, stack + [node])
+        state[node] = 2
+
+    for node in sorted(graph):
+        if node not in state:
+            dfs(node, [])
+
+
+FLOORS = {"engine": 0, "core": 1, "cam": 2, "measure": 2, "targets": 3, "studies": 4, "cli": 5}
+"""runtime/'s subpackages by floor: an import goes to a lower floor, or stays in its own
+subpackage."""
+
+
+def _floor(module: str):
+    parts = module.split(".")
+    if parts[:2] != ["camdyn", "runtime"] or len(parts) < 4:
+        return None, None
+    return parts[2], FLOORS.get(parts[2])
+
+
+def test_runtime_floors_open_downwards_only():
+    bad = []
+    for a, b in EDGES:
+        sa, fa = _floor(a)
+        sb, fb = _floor(b)
+        if fa is None or fb is None or sa == sb:
+            continue
+        if fb >= fa:
+            bad.append(f"{a} imports {b}")
+    assert bad == []
+
+
+def test_nothing_imports_the_command_line():
+    bad = [f"{a} imports {b}" for a, b in EDGES
+           if b.startswith("camdyn.runtime.cli") and not a.startswith("camdyn.runtime.cli")]
+    assert bad == []
+
+
+def test_every_subpackage_of_runtime_has_a_floor():
+    subs = {p.name for p in (ROOT / "runtime").iterdir()
+            if p.is_dir() and (p / "__init__.py").exists()}
+    assert subs == set(FLOORS)
+
+
+def _private_reads():
+    """Every read of another module's private name: ``from x import _y`` and ``x._y`` on an
+    imported module ``x`` of the rooms."""
+    out = []
+    for path in sorted(p for room in ROOMS for p in (ROOT / room).rglob("*.py")):
+        tree = ast.parse(path.read_text(), str(path))
+        me = _module_name(path)
+        package = me if path.name == "__init__.py" else me.rsplit(".", 1)[0]
+        aliases = {}
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                for a in node.names:
+                    if a.asname:
+                        aliases[a.asname] = a.name
+            elif isinstance(node, ast.ImportFrom):
+                base = node.module or ""
+                if node.level:
+                    up = package.split(".")
+                    base = ".".join(up[:len(up) - node.level + 1] + ([base] if base else []))
+                for a in node.names:
+                    aliases[a.asname or a.name] = f"{base}.{a.name}"
+                    if base.startswith("camdyn") and a.name.startswith("_") \
+                            and not a.name.startswith("__") and base != me:
+                        out.append(f"{me}: from {base} import {a.name}")
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) \
+                    and node.attr.startswith("_") and not node.attr.startswith("__"):
+                target = aliases.get(node.value.id, "")
+                if target in NAMES and target != me:
+                    out.append(f"{me}: {node.value.id}.{node.attr}")
+    return out
+
+
+def test_no_module_reads_another_modules_private_names():
+    assert _private_reads() == []

@@ -4,11 +4,12 @@ import math
 import numpy as np
 import pytest
 
-from camdyn.runtime import _integrate, methods
-from camdyn.runtime.errors import CamdynInputError, SimulationError
-from camdyn.runtime.models import load
-from camdyn.runtime.residual import residual
-from camdyn.runtime.simulate import simulate, stop_times
+from camdyn.runtime.engine import driver
+from camdyn.runtime.core import methods
+from camdyn.runtime.core.errors import CamdynInputError, SimulationError
+from camdyn.runtime.core.models import load
+from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.core.simulator import simulate, stop_times
 
 
 def test_breakpoints_are_stops_recorded_twice():
@@ -40,7 +41,7 @@ def test_dp54_dense_output_is_fourth_order():
         res = simulate("one_dof", {"tau": 0.5}, 3.0, "dp54", rtol=rtol)
         T = np.linspace(1.0, 3.0, 2001)
         s = res.sample(T)
-        from camdyn.thesis import closed_forms as cf
+        from camdyn.thesis.theory import numeric as cf
 
         errs.append(np.max(np.abs(s["U"] - cf.evaluate("u_dwell", T=T, tau=0.5))))
     assert errs[1] < errs[0] / 30
@@ -85,7 +86,7 @@ def test_result_access_and_outputs():
 
 def test_rhs_cost_is_measurable():
     cm = load("camshaft1")
-    ns = _integrate.rhs_cost_ns(cm.capsule, cm.parameter_vector({}), np.array([0], dtype=np.intc),
+    ns = driver.rhs_cost_ns(cm.capsule, cm.parameter_vector({}), np.array([0], dtype=np.intc),
                                 np.array([0.0]), 0.3, np.array([0.1, 0.2]), 100000)
     assert 0 < ns < 1e5
 

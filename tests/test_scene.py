@@ -1,5 +1,5 @@
-"""Scene files: one format with a kind, strict checking before anything runs (issue 4, item 4;
-issue 12, item 3)."""
+"""Scene files: one format with a kind, strict checking before anything runs (README
+"Scenes")."""
 import copy
 import json
 import subprocess
@@ -9,8 +9,9 @@ from pathlib import Path
 
 import pytest
 
-from camdyn.runtime import dynacam, scene as scenes
-from camdyn.runtime.errors import CamdynInputError
+from camdyn.runtime.targets import dynacam, scene_files as scenes
+from camdyn.runtime.targets.resolve import KINDS, load_scene
+from camdyn.runtime.core.errors import CamdynInputError
 
 ROOT = Path(__file__).resolve().parents[1]
 
@@ -23,7 +24,7 @@ def _data(name):
 def test_builtin_scenes_load(name):
     sc = scenes.load(name)
     assert sc.variant.startswith("dynacam_")
-    assert set(sc.parameters) == {p for p in scenes._declared_parameters(sc.options)} - {"beta_0"}
+    assert set(sc.parameters) == {p for p in scenes.declared_parameters(sc.options)} - {"beta_0"}
 
 
 @pytest.mark.parametrize("edit,message", [
@@ -77,7 +78,7 @@ def test_characteristics_of_the_scenes_are_the_printed_ones():
     assert ch["Fv"] == pytest.approx(2.68, abs=0.05)
 
 
-# -- one format for every kind (issue 12, item 3) ----------------------------------------------
+# -- one format for every kind -------------------------------------------------------------------
 
 def _cli(*args, cwd=None):
     return subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", *args], capture_output=True,
@@ -94,9 +95,9 @@ def test_every_builtin_scene_loads_as_its_kind():
     for row in listed:
         data = _data(row["name"])
         assert row["kind"] == data["kind"] and row["title"] == data["title"]
-        kind, sc = scenes.load_any(row["name"])
+        kind, sc = load_scene(row["name"])
         assert kind == data["kind"] and isinstance(sc, types[kind])
-    assert {r["kind"] for r in listed} == set(scenes.KINDS)
+    assert {r["kind"] for r in listed} == set(KINDS)
 
 
 @pytest.mark.parametrize("name, drop, says", [
@@ -140,7 +141,7 @@ def test_bad_beam_scenes_are_refused_by_name(edit, message):
     d = copy.deepcopy(_data("beam_paper"))
     edit(d)
     with pytest.raises(CamdynInputError, match=message.replace("(", r"\(").replace("[", r"\[")):
-        scenes.kind_of(d, "x") and scenes.beam_from_dict(d)
+        scenes.kind_of(d, "x", KINDS) and scenes.beam_from_dict(d)
 
 
 def test_run_any_kind_writes_the_summary_of_its_own_command(tmp_path):
@@ -172,7 +173,7 @@ def test_runtime_options_are_the_declaration_s():
     from dataclasses import fields
 
     from camdyn.derive.models import dynacam as declared
-    from camdyn.runtime import variants
+    from camdyn.runtime.core import variants
 
     mine, theirs = fields(variants.Options), fields(declared.Options)
     assert [(f.name, f.default, f.metadata["doc"]) for f in mine] == \
@@ -192,7 +193,7 @@ def test_runtime_options_are_the_declaration_s():
 
 
 def test_variant_names_are_words_that_each_mean_one_thing():
-    """Issue 12, item 6: a variant's name spells its options with one word per choice and per
+    """A variant's name spells its options with one word per choice and per
     element switched on; no word stands for two things, so the name can be read back into the
     option set (all 4608 names distinct and parsed back to their options), and the generated
     file of every pre-generated variant states each option in words in its header."""

@@ -1,5 +1,5 @@
-"""Cam-law selection criteria of thesis sec. 9.2.2 (issue 14, item 4, first part):
-`camdyn laws --tau T --fa F`, thesis/selection.py."""
+"""Cam-law selection criteria of thesis sec. 9.2.2: `camdyn laws --tau T --fa F`,
+thesis/design/selection.py."""
 import json
 import math
 import subprocess
@@ -8,9 +8,10 @@ import sys
 import numpy as np
 import pytest
 
-from camdyn.runtime import closed_forms
-from camdyn.runtime.envelope import envelope, tau_grid
-from camdyn.thesis import impact, selection
+from camdyn.runtime.measure import references as closed_forms
+from camdyn.runtime.measure.envelope import envelope, tau_grid
+from camdyn.thesis.design import selection
+from camdyn.thesis.theory import impact
 
 
 def test_impact_sensitivity_of_the_cycloid():

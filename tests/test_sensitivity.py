@@ -1,4 +1,4 @@
-"""Tight tests behind the wide ones (issue 11, item 5).
+"""Tight tests behind the wide ones.
 
 Comparisons with numbers read from the thesis's diagrams need wide tolerances (sec. 7.4.7:
 errors up to 20 % are satisfactory), and a wrong formula can hide inside them: dropping the
@@ -28,10 +28,10 @@ from scipy.optimize import minimize_scalar
 
 import camdyn.runtime
 from camdyn.derive.models.dynacam import Options
-from camdyn.runtime import dynacam, scene as scenes
-from camdyn.runtime.methods import DP54
-from camdyn.runtime.residual import extreme
-from camdyn.runtime.simulate import simulate
+from camdyn.runtime.targets import dynacam, scene_files as scenes
+from camdyn.runtime.core.methods import DP54
+from camdyn.runtime.measure.extremes import extreme
+from camdyn.runtime.core.simulator import simulate
 
 SCENE_DIR = Path(camdyn.runtime.__file__).parent / "scenes"
 # the DYNACAM mechanisms (default.toml is the CAMSHAFT-1 study, beam_paper.toml the beam follower)
@@ -392,7 +392,7 @@ def _camshaft2_U0dd(tau, Fa, Fv, T_end=1.5):
     """(5.15), (5.16) with B(0) = 0, B'(0) = 1 up to B = 1, then the dwell amplitude.
 
     After B = 1, H = 1 and dH/dB = 0, so X is a free undamped vibration; the dwell window
-    (from B = 1 to T_end, as camdyn.runtime.residual takes it) holds a peak of |X''| when it
+    (from B = 1 to T_end, as camdyn.runtime.measure.residual takes it) holds a peak of |X''| when it
     is longer than tau/2, so U0'' is the amplitude.
     """
     w = 2 * math.pi / tau
@@ -438,7 +438,7 @@ CASES = {   # case: (scene, parameter changes from its file)
 
 @pytest.fixture(scope="module")
 def ladder():
-    """Per case: camdyn's run and reduced_models (as thesis/checks/dynacam.py forms them),
+    """Per case: camdyn's run and reduced_models (as thesis/checks/dynacam_checks.py forms them),
     the refined U0'' of its dense output, and the independent U0'' of the 4-, 2- and 1-DOF
     models at the hand-computed tau, Fa, Fv."""
     out = {}

@@ -1,13 +1,13 @@
-"""Shape-parameter sweep on a DYNACAM scene (thesis/shape_sweep.py, `camdyn laws --sweep`)
+"""Shape-parameter sweep on a DYNACAM scene (thesis/design/shape_sweep.py, `camdyn laws --sweep`)
 against plain scene runs and thesis fig. 8.8."""
 import dataclasses
 
 import numpy as np
 import pytest
 
-from camdyn.runtime import dynacam, scene as scenes
-from camdyn.runtime.errors import CamdynInputError
-from camdyn.thesis import shape_sweep
+from camdyn.runtime.targets import dynacam, scene_files as scenes
+from camdyn.runtime.core.errors import CamdynInputError
+from camdyn.thesis.design import shape_sweep
 
 
 @pytest.fixture(scope="module")
@@ -110,7 +110,7 @@ def test_cli_sweep_failed_run_is_status_1(capsys, monkeypatch):
     """A failed run is not bad input: status 1 with 'run failed', as every command (it was
     status 2, the input errors' status)."""
     from camdyn.runtime.cli import main
-    from camdyn.runtime.errors import SimulationError
+    from camdyn.runtime.core.errors import SimulationError
 
     def fails(*args, **kwargs):
         raise SimulationError("step budget used up")

@@ -1,7 +1,7 @@
-"""Failure is reported, never returned as a number (issue 13, item 3).
+"""Failure is reported, never returned as a number.
 
 Fixed-step methods (RK4, the thesis scheme "koster") refuse a step beyond their stability
-boundary and warn near it (camdyn.runtime.stability); DP54 reports where Hairer's stiffness
+boundary and warn near it (camdyn.runtime.core.stability); DP54 reports where Hairer's stiffness
 test fired (stiff_from_T).  References:
 
 * RK4's stability function R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24 and its region: Hairer &
@@ -21,9 +21,9 @@ import sys
 import numpy as np
 import pytest
 
-from camdyn.runtime import stability
-from camdyn.runtime.errors import SimulationError
-from camdyn.runtime.simulate import Simulator, simulate
+from camdyn.runtime.core import stability
+from camdyn.runtime.core.errors import SimulationError
+from camdyn.runtime.core.simulator import Simulator, simulate
 
 OMEGA = 2 * math.pi / 0.05   # one-DOF model at tau = 0.05: X'' = (2 pi/tau)^2 (H - X)
 
@@ -128,7 +128,8 @@ def test_koster_refused_beyond_its_boundary():
 
 
 def test_cli_rk4_beyond_the_limit_exits_1_with_one_line():
-    """The first command of the issue: it printed "U0": 1.13e+69 and exit 0."""
+    """RK4 beyond its stability limit on the one-DOF model: it once printed "U0": 1.13e+69 and
+    exit 0."""
     p = camdyn("residual", "--model", "one-dof", "--tau", "0.05", "--method", "rk4", "--step",
                "0.03", "--json")
     assert p.returncode == 1
@@ -141,7 +142,7 @@ def test_cli_rk4_beyond_the_limit_exits_1_with_one_line():
 
 
 def test_cli_camshaft1_near_the_limit_warns_fine_step_does_not():
-    """The second command of the issue: U0 78 % low at step 0.02 (h rho = 2.51, RK4 damps the
+    """RK4 near its stability limit on CAMSHAFT-1: U0 78 % low at step 0.02 (h rho = 2.51, RK4 damps the
     residual vibration by |R(2.51 i)| = 0.51 a step); it now warns, in JSON and on stderr.
     The fine step 0.002 (h rho = 0.25) gives no warning."""
     p = camdyn("residual", "--model", "camshaft1", "--tau", "0.05", "--fa", "2", "--method",
@@ -195,21 +196,22 @@ def test_cli_stiff_note_and_json():
 
 def test_method_names_without_the_compiled_runtime_are_the_methods():
     """`camdyn derive` builds its parser with the known method names when the compiled runtime
-    is older than its sources; they are the methods of runtime/methods.py."""
+    is older than its sources; they are the methods of runtime/core/methods.py."""
     import builtins
 
-    from camdyn.runtime import cli, methods
+    from camdyn.runtime import cli
+    from camdyn.runtime.core import methods
 
     real_import = builtins.__import__
 
     def no_methods(name, globals=None, locals=None, fromlist=(), level=0):
-        if level == 1 and fromlist and "methods" in fromlist:
+        if level >= 1 and fromlist and "methods" in fromlist:
             raise ImportError("stale runtime")
         return real_import(name, globals, locals, fromlist, level)
 
     builtins.__import__ = no_methods
     try:
-        fallback = cli._method_names()
+        fallback = cli.common.method_names()
     finally:
         builtins.__import__ = real_import
     assert fallback == (sorted(methods.METHODS), list(methods.ADAPTIVE))
@@ -232,12 +234,12 @@ def test_existing_failures_stay():
 def test_finite_difference_jacobian_of_the_compiled_rhs():
     """eval_jacobian_fd against the one-DOF model's Jacobian by hand, thesis (3.1) with the damper
     of (6.47): d(X, X')/dT = (X', w^2 (H - X) - 2 q w (X' - H')), J = [[0, 1], [-w^2, -2 q w]]."""
-    from camdyn.runtime import _integrate
-    from camdyn.runtime.models import load
+    from camdyn.runtime.engine import driver
+    from camdyn.runtime.core.models import load
 
     m = load("one_dof")
     res = simulate("one_dof", {"tau": 0.05, "q": 0.1}, 1.5, "dp54", rtol=1e-8)
-    J = _integrate.eval_jacobian_fd(m.capsule, res.p, res.law_codes, res.law_pars, res.t[:5],
+    J = driver.eval_jacobian_fd(m.capsule, res.p, res.law_codes, res.law_pars, res.t[:5],
                                  res.y[:5], np.ones(2), res.mode[:5])
     want = np.array([[0.0, 1.0], [-OMEGA ** 2, -2 * 0.1 * OMEGA]])
     assert np.allclose(J, want[None], rtol=1e-7, atol=1e-6)

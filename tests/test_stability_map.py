@@ -1,7 +1,7 @@
-"""Stability maps and measured boundaries (issue 13, item 6).
+"""Stability maps and measured boundaries.
 
 The boundaries are measured by running the compiled methods with the stability check off and
-bisecting the largest bounded step (runtime/stability_boundary.py), and set against the
+bisecting the largest bounded step (runtime/studies/stability_boundary.py), and set against the
 theory of the applicable axis (Hairer & Wanner, Solving ODEs II, sec. IV.2, fig. 2.1):
 
 * the undamped one-DOF model (3.1), lambda = +-i omega: RK4's imaginary-axis limit
@@ -22,9 +22,10 @@ import sys
 import numpy as np
 import pytest
 
-from camdyn.runtime import stability, stability_boundary as sb, stability_map as smap
-from camdyn.runtime.errors import SimulationError, UnstableStep
-from camdyn.runtime.simulate import Simulator
+from camdyn.runtime.core import stability
+from camdyn.runtime.studies import stability_boundary as sb, stability_map as smap
+from camdyn.runtime.core.errors import SimulationError, UnstableStep
+from camdyn.runtime.core.simulator import Simulator
 
 TAU = 0.05
 OMEGA = 2 * math.pi / TAU
@@ -57,7 +58,7 @@ def test_rk4_boundary_on_the_negative_real_axis():
 
 def test_koster_scheme_boundary_is_two_sqrt_two():
     """The thesis scheme with the mid-step elimination (4.25), run: 2 sqrt(2) (measured
-    2.82841); its step matrix in runtime/stability.py says the same."""
+    2.82841); its step matrix in runtime/core/stability.py says the same."""
     assert sb.koster_scheme_boundary() == pytest.approx(stability.KOSTER_BOUNDARY, rel=5e-3)
     x = 0.9 * stability.KOSTER_BOUNDARY
     X, V = sb.koster_scheme_step(0.3, -0.2, x, 1.0)
@@ -82,7 +83,7 @@ def test_compiled_koster_reaches_the_scheme_boundary():
 def test_compiled_koster_at_2_6_keeps_the_dwell_amplitude():
     """Newton's effect at h omega = 2.6, where the fixed-point iteration (factor 2.6^2/8 = 0.85)
     did not converge: the free vibration in the one-DOF model's dwell, X'' = w^2 (H - X) with
-    H = 1, is carried by the scheme's step matrix (runtime/stability.py's docstring,
+    H = 1, is carried by the scheme's step matrix (runtime/core/stability.py's docstring,
     ``koster_amplification``): [[a, b], [c, a]] on (u, u'/w), u = X - 1, determinant
     a^2 - bc = 1, so the quadratic form -c u^2 + b (u'/w)^2 is invariant (M^T diag(-c, b) M =
     diag(-c, b)): the amplitude is preserved, neither damped nor grown, over 2000 steps."""
@@ -216,18 +217,19 @@ def test_cli_refuses_bad_input_with_one_line(args, part, tmp_path):
     assert lines[0].startswith("camdyn stability: error:")
 
 
-# -- the beam follower (issue 13, item 6: E or N) --------------------------------------------
+# -- the beam follower (E or N) -------------------------------------------------------------
 
 def test_beam_map_cells_against_their_own_runs():
     """The beam follower's map over N (dp54, rodas4 over rtol): each cell's error is
     |max |v_E| - reference| / reference, recomputed here from an independent run of the same
-    case through runtime/beam.py (same figure to 1e-12), the reference DP54 at rtol 1e-9; at a
+    case through runtime/targets/beam.py (same figure to 1e-12), the reference DP54 at rtol 1e-9; at a
     threshold of 1e-5 the loose rtol 1e-3 is inaccurate and rtol 1e-8 fine (measured errors on
     N = 1: dp54 ~1e-4 / ~1e-9)."""
     from dataclasses import replace
 
-    from camdyn.runtime import beam, stability_beam
-    from camdyn.runtime.beam_case import Case
+    from camdyn.runtime.targets import beam
+    from camdyn.runtime.studies import stability_beam
+    from camdyn.runtime.targets.beam_case import Case
 
     m = stability_beam.run_map("N", [1], ["dp54", "rodas4"], [1e-3, 1e-8], threshold=1e-5)
     ref = beam.run(Case(modes=1, rtol=1e-9))[0]["max_abs_tip_deflection"]

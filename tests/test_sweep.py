@@ -1,4 +1,4 @@
-"""camdyn sweep (runtime/sweep.py): grids, the table, jobs and Dask, the refusals.
+"""camdyn sweep (runtime/studies/sweep.py): grids, the table, jobs and Dask, the refusals.
 
 The figures themselves are tested against the reference and the closed form in
 test_figures_compiled.py; here each grid point's figures are checked against a run of its
@@ -13,11 +13,12 @@ import warnings
 import numpy as np
 import pytest
 
-from camdyn.runtime import sweep
+from camdyn.runtime.studies import sweep
+from camdyn.runtime.measure.residual import FIGURES as RESIDUAL_FIGURES
 from camdyn.runtime.cli import main
-from camdyn.runtime.errors import CamdynInputError
-from camdyn.runtime.residual import residual
-from camdyn.runtime.simulate import simulate
+from camdyn.runtime.core.errors import CamdynInputError
+from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.core.simulator import simulate
 
 GRID = {"Fa": [0.0, 2.0], "tau": [0.12, 0.17, 0.3]}   # away from the dips of (3.5) at 1/n
 
@@ -71,17 +72,22 @@ def test_dask_local_cluster_gives_the_same_table(local):
 
 
 def test_csv_parquet_and_charts(local, tmp_path):
-    """sweep.csv has a column per axis, figure and statistic and reads back to the last bit;
-    sweep.parquet (with pyarrow) too; one chart per figure."""
+    """sweep.csv has a column per axis, figure, its error estimate, the warnings and the steps,
+    and reads back to the last bit; sweep.parquet (with pyarrow) too; one chart per figure."""
     files = local.write(tmp_path)
     with open(tmp_path / "sweep.csv") as fh:
         rows = list(csv.DictReader(fh))
-    assert list(rows[0]) == ["Fa", "tau", "U0", "U0dd", "Xdd_min_rise", "T_at_Xdd_min", "n_steps"]
+    assert list(rows[0]) == ["Fa", "tau", "U0", "U0_error", "U0dd", "U0dd_error", "Xdd_min_rise",
+                             "Xdd_min_rise_error", "T_at_Xdd_min", "T_at_Xdd_min_error",
+                             "warnings", "n_steps"]
     assert len(rows) == 6
     for k, row in enumerate(rows):
         for name, text in row.items():
-            assert float(text) == local[name][k]
-    for fig in sweep.RESIDUAL_FIGURES:
+            if name == "warnings":
+                assert text == local[name][k] == ""
+            else:
+                assert float(text) == local[name][k]
+    for fig in RESIDUAL_FIGURES:
         assert (tmp_path / f"{fig}.png").stat().st_size > 1000
     pq = pytest.importorskip("pyarrow.parquet")
     table = pq.read_table(tmp_path / "sweep.parquet").to_pydict()
@@ -131,7 +137,9 @@ def test_cli_writes_the_table(tmp_path, capsys):
     out = capsys.readouterr().out
     assert out.startswith("6 runs of camshaft1")
     with open(tmp_path / "sweep.csv") as fh:
-        assert fh.readline().strip() == "Fa,tau,U0,U0dd,Xdd_min_rise,T_at_Xdd_min,n_steps"
+        assert fh.readline().strip() == ("Fa,tau,U0,U0_error,U0dd,U0dd_error,Xdd_min_rise,"
+                                         "Xdd_min_rise_error,T_at_Xdd_min,T_at_Xdd_min_error,"
+                                         "warnings,n_steps")
 
 
 @pytest.mark.parametrize("argv,words", [
@@ -170,9 +178,9 @@ def test_cli_refusals_are_one_line(argv, words, capsys):
 
 def test_dynacam_scene_sweep_is_its_summary():
     """A DYNACAM scene (fig. 7.2's spring-loaded follower) swept over its follower stiffness
-    c_x: each row's figures are those of runtime/dynacam.py's summary of the scene with that
+    c_x: each row's figures are those of runtime/targets/dynacam.py's summary of the scene with that
     value, bit for bit (the same run; about 1 s)."""
-    from camdyn.runtime import dynacam, scene as scenes
+    from camdyn.runtime.targets import dynacam, scene_files as scenes
 
     sc = scenes.load("spring_loaded")
     name = "c_x"
@@ -186,15 +194,15 @@ def test_dynacam_scene_sweep_is_its_summary():
 
 
 def test_error_estimate_is_the_change_at_a_tenth_of_rtol():
-    """errors=True: <figure>_error = |v(rtol) - v(rtol/10)| (runtime/accuracy.py), the second
-    sweep's own figures; at tau = 0.15, Fa = 2 (thesis sec. 4.7's case) it bounds the true
+    """<figure>_error = |v(rtol) - v(rtol/10)| plus the scan's sampling error (none here;
+    runtime/measure/contract.py), the second sweep's own figures; at tau = 0.15, Fa = 2 (thesis sec. 4.7's case) it bounds the true
     error of U0, U0'' against rtol 1e-12 within a factor 10 (as tests/test_accuracy.py
     asks of camdyn residual)."""
     grid = {"Fa": [2.0], "tau": [0.15]}
-    est = sweep.sweep("camshaft1", grid, rtol=1e-8, errors=True, jobs=1, progress=False)
+    est = sweep.sweep("camshaft1", grid, rtol=1e-8, jobs=1, progress=False)
     tight = sweep.sweep("camshaft1", grid, rtol=1e-9, jobs=1, progress=False)
     ref = sweep.sweep("camshaft1", grid, rtol=1e-12, jobs=1, progress=False)
-    for name in sweep.RESIDUAL_FIGURES:
+    for name in RESIDUAL_FIGURES:
         assert est[f"{name}_error"][0] == abs(est[name][0] - tight[name][0])
     for name in ("U0", "U0dd"):
         true = abs(est[name][0] - ref[name][0])
@@ -206,7 +214,7 @@ def test_a_dwell_shorter_than_a_period_is_refused():
     vibration after T = 1 it came out too small (camshaft1 at tau = 0.1, t_end = 1.0001:
     7.0e-4 against 1.76e-3).  Refused below 1 + tau; from 1 + tau on, the one-DOF model's U0
     is (3.5), tau^3/(1 - tau^2)/pi |sin(pi/tau)|, to 1e-6."""
-    from camdyn.runtime import closed_forms as cf
+    from camdyn.runtime.measure import references as cf
 
     with pytest.raises(CamdynInputError, match=r"t_end >= 1\.3"):
         sweep.sweep("one_dof", {"tau": [0.23, 0.3]}, t_end=1.25, jobs=1, progress=False)
@@ -227,16 +235,16 @@ def test_a_one_point_grid_is_drawn(tmp_path):
 
 
 def test_dynacam_error_estimates_are_for_run_figures_only():
-    """--error-estimate on a DYNACAM scene: a column <figure>_error for the run's figures, each
-    |v - v'| of the run at rtol/10 (runtime/accuracy.py), and none for tau, Fa, Fv (they follow
-    from the parameters) or jump_occurs (a yes or no)."""
-    from camdyn.runtime import dynacam, scene as scenes
+    """A DYNACAM scene's sweep: a column <figure>_error for the run's figures, each |v - v'| of
+    the run at rtol/10 (runtime/measure/contract.py), 0 for tau, Fa, Fv (they follow from the
+    parameters, exactly) and none for jump_occurs (a yes or no)."""
+    from camdyn.runtime.targets import dynacam, scene_files as scenes
 
     sc = scenes.load("fig8_1b")
-    res = sweep.sweep("fig8_1b", {"c_x": [sc.parameters["c_x"]]}, jobs=1, progress=False,
-                      errors=True)
+    res = sweep.sweep("fig8_1b", {"c_x": [sc.parameters["c_x"]]}, jobs=1, progress=False)
     names = set(res.names)
-    assert {"tau_error", "Fa_error", "Fv_error", "jump_occurs_error"}.isdisjoint(names)
+    assert "jump_occurs_error" not in names
+    assert [res[f"{k}_error"][0] for k in ("tau", "Fa", "Fv")] == [0.0, 0.0, 0.0]
     summary, _ = dynacam.run(sc)
     errs = dynacam.errors(sc, summary)
     for key in ("U0", "U0dd", "Xdd_min_rise"):
@@ -246,7 +254,7 @@ def test_dynacam_error_estimates_are_for_run_figures_only():
 def test_turn_scene_sweep_adds_the_return(tmp_path):
     """A DYNACAM scene with a [turn]: the sweep's table has the return's figures too, each
     equal to the summary of a plain `simulate` run of that scene (the same run, bit for bit)."""
-    from camdyn.runtime import dynacam, scene as scenes
+    from camdyn.runtime.targets import dynacam, scene_files as scenes
 
     text = (scenes.builtin("spring_loaded").read_text().replace("T_end = 1.5", "T_end = 5.0")
             + "\n[turn]\nupper_dwell = 50\nreturn = 40\n")

@@ -8,11 +8,11 @@ import numpy as np
 import pytest
 
 from camdyn.generated import camlaws as lib
-from camdyn.runtime import laws
-from camdyn.runtime.errors import CamdynInputError
-from camdyn.runtime.models import load
-from camdyn.runtime.profile import RDFD
-from camdyn.runtime.simulate import simulate, stop_times
+from camdyn.runtime.core import laws
+from camdyn.runtime.core.errors import CamdynInputError
+from camdyn.runtime.core.models import load
+from camdyn.runtime.cam.motion import RDFD
+from camdyn.runtime.core.simulator import simulate, stop_times
 
 TAU = 0.15   # one_dof's T_e/t_m (3.3), the thesis's example value
 
@@ -114,7 +114,7 @@ def test_compose_errors_name_the_argument():
 def test_cam_profile_turn_is_the_profile_motion():
     """CamProfile.turn drives a model with the motion the profile command cuts: its H^(k)
     times stroke/beta^k equals the profile's displacement S^(k)(phi), to 1e-12."""
-    from camdyn.runtime.cam_profile import CamProfile
+    from camdyn.runtime.cam.profile import CamProfile
 
     cam = CamProfile(0.02, 0.05, 0.01, angles_deg=(120, 30, 150, 60), law="modified-sine",
                      law_parameter=0.12)

@@ -1,4 +1,4 @@
-"""Geometry of the grooved disk cam with a translating roller follower (issue 5, item 1).
+"""Geometry of the grooved disk cam with a translating roller follower.
 
 Source: *Transverse Vibration Analysis of a Translating Roller-Follower Cam Using
 Cycloidal Profile for RDFD Motion*, cited as "paper (n)".
@@ -298,7 +298,7 @@ def wall_curvature(side: str) -> sp.Expr:
     Left unsimplified (its r''' terms cancel, but simplify is slow); for the
     offset by d = -/+ r_r it equals kappa_p / |1 + d kappa_p|, so the wall's radius
     of curvature is rho_p -/+ r_r wherever the wall is not undercut (the undercut test on
-    the pitch curve's curvature is :mod:`camdyn.runtime.profile`, in NumPy).
+    the pitch curve's curvature is :mod:`camdyn.runtime.cam.motion`, in NumPy).
     """
     return signed_curvature(groove_walls()[_side(side)])
 

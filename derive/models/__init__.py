@@ -15,7 +15,7 @@ REGISTRY = {
     "motor1": motor.build_first_order,
     "motor2": motor.build_second_order,
     "roller": roller.build,
-    # the same held without backlash: smooth, the stiff benchmark case (issue 13, item 8)
+    # the same held without backlash: smooth, the stiff benchmark case (bench/stiff.py)
     "roller_bilateral": roller.build_bilateral,
     # the second constrained model, a pendulum in dependent coordinates: the constraint layer
     # (dae.py) serves any declaration, not the beam follower only
@@ -47,5 +47,5 @@ for _opts in DYNACAM_VARIANTS:
 
 for _n in range(1, beam.N_MAX + 1):
     REGISTRY[f"beam{_n}"] = partial(beam.build, _n)
-"""The Rayleigh-beam follower with N = 1..6 assumed modes (issue 5: the user picks N)."""
+"""The Rayleigh-beam follower with N = 1..6 assumed modes (the paper's rod; the user picks N)."""
 

@@ -129,7 +129,7 @@ def build_bilateral() -> Model:
     ways (F_c = kappa omega^2 delta + 2 zeta sqrt(mu kappa) omega delta', linear), so the
     contact never opens and there are no modes or events.  The smooth stiff case of the
     benchmarks: a fast mode of omega sqrt((kappa + 1)/mu) that only rings, undamped at
-    zeta = 0, in series with the follower (issue 13, item 8)."""
+    zeta = 0, in series with the follower (thesis sec. 9.2.1)."""
     x, r, h = X(T), R(T), H(T)
     w = 2 * sp.pi / tau.symbol
     k_c = kappa.symbol * w**2

@@ -1,5 +1,6 @@
-"""Re-run the reviewer's mutants of issue 11 and show which tests kill them
-(`make mutation-findings`).
+"""Re-run the mutants that showed the test suite's gaps in a review, and the tests that kill them.
+
+`make mutation-findings`.
 
 Each finding in ``findings.toml`` is one hand-made mutant: a line of a module replaced by a
 wrong one.  In a scratch copy of the tree (``build/mutation/finding-<n>``, the layout of
@@ -66,7 +67,7 @@ def regenerate(tree: Path, models: list) -> None:
 
 
 def rebuild(tree: Path, names: list) -> None:
-    for sub in ("", "runtime", "generated"):       # package markers for Cython's cimport
+    for sub in ("", "runtime", "runtime/engine", "generated"):   # package markers for Cython's cimport
         (tree / "camdyn" / sub / "__init__.pxd").touch()
     # setup() would read the tree's pyproject.toml (the project's own build); keep it out
     pyproject = tree / "pyproject.toml"
@@ -103,7 +104,7 @@ def main(argv=None) -> int:
     ap.add_argument("--out", type=Path, default=ROOT / "out" / "mutation" / "findings.md")
     args = ap.parse_args(argv)
     findings = tomllib.loads((HERE / "findings.toml").read_text())["finding"]
-    lines = ["# Issue 11's findings, re-run as mutants (make mutation-findings)", "",
+    lines = ["# The review's findings, re-run as mutants (make mutation-findings)", "",
              "| # | mutant | the older tests | now caught by |", "|---|---|---|---|"]
     missed = 0
     for k, f in enumerate(findings, start=1):

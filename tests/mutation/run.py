@@ -59,8 +59,8 @@ class Target:
         (a -k expression would filter the other files' tests too)."""
         args = [t for t in self.tests if (tree / t).exists()]
         if self.checks:
-            p = subprocess.run([sys.executable, "-c", "from camdyn.thesis import checks; "
-                                "print('\\n'.join(c.key for c in checks.registry()))"],
+            p = subprocess.run([sys.executable, "-c", "from camdyn.thesis.checks import suite; "
+                                "print('\\n'.join(c.key for c in suite.registry()))"],
                                cwd=tree, env=tree_env(tree), capture_output=True, text=True, check=True)
             keys = [k for k in p.stdout.split() if k.startswith(tuple(self.checks))]
             if not keys:
@@ -104,7 +104,7 @@ def make_tree(name: str, source: Path) -> Path:
     (tree / "camdyn" / "__init__.py").write_text("")
     shutil.copytree(source / "tests", tree / "tests", ignore=ignore)
     shutil.copyfile(source / "pyproject.toml", tree / "pyproject.toml")
-    if not any((tree / "camdyn" / "runtime").glob("_integrate*.so")):
+    if not any((tree / "camdyn" / "runtime" / "engine").glob("driver*.so")):
         raise SystemExit(f"{source}: the extensions are not built; run `make build` first")
     return tree
 

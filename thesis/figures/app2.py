@@ -1,17 +1,17 @@
 """The cam laws themselves: figs A.2.2, A.2.3 (nominal characteristics of the cycloid and the
-modified sine) and fig. 8.7 (the two accelerations side by side), from runtime/laws.py, the
+modified sine) and fig. 8.7 (the two accelerations side by side), from runtime/core/laws.py, the
 library the simulations use."""
 from __future__ import annotations
 
 import numpy as np
 
-from . import Claim, Figure
-from ._plot import plt, save
+from .figure import Claim, Figure
+from .plotting import plt, save
 
 
 def _characteristics(law: str, theta, name: str, title: str):
     def build(out_dir, quick):
-        from camdyn.runtime.laws import choose
+        from camdyn.runtime.core.laws import choose
 
         T = np.linspace(0.0, 1.0, 1001)
         H = choose(law, theta).evaluate(T)
@@ -30,7 +30,7 @@ def _characteristics(law: str, theta, name: str, title: str):
 
 
 def _fig8_7(out_dir, quick):
-    from camdyn.runtime.laws import choose
+    from camdyn.runtime.core.laws import choose
 
     T = np.linspace(0.0, 1.0, 1001)
     p = plt()

@@ -5,15 +5,15 @@ import math
 
 import numpy as np
 
-from . import Claim, Figure
-from ._plot import dwell_shade, plt, save
+from .figure import Claim, Figure
+from .plotting import dwell_shade, plt, save
 
 TAUS_3_3 = (2 / 9, 1 / 4, 2 / 5, 1.0)
 """The curves of fig. 3.3 (legend read as tau = 2/9, 1/4, 2/5, 1)."""
 
 
 def _fig3_3(out_dir, quick):
-    from camdyn.runtime.simulate import simulate
+    from camdyn.runtime.core.simulator import simulate
 
     T = np.linspace(0.0, 2.0, 1201 if quick else 4001)
     p = plt()
@@ -35,7 +35,7 @@ def _fig3_3(out_dir, quick):
 
 
 def _fig3_4(out_dir, quick):
-    from camdyn.runtime.simulate import simulate
+    from camdyn.runtime.core.simulator import simulate
 
     tau, q, td = 0.15, 0.06, 1.5
     T = np.linspace(0.0, 1.0 + td, 2001 if quick else 6001)
@@ -63,7 +63,7 @@ def _fig3_4(out_dir, quick):
 
 def _fig3_5(out_dir, quick):
     """One DOF under the ramp h' = v_b t (the law 'uniform' during 0 <= T < 1), tau = 0.13."""
-    from camdyn.runtime.simulate import simulate
+    from camdyn.runtime.core.simulator import simulate
 
     tau = 0.13
     T = np.linspace(0.0, 1.0, 1001 if quick else 3001)

@@ -1,5 +1,5 @@
 """Chapter 4, CAMSHAFT-1: figs 4.10 and 4.11a-c, drawn from one run of the CAMSHAFT-1 study of
-``camdyn run`` (runtime/report.py), whose report.json holds every graph's data."""
+``camdyn run`` (runtime/targets/camshaft1_study.py), whose report.json holds every graph's data."""
 from __future__ import annotations
 
 import json
@@ -9,8 +9,8 @@ from pathlib import Path
 
 import numpy as np
 
-from . import Claim, Figure
-from ._plot import plt, save
+from .figure import Claim, Figure, Trend
+from .plotting import plt, save
 
 QUICK_GRAPHS = {"n_tau": 48, "Fa": [0.0, 0.5, 2.0]}
 """--quick: a coarser tau grid (3 points per tuning dip) and three Fa of the six."""
@@ -20,14 +20,14 @@ QUICK_GRAPHS = {"n_tau": 48, "Fa": [0.0, 0.5, 2.0]}
 def study(out_dir: str, quick: bool) -> dict:
     """Run the default scene's study once into out_dir/camshaft1_study (report.md, graphs.png,
     response.png, envelopes.csv, report.json) and return report.json."""
-    from camdyn.runtime import report
+    from camdyn.runtime.targets.camshaft1_study import StudyTarget, load_scene
 
-    scene = report.load_scene(None)
+    scene = load_scene(None)
     if quick:
         scene = {**scene, "study": {**scene["study"],
                                     "graphs": {**scene["study"]["graphs"], **QUICK_GRAPHS}}}
     where = Path(out_dir) / "camshaft1_study"
-    report.main_job(scene, where, progress=False)
+    StudyTarget.from_scene(scene).study(where)
     data = json.loads((where / "report.json").read_text())
     data["folder"] = str(where)
     return data
@@ -48,8 +48,8 @@ def _graphs(data):
 def _graph_with_envelopes(out_dir, quick, figure: str, closed_form: str, log: bool):
     """fig. 4.11a (U0) or 4.11c (U0''): the raw graph per Fa, the envelope through its maxima
     in bold, and the closed form (3.5) or (3.6) of Fa = 0 dotted."""
-    from camdyn.runtime import closed_forms
-    from camdyn.runtime.envelope import envelope
+    from camdyn.runtime.measure import references as closed_forms
+    from camdyn.runtime.measure.envelope import envelope
 
     data = study(str(out_dir), quick)
     taus, rows = _graphs(data)
@@ -96,29 +96,29 @@ def _fig4_11c(out_dir, quick):
     return _graph_with_envelopes(out_dir, quick, "fig4_11c", "U0dd", log=False)
 
 
-def _decel_trend() -> tuple[str, bool]:
+def _decel_trend() -> Trend:
     """-X''min during the rise at tau = 0.15 for Fa = 0, 0.5, 1, 2: rising with Fa, above 2 pi."""
-    from camdyn.runtime.residual import residual
-    from camdyn.runtime.simulate import simulate
+    from camdyn.runtime.measure.residual import residual
+    from camdyn.runtime.core.simulator import simulate
 
     fas = (0.0, 0.5, 1.0, 2.0)
     d = [-residual(simulate("camshaft1", {"tau": 0.15, "Fa": Fa}, 3.0, "dp54",
                             rtol=1e-9)).Xdd_min_rise for Fa in fas]
-    shown = ", ".join(f"{v:.3g}" for v in d) + f" at Fa = {', '.join(f'{f:g}' for f in fas)}"
-    return shown, all(b > a for a, b in zip(d, d[1:])) and d[-1] > 2 * np.pi
+    text = ", ".join("{:.3g}" for _ in d) + f" at Fa = {', '.join(f'{f:g}' for f in fas)}"
+    return Trend(text, tuple(d), all(b > a for a, b in zip(d, d[1:])) and d[-1] > 2 * np.pi)
 
 
-def _lag_trend() -> tuple[str, bool]:
+def _lag_trend() -> Trend:
     """X'' at T = 0.25 (nominal peak 2 pi) for Fa = 2, tau = 0.15: below the nominal."""
-    from camdyn.runtime.simulate import simulate
+    from camdyn.runtime.core.simulator import simulate
 
     v = float(simulate("camshaft1", {"tau": 0.15, "Fa": 2.0}, 1.0, "dp54",
                        rtol=1e-9).sample([0.25])["Xdd"][0])
-    return f"X''(0.25) = {v:.3g} against 2 pi = {2 * np.pi:.3g}", v < 2 * np.pi
+    return Trend(f"X''(0.25) = {{:.3g}} against 2 pi = {2 * np.pi:.3g}", (v,), v < 2 * np.pi)
 
 
 def figures() -> list[Figure]:
-    note = ("Drawn from the CAMSHAFT-1 study of `camdyn run` (runtime/report.py), the same runs "
+    note = ("Drawn from the CAMSHAFT-1 study of `camdyn run` (runtime/targets/camshaft1_study.py), the same runs "
             "that give out/report.md.")
     return [
         Figure("4.10", "thesis", "CAMSHAFT-1 (variable fictitious angular velocity): output "

@@ -5,9 +5,9 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..checks import Check
-from . import Claim, Figure
-from ._plot import dwell_shade, plt, save
+from ..checks.check import Check
+from .figure import Claim, Figure
+from .plotting import dwell_shade, plt, save
 
 CURVES_5_6 = ((0.15, 10.0, "(1) Fa = 0.15, Fv = 10: rigid shaft, light cam"),
               (1.5, 10.0, "(2) Fa = 1.5, Fv = 10: flexible shaft, light cam"),
@@ -20,7 +20,7 @@ FV_5_7 = (0.1, 1.0, 10.0)
 
 
 def _fig5_6(out_dir, quick):
-    from camdyn.runtime.simulate import simulate
+    from camdyn.runtime.core.simulator import simulate
 
     T = np.linspace(0.0, 2.0, 1201 if quick else 4001)
     rows = (("X", "X"), ("Xdd", "X''"), ("Bdd", "B''"), ("windup", "dB (wind-up)"),
@@ -44,9 +44,9 @@ def _fig5_6(out_dir, quick):
 @lru_cache(maxsize=None)
 def _sweep(Fa: float, quick: bool) -> tuple:
     """(taus, {Fv: U0 list}, U0 of CAMSHAFT-1) on the graph grid of fig. 4.11."""
-    from camdyn.runtime.envelope import tau_grid
-    from camdyn.runtime.residual import residual
-    from camdyn.runtime.simulate import simulate
+    from camdyn.runtime.measure.envelope import tau_grid
+    from camdyn.runtime.measure.residual import residual
+    from camdyn.runtime.core.simulator import simulate
 
     taus = tau_grid(0.06, 0.7, 48 if quick else 240)
     curves = {Fv: [residual(simulate("camshaft2", {"tau": float(t), "Fa": Fa, "Fv": Fv}, 3.0,
@@ -58,8 +58,8 @@ def _sweep(Fa: float, quick: bool) -> tuple:
 
 def _fig5_7(Fa: float, name: str):
     def build(out_dir, quick):
-        from camdyn.runtime import closed_forms
-        from camdyn.runtime.envelope import envelope
+        from camdyn.runtime.measure import references as closed_forms
+        from camdyn.runtime.measure.envelope import envelope
 
         taus, curves, one = _sweep(Fa, quick)
         p = plt()
@@ -82,8 +82,8 @@ def _fig5_7(Fa: float, name: str):
 
 def _fig5_8(out_dir, quick):
     """Frozen natural frequencies of CAMSHAFT-2 along the rise (the generated M, K at each cam
-    position, thesis/checks/camshaft2.py) for w_ex > w_eb and w_ex < w_eb."""
-    from ..checks.camshaft2 import frozen_eigenvalues
+    position, thesis/checks/camshaft2_checks.py) for w_ex > w_eb and w_ex < w_eb."""
+    from ..checks.camshaft2_checks import frozen_eigenvalues
 
     B = np.linspace(0.0, 1.0, 51 if quick else 201)
     p = plt()
@@ -103,8 +103,8 @@ def _fig5_8(out_dir, quick):
 
 def _U0_heavy_cam_limit() -> float:
     """U0 of CAMSHAFT-2 at Fv = 1e-6 (the limit Fv -> 0), Fa = 0.3, tau = 2/5."""
-    from camdyn.runtime.residual import residual
-    from camdyn.runtime.simulate import simulate
+    from camdyn.runtime.measure.residual import residual
+    from camdyn.runtime.core.simulator import simulate
 
     return residual(simulate("camshaft2", {"tau": 0.4, "Fa": 0.3, "Fv": 1e-6}, 3.0, "dp54",
                              rtol=1e-10)).U0

@@ -1,31 +1,31 @@
 """Chapter 7, the DYNACAM simulations of the two measured mechanisms: figs 7.12-7.16.
 
-The runs are those of the checks (thesis/checks/dynacam.py, cached there), so a figure and the
+The runs are those of the checks (thesis/checks/dynacam_checks.py, cached there), so a figure and the
 statement beside it come from one simulation; the diagrams are drawn by
-:func:`camdyn.runtime.dynacam.plot`, as `camdyn simulate SCENE --out` draws them."""
+:func:`camdyn.runtime.targets.dynacam.plot`, as `camdyn simulate SCENE --out` draws them."""
 from __future__ import annotations
 
 from pathlib import Path
 
 import numpy as np
 
-from . import Claim, Figure
-from ._plot import dwell_shade, dynacam_diagrams, plt, save
+from .figure import Claim, Figure
+from .plotting import dwell_shade, dynacam_diagrams, plt, save
 
 
 def _diagrams(scene: str, backlash: bool, slug: str, keys):
     """Builder: DYNACAM's diagrams ``keys`` (of dynacam.DIAGRAMS) of a built-in scene into
     out_dir/slug/ (the diagrams not asked for are removed)."""
     def build(out_dir, quick):
-        from ..checks.dynacam import _run   # the checks' cached run: one simulation for both
+        from ..checks.dynacam_checks import scene_run   # the checks' cached run: one simulation for both
 
-        return dynacam_diagrams(*_run(scene, backlash), Path(out_dir) / slug, keys)
+        return dynacam_diagrams(*scene_run(scene, backlash), Path(out_dir) / slug, keys)
     return build
 
 
 def _fig7_14(out_dir, quick):
     """CAMSHAFT-1 with the numbers of fig. 7.14 (tau = 0.08, Fa = 3.34)."""
-    from camdyn.runtime.simulate import simulate
+    from camdyn.runtime.core.simulator import simulate
 
     T = np.linspace(0.0, 1.5, 1501 if quick else 3001)
     s = simulate("camshaft1", {"tau": 0.08, "Fa": 3.34}, 1.5, "dp54", rtol=1e-10).sample(T)

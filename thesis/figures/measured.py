@@ -2,7 +2,7 @@
 index says why they are not drawn, with the numbers read from them that are checked."""
 from __future__ import annotations
 
-from . import Claim, Figure
+from .figure import Claim, Figure
 
 MEASURED = "a measurement on the test machines; a model cannot reproduce a recording"
 

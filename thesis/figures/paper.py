@@ -1,14 +1,14 @@
 """The paper's figs 4-9 (Rayleigh-beam follower of a roller cam, RDFD motion): the tip
-deflection v_E against the cam angle with one parameter varied (runtime/beam.py, its FIGURES
+deflection v_E against the cam angle with one parameter varied (runtime/targets/beam.py, its FIGURES
 table), each with the trend the paper states, computed from the same runs."""
 from __future__ import annotations
 
-from functools import lru_cache
-
 import numpy as np
 
-from . import Claim, Figure
-from ._plot import plt, save
+from camdyn.thesis.runcache import cached_runs
+
+from .figure import Claim, Figure, Trend
+from .plotting import plt, save
 
 STATEMENTS = {
     "fig4_modes": ("Convergence of the tip response with the number of modes N = 2, 3, 4",
@@ -27,10 +27,10 @@ STATEMENTS = {
 """name in beam.FIGURES -> (caption, the paper's statement, sec. 4 and 5 of the paper)."""
 
 
-@lru_cache(maxsize=None)
+@cached_runs
 def _sweep(name: str) -> tuple:
     """(values, peaks max |v_E| in m, sampled curves) of one figure's three runs."""
-    from camdyn.runtime import beam
+    from camdyn.runtime.targets import beam
 
     field, values, _ = beam.FIGURES[name]
     case = beam.Case()
@@ -45,7 +45,7 @@ def _sweep(name: str) -> tuple:
 
 def _builder(name: str):
     def build(out_dir, quick):
-        from camdyn.runtime import beam
+        from camdyn.runtime.targets import beam
 
         _, _, label = beam.FIGURES[name]
         values, peaks, curves = _sweep(name)
@@ -62,13 +62,14 @@ def _builder(name: str):
 
 
 def _trend(name: str):
-    def compute():
-        values, peaks, _ = _sweep(name)
-        shown = "peaks " + ", ".join(f"{p * 1e3:.4g}" for p in peaks) + " mm"
+    def compute() -> Trend:
+        _, peaks, _ = _sweep(name)
+        mm = tuple(p * 1e3 for p in peaks)
+        text = "peaks " + ", ".join("{:.4g}" for _ in mm) + " mm"
         if name == "fig4_modes":
             rel = abs(peaks[1] - peaks[2]) / peaks[2]
-            return f"{shown}; N = 3 against 4: {rel:.1e} relative", rel < 0.01
-        return shown, all(b > a for a, b in zip(peaks, peaks[1:]))
+            return Trend(text + "; N = 3 against 4: {:.1e} relative", mm + (rel,), rel < 0.01)
+        return Trend(text, mm, all(b > a for a, b in zip(peaks, peaks[1:])))
     return compute
 
 
@@ -78,7 +79,7 @@ def figures() -> list[Figure]:
         out.append(Figure(f"paper {k}", "paper", caption, _builder(name),
                           claims=(Claim(trend=_trend(name), text=statement,
                                         reference=f"paper sec. 4, fig. {k}"),),
-                          note="paper case of sec. 4 (runtime/beam.py Case()); base radii of "
+                          note="paper case of sec. 4 (runtime/targets/beam.py Case()); base radii of "
                                "fig. 8 taken (not printed)" if k == 8 else
-                               "paper case of sec. 4 (runtime/beam.py Case())"))
+                               "paper case of sec. 4 (runtime/targets/beam.py Case())"))
     return out

@@ -1,0 +1,435 @@
+"""The cam itself: a radial disk cam for a translating roller follower.
+
+Pitch curve, profile (open cam) or both groove walls (groove cam), pressure angle and radius
+of curvature along the cam angle, the undercut and pressure-angle checks, and writers for
+CSV, DXF (through ezdxf) and a PNG sheet.  NumPy on the compiled cam-law library; no SymPy.
+
+The motion is :class:`camdyn.runtime.cam.motion.RDFD` (rise, upper dwell, return with the same
+law mirrored or a law of its own, lower dwell to 360 deg), and the walls are the envelopes of the roller circles
+tested as in :func:`camdyn.runtime.cam.motion.undercut` (the wall offset by d has tangent
+p'(1 + d kappa_p)); here the follower axis may be offset.
+
+Conventions (SI throughout, angles in rad unless named *_deg):
+
+* r_b is the base circle of the cam *profile* (its smallest radius); the roller centre at
+  the lowest point of the stroke lies on the prime circle r_p0 = r_b + r_r.
+* Ground frame: cam centre at the origin, the follower translates along the line y = e,
+  moving in +x as it rises; its roller centre is (d0 + s, e) with d0 = sqrt(r_p0^2 - e^2).
+  The cam turns clockwise by phi, so in the cam frame the pitch point is
+  p(phi) = R(phi) (d0 + s, e), traced counter-clockwise; with e = 0 the pitch point's polar
+  angle is phi and p = (r_p0 + s)(cos phi, sin phi), the convention of profile.RDFD.
+  e > 0 puts the axis on the side the cam surface comes from (it lowers the pressure angle
+  on the rise).
+* Pressure angle: tan alpha = (s' - e) / (d0 + s), s' = ds/dphi, the angle between the
+  follower's axis and the common normal; positive on the rise.
+* Curvature kappa_p of the pitch curve is signed, positive where it is convex; rho_p = 1/kappa_p.
+  The profile of an open cam (and the groove's inner wall) is p - r_r n with n the outward
+  normal, radius of curvature rho_p - r_r; the groove's outer wall is p + r_r n, rho_p + r_r.
+"""
+from __future__ import annotations
+
+import csv
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+
+import numpy as np
+from scipy.optimize import minimize_scalar
+
+from ..core.errors import CamdynInputError
+from ..core.laws import choose
+from .motion import RDFD, failing_spans
+
+TWO_PI = 2 * math.pi
+
+
+@dataclass(frozen=True)
+class Check:
+    """One design check: ``ok``, where it is worst and the intervals where it fails (deg)."""
+
+    name: str
+    ok: bool
+    worst_deg: float
+    value: float
+    limit: float
+    intervals_deg: tuple
+    message: str
+
+    def as_dict(self) -> dict:
+        # strict JSON: no curvature of that sign at all (rho infinite) is null
+        return {"check": self.name, "ok": self.ok, "worst_angle_deg": self.worst_deg,
+                "value": self.value if math.isfinite(self.value) else None, "limit": self.limit,
+                "intervals_deg": [list(iv) for iv in self.intervals_deg],
+                "message": self.message}
+
+
+def _law(flag: str, key: str, parameter):
+    """choose(key, parameter), its refusal naming the option (laws.choose says theta, the
+    option is --law-parameter or --return-law-parameter)."""
+    try:
+        return choose(key, parameter)
+    except CamdynInputError as exc:
+        which = f"{flag}-parameter" if parameter is not None else flag
+        raise CamdynInputError(f"{which} ({key}): {exc}") from None
+
+
+def _positive(name, value, low=0.0, strict=True, high=None):
+    try:
+        value = float(value)
+    except (TypeError, ValueError):
+        raise CamdynInputError(f"{name} must be a number, got {value!r}") from None
+    bad = not math.isfinite(value) or (value <= low if strict else value < low) \
+        or (high is not None and value >= high)
+    if bad:
+        rng = f"{'>' if strict else '>='} {low:g}" + (f" and < {high:g}" if high is not None else "")
+        raise CamdynInputError(f"{name}={value:g} is out of range: it must be finite and {rng}")
+    return value
+
+
+@dataclass(frozen=True)
+class CamProfile:
+    """A radial disk cam with a translating roller follower (see the module's conventions)."""
+
+    stroke: float
+    base_radius: float
+    roller_radius: float
+    offset: float = 0.0
+    angles_deg: tuple = (90.0, 90.0, 90.0, 90.0)
+    law: str = "cycloidal"
+    law_parameter: float | None = None
+    return_law: str | None = None
+    """The return's law (None: the rise's law and parameter, mirrored)."""
+    return_law_parameter: float | None = None
+    groove: bool = False
+    points_per_degree: int = 10
+    max_pressure_angle_deg: float = 30.0
+    cam: RDFD = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self):
+        h = _positive("stroke", self.stroke, strict=False)
+        rb = _positive("base-radius", self.base_radius)
+        rr = _positive("roller-radius", self.roller_radius)
+        try:
+            e = float(self.offset)
+        except (TypeError, ValueError):
+            raise CamdynInputError(f"offset must be a number, got {self.offset!r}") from None
+        if not math.isfinite(e) or abs(e) >= rb + rr:
+            raise CamdynInputError(f"offset={e:g} is out of range: |offset| < base-radius + "
+                                   f"roller-radius = {rb + rr:g}")
+        ang = tuple(self.angles_deg)
+        if len(ang) != 4:
+            raise CamdynInputError(f"angles must be four values rise,upper dwell,return,lower "
+                                   f"dwell in deg, got {len(ang)}")
+        names = ("rise", "upper dwell", "return", "lower dwell")
+        ang = tuple(_positive(f"angles ({n})", a, strict=n in ("rise", "return"))
+                    for n, a in zip(names, ang))
+        if abs(sum(ang) - 360.0) > 1e-9:
+            raise CamdynInputError(f"angles must sum to 360 deg (rise + upper dwell + return + "
+                                   f"lower dwell), got {sum(ang):g}")
+        ppd = self.points_per_degree
+        if not isinstance(ppd, (int, np.integer)) or not 1 <= ppd <= 1000:
+            raise CamdynInputError(f"points-per-degree={ppd!r} is out of range: an integer "
+                                   f"from 1 to 1000")
+        _positive("max-pressure-angle", self.max_pressure_angle_deg, high=90.0)
+        r = np.radians(ang)
+        if self.return_law is None and self.return_law_parameter is not None:
+            raise CamdynInputError("return-law-parameter goes with --return-law")
+        fall = (None if self.return_law is None
+                else _law("return-law", self.return_law, self.return_law_parameter))
+        cam = RDFD(h, rb, rr, _law("law", self.law, self.law_parameter),
+                   beta_rise=float(r[0]), dwell_outer=float(r[1]), beta_fall=float(r[2]),
+                   fall_law=fall)
+        object.__setattr__(self, "offset", e)
+        object.__setattr__(self, "angles_deg", ang)
+        object.__setattr__(self, "cam", cam)
+
+    @property
+    def turn(self):
+        """This cam's motion as a model input: the :class:`camdyn.runtime.core.laws.Turn` with the
+        same law and angles (in units of the rise, T = phi/beta_rise; its H^(k) times
+        stroke/beta_rise^k is this cam's S^(k)(phi))."""
+        from ..core.laws import compose
+
+        return compose(self.law, self.return_law, self.angles_deg, self.law_parameter,
+                       self.return_law_parameter)
+
+    # -- geometry at any angles --------------------------------------------------------
+    @property
+    def prime_radius(self) -> float:
+        return self.base_radius + self.roller_radius
+
+    @property
+    def d0(self) -> float:
+        return math.sqrt(self.prime_radius**2 - self.offset**2)
+
+    def pitch(self, phi) -> np.ndarray:
+        """Pitch points, shape (2, n)."""
+        phi = np.atleast_1d(np.asarray(phi, dtype=float))
+        u = self.d0 + self.cam.displacement(phi)[0]
+        e = self.offset
+        c, s = np.cos(phi), np.sin(phi)
+        return np.array([u * c - e * s, u * s + e * c])
+
+    def tangent(self, phi) -> np.ndarray:
+        """dp/dphi, shape (2, n): R(phi) (s' - e, d0 + s)."""
+        phi = np.atleast_1d(np.asarray(phi, dtype=float))
+        S = self.cam.displacement(phi)
+        a, b = S[1] - self.offset, self.d0 + S[0]
+        c, s = np.cos(phi), np.sin(phi)
+        return np.array([a * c - b * s, a * s + b * c])
+
+    def pressure_angle(self, phi) -> np.ndarray:
+        """alpha in rad: atan2(s' - e, d0 + s)."""
+        S = self.cam.displacement(phi)
+        return np.arctan2(S[1] - self.offset, self.d0 + S[0])
+
+    def curvature(self, phi) -> np.ndarray:
+        """Signed curvature of the pitch curve, from the parametric derivatives in the
+        follower frame: a = (s' - e, d0 + s), b = (s'' - d0 - s, 2 s' - e),
+        kappa = (a x b) / |a|^3."""
+        S = self.cam.displacement(phi)
+        e, u = self.offset, self.d0 + S[0]
+        a0, a1 = S[1] - e, u
+        b0, b1 = S[2] - u, 2 * S[1] - e
+        return (a0 * b1 - a1 * b0) / (a0 * a0 + a1 * a1) ** 1.5
+
+    # -- the sampled cam ---------------------------------------------------------------
+    @cached_property
+    def phi(self) -> np.ndarray:
+        n = 360 * int(self.points_per_degree)
+        return np.arange(n) * (TWO_PI / n)
+
+    @cached_property
+    def table(self) -> dict:
+        """Every column along the sampled cam angle (SI, angles in deg)."""
+        phi, rr = self.phi, self.roller_radius
+        S = self.cam.displacement(phi)
+        p = self.pitch(phi)
+        t = self.tangent(phi)
+        t = t / np.hypot(t[0], t[1])
+        n = np.array([t[1], -t[0]])          # outward normal of a counter-clockwise curve
+        kappa = self.curvature(phi)
+        with np.errstate(divide="ignore"):
+            rho = np.where(kappa == 0.0, np.inf, 1.0 / kappa)
+        out = {"phi_deg": np.degrees(phi), "s": S[0], "x_pitch": p[0], "y_pitch": p[1],
+               "x_profile": p[0] - rr * n[0], "y_profile": p[1] - rr * n[1]}
+        if self.groove:
+            out["x_outer"], out["y_outer"] = p[0] + rr * n[0], p[1] + rr * n[1]
+        out["alpha_deg"] = np.degrees(self.pressure_angle(phi))
+        out["rho_pitch"] = rho
+        out["rho_profile"] = rho - rr
+        if self.groove:
+            out["rho_outer"] = rho + rr
+        return out
+
+    # -- checks ------------------------------------------------------------------------
+    def _grid(self):
+        """The sample angles with every segment end (the law's own breakpoints too)."""
+        return np.union1d(np.append(self.phi, TWO_PI), self.cam.breakpoints)
+
+    def _worst(self, f, th):
+        """Refine the largest value of f (sampled on th) between its grid neighbours."""
+        v = f(th)
+        i = int(np.argmax(v))
+        lo, hi = th[max(i - 1, 0)], th[min(i + 1, th.size - 1)]
+        if hi > lo:
+            r = minimize_scalar(lambda x: -float(f(np.array([x]))[0]), bounds=(lo, hi),
+                                method="bounded", options={"xatol": 1e-12})
+            if -r.fun > v[i]:
+                return float(r.x), float(-r.fun)
+        return float(th[i]), float(v[i])
+
+    @cached_property
+    def checks(self) -> tuple:
+        th, rr = self._grid(), self.roller_radius
+        out = []
+        walls = [("undercut", "profile" if not self.groove else "inner wall", -1.0)]
+        if self.groove:
+            walls.append(("undercut outer", "outer wall", +1.0))
+        for name, wall, d in walls:
+            # the wall p + d n runs backwards (a cusp) where 1 + d kappa_p < 0
+            def g(x, d=d):
+                return 1.0 + d * rr * self.curvature(x)
+            bad = g(th) < 0
+            runs = failing_spans(th, bad, lambda x: float(g(x)[0]))
+            # worst: the largest curvature of that sign, i.e. the smallest |rho_p|
+            at, k = self._worst(lambda x: -d * self.curvature(x), th)
+            rho = 1.0 / k if k > 0 else math.inf
+            shape = "convex" if d < 0 else "concave"
+            if runs:
+                spans = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}]" for a, b in runs)
+                msg = (f"undercut: the {wall} cusps at cam angle {math.degrees(at):.2f} deg "
+                       f"(fails for phi in {spans} deg): the pitch curve's radius of curvature "
+                       f"on this {shape} part, down to {rho * 1e3:.4g} mm, is below the roller "
+                       f"radius {rr * 1e3:.4g} mm. Use a larger base circle, a longer rise/return "
+                       f"angle, a smaller stroke or a smaller roller.")
+            else:
+                msg = (f"no undercut of the {wall}: smallest {shape} |rho_p| = {rho * 1e3:.4g} mm "
+                       f"at {math.degrees(at):.2f} deg > roller radius {rr * 1e3:.4g} mm")
+            out.append(Check(name, not runs, math.degrees(at), rho, rr,
+                             tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg))
+        lim = math.radians(self.max_pressure_angle_deg)
+
+        def fa(x):
+            return np.abs(self.pressure_angle(x))
+        at, amax = self._worst(fa, th)
+        bad = fa(th) > lim
+        runs = failing_spans(th, bad, lambda x: float(fa(x)[0]) - lim)
+        if runs:
+            spans = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}]" for a, b in runs)
+            msg = (f"pressure angle: |alpha| reaches {math.degrees(amax):.2f} deg at cam angle "
+                   f"{math.degrees(at):.2f} deg, beyond the limit {self.max_pressure_angle_deg:g} "
+                   f"deg for phi in {spans} deg. Use a larger base circle or a longer "
+                   f"rise/return angle (an offset lowers it on one stroke, raises it on the "
+                   f"other).")
+        else:
+            msg = (f"pressure angle within {self.max_pressure_angle_deg:g} deg: largest "
+                   f"|alpha| = {math.degrees(amax):.2f} deg at {math.degrees(at):.2f} deg")
+        out.append(Check("pressure angle", not runs, math.degrees(at), math.degrees(amax),
+                         self.max_pressure_angle_deg,
+                         tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg))
+        return tuple(out)
+
+    @property
+    def failures(self) -> list:
+        return [c for c in self.checks if not c.ok]
+
+    def extremes(self) -> dict:
+        """The largest |alpha| (deg) and the smallest |rho_p| (m) along the cam, each refined
+        on the closed-form profile between the samples around the sampled extreme, with its
+        sampling error: how far the sampled extreme lay from the refined one, a bound of what
+        the refinement could still be off by choosing among near-equal peaks."""
+        th = self._grid()
+        at, amax = self._worst(lambda x: np.abs(self.pressure_angle(x)), th)
+        sampled_a = float(np.max(np.abs(self.pressure_angle(th))))
+        k_at, kmax = self._worst(lambda x: np.abs(self.curvature(x)), th)
+        sampled_k = float(np.max(np.abs(self.curvature(th))))
+        rho = 1.0 / kmax if kmax > 0 else math.inf
+        rho_sampled = 1.0 / sampled_k if sampled_k > 0 else math.inf
+        return {"max_abs_pressure_angle_deg": math.degrees(amax),
+                "max_abs_pressure_angle_deg_error": math.degrees(abs(amax - sampled_a)),
+                "min_rho_pitch": rho,
+                "min_rho_pitch_error": abs(rho - rho_sampled) if math.isfinite(rho) else 0.0}
+
+    def summary(self) -> dict:
+        return {"law": self.law, "law_parameter": self.cam.law.par if self.law_parameter is not None else None,
+                "return_law": self.return_law or self.law,
+                "return_law_parameter": (self.cam.return_law.par if self.return_law_parameter
+                                         is not None else None),
+                "kind": "groove" if self.groove else "open",
+                "stroke": self.stroke, "base_radius": self.base_radius,
+                "roller_radius": self.roller_radius, "offset": self.offset,
+                "prime_radius": self.prime_radius,
+                "angles_deg": dict(zip(("rise", "upper_dwell", "return", "lower_dwell"),
+                                       self.angles_deg)),
+                "points": int(self.phi.size),
+                **self.extremes(),
+                "checks": [c.as_dict() for c in self.checks],
+                "ok": not self.failures}
+
+    # -- writers -----------------------------------------------------------------------
+    def write_csv(self, path) -> Path:
+        path = Path(path)
+        tab = self.table
+        cols = list(tab)
+        with path.open("w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(cols)
+            for row in zip(*(tab[c] for c in cols)):
+                w.writerow([repr(float(v)) for v in row])
+        return path
+
+    def write_dxf(self, path) -> Path:
+        """Closed LWPOLYLINEs in mm on layers PITCH, PROFILE (, PROFILE_OUTER), the base
+        circle on BASE_CIRCLE.  Written by ezdxf."""
+        import ezdxf
+        from ezdxf import units
+
+        path = Path(path)
+        doc = ezdxf.new("R2010")
+        doc.units = units.MM
+        doc.header["$MEASUREMENT"] = 1
+        colours = {"PITCH": 3, "PROFILE": 7, "PROFILE_OUTER": 5, "BASE_CIRCLE": 8}
+        for name, colour in colours.items():
+            if name == "PROFILE_OUTER" and not self.groove:
+                continue
+            doc.layers.add(name, color=colour)
+        msp = doc.modelspace()
+        tab = self.table
+        curves = [("PITCH", "x_pitch", "y_pitch"), ("PROFILE", "x_profile", "y_profile")]
+        if self.groove:
+            curves.append(("PROFILE_OUTER", "x_outer", "y_outer"))
+        for layer, x, y in curves:
+            pts = np.column_stack([tab[x] * 1e3, tab[y] * 1e3])
+            msp.add_lwpolyline(pts.tolist(), format="xy", close=True, dxfattribs={"layer": layer})
+        msp.add_circle((0.0, 0.0), self.base_radius * 1e3, dxfattribs={"layer": "BASE_CIRCLE"})
+        doc.saveas(path)
+        return path
+
+    def write_png(self, path) -> Path:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        path = Path(path)
+        tab = self.table
+        fig = plt.figure(figsize=(12, 6))
+        ax = fig.add_subplot(1, 2, 1)
+        close = np.r_[np.arange(self.phi.size), 0]
+        ax.plot(tab["x_pitch"][close] * 1e3, tab["y_pitch"][close] * 1e3, "g--", lw=0.8,
+                label="pitch curve")
+        ax.plot(tab["x_profile"][close] * 1e3, tab["y_profile"][close] * 1e3, "k-", lw=1.2,
+                label="profile" if not self.groove else "inner wall")
+        if self.groove:
+            ax.plot(tab["x_outer"][close] * 1e3, tab["y_outer"][close] * 1e3, "b-", lw=1.2,
+                    label="outer wall")
+        a = np.linspace(0, TWO_PI, 361)
+        ax.plot(self.base_radius * 1e3 * np.cos(a), self.base_radius * 1e3 * np.sin(a), ":",
+                color="0.5", lw=0.8, label="base circle")
+        x0, y0 = tab["x_pitch"][0] * 1e3, tab["y_pitch"][0] * 1e3
+        ax.plot(x0 + self.roller_radius * 1e3 * np.cos(a), y0 + self.roller_radius * 1e3 * np.sin(a),
+                "r-", lw=0.8, label="roller at phi = 0")
+        for c in self.failures:
+            w = math.radians(c.worst_deg)
+            p = self.pitch(w)[:, 0] * 1e3
+            ax.plot(p[0], p[1], "rx", ms=10)
+        ax.set_aspect("equal")
+        ax.set_xlabel("x, mm")
+        ax.set_ylabel("y, mm")
+        laws = self.law if self.return_law in (None, self.law) else f"{self.law}/{self.return_law}"
+        ax.set_title(f"{laws}, {'groove' if self.groove else 'open'} cam, "
+                     f"e = {self.offset * 1e3:g} mm")
+        ax.legend(fontsize=7, loc="upper right")
+        phi = tab["phi_deg"]
+        a1 = fig.add_subplot(2, 2, 2)
+        a1.plot(phi, tab["alpha_deg"], "k-")
+        for sgn in (1, -1):
+            a1.axhline(sgn * self.max_pressure_angle_deg, color="r", ls="--", lw=0.8)
+        a1.set_ylabel("pressure angle, deg")
+        a1.grid(True, lw=0.3)
+        a2 = fig.add_subplot(2, 2, 4, sharex=a1)
+        span = 4 * (self.prime_radius + self.stroke) * 1e3
+        for key, style, lab in (("rho_pitch", "g--", "pitch"), ("rho_profile", "k-", "profile"),
+                                ("rho_outer", "b-", "outer wall")):
+            if key in tab:
+                y = np.clip(tab[key] * 1e3, -span, span)
+                y[1:][np.sign(tab[key][1:]) != np.sign(tab[key][:-1])] = np.nan  # through infinity
+                a2.plot(phi, y, style, lw=1, label=lab)
+        a2.axhline(0, color="0.5", lw=0.5)
+        a2.set_ylim(-span, span)
+        a2.set_ylabel("radius of curvature, mm (clipped)")
+        a2.set_xlabel("cam angle phi, deg")
+        a2.legend(fontsize=7)
+        a2.grid(True, lw=0.3)
+        fig.tight_layout()
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        return path
+
+    def write_all(self, out_dir, stem: str = "cam") -> dict:
+        out = Path(out_dir)
+        out.mkdir(parents=True, exist_ok=True)
+        return {"csv": str(self.write_csv(out / f"{stem}.csv")),
+                "dxf": str(self.write_dxf(out / f"{stem}.dxf")),
+                "png": str(self.write_png(out / f"{stem}.png"))}

@@ -1,0 +1,60 @@
+"""The ``camdyn`` command line: one module per command, each with add(sub) (its arguments) and
+run(args) (parse, call the library, print).  Nothing imports the command line.
+
+    camdyn derive [--check] [--out DIR]     regenerate generated/ (or check it)
+    camdyn residual --model M --tau T ...   residual vibration of one rise
+    camdyn check [--json]                   every comparison with the thesis
+    camdyn laws [--json]                    cam-law characteristics (App. 2)
+    camdyn run [SCENE] [--out DIR]          any scene (default: the CAMSHAFT-1 study): report
+    camdyn scenes [--json]                  the built-in scenes, their kinds and titles
+    camdyn integrate MODEL --t-end T ...    any model: a model file (built on demand) or built-in
+    camdyn simulate SCENE.toml [--json]     a DYNACAM scene (thesis ch. 6, 7): summary and diagrams
+    camdyn beam-follower [--omega W] ...    the Rayleigh-beam follower of the paper
+    camdyn precision SCENE_OR_MODEL ...     work-precision chart: every method, SciPy's beside
+    camdyn stability MODEL --param P=A:B:N  stability map: step/rtol x parameter, per method
+    camdyn profile --law L --stroke H ...   the cam itself: pitch curve, profile(s), CSV/DXF/PNG
+    camdyn figures [--out DIR] [--only IDS]  every thesis/paper figure the models determine + index
+    camdyn design --stroke H ...            design by the thesis's rules (secs 8.3, 8.5, App. 7)
+
+Bad arguments end in one line on stderr naming the argument, and status 2.
+"""
+from __future__ import annotations
+
+import importlib
+import os
+import sys
+from pathlib import Path
+
+from .common import Parser, fail
+
+COMMANDS = ("derive", "residual", "check", "laws", "design", "run", "scenes", "integrate", "simulate",
+            "beam_follower", "stability", "precision", "profile", "figures", "sweep")
+"""The command modules, in the order of `camdyn --help`."""
+
+
+def build_parser() -> Parser:
+    top = Parser(prog="camdyn", description="Cam-mechanism dynamics: derive, generate, simulate, check.")
+    sub = top.add_subparsers(dest="command", required=True, parser_class=Parser)
+    for name in COMMANDS:
+        module = importlib.import_module(f"{__name__}.{name}")
+        module.add(sub).set_defaults(func=module.run)
+    return top
+
+
+def main(argv=None) -> int:
+    args = build_parser().parse_args(argv)
+    out = getattr(args, "out", None)
+    # every --out names a folder: a file in its place is refused here, in one line, rather
+    # than by a FileExistsError deep inside a command after its runs
+    if out is not None and Path(out).exists() and not Path(out).is_dir():
+        return fail(f"camdyn {args.command}" if getattr(args, "command", None) else "camdyn",
+                    f"argument --out: {out} is a file; --out names a folder")
+    try:
+        rc = args.func(args)
+        sys.stdout.flush()           # here, so that a closed pipe is caught below
+        return rc
+    except BrokenPipeError:
+        # the reader of stdout left (`camdyn ... | head`): stop quietly, not with a traceback,
+        # and keep the interpreter's final flush from raising it again
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 1

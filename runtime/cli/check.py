@@ -1,0 +1,60 @@
+"""camdyn check: every comparison with the thesis (camdyn.thesis.checks), as a table."""
+from __future__ import annotations
+
+import json
+import sys
+
+from ..core.errors import CamdynInputError
+from .common import fail, fmt
+
+
+def add(sub):
+    c = sub.add_parser("check", help="every comparison with the thesis, as a table")
+    c.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    c.add_argument("-k", default=None, help="only checks whose key contains this text")
+    c.add_argument("--topic", action="append", help="only this topic (repeatable)")
+    c.add_argument("--quiet", action="store_true", help="no progress lines")
+    return c
+
+
+def run(args) -> int:
+    from camdyn.thesis.checks import suite
+
+    prog = "camdyn check"
+    try:
+        todo = suite.select(args.topic, args.k)
+    except CamdynInputError as exc:
+        return fail(prog, str(exc))
+    except Exception as exc:         # a topic module that does not load: named, not a traceback
+        return fail(prog, f"cannot load the checks: {exc}")
+    quiet = args.json or args.quiet
+    outcomes = suite.run(todo, progress=None if quiet else (
+        lambda i, n, c: print(f"  [{i}/{n}] {c.key}", file=sys.stderr, flush=True)))
+    passed = all(o.passed for o in outcomes)
+    if args.json:
+        print(json.dumps({"passed": passed, "checks": [o.as_dict() for o in outcomes]}, indent=1))
+    else:
+        _print_table(outcomes)
+    return 0 if passed else 1
+
+
+def _print_table(outcomes) -> None:
+    rows = [("item", "reference", "printed", "derived", "rel. diff", "status")]
+    for o in outcomes:
+        c = o.check
+        rel = "-" if o.rel_diff is None else f"{o.rel_diff:.2g}"
+        derived = o.error if o.error else fmt(o.derived)
+        rows.append((c.item, c.reference, c.printed or "(symbolic)", derived, rel, o.status))
+    widths = [min(max(len(r[i]) for r in rows), 60) for i in range(len(rows[0]))]
+    for k, r in enumerate(rows):
+        print("  ".join(cell[:60].ljust(widths[i]) for i, cell in enumerate(r)).rstrip())
+        if k == 0:
+            print("  ".join("-" * w for w in widths))
+    n_fail = sum(not o.passed for o in outcomes)
+    n_err = sum(o.check.errata for o in outcomes)
+    print(f"\n{len(outcomes)} checks: {len(outcomes) - n_fail} passed ({n_err} of them printed "
+          f"values shown to be misprints), {n_fail} failed, "
+          f"{sum(o.seconds for o in outcomes):.1f} s")
+    for o in outcomes:
+        if o.check.errata and o.check.note:
+            print(f"  errata {o.check.key}: {o.check.note}")

@@ -1,0 +1,101 @@
+"""What every command shares: one-line errors, warnings on stderr, small parsers and formats."""
+from __future__ import annotations
+
+import argparse
+import sys
+
+from ..core.errors import CamdynInputError
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse, but errors are one line (no usage block) with status 2."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def fail(prog: str, message: str) -> int:
+    """Print a one-line error naming the command and return exit status 2."""
+    print(f"{prog}: error: {message}", file=sys.stderr)
+    return 2
+
+
+def run_health(res) -> dict:
+    """What a run says about its own reliability, for the JSON: ``warnings`` (a fixed step near
+    the stability boundary) and ``stiff_from_T`` (DP54: where the problem became stiff, else
+    None)."""
+    return {"warnings": list(res.warnings), "stiff_from_T": res.stiff_from_T}
+
+
+# the implicit method the stiffness note names (runtime/core/methods.py RODAS4)
+IMPLICIT_HINT = "the implicit (L-stable) method rodas4 (--method rodas4)"
+
+
+def report_health(prog: str, out: dict, tname: str = "T") -> None:
+    """One stderr line per warning, and one for a run that became stiff."""
+    for w in out.get("warnings") or ():
+        print(f"{prog}: warning: {w}", file=sys.stderr)
+    if out.get("stiff_from_T") is not None:
+        print(f"{prog}: note: the problem became stiff at {tname} = {out['stiff_from_T']:.6g}; "
+              f"{IMPLICIT_HINT} would take larger steps", file=sys.stderr)
+
+
+def run_failed(prog: str, exc: Exception) -> int:
+    """A run that failed (SimulationError): one line on stderr, exit status 1."""
+    print(f"{prog}: run failed: {exc}", file=sys.stderr)
+    return 1
+
+
+def fmt(value) -> str:
+    """A value for a text table: 4 significant digits, '-' for None, words for booleans."""
+    if isinstance(value, bool):
+        return "identical" if value else "differs"
+    if value is None:
+        return "-"
+    try:
+        return f"{float(value):.4g}"
+    except (TypeError, ValueError):
+        return str(value)
+
+
+def assignments(items, flag: str) -> dict:
+    out = {}
+    for item in items or ():
+        name, sep, value = item.partition("=")
+        if not sep or not name:
+            raise CamdynInputError(f"argument {flag}: {item!r} is not NAME=VALUE")
+        try:
+            out[name] = float(value)
+        except ValueError:
+            raise CamdynInputError(f"argument {flag}: {name}={value!r} is not a number") from None
+    return out
+
+
+def method_names() -> tuple[list, list]:
+    """(every method, the adaptive ones) for the --method choices.  A compiled runtime older
+    than its sources (a loop added, not yet rebuilt) must not stop `camdyn derive`, which
+    regenerates what the rebuild then compiles: its names are then the known ones."""
+    try:
+        from ..core import methods
+    except (ImportError, AttributeError):
+        return ["dp54", "koster", "rk4", "rodas4"], ["dp54", "rodas4"]
+    return sorted(methods.METHODS), list(methods.ADAPTIVE)
+
+
+def law_names() -> list:
+    from ..core import laws
+
+    return laws.NAMES
+
+
+def say_on_stderr(quiet: bool = False):
+    """A progress callback: one line on stderr per message (nothing when quiet)."""
+    if quiet:
+        return lambda msg: None
+    return lambda msg: print(msg, file=sys.stderr, flush=True)
+
+
+def add_estimate_option(parser) -> None:
+    parser.add_argument("--no-error-estimate", action="store_true",
+                        help="skip the second, one notch tighter run that estimates each "
+                             "figure's error (for speed; the figures then say so)")

@@ -1,0 +1,100 @@
+"""camdyn design: design by the thesis's rules (secs 8.3, 8.5, App. 7) from SI inputs; the
+library is camdyn.thesis.design."""
+from __future__ import annotations
+
+import json
+import sys
+
+from ..core.errors import SimulationError, out_folder
+from .common import fail, law_names as law_names_, run_failed
+from .residual import name_argument
+
+PROG = "camdyn design"
+
+
+def add(sub):
+    law_names = law_names_()
+    ds = sub.add_parser("design", help="design by the thesis's rules: tau, Fa, the envelope, the "
+                                       "largest Fa and smallest t_m meeting a requirement, sec. 8.5's "
+                                       "rules, the motor (sec. 8.3), a check run")
+    a = ds.add_argument
+    a("--stroke", type=float, required=True, metavar="M", help="h_m', stroke of the output member (m)")
+    a("--rise-time", type=float, default=None, metavar="S", help="t_m, cam rise time (s)")
+    a("--cam-angle", default=None, metavar="RAD",
+      help="beta_m, cam angle of the rise: rad, or degrees as '100deg' (with --speed)")
+    a("--speed", type=float, default=None, metavar="RPM", help="camshaft speed (r.p.m.)")
+    a("--mass", type=float, default=None, metavar="KG", help="m, equivalent mass at the output (4.39)")
+    a("--stiffness", type=float, default=None, metavar="N/M",
+      help="c_c, stiffness of the uncoupled follower system at the output (4.3)")
+    a("--tau", type=float, default=None,
+      help="tau = T_e/t_m directly, 0 < tau < 0.9 (dimensionless; instead of m and c_c)")
+    a("--fa", type=float, default=None,
+      help="Fa directly, 0 <= Fa <= 12.8 (dimensionless; instead of --c-tan)")
+    a("--c-tan", type=float, default=None, metavar="N/M",
+      help="c_tan, tangential stiffness of the shaft at the output (4.4); Fa = (c_c/c_tan) tan^2 alpha_me")
+    a("--pitch-radius", type=float, default=None, metavar="M", help="R_1/2 at the cam (4.1)")
+    a("--ratio", type=float, default=None, metavar="I",
+      help="transmission ratio i, h_m' = i h_m at the cam (default 1)")
+    a("--tan-alpha-me", type=float, default=None,
+      help="tan alpha_me, the mean slope (4.13) directly (dimensionless; instead of --pitch-radius)")
+    a("--accuracy", type=float, default=None, metavar="M", help="largest positional error u0 (m)")
+    a("--residual-acceleration", type=float, default=None, metavar="M/S2",
+      help="largest residual acceleration u0'' after the rise (m/s^2)")
+    a("--law", default="cycloidal", choices=law_names, help="cam law of the rise (default cycloidal)")
+    a("--theta", type=float, default=None,
+      help="the law's shape parameter, for laws that have one (default: the law's own)")
+    a("--common-shaft", action="store_true", help="the shaft drives other mechanisms (Fa <= 0.3, sec. 8.5)")
+    a("--motor-rpm", type=float, default=None, help="a thesis motor by synchronous speed: "
+      "3000/1500/1000/750 (T_m of fig. A.5.3)")
+    a("--motor-tm", type=float, default=None, metavar="S", help="the motor's mechanical time "
+      "constant T_m = J_m/G (A.5.11)")
+    a("--motor-tel", type=float, default=None, metavar="S",
+      help="electrical time constant T_el (A.5.3): second-order slip (A.5.25) instead of (A.5.33)")
+    a("--rated-slip", type=float, default=None, help="delta_n, the motor's rated slip, 0 < delta_n < 1 "
+      "(default 0.085, fig. A.5.3)")
+    a("--slip-limit", type=float, default=None,
+      help="delta_lim, the largest slip allowed, 0 < delta_lim < 1 (8.1); required with a motor")
+    a("--spring", action="store_true", help="a follower spring: v_v = 5 in (8.1) (with a motor)")
+    a("--gear-efficiency", type=float, default=None,
+      help="eta_g of the reduction gear, 0 < eta_g <= 1 (8.1) (with a motor; default 1)")
+    a("--worm", type=float, nargs=2, default=None, metavar=("ALPHA", "MU"),
+      help="worm gear lead angle and friction angle (rad): eta_g by (6.72)")
+    a("--no-check", action="store_true", help="skip the check run")
+    a("--json", action="store_true", help="one JSON object on stdout")
+    a("--out", default=None, help="folder for design.json and design.png (the envelope u0 over "
+                                   "tau at the design's Fa, the largest Fa and Fa = 0, with the "
+                                   "requirement)")
+    a("--quiet", action="store_true", help="no progress lines")
+    return ds
+
+
+def run(args) -> int:
+    from camdyn.thesis.design import machine, method, motor_sizing
+
+    say = (lambda msg: print(f"{PROG}: {msg}", file=sys.stderr, flush=True))
+    try:
+        out_folder(args.out)
+        motor = motor_sizing.settings(
+            motor_rpm=args.motor_rpm, motor_tm=args.motor_tm, slip_limit=args.slip_limit,
+            rated_slip=args.rated_slip, motor_tel=args.motor_tel,
+            gear_efficiency=args.gear_efficiency, worm=args.worm, spring=args.spring)
+        result = method.design(
+            stroke=args.stroke, rise_time=args.rise_time,
+            cam_angle_rad=machine.cam_angle(args.cam_angle), speed=args.speed, mass=args.mass,
+            stiffness=args.stiffness, tau=args.tau, Fa=args.fa, c_tan=args.c_tan,
+            pitch_radius=args.pitch_radius, ratio=args.ratio, tan_alpha_me=args.tan_alpha_me,
+            accuracy=args.accuracy, residual_acceleration=args.residual_acceleration,
+            law=args.law, theta=args.theta, common_shaft=args.common_shaft, motor_args=motor,
+            check=not args.no_check, progress=None if args.json or args.quiet else say,
+            chart_path=None if args.out is None else method.chart_file(args.out))
+        if args.out is not None:
+            method.write(result, args.out)
+    except ValueError as exc:
+        return fail(PROG, name_argument(str(exc)))
+    except SimulationError as exc:
+        return run_failed(PROG, f"a graph run: {exc}")
+    if args.json:
+        print(json.dumps(result, indent=1, default=float))
+    else:
+        print(method.text(result))
+    return 0

@@ -1,0 +1,114 @@
+"""camdyn integrate: any model, a model file (built on first use) or a built-in one, to t_end."""
+from __future__ import annotations
+
+import json
+
+from ..core.errors import CamdynInputError, SimulationError
+from ..measure.contract import plus_minus
+from .common import (add_estimate_option, assignments, fail, law_names, method_names,
+                     report_health, run_failed, say_on_stderr)
+
+
+def add(sub):
+    all_methods, _ = method_names()
+    ig = sub.add_parser("integrate", help="any model: a model file (built on first use) or a "
+                                          "built-in model, to t_end")
+    ig.add_argument("model", metavar="MODEL",
+                    help="a Python file defining build() -> Model, or a built-in model name")
+    ig.add_argument("--set", action="append", metavar="NAME=VALUE",
+                    help="a parameter value, in the model's units (repeatable)")
+    ig.add_argument("--initial", action="append", metavar="NAME=VALUE",
+                    help="an initial state value (repeatable; default: the declared state)")
+    ig.add_argument("--t-end", type=float, required=True, metavar="T",
+                    help="end time, in the model's time unit")
+    ig.add_argument("--method", default="dp54", choices=all_methods)
+    ig.add_argument("--rtol", type=float, default=None,
+                    help="dp54/rodas4 tolerance (default 1e-8)")
+    ig.add_argument("--step", type=float, default=None, help="rk4/koster step")
+    ig.add_argument("--law", default="cycloidal", choices=law_names(), help="cam law of the inputs")
+    ig.add_argument("--theta", type=float, default=None, help="shape parameter of the law")
+    ig.add_argument("--turn", default=None, metavar="RISE,UP,RETURN,LOW",
+                    help="a full cam turn, repeated: rise by --law, upper dwell, return by "
+                         "--return-law, lower dwell, in deg summing to 360 (the input's "
+                         "argument counts rises: one turn is 360/RISE)")
+    ig.add_argument("--return-law", default=None, choices=law_names(),
+                    help="with --turn: the law of the return (default: --law)")
+    ig.add_argument("--return-theta", type=float, default=None,
+                    help="with --return-law: its shape parameter (default: the law's own)")
+    ig.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    add_estimate_option(ig)
+    ig.add_argument("--out", default=None, help="folder for <model>.csv and <model>.png")
+    return ig
+
+
+
+def law_arg(args) -> tuple:
+    """(law, theta) of a run: --law and --theta, or with --turn the dwell-rise-dwell-return
+    turn of --law (rise) and --return-law (runtime.laws.compose)."""
+    if getattr(args, "turn", None) is None:
+        for flag in ("return_law", "return_theta"):
+            if getattr(args, flag, None) is not None:
+                raise CamdynInputError(f"argument --{flag.replace('_', '-')}: only with --turn")
+        return args.law, args.theta
+    from ..core.laws import compose
+
+    try:
+        angles = [float(a) for a in args.turn.split(",")]
+    except ValueError:
+        raise CamdynInputError(f"argument --turn: {args.turn!r} is not four comma-separated "
+                               "angles in deg (rise,upper dwell,return,lower dwell)") from None
+    return compose(args.law, args.return_law, angles, args.theta,
+                   getattr(args, "return_theta", None)), None
+
+
+def run(args) -> int:
+    from ..measure.contract import answer
+    from ..targets import resolve
+    from ..targets.model import StateTarget
+
+    prog = "camdyn integrate"
+    say = say_on_stderr()
+    try:
+        params = assignments(args.set, "--set")
+        initial = assignments(args.initial, "--initial")
+        if args.rtol is not None and args.step is not None:
+            raise CamdynInputError("arguments --rtol and --step: give one (rtol for dp54 and "
+                                   "rodas4, step for rk4 and koster)")
+        law, theta = law_arg(args)
+        t = resolve.model(args.model, StateTarget, say, params=params, method=args.method,
+                          rtol=args.rtol, step=args.step, t_end=args.t_end, law=law,
+                          theta=theta, initial=initial)
+        if args.out:
+            from ..core.errors import out_folder
+
+            out_folder(args.out, create=False)       # checked before the run
+        a = answer(t, estimate=not args.no_error_estimate)
+        files = []
+        if args.out:
+            from ..targets.series import write_series
+
+            files = write_series(a.result, args.out)
+    except CamdynInputError as exc:
+        return fail(prog, str(exc))
+    except SimulationError as exc:
+        return run_failed(prog, exc)
+    summary = {**a.record, "cpu_seconds": a.stats["cpu_seconds"], "status": "ok",
+               "warnings": list(a.warnings), "stiff_from_T": a.stats["stiff_from_T"]}
+    if a.estimated:
+        summary["state_error"] = dict(a.errors)
+        summary["error_sources"] = a.sources
+    if files:
+        summary["files"] = files
+    report_health(prog, summary, t.model.manifest["time"]["name"])
+    if args.json:
+        print(json.dumps(summary, indent=1))
+        return 0
+    print(f"{summary['model']}: {summary['method']} to {summary['t_end']:g} "
+          f"{summary['time_unit']}, {summary['n_steps']} steps, {summary['n_rhs']} rhs calls, "
+          f"{summary['cpu_seconds']:.3g} s CPU")
+    errs = summary.get("state_error", {})
+    for name, value in summary["state"].items():
+        print(f"  {name:12s} {value:.10g}{plus_minus(errs.get(name))}")
+    for f in files:
+        print(f"wrote {f}")
+    return 0

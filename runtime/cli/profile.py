@@ -1,0 +1,92 @@
+"""camdyn profile: the cam itself, pitch curve and profile(s) as CSV, DXF and PNG."""
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+from ..core.errors import CamdynInputError, out_folder
+from .common import fail, law_names
+
+
+def add(sub):
+    names = law_names()
+    p = sub.add_parser(
+        "profile", help="the cam itself: pitch curve and profile(s) of a disk cam for a "
+                        "translating roller follower, as CSV, DXF and PNG",
+        description="A radial disk cam for a translating roller follower over a full turn "
+                    "(rise, upper dwell, return with the same law mirrored, lower dwell): the "
+                    "pitch curve and the profile (open cam) or both walls (--groove), with the "
+                    "pressure angle and the radius of curvature along the cam angle, written as "
+                    "CSV (SI), DXF (mm, layers PITCH, PROFILE, PROFILE_OUTER, BASE_CIRCLE) and "
+                    "PNG. The undercut and pressure-angle checks that fail are warnings naming "
+                    "the cam angle where they are worst (and in the JSON). SI units.")
+    p.add_argument("--law", default="cycloidal", choices=names,
+                   help="cam law of the rise (the return is its mirror unless --return-law; "
+                        "default cycloidal)")
+    p.add_argument("--law-parameter", type=float, default=None, metavar="X",
+                   help="the law's shape parameter, for laws that have one")
+    p.add_argument("--return-law", default=None, choices=names,
+                   help="cam law of the return, S = h (1 - H(u)) (default: the rise's)")
+    p.add_argument("--return-law-parameter", type=float, default=None, metavar="X",
+                   help="the return law's shape parameter")
+    p.add_argument("--stroke", type=float, required=True, metavar="M", help="stroke h, m, >= 0")
+    p.add_argument("--base-radius", type=float, required=True, metavar="M",
+                   help="base circle of the cam profile r_b, m, > 0 (roller centre on the "
+                        "prime circle r_b + r_r at the bottom of the stroke)")
+    p.add_argument("--roller-radius", type=float, required=True, metavar="M",
+                   help="roller radius r_r, m, > 0")
+    p.add_argument("--offset", type=float, default=0.0, metavar="M",
+                   help="follower offset e, m, |e| < r_b + r_r (default 0; e > 0 lowers the "
+                        "pressure angle on the rise)")
+    p.add_argument("--angles", default="90,90,90,90", metavar="R,D,F,D",
+                   help="rise, upper dwell, return, lower dwell in deg, summing to 360 "
+                        "(default 90,90,90,90)")
+    p.add_argument("--groove", action="store_true", help="a groove cam: both walls")
+    p.add_argument("--max-pressure-angle", type=float, default=30.0, metavar="DEG",
+                   help="pressure-angle limit of the check, 0 < DEG < 90 (default 30)")
+    p.add_argument("--points-per-degree", type=int, default=10, metavar="N",
+                   help="samples per degree of cam angle, 1 to 1000 (default 10)")
+    p.add_argument("--out", default="out/cam", metavar="DIR",
+                   help="folder for cam.csv, cam.dxf, cam.png, cam.json (default out/cam)")
+    p.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    return p
+
+
+def run(args) -> int:
+    from ..cam.profile import CamProfile
+
+    prog = "camdyn profile"
+    try:
+        angles = [float(a) for a in args.angles.split(",")]
+    except ValueError:
+        return fail(prog, f"--angles must be four numbers in deg, rise,upper dwell,return,lower "
+                          f"dwell summing to 360, got {args.angles!r}")
+    try:
+        cam = CamProfile(stroke=args.stroke, base_radius=args.base_radius,
+                         roller_radius=args.roller_radius, offset=args.offset,
+                         angles_deg=tuple(angles), law=args.law, law_parameter=args.law_parameter,
+                         return_law=args.return_law,
+                         return_law_parameter=args.return_law_parameter,
+                         groove=args.groove, points_per_degree=args.points_per_degree,
+                         max_pressure_angle_deg=args.max_pressure_angle)
+        out = cam.summary()
+        out_folder(args.out)
+    except CamdynInputError as exc:
+        return fail(prog, str(exc))
+    out["files"] = cam.write_all(args.out)
+    for c in cam.failures:
+        print(f"{prog}: warning: {c.message}", file=sys.stderr)
+    out["files"]["json"] = str(Path(args.out) / "cam.json")
+    Path(out["files"]["json"]).write_text(json.dumps(out, indent=1))
+    if args.json:
+        print(json.dumps(out, indent=1))
+        return 0
+    print(f"{out['kind']} cam, {cam.law}{'' if cam.return_law in (None, cam.law) else ' / ' + cam.return_law + ' return'} law, stroke {cam.stroke * 1e3:g} mm, base circle "
+          f"{cam.base_radius * 1e3:g} mm, roller {cam.roller_radius * 1e3:g} mm, offset "
+          f"{cam.offset * 1e3:g} mm, {out['points']} points")
+    for c in cam.checks:
+        print(f"{'ok  ' if c.ok else 'FAIL'} {c.message}")
+    for f in out["files"].values():
+        print(f"wrote {f}")
+    return 0

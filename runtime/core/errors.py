@@ -1,0 +1,54 @@
+"""Errors users see: bad input is named, failed runs say where they failed."""
+
+
+class CamdynInputError(ValueError):
+    """A parameter, option or argument is missing, of the wrong type or out of range.
+
+    The message names the offending item and its admissible range; the CLI
+    prints it on one line and exits with status 2.
+    """
+
+
+class SimulationError(RuntimeError):
+    """An integration stopped early (step budget, non-finite state, ...)."""
+
+
+class UnstableStep(SimulationError):
+    """A fixed step refused because it lies beyond the method's stability boundary.
+
+    ``estimate`` is the check's :class:`camdyn.runtime.core.stability.Estimate` (h rho, the
+    boundary, the largest stable step).  A SimulationError, so every caller that catches
+    failed runs catches it too; the stability map tells it apart from a run that blew up.
+    """
+
+    def __init__(self, message: str, estimate=None):
+        super().__init__(message)
+        self.estimate = estimate
+
+
+def out_folder(out, create: bool = True):
+    """The folder an --out names, made (``create``) or only checked: one that cannot be made
+    (below a file, not writable) is a CamdynInputError naming --out.  Commands check before
+    their runs, so that a bad --out is refused first and a refused input leaves no folder,
+    and make it when they write.  None stays None."""
+    import os
+    from pathlib import Path
+
+    if out is None:
+        return None
+    path = Path(out)
+    if not create:
+        probe = path
+        while not probe.exists() and probe != probe.parent:
+            probe = probe.parent
+        if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
+            why = "not a folder" if not probe.is_dir() else "not writable"
+            raise CamdynInputError(f"argument --out: cannot create the folder {path}: "
+                                   f"{probe} is {why}")
+        return path
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise CamdynInputError(f"argument --out: cannot create the folder {path}: "
+                               f"{exc.strerror or exc}") from None
+    return path

@@ -1,0 +1,237 @@
+"""Integration methods: one small class each, checked options, one compiled loop.
+
+The loops themselves are in :mod:`camdyn.runtime.engine.driver`; these classes
+only validate what the user asked for and say which loop to run with which
+step control.
+
+Each method also knows its one-notch-tighter self, the second run of an error estimate: a
+figure v is computed again as v' and |v - v'| times the method's factor estimates v's global
+error.  For the adaptive methods (dp54, rodas4) the second run is at rtol/10 and atol/10: the
+error of a run being roughly proportional to its tolerance, v' carries a tenth of v's error and
+|v - v'| estimates it to within about 10 %.  For the fixed-step methods (rk4, and the thesis's
+scheme, whose acceleration is held at its mid-step value (4.23)-(4.31)) it is at half the step,
+with Richardson's factor 2^p/(2^p - 1), p the method's order.  The estimate needs the error to
+be in its asymptotic range; near a stability limit, or for a figure that jumps (an event in one
+run and not in the other), it is as large as the change between the runs, which flags it.
+tests/test_accuracy.py checks on CAMSHAFT-1 that the estimates bound the true error within a
+factor of 10.
+"""
+from __future__ import annotations
+
+import math
+from contextlib import contextmanager
+from contextvars import ContextVar
+from dataclasses import dataclass, replace
+
+from ..engine import driver
+from .errors import CamdynInputError
+
+
+def _positive(name: str, value, upper: float | None = None) -> float:
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise CamdynInputError(f"{name} must be a number, got {value!r}") from None
+    if not (math.isfinite(v) and v > 0 and (upper is None or v < upper)):
+        rng = f"0 < {name}" + (f" < {upper:g}" if upper is not None else "")
+        raise CamdynInputError(f"{name}={value} is out of range: {rng}")
+    return v
+
+
+RTOL_MIN = 1e-14
+"""The tightest rtol an adaptive method accepts: a run there has no tighter neighbour."""
+
+ORDER = {"rk4": 4, "koster": 2}
+"""Order of the fixed-step methods, for Richardson's factor 2^p/(2^p - 1)."""
+
+
+def estimate_factor(name: str) -> float:
+    """The multiplier of |v - v'| for the method called ``name``: Richardson's 2^p/(2^p - 1)
+    for a fixed-step method of order p, 1 for an adaptive one."""
+    p = ORDER.get(name)
+    return 1.0 if p is None else 2.0 ** p / (2.0 ** p - 1.0)
+
+
+class _FixedStep:
+    adaptive = False
+
+    def __post_init__(self):
+        object.__setattr__(self, "step", _positive("step", self.step))
+
+    def tighter(self):
+        """The same method one notch more accurate, for an error estimate: half the step."""
+        return replace(self, step=self.step / 2)
+
+    @property
+    def estimate_factor(self) -> float:
+        """Richardson's 2^p/(2^p - 1): |v - v'| times this estimates the error of v when v'
+        took half the step (p the method's order)."""
+        return estimate_factor(self.name)
+
+
+@dataclass(frozen=True)
+class RK4(_FixedStep):
+    """Classical fourth-order Runge-Kutta with a fixed step.
+
+    ``step`` is the largest step; each interval between breakpoints is cut
+    into equal steps no longer than it, so that steps land on breakpoints.
+    """
+
+    step: float
+    code = driver.RK4
+    name = "rk4"
+
+
+@dataclass(frozen=True)
+class Koster(_FixedStep):
+    """The thesis's CAMSHAFT-1 scheme (4.23)-(4.31), fixed step.
+
+    The acceleration is held constant over a step at its value at mid-step,
+    evaluated at the mid-step position X + dX, dX = X' theta + X'' theta^2/2
+    (4.23), (4.24) with theta = dT/2; the thesis eliminates dX by hand (4.25),
+    here the mid-step equation is solved to rounding error by fixed-point
+    iteration while that contracts fast, else by Newton's method with the
+    model's Jacobian (one step for the linear equation (4.15): the same as the
+    elimination), so the run is usable up to the scheme's stability boundary
+    dT omega = 2 sqrt(2) (runtime/core/stability.py).  Then
+    dX' = X'' dT, dX = (X' + dX'/2) dT (4.28)-(4.31).  The thesis finds it
+    stable for dT <= 0.1 tau.  Second-order models only.
+    """
+
+    step: float
+    code = driver.KOSTER
+    name = "koster"
+
+
+@dataclass(frozen=True)
+class DP54:
+    """Dormand-Prince 5(4), local extrapolation, PI step-size control, dense output.
+
+    Error per step is measured in the RMS norm against atol + rtol |y|;
+    ``atol`` defaults to rtol times the state scales of the model's manifest
+    times 1e-3.  ``state_atol``, pairs (state name, absolute tolerance), sets the
+    tolerance of single states: a large one takes a state out of the error control
+    (it is then as accurate as the others' accuracy makes it, no more), so that an
+    L-stable method can step over a fast mode that only rings (the roller on its
+    contact spring) while the follower's error stays controlled.  The consequence:
+    that state's own history (the contact force, a ringing roller) is then not
+    resolved and must not be read from the run.
+    """
+
+    rtol: float = 1e-8
+    atol: float | None = None
+    first_step: float | None = None
+    max_step: float = math.inf
+    state_atol: tuple = ()
+    code = driver.DP54
+    name = "dp54"
+    adaptive = True
+
+    def __post_init__(self):
+        object.__setattr__(self, "rtol", _positive("rtol", self.rtol, 1.0))
+        if self.rtol < RTOL_MIN:
+            raise CamdynInputError(f"rtol={self.rtol:g} is out of range: {RTOL_MIN:g} <= rtol < 1")
+        if self.atol is not None:
+            object.__setattr__(self, "atol", _positive("atol", self.atol))
+        if self.first_step is not None:
+            object.__setattr__(self, "first_step", _positive("first_step", self.first_step))
+        if self.max_step != math.inf:
+            object.__setattr__(self, "max_step", _positive("max_step", self.max_step))
+        pairs = tuple(dict(self.state_atol).items())
+        for name, value in pairs:
+            _positive(f"state_atol[{name}]", value)
+        object.__setattr__(self, "state_atol", pairs)
+
+    def tighter(self):
+        """The same method one notch more accurate, for an error estimate: rtol/10 (and every
+        absolute tolerance /10), or None at the tightest rtol there is.  With the error of a
+        run roughly proportional to its tolerance, the tighter run carries a tenth of the
+        error and |v - v'| estimates v's error to within about 10 %."""
+        if self.rtol / 10 < RTOL_MIN:
+            return None
+        return replace(self, rtol=self.rtol / 10,
+                       atol=None if self.atol is None else self.atol / 10,
+                       state_atol=tuple((k, v / 10) for k, v in self.state_atol))
+
+    estimate_factor = 1.0
+    """|v - v'| itself estimates the error of v (see tighter())."""
+
+
+@dataclass(frozen=True)
+class RODAS4(DP54):
+    """RODAS4, the stiff solver: a linearly implicit (Rosenbrock) method of order 4 with an
+    embedded order-3 estimate, stiffly accurate and L-stable (Hairer & Wanner, Solving
+    Ordinary Differential Equations II, sec. IV.7, the method of their code RODAS).
+
+    Chosen over Radau IIA of order 5 (RADAU5) because a step is one LU of
+    (I/(h gamma) - J) and six triangular solves: there is no Newton iteration that could
+    fail to converge or need a complex transformation of the stage system, the cost of a
+    step is fixed, and order 4 suits the moderate tolerances of design runs.  Stiffly
+    accurate and L-stable, it damps the parasitic high frequencies (a stiff shaft, a beam's
+    higher modes, a penalty contact) in one step instead of resolving them, as DP54 must to
+    stay stable.  The Jacobian is the model's generated one where it is symbolic, else
+    central differences of the right-hand side (a Rosenbrock method needs an accurate
+    Jacobian for its order; forward differences were not accurate enough on the beam
+    follower), and df/dt central differences; afresh at every accepted point and kept
+    through rejections: 2 right-hand-side calls per step with the generated Jacobian,
+    2 n_states + 2 without, counted in n_rhs.  Error control, breakpoints and events
+    are those of DP54 (rtol, atol the same way); dense output is the cubic Hermite
+    interpolant of the recorded points and slopes, O(h^4) like the method.
+    """
+
+    code = driver.RODAS
+    name = "rodas4"
+
+
+METHODS = {"rk4": RK4, "dp54": DP54, "koster": Koster, "rodas4": RODAS4}
+ADAPTIVE = tuple(name for name, cls in METHODS.items() if cls.adaptive)
+"""The methods with error control and dense output: those scenes and the beam follower take."""
+
+
+_NOTCHES: ContextVar[int] = ContextVar("camdyn_tighter_notches", default=0)
+
+
+@contextmanager
+def tightened(notches: int = 1):
+    """Every method made inside (by :func:`make` or a Simulator) one (or ``notches``) notch
+    tighter: an error estimate of any computation built on runs, however composite, is its
+    value's change when computed again inside ``with tightened():``."""
+    token = _NOTCHES.set(_NOTCHES.get() + notches)
+    try:
+        yield
+    finally:
+        _NOTCHES.reset(token)
+
+
+def notches() -> int:
+    """How many notches tighter methods are made here (see :func:`tightened`)."""
+    return _NOTCHES.get()
+
+
+def apply_notches(method):
+    """``method`` tightened by the notches in force (:func:`tightened`); a CamdynInputError
+    when it cannot be tightened that far."""
+    for _ in range(_NOTCHES.get()):
+        tighter = method.tighter()
+        if tighter is None:
+            raise CamdynInputError(f"rtol={method.rtol:g} is the tightest there is: no run one "
+                                   "notch tighter for an error estimate (give a larger rtol)")
+        method = tighter
+    return method
+
+
+def make(name: str, *, rtol=None, atol=None, step=None):
+    """A method from its name and the options given on a command line or API call."""
+    if name not in METHODS:
+        raise CamdynInputError(f"unknown method {name!r}; choose one of {', '.join(METHODS)}")
+    cls = METHODS[name]
+    if cls.adaptive:
+        if step is not None:
+            raise CamdynInputError("step applies to the fixed-step methods rk4 and koster; "
+                                   f"{name} takes rtol")
+        return cls(rtol=1e-8 if rtol is None else rtol, atol=atol)
+    if rtol is not None or atol is not None:
+        raise CamdynInputError(f"rtol/atol apply to dp54 and rodas4; {name} takes step")
+    if step is None:
+        raise CamdynInputError(f"method {name} needs step")
+    return cls(step=step)

@@ -1,0 +1,140 @@
+"""The result of a simulation: named states and outputs, dense output, statistics."""
+from __future__ import annotations
+
+from functools import cached_property
+
+import numpy as np
+
+from ..engine import driver
+from .errors import CamdynInputError
+
+
+class Result:
+    """Trajectory of one run.
+
+    ``t`` and ``y`` hold the recorded points (every accepted step; a breakpoint
+    appears twice, as left and right limit), ``f`` the slopes there.
+    ``result["X"]`` gives a state or an output at those points;
+    ``result.sample(times)`` evaluates everything at arbitrary times through
+    the method's dense output.
+    """
+
+    def __init__(self, sim, p, out):
+        self.model = sim.model
+        self.method = sim.method
+        self.laws = sim.laws
+        self.law_codes, self.law_pars = sim.law_codes, sim.law_pars
+        self.p = p
+        self._out = out
+        # fixed-step methods: the stability estimate (camdyn.runtime.core.stability.Estimate) and
+        # the warnings of a step near the boundary, set by Simulator.run
+        self.stability = None
+        self.warnings: list[str] = []
+
+    @property
+    def stiff_from_T(self) -> float | None:
+        """DP54: the time where Hairer's stiffness test (DOPRI5) first fired, else None."""
+        t = getattr(self._out, "t_stiff", float("nan"))
+        return None if t != t else float(t)
+
+    @cached_property
+    def stats(self) -> dict:
+        """Steps, rejected steps, right-hand-side calls, wall time of the compiled loops."""
+        o = self._out
+        return {"n_steps": o.n_steps, "n_rejected": o.n_rejected, "n_rhs": o.n_rhs,
+                "n_events": o.n_events, "seconds": o.seconds}
+
+    @cached_property
+    def record(self) -> np.ndarray:
+        """The recorded rows [t, y, f, extra] (camdyn/runtime/engine/abi.pxd), one per point."""
+        return self._out.rows[:self._out.n]
+
+    @property
+    def has_extra(self) -> bool:
+        """Whether the rows carry DP54's extra dense-output term."""
+        return bool(self._extra.shape[0])
+
+    @cached_property
+    def mode(self) -> np.ndarray:
+        """Modes in force from each recorded point on: cam segments, then force elements."""
+        return self._out.modes[:self._out.n]
+
+    def element_mode(self, name: str) -> np.ndarray:
+        """Value names of the force-element mode ``name`` at the recorded points."""
+        specs = self.model.manifest.get("modes", [])
+        names = [m["name"] for m in specs]
+        if name not in names:
+            raise KeyError(f"{name!r} is not a mode of {self.model.name}; modes: {', '.join(names)}")
+        k = names.index(name)
+        col = self.mode[:, len(self.model.manifest["cam_instances"]) + k]
+        return np.asarray(specs[k]["values"], dtype=object)[col]
+
+    # views into the record rows [t, y, f, extra] (see camdyn/runtime/engine/abi.pxd)
+    @cached_property
+    def t(self) -> np.ndarray:
+        return self.record[:, 0]
+
+    @cached_property
+    def y(self) -> np.ndarray:
+        return self.record[:, 1:1 + len(self.state_names)]
+
+    @cached_property
+    def f(self) -> np.ndarray:
+        """Slopes dy/dt at the recorded points (left limits at the end of an interval)."""
+        ns = len(self.state_names)
+        return self.record[:, 1 + ns:1 + 2 * ns]
+
+    @cached_property
+    def _extra(self) -> np.ndarray:
+        ns = len(self.state_names)
+        if self.record.shape[1] > 1 + 2 * ns:
+            return self.record[:, 1 + 2 * ns:]
+        return np.empty((0, ns))
+
+    @cached_property
+    def params(self) -> dict:
+        return dict(zip(self.model.parameter_names, self.p.tolist()))
+
+    @property
+    def state_names(self) -> list[str]:
+        return self.model.state_names
+
+    @property
+    def output_names(self) -> list[str]:
+        return self.model.output_names
+
+    @property
+    def names(self) -> list[str]:
+        return self.state_names + self.output_names
+
+    @cached_property
+    def outputs(self) -> dict:
+        """Outputs at the recorded points (computed on first use, in C)."""
+        out = driver.eval_outputs(self.model.capsule, self.p, self.law_codes, self.law_pars,
+                                      self.t, self.y, self.mode)
+        return {name: out[:, k] for k, name in enumerate(self.output_names)}
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        if name in ("t", self.model.manifest["time"]["name"]):
+            return self.t
+        if name in self.state_names:
+            return self.y[:, self.state_names.index(name)]
+        if name in self.output_names:
+            return self.outputs[name]
+        raise KeyError(f"{name!r} is neither a state nor an output of {self.model.name}; "
+                       f"known: {', '.join(self.names)}")
+
+    def sample(self, times) -> dict:
+        """States and outputs at ``times`` (dense output), as a dict of arrays."""
+        tq = np.ascontiguousarray(np.atleast_1d(np.asarray(times, dtype=float)))
+        if tq.size and (tq.min() < self.t[0] or tq.max() > self.t[-1]):
+            raise CamdynInputError(
+                f"sample times must lie in [{self.t[0]:g}, {self.t[-1]:g}]")
+        Y, idx = driver.dense_eval(self.t, self.y, self.f, self._extra, tq)
+        modes = np.ascontiguousarray(self.mode[idx]) if self.mode.shape[1] else None
+        out = driver.eval_outputs(self.model.capsule, self.p, self.law_codes, self.law_pars,
+                                      tq, Y, modes)
+        res = {"t": tq}
+        res.update({name: Y[:, k] for k, name in enumerate(self.state_names)})
+        res.update({name: out[:, k] for k, name in enumerate(self.output_names)})
+        return res

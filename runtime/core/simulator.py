@@ -1,0 +1,314 @@
+"""Runs of generated models: ``simulate(...)`` for one run, ``Simulator`` for many.
+
+A :class:`Simulator` fixes the model, method, cam law and time span and
+checks them once; ``Simulator.run(params)`` then only checks the parameters
+and calls the compiled loops.  ``simulate`` keeps a few recently used
+simulators, so repeated calls with the same settings cost little more.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from ..engine import driver
+from . import laws as _laws, methods as _methods, stability as _stability
+from .errors import CamdynInputError, SimulationError, UnstableStep
+from .models import CompiledModel, load
+from .result import Result
+
+
+def law_choices(model: CompiledModel, law, theta):
+    """The cam law of each input family of a model: (chosen per family, their codes, their
+    shape parameters), from a law name (every input), {family: name}, or a composed turn."""
+    fams = model.families
+    if isinstance(law, dict):
+        missing = set(fams) - set(law)
+        if missing:
+            raise CamdynInputError(f"no cam law given for input {', '.join(sorted(missing))}")
+        chosen = {f: law[f] if isinstance(law[f], (_laws.LawChoice, _laws.Turn))
+                  else _laws.choose(law[f], theta)
+                  for f in fams}
+    else:
+        choice = law if isinstance(law, (_laws.LawChoice, _laws.Turn)) else _laws.choose(law, theta)
+        chosen = {f: choice for f in fams}
+    codes = np.array([chosen[f].code for f in fams] or [0], dtype=np.intc)
+    pars = np.array([chosen[f].par for f in fams] or [0.0], dtype=float)
+    return chosen, codes, pars
+
+
+def stop_times(model: CompiledModel, p, chosen: dict, t0: float, t_end: float) -> np.ndarray:
+    """Cam-law breakpoints in time inside (t0, t_end), then t_end.
+
+    A cam input whose argument is a t + b has its law breakpoints at
+    (bp - b)/a; inputs driven by a state (H(B)) need events instead.
+    """
+    stops = {float(t_end)}
+    affine = model.cam_time_affine(p)
+    for inst, ab in zip(model.manifest["cam_instances"], affine):
+        if ab is None:
+            continue
+        a, b = ab
+        if a == 0:
+            continue
+        lo, hi = sorted((a * t0 + b, a * t_end + b))
+        for bp in chosen[inst["family"]].breakpoints_between(lo, hi):
+            tb = (bp - b) / a
+            if t0 < tb < t_end:
+                stops.add(float(tb))
+    return np.array(sorted(stops))
+
+
+def initial_modes(model: CompiledModel, modes: dict | None) -> list[int]:
+    """Initial value index of every force-element mode: the manifest's, overridden by ``modes``."""
+    specs = model.manifest.get("modes", [])
+    given = dict(modes or {})
+    unknown = sorted(set(given) - {m["name"] for m in specs})
+    if unknown:
+        raise CamdynInputError(f"model {model.name} has no mode {unknown[0]!r}; its modes are "
+                               f"{', '.join(m['name'] for m in specs) or 'none'}")
+    out = []
+    for spec in specs:
+        value = given.get(spec["name"], spec["initial"])
+        if value not in spec["values"]:
+            raise CamdynInputError(f"mode {spec['name']}={value!r} is not one of {spec['values']}")
+        out.append(spec["values"].index(value))
+    return out
+
+
+@dataclass(frozen=True)
+class BatchInputs:
+    """What the compiled loops take to run many parameter sets of one Simulator (its
+    :meth:`Simulator.batch_inputs`): per run a parameter vector, an initial state and a stop
+    table; for all, the method's code and step control, the cam laws and the modes."""
+
+    P: np.ndarray
+    Y0: np.ndarray
+    stops: np.ndarray
+    n_stops: np.ndarray
+    method: int
+    law_codes: np.ndarray
+    law_pars: np.ndarray
+    t0: float
+    first_step: float
+    h_max: float
+    rtol: float
+    atol: np.ndarray
+    max_steps: int
+    modes0: np.ndarray
+    max_events: int
+
+
+class Simulator:
+    """A prepared simulation: everything but the parameter values is fixed and checked.
+
+    model   name of a generated model ("camshaft1") or a CompiledModel
+    t_end   end of the run (model time)
+    method  "dp54" (rtol, atol), "rk4" or "koster" (step), or a method object
+    law     cam-law name, or {family: name} for models with several inputs;
+            theta is the law's shape parameter (modified sine)
+    check_stability
+            True (the default): a fixed step beyond the method's stability boundary is
+            refused (UnstableStep).  False runs it anyway, for the stability map
+            (runtime/studies/stability_map.py), which must see what the step does: the estimate is
+            still computed and kept in ``result.stability``, a run that becomes non-finite
+            still raises SimulationError.
+    """
+
+    def __init__(self, model, t_end: float = 3.0, method="dp54", *, rtol: float | None = None,
+                 atol: float | None = None, step: float | None = None, law="cycloidal",
+                 theta: float | None = None, y0=None, t0: float = 0.0, max_steps: int = 5_000_000,
+                 modes: dict | None = None, max_events: int = 1_000_000,
+                 check_stability: bool = True):
+        m = model if isinstance(model, CompiledModel) else load(model)
+        if isinstance(method, str):
+            method = _methods.make(method, rtol=rtol, atol=atol, step=step)
+        elif rtol is not None or atol is not None or step is not None:
+            raise CamdynInputError("give rtol/atol/step inside the method object, not beside it")
+        # inside methods.tightened(): the run one notch tighter of an error estimate
+        method = _methods.apply_notches(method)
+        try:
+            t0, t_end = float(t0), float(t_end)
+        except (TypeError, ValueError):
+            raise CamdynInputError("t0 and t_end must be numbers") from None
+        if not (math.isfinite(t0) and math.isfinite(t_end) and t_end > t0):
+            raise CamdynInputError(f"t_end={t_end:g} must be finite and greater than t0={t0:g}")
+        if isinstance(max_steps, bool) or not isinstance(max_steps, int) or max_steps < 1:
+            raise CamdynInputError(f"max_steps must be a positive integer, got {max_steps!r}")
+        self.model, self.method, self.t0, self.t_end, self.max_steps = m, method, t0, t_end, max_steps
+        if not isinstance(check_stability, bool):
+            raise CamdynInputError(f"check_stability must be True or False, got {check_stability!r}")
+        self.check_stability = check_stability
+        self.laws, self.law_codes, self.law_pars = law_choices(m, law, theta)
+        n = len(m.state_names)
+        # a default initial state that depends on the parameters is worked out per run
+        self._y0_given = y0 is not None or all(
+            isinstance(st["initial"], float) for st in m.manifest["states"])
+        y_init = m.initial_state() if y0 is None else np.array(y0, dtype=float).ravel()
+        if y_init.shape != (n,) or not np.all(np.isfinite(y_init)):
+            raise CamdynInputError(f"y0 must be {n} finite numbers ({', '.join(m.state_names)})")
+        self._y_init = y_init
+        if method.adaptive:
+            base = method.atol if method.atol is not None else 1e-3 * method.rtol
+            atol = np.ascontiguousarray(base * m.state_scales(), dtype=float)
+            for name, value in method.state_atol:
+                if name not in m.state_names:
+                    raise CamdynInputError(f"state_atol: {m.name} has no state {name}; its states "
+                                           f"are {', '.join(m.state_names)}")
+                atol[m.state_names.index(name)] = value
+            h, h_max, rtol = method.first_step or 0.0, min(method.max_step, t_end - t0), method.rtol
+        else:
+            if (t_end - t0) / method.step > max_steps:
+                raise CamdynInputError(
+                    f"step={method.step:g} needs more than max_steps={max_steps} steps over "
+                    f"[{t0:g}, {t_end:g}]")
+            atol, h, h_max, rtol = np.ones(n), method.step, method.step, 0.0
+        self.modes0 = initial_modes(m, modes)
+        # what the compiled loops take, kept for the batch entry (batch_inputs)
+        self.atol, self.first_step, self.h_max, self.loop_rtol = atol, h, h_max, rtol
+        self.max_events = int(max_events)
+        self.integrator = driver.Integrator(
+            m.capsule, method.code, self.law_codes, self.law_pars, y_init, t0, h, h_max, rtol, atol,
+            max_steps, np.array(self.modes0, dtype=np.intc), int(max_events))
+        self._stops: dict = {}
+        self._cap = 256
+
+    def initial_state(self, p: np.ndarray) -> np.ndarray:
+        """The initial state of a run with parameters p: the one given, else the model's
+        declared one (which may depend on p)."""
+        return self._y_init.copy() if self._y0_given else self.model.initial_state(p)
+
+    def batch_inputs(self, P: np.ndarray) -> "BatchInputs":
+        """Everything the compiled loops need to run the parameter sets P (one row each)
+        without a Python call per run: initial states, stop tables (breakpoints in time, then
+        t_end, padded with t_end) and the loop's settings, as this Simulator runs them."""
+        P = np.ascontiguousarray(np.atleast_2d(P), dtype=float)
+        n = len(P)
+        # stop times depend on the parameters only through the cam inputs' affine arguments
+        stops, seen = [], {}
+        for p in P:
+            key = repr(self.model.cam_time_affine(p))
+            s = seen.get(key)
+            if s is None:
+                s = seen[key] = stop_times(self.model, p, self.laws, self.t0, self.t_end)
+            stops.append(s)
+        width = max(len(s) for s in stops)
+        S = np.full((n, width), self.t_end)
+        for j, s in enumerate(stops):
+            S[j, :len(s)] = s
+        Y0 = (np.tile(self._y_init, (n, 1)) if self._y0_given
+              else np.array([self.model.initial_state(p) for p in P]))
+        return BatchInputs(P=P, Y0=np.ascontiguousarray(Y0, dtype=float), stops=S,
+                           n_stops=np.array([len(s) for s in stops], dtype=np.intc),
+                           method=self.method.code, law_codes=self.law_codes,
+                           law_pars=self.law_pars, t0=self.t0, first_step=self.first_step,
+                           h_max=self.h_max, rtol=self.loop_rtol,
+                           atol=np.ascontiguousarray(self.atol, dtype=float),
+                           max_steps=self.max_steps,
+                           modes0=np.array(self.modes0, dtype=np.intc),
+                           max_events=self.max_events)
+
+    def stops(self, p: np.ndarray) -> np.ndarray:
+        """Stop times for parameters p (cached: they depend on p only through the cam inputs)."""
+        return self.stops_and_capacity(p)[0]
+
+    def stops_and_capacity(self, p: np.ndarray):
+        """(stop times, record capacity: 0 for adaptive methods) for parameters p, cached."""
+        key = p.tobytes()
+        hit = self._stops.get(key)
+        if hit is None:
+            if len(self._stops) > 256:
+                self._stops.clear()
+            stops = stop_times(self.model, p, self.laws, self.t0, self.t_end)
+            cap = 0 if self.method.adaptive else driver.fixed_step_points(self.t0, stops, self.method.step)
+            hit = self._stops[key] = (stops, cap)
+        return hit
+
+    def run(self, params: dict | None = None) -> Result:
+        """One run with these parameter values (defaults for the ones not given).
+
+        A failed run raises SimulationError; so does a fixed-step run whose step lies beyond
+        the method's stability boundary, checked before the run at its start and after it at
+        a sample of recorded points (camdyn.runtime.core.stability; UnstableStep, unless the
+        simulator was made with check_stability=False).  A step near the boundary
+        leaves a warning in ``result.warnings``; DP54 records where Hairer's stiffness test
+        fired in ``result.stiff_from_T``.
+        """
+        m = self.model
+        p = m.parameter_vector(params)
+        stops, cap = self.stops_and_capacity(p)
+        y0 = None if self._y0_given else m.initial_state(p)
+        tname = m.manifest["time"]["name"]
+        fixed = not self.method.adaptive
+        est = None
+        if fixed:
+            y_start = self._y_init if y0 is None else y0
+            est = self._stability(p, [self.t0], [y_start])
+            if self.check_stability and est is not None and not est.stable:
+                raise UnstableStep(_stability.refusal(m.name, tname, est), est)
+        out = self.integrator.run(p, stops, cap or self._cap, y0)
+        if fixed:
+            # during the run: the frozen Jacobian changes with the cam position and the modes
+            rows = out.rows[:out.n]
+            idx = _stability.sample_indices(rows[:, 0], out.n)
+            idx = idx[np.all(np.isfinite(rows[idx]), axis=1)]
+            if idx.size:
+                ns = len(m.state_names)
+                during = self._stability(p, rows[idx, 0], rows[idx, 1:1 + ns], out.modes[idx])
+                if during is not None and (est is None or during.largest_stable_step
+                                           < est.largest_stable_step):
+                    est = during
+            if self.check_stability and est is not None and not est.stable:
+                raise UnstableStep(_stability.refusal(m.name, tname, est), est)
+        if out.status != 0:
+            raise SimulationError(f"{m.name} with {self.method.name}: "
+                                  f"{driver.STATUS_TEXT[out.status]} at "
+                                  f"{tname} = {out.t_fail:.6g}")
+        if not cap:
+            self._cap = max(256, out.n + out.n // 4)
+        res = Result(self, p, out)
+        res.stability = est
+        if est is not None and est.near:
+            res.warnings.append(_stability.warning(tname, est))
+        elif est is not None and not est.stable:   # run anyway (check_stability=False)
+            res.warnings.append("run with the stability check off: "
+                                + _stability.refusal(m.name, tname, est))
+        return res
+
+    def _stability(self, p, times, states, modes=None):
+        """The stability estimate of this fixed-step method at the points given."""
+        ev = _stability.spectra(self.model, p, self.law_codes, self.law_pars, times, states,
+                                modes, None if modes is not None else
+                                np.array(self.modes0, dtype=np.intc))
+        return _stability.assess(self.method.name, self.method.step, np.asarray(times, float), ev)
+
+
+@lru_cache(maxsize=32)
+def _prepared(model, t_end, method, rtol, atol, step, law, theta, y0, t0, max_steps, modes,
+              notches) -> Simulator:
+    return Simulator(model, t_end, method, rtol=rtol, atol=atol, step=step,
+                     law=dict(law) if isinstance(law, tuple) else law,
+                     theta=theta, y0=y0, t0=t0, max_steps=max_steps,
+                     modes=dict(modes) if modes else None)
+
+
+def simulate(model, params: dict | None = None, t_end: float = 3.0, method="dp54", *,
+             rtol: float | None = None, atol: float | None = None, step: float | None = None,
+             law="cycloidal", theta: float | None = None, y0=None, t0: float = 0.0,
+             max_steps: int = 5_000_000, modes: dict | None = None) -> Result:
+    """Integrate ``model`` from t0 to t_end with ``params`` (see :class:`Simulator`).
+
+    The prepared Simulator is kept for the next call with the same settings.
+    """
+    key_law = tuple(sorted(law.items())) if isinstance(law, dict) else law
+    key_y0 = None if y0 is None else tuple(np.asarray(y0, dtype=float).ravel().tolist())
+    key_modes = tuple(sorted(modes.items())) if modes else None
+    try:
+        sim = _prepared(model, t_end, method, rtol, atol, step, key_law, theta, key_y0, t0,
+                        max_steps, key_modes, _methods.notches())
+    except TypeError:  # unhashable settings: prepare without the cache
+        sim = Simulator(model, t_end, method, rtol=rtol, atol=atol, step=step, law=law,
+                        theta=theta, y0=y0, t0=t0, max_steps=max_steps, modes=modes)
+    return sim.run(params)

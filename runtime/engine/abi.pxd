@@ -1,0 +1,123 @@
+# The C interface between generated models and camdyn.runtime.
+#
+# A generated module fills one ModelC with pointers to its nogil functions and
+# hands it to Python as a PyCapsule named "camdyn.ModelC".  Its `run` is the
+# set of integration loops of runtime/engine/loops.pxi, compiled inside the model's
+# module so that the right-hand side is inlined into every stage; the driver
+# in camdyn.runtime.engine.driver calls it once per run.  The other pointers serve
+# evaluation from Python (outputs, one-off rhs calls).
+#
+# State layout: y = [q_1..q_n, q'_1..q'_n, first-order states...].
+# This header has no .pyx of its own on purpose: cimporting it never imports
+# a module at run time.
+
+cdef enum:
+    CAMDYN_ABI = 5
+
+# method codes
+cdef enum:
+    METHOD_RK4 = 0
+    METHOD_DP54 = 1
+    METHOD_KOSTER = 2
+    METHOD_RODAS = 3       # RODAS4, linearly implicit (stiff problems)
+
+# run status codes
+cdef enum:
+    STATUS_OK = 0
+    STATUS_MAX_STEPS = 1
+    STATUS_STEP_UNDERFLOW = 2
+    STATUS_NOT_FINITE = 3
+    STATUS_NO_MEMORY = 4
+    STATUS_NO_CONVERGENCE = 5
+    STATUS_BAD_MODEL = 6
+    STATUS_EVENT_STORM = 7
+
+cdef struct Ctx:
+    const double* p        # parameters, in manifest order
+    double* k              # parameter-only constants, filled by prepare()
+    const int* law         # cam law code per cam input family
+    const double* law_par  # cam law parameter (theta of the modified sine) per family
+    int* mode              # cam segment per cam input instance, then the force elements' modes
+    int variant            # bit i set: cam instance i sits in a dwell (set by update_modes)
+    double* cache          # per cam instance [argument, H, H', H'', H''']: the last evaluation;
+                           # in a dwell H holds the dwell value (n_cache doubles)
+
+cdef struct Record:
+    # one row per recorded point: [t, y (ns), f (ns), extra (ns, DP54 only)]; f is
+    # the slope there (left limit at the end of an interval), `extra` DP54's
+    # fourth-order dense-output term of the step that starts at the point.
+    # `mode` holds the modes in force from the point on.
+    Py_ssize_t n
+    Py_ssize_t cap
+    int width              # doubles per row
+    bint with_extra
+    bint owned             # buffers were (re)allocated by the loop: the driver frees them
+    double* rows
+    int* mode
+
+cdef struct Run:
+    Ctx* ctx
+    Record rec
+    int method
+    const double* stops    # end times of the intervals (breakpoints, then t_end)
+    int n_stops
+    double t0
+    double* y              # state, in and out
+    double h               # fixed step; DP54: first step (0 = automatic), then the last one
+    double h_max
+    double rtol
+    const double* atol
+    long max_steps
+    long n_steps
+    long n_rejected
+    long n_rhs
+    long n_events          # events located and applied
+    long max_events
+    double t_fail
+    double err_old
+    double t_stiff         # DP54: where Hairer's stiffness test (DOPRI5) first fired; NaN if never
+
+ctypedef void (*prep_fn)(Ctx* ctx) noexcept nogil
+ctypedef void (*rhs_fn)(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil
+ctypedef void (*out_fn)(double t, const double* y, double* out, Ctx* ctx) noexcept nogil
+ctypedef void (*mode_fn)(double t, const double* y, Ctx* ctx) noexcept nogil
+ctypedef int (*run_fn)(Run* run) noexcept nogil
+ctypedef void (*event_fn)(double t, const double* y, double* g, Ctx* ctx) noexcept nogil
+ctypedef void (*action_fn)(int k, double t, double* y, Ctx* ctx) noexcept nogil
+ctypedef void (*ms_fn)(double t, const double* y, double* M, double* K, Ctx* ctx) noexcept nogil
+ctypedef void (*jac_fn)(double t, const double* y, double* J, double* ft, Ctx* ctx) noexcept nogil
+
+cdef struct ModelC:
+    int abi_version        # CAMDYN_ABI; checked before any call
+    int n_q                # second-order coordinates
+    int n_states
+    int n_params
+    int n_outputs
+    int n_families         # cam input families (H, ...)
+    int n_instances        # distinct cam input arguments (one segment mode each)
+    int n_modes            # all modes: the cam segments first, then the force elements'
+    int n_events
+    int n_const            # parameter-only constants
+    int n_cache            # doubles of ctx.cache
+    prep_fn prepare        # fills ctx.k from ctx.p
+    rhs_fn rhs             # dy = f(t, y)
+    out_fn outputs         # named outputs at (t, y)
+    mode_fn update_modes   # segment of every cam input at (t, y), right-continuous
+    prep_fn refresh        # ctx.variant from ctx.mode (after setting modes by hand)
+    event_fn events        # event functions g_k(t, y)
+    action_fn on_event     # modes (and state resets) at event k
+    ms_fn mass_stiffness   # M and K = -df/dq, for frozen (linearized) analyses
+    jac_fn jac             # J = d(dy/dt)/dy, row-major n_states x n_states (ABI 4; the
+                           # manifest's "jacobian" says how: "symbolic" or "finite-difference"),
+                           # and df/dt into ft unless NULL where the manifest's
+                           # "time_derivative" is "symbolic" (ABI 5)
+    run_fn run             # the integration loops (loops.pxi) with this model's rhs inlined
+
+
+cdef inline long fixed_steps(double a, double b, double h) noexcept nogil:
+    """Number of equal steps no longer than h over [a, b] (RK4, thesis scheme)."""
+    cdef double x = (b - a) / h * (1.0 - 1e-12)
+    cdef long n = <long> x
+    if n < x:
+        n += 1
+    return n if n > 0 else 1

@@ -1,0 +1,519 @@
+# cython: language_level=3, boundscheck=False, wraparound=False, cdivision=True, initializedcheck=False
+"""Driver of the compiled integration loops, and compiled evaluation helpers.
+
+The loops themselves (runtime/engine/loops.pxi) are compiled into every generated
+model with its right-hand side inlined; ``integrate`` prepares the buffers and
+calls them through the model's ModelC.run, once, without the GIL.  The record
+is written straight into NumPy arrays sized in advance; only when a run
+outgrows them (adaptive steps) do the loops move to buffers of their own,
+which are copied once at the end.
+
+The helpers below (outputs, rhs, dense output) serve post-processing and
+tests; they call the model through its function pointers.
+"""
+from cpython.pycapsule cimport PyCapsule_GetPointer, PyCapsule_IsValid
+from cpython.mem cimport PyMem_Free, PyMem_Malloc
+from libc.math cimport NAN, fabs, fmax
+from libc.stdlib cimport free
+from libc.string cimport memcpy
+from posix.time cimport CLOCK_MONOTONIC, clock_gettime, timespec
+
+from collections import namedtuple
+
+import numpy as np
+
+from camdyn.runtime.engine.abi cimport *
+
+RK4 = METHOD_RK4
+DP54 = METHOD_DP54
+KOSTER = METHOD_KOSTER
+RODAS = METHOD_RODAS
+
+RunRecord = namedtuple("RunRecord", "status rows modes n n_steps n_rejected n_rhs t_fail seconds "
+                                    "n_events t_stiff")
+RunRecord.__doc__ = """What Integrator.run returns: the status (STATUS_TEXT), the record (``rows``:
+t, states and slopes at every recorded point; ``modes`` in force from each point on; ``n`` of
+them filled), step and right-hand-side counts, where a failed run stopped (``t_fail``), the
+wall time of the compiled loops, the number of events and, for DP54, the time where Hairer's
+stiffness test first fired (``t_stiff``, NaN if it never did)."""
+
+STATUS_TEXT = {
+    STATUS_OK: "ok",
+    STATUS_MAX_STEPS: "the step budget (max_steps) was used up",
+    STATUS_STEP_UNDERFLOW: "the step size fell below the resolution of the time axis",
+    STATUS_NOT_FINITE: "the state became non-finite (NaN or inf)",
+    STATUS_NO_MEMORY: "out of memory while recording the trajectory",
+    STATUS_NO_CONVERGENCE: ("the mid-step acceleration of the thesis scheme did not converge; "
+                            "use a smaller step"),
+    STATUS_BAD_MODEL: "the model is not purely second order, which the thesis scheme requires",
+    STATUS_EVENT_STORM: "more events than max_events (chattering contact or friction?)",
+}
+
+
+cdef ModelC* model_pointer(object capsule) except NULL:
+    if not PyCapsule_IsValid(capsule, b"camdyn.ModelC"):
+        raise TypeError("expected the MODEL capsule of a generated camdyn model")
+    cdef ModelC* m = <ModelC*> PyCapsule_GetPointer(capsule, b"camdyn.ModelC")
+    if m.abi_version != CAMDYN_ABI:
+        raise RuntimeError(f"generated model built for ABI {m.abi_version}, runtime has {CAMDYN_ABI}; "
+                           "rebuild (pip install -e .) after `camdyn derive`")
+    return m
+
+
+def fixed_step_points(double t0, double[::1] stops, double h):
+    """Points a fixed-step run records: both ends of every interval and each step."""
+    cdef Py_ssize_t k, n = 0
+    cdef double a = t0
+    for k in range(stops.shape[0]):
+        if stops[k] > a:
+            n += fixed_steps(a, stops[k], h) + 1
+            a = stops[k]
+    return n
+
+
+cdef class Integrator:
+    """A prepared run of one model: method, cam laws, start and tolerances fixed.
+
+    ``run(p, stops, cap)`` integrates from t0 through every stop time with the
+    parameter vector p; ``cap`` is the number of points to reserve (exact for
+    fixed steps, a guess for DP54).  It returns (status, rows, mode, n, n_steps,
+    n_rejected, n_rhs, t_fail, seconds, n_events): ``rows`` has one row [t, y, f, extra]
+    per recorded point (see abi.pxd), ``mode`` the modes in force from each
+    point, ``seconds`` the wall time of the compiled loops.
+    """
+
+    cdef ModelC* m
+    cdef object capsule
+    cdef int method
+    cdef double t0, h, h_max, rtol
+    cdef long max_steps, max_events
+    cdef double[::1] y0, atol, law_par
+    cdef int[::1] law, modes0
+    cdef readonly int width, n_states
+
+    def __init__(self, object capsule, int method, int[::1] law, double[::1] law_par,
+                 double[::1] y0, double t0, double h, double h_max, double rtol,
+                 double[::1] atol, long max_steps, int[::1] modes0=None, long max_events=1000000):
+        self.m = model_pointer(capsule)
+        self.capsule = capsule
+        cdef int ns = self.m.n_states, ne = self.m.n_modes - self.m.n_instances
+        if y0.shape[0] != ns or atol.shape[0] != ns:
+            raise ValueError("state or tolerance vector of the wrong length")
+        if law.shape[0] != max(self.m.n_families, 1) or law_par.shape[0] != law.shape[0]:
+            raise ValueError("one cam law per cam input family expected")
+        if modes0 is None:
+            modes0 = np.zeros(ne, dtype=np.intc)
+        if modes0.shape[0] != ne:
+            raise ValueError(f"{ne} initial modes of the force elements expected")
+        self.method, self.t0, self.h, self.h_max, self.rtol = method, t0, h, h_max, rtol
+        self.max_steps, self.max_events = max_steps, max_events
+        self.y0, self.atol, self.law, self.law_par = y0.copy(), atol.copy(), law.copy(), law_par.copy()
+        self.modes0 = np.array(modes0, dtype=np.intc)
+        self.n_states = ns
+        self.width = 1 + (3 if method == METHOD_DP54 else 2) * ns
+
+    def run(self, double[::1] p, double[::1] stops, Py_ssize_t cap, y0=None):
+        cdef ModelC* m = self.m
+        cdef int ns = m.n_states, nm = m.n_modes, ncam = m.n_instances, j
+        if p.shape[0] != m.n_params:
+            raise ValueError("parameter vector of the wrong length")
+        if cap < 16:
+            cap = 16
+        rows = np.empty((cap, self.width))
+        modes = np.empty((cap, nm), dtype=np.intc)
+        cdef double[:, ::1] rv = rows
+        cdef int[:, ::1] mv = modes
+        # small scratch: the state, the parameter constants, the cam cache; the modes
+        cdef double* scratch = <double*> PyMem_Malloc((ns + m.n_const + m.n_cache + 1) * sizeof(double))
+        cdef int* mode = <int*> PyMem_Malloc((nm + 1) * sizeof(int))
+        if scratch == NULL or mode == NULL:
+            PyMem_Free(scratch)
+            PyMem_Free(mode)
+            raise MemoryError()
+        cdef double[::1] y_start = self.y0 if y0 is None else np.ascontiguousarray(y0, dtype=float)
+        if y_start.shape[0] != ns:
+            PyMem_Free(scratch)
+            PyMem_Free(mode)
+            raise ValueError("initial state of the wrong length")
+        memcpy(scratch, &y_start[0], ns * sizeof(double))
+        for j in range(nm - ncam):
+            mode[ncam + j] = self.modes0[j]
+        cdef Ctx ctx
+        ctx.p = &p[0]
+        ctx.k = scratch + ns
+        ctx.cache = scratch + ns + m.n_const
+        ctx.law = &self.law[0]
+        ctx.law_par = &self.law_par[0]
+        ctx.mode = mode
+        ctx.variant = 0
+        cdef Run run
+        run.ctx = &ctx
+        run.rec.n = 0
+        run.rec.cap = cap
+        run.rec.width = self.width
+        run.rec.with_extra = self.method == METHOD_DP54
+        run.rec.owned = False
+        run.rec.rows = &rv[0, 0]
+        run.rec.mode = &mv[0, 0] if nm else NULL
+        run.method = self.method
+        run.stops = &stops[0]
+        run.n_stops = stops.shape[0]
+        run.t0 = self.t0
+        run.y = scratch
+        run.h = self.h
+        run.h_max = self.h_max
+        run.rtol = self.rtol
+        run.atol = &self.atol[0]
+        run.max_steps = self.max_steps
+        run.max_events = self.max_events
+        run.n_events = 0
+        run.n_steps = 0
+        run.n_rejected = 0
+        run.n_rhs = 0
+        run.t_fail = self.t0
+        run.err_old = 1e-4
+        run.t_stiff = NAN
+        cdef int status
+        cdef timespec c0, c1
+        with nogil:
+            clock_gettime(CLOCK_MONOTONIC, &c0)
+            status = m.run(&run)
+            clock_gettime(CLOCK_MONOTONIC, &c1)
+        cdef double seconds = (c1.tv_sec - c0.tv_sec) + 1e-9 * (c1.tv_nsec - c0.tv_nsec)
+        PyMem_Free(scratch)
+        PyMem_Free(mode)
+        cdef Py_ssize_t n = run.rec.n
+        if run.rec.owned:
+            try:
+                rows = np.empty((n, self.width))
+                modes = np.empty((n, nm), dtype=np.intc)
+                rv, mv = rows, modes
+                if n:
+                    memcpy(&rv[0, 0], run.rec.rows, n * self.width * sizeof(double))
+                    if nm:
+                        memcpy(&mv[0, 0], run.rec.mode, n * nm * sizeof(int))
+            finally:
+                free(run.rec.rows)
+                free(run.rec.mode)
+        return RunRecord(status, rows, modes, n, run.n_steps, run.n_rejected, run.n_rhs,
+                         run.t_fail, seconds, run.n_events, run.t_stiff)
+
+
+# -- evaluation helpers (vectorized, compiled) ------------------------------------
+
+def dense_eval(const double[:] t, const double[:, :] y, const double[:, :] f,
+               const double[:, :] extra, const double[::1] tq):
+    """States at the times tq from a record; returns (Y, index of the step used).
+
+    A query on a stop time takes the step that ends there (left limit) unless it
+    is the first time of the record.  ``extra`` is DP54's per-step term, or an
+    empty array for the Hermite interpolant.
+    """
+    cdef Py_ssize_t n = t.shape[0], nq = tq.shape[0], ns = y.shape[1]
+    Y = np.empty((nq, ns))
+    idx = np.empty(nq, dtype=np.intp)
+    cdef double[:, ::1] Yv = Y
+    cdef Py_ssize_t[::1] iv = idx
+    cdef Py_ssize_t j, lo, hi, mid, i, c
+    cdef double s, s1, h, r1, r2, r3, r4
+    cdef bint with_extra = extra.shape[0] == n
+    if n == 0:
+        raise ValueError("empty record")
+    for j in range(nq):
+        if tq[j] < t[0] or tq[j] > t[n - 1]:
+            raise ValueError(f"time {tq[j]} outside the integrated span [{t[0]}, {t[n - 1]}]")
+        lo = 0
+        hi = n - 1
+        while hi - lo > 1:   # last point with t[i] < tq (or the first point)
+            mid = (lo + hi) // 2
+            if t[mid] < tq[j]:
+                lo = mid
+            else:
+                hi = mid
+        i = lo
+        while i + 1 < n and t[i + 1] == t[i]:   # a stop recorded twice
+            i += 1
+        iv[j] = i
+        if i + 1 >= n or t[i + 1] <= t[i]:
+            for c in range(ns):
+                Yv[j, c] = y[i, c]
+            continue
+        h = t[i + 1] - t[i]
+        s = (tq[j] - t[i]) / h
+        s1 = 1.0 - s
+        for c in range(ns):
+            r1 = y[i + 1, c] - y[i, c]
+            r2 = h * f[i, c] - r1
+            r3 = r1 - h * f[i + 1, c] - r2
+            r4 = extra[i, c] if with_extra else 0.0
+            Yv[j, c] = y[i, c] + s * (r1 + s1 * (r2 + s * (r3 + s1 * r4)))
+    return Y, idx
+
+
+cdef void _ctx_init(Ctx* ctx, ModelC* m, double[::1] p, double[::1] k, int[::1] law,
+                    double[::1] law_par, int[::1] mode) noexcept:
+    """Point ctx at the arrays; k holds the constants, then the cam cache."""
+    ctx.p = &p[0]
+    ctx.k = &k[0]
+    ctx.cache = &k[m.n_const]
+    ctx.law = &law[0]
+    ctx.law_par = &law_par[0]
+    ctx.mode = &mode[0]
+    ctx.variant = 0
+    m.prepare(ctx)
+
+
+cdef int[::1] _mode_buffer(ModelC* m, element_modes):
+    """Mode array: cam segments (filled per point), then the force elements' modes."""
+    md = np.zeros(max(m.n_modes, 1), dtype=np.intc)
+    ne = m.n_modes - m.n_instances
+    if element_modes is not None and ne:
+        em = np.asarray(element_modes, dtype=np.intc).ravel()
+        if em.shape[0] != ne:
+            raise ValueError(f"{ne} modes of the force elements expected")
+        md[m.n_instances:m.n_modes] = em
+    return md
+
+
+def _rows_contiguous(y):
+    """y itself when each row is contiguous (views into a record), else a C copy."""
+    y = np.asarray(y, dtype=float)
+    return y if y.ndim == 2 and y.strides[1] == sizeof(double) else np.ascontiguousarray(y)
+
+
+def eval_outputs(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
+                 const double[:] t, y_in, mode=None, element_modes=None):
+    """Outputs at the points (t, y).  ``mode``: all modes per point (as recorded); else
+    the cam segments are looked up and the force elements take ``element_modes``."""
+    cdef const double[:, :] y = _rows_contiguous(y_in)
+    cdef ModelC* m = model_pointer(capsule)
+    cdef Py_ssize_t n = t.shape[0], j
+    cdef int nm = m.n_modes
+    if y.shape[1] != m.n_states:
+        raise ValueError("state array of the wrong width")
+    out = np.empty((n, m.n_outputs))
+    cdef double[:, ::1] o = out
+    cdef int[::1] md = _mode_buffer(m, element_modes)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef int[:, ::1] given
+    cdef bint have = mode is not None and nm > 0
+    if have:
+        given = np.ascontiguousarray(mode, dtype=np.intc)
+    cdef Ctx ctx
+    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    for j in range(n):
+        if have:
+            memcpy(&md[0], &given[j, 0], nm * sizeof(int))
+            m.refresh(&ctx)
+        else:
+            m.update_modes(t[j], &y[j, 0], &ctx)
+        m.outputs(t[j], &y[j, 0], &o[j, 0], &ctx)
+    return out
+
+
+def eval_rhs(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
+             const double[:] t, y_in, element_modes=None):
+    """dy/dt at the points (t, y), cam segments looked up per point."""
+    cdef const double[:, :] y = _rows_contiguous(y_in)
+    cdef ModelC* m = model_pointer(capsule)
+    cdef Py_ssize_t n = t.shape[0], j
+    if y.shape[1] != m.n_states:
+        raise ValueError("state array of the wrong width")
+    out = np.empty((n, m.n_states))
+    cdef double[:, ::1] o = out
+    cdef int[::1] md = _mode_buffer(m, element_modes)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef Ctx ctx
+    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    for j in range(n):
+        m.update_modes(t[j], &y[j, 0], &ctx)
+        m.rhs(t[j], &y[j, 0], &o[j, 0], &ctx)
+    return out
+
+
+def eval_jacobian_fd(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
+                  const double[:] t, y_in, const double[::1] scale, mode=None, element_modes=None):
+    """Jacobians df/dy of the first-order right-hand side at the points (t, y), by central
+    differences of the compiled rhs (steps 1e-6 max(|y_i|, scale_i)); shape (n, ns, ns).
+
+    ``mode``: all modes per point (as recorded), held fixed while the state is perturbed, as
+    the integration loops hold them within a step; else the cam segments are looked up at each
+    point and the force elements take ``element_modes``.  For stability estimates
+    (camdyn.runtime.core.stability); it does not depend on a generated Jacobian."""
+    cdef const double[:, :] y = _rows_contiguous(y_in)
+    cdef ModelC* m = model_pointer(capsule)
+    cdef Py_ssize_t n = t.shape[0], j
+    cdef int ns = m.n_states, nm = m.n_modes, r, c
+    if y.shape[1] != ns or scale.shape[0] != ns:
+        raise ValueError("state or scale array of the wrong width")
+    J = np.empty((n, ns, ns))
+    cdef double[:, :, ::1] Jv = J
+    cdef double[::1] yp = np.empty(ns), fp = np.empty(ns), fm = np.empty(ns)
+    cdef int[::1] md = _mode_buffer(m, element_modes)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef int[:, ::1] given
+    cdef bint have = mode is not None and nm > 0
+    cdef double d
+    if have:
+        given = np.ascontiguousarray(mode, dtype=np.intc)
+    cdef Ctx ctx
+    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    for j in range(n):
+        if have:
+            memcpy(&md[0], &given[j, 0], nm * sizeof(int))
+            m.refresh(&ctx)
+        else:
+            m.update_modes(t[j], &y[j, 0], &ctx)
+        for c in range(ns):
+            yp[c] = y[j, c]
+        for c in range(ns):
+            d = 1e-6 * fmax(fabs(y[j, c]), scale[c])
+            if not d > 0.0:
+                d = 1e-6
+            yp[c] = y[j, c] + d
+            m.rhs(t[j], &yp[0], &fp[0], &ctx)
+            yp[c] = y[j, c] - d
+            m.rhs(t[j], &yp[0], &fm[0], &ctx)
+            yp[c] = y[j, c]
+            for r in range(ns):
+                Jv[j, r, c] = (fp[r] - fm[r]) / (2.0 * d)
+    return J
+
+
+def linearize(object capsule, const double[:, ::1] P, int[::1] law, double[::1] law_par,
+              const double[::1] t, const double[:, ::1] Y, const double[::1] scale,
+              const int[::1] outputs, element_modes=None):
+    """The frozen linear system at n points, each with its own parameters: J[j] = df/dy at
+    (t[j], Y[j]) with parameters P[j], and G[j, i] = d(output outputs[i])/dy there, both by
+    central differences (steps 1e-6 max(|y_c|, scale_c)), the force elements in
+    ``element_modes``; shapes (n, ns, ns) and (n, len(outputs), ns).  One call for a whole
+    grid of parameter sets: what camdyn.runtime.measure.modes reads the dwell's modes from."""
+    cdef ModelC* m = model_pointer(capsule)
+    cdef Py_ssize_t n = P.shape[0], j
+    cdef int ns = m.n_states, no = outputs.shape[0], r, c, i
+    if P.shape[1] != m.n_params or Y.shape[0] != n or Y.shape[1] != ns or t.shape[0] != n \
+            or scale.shape[0] != ns:
+        raise ValueError("parameter, time, state or scale arrays of the wrong shape")
+    for i in range(no):
+        if not 0 <= outputs[i] < m.n_outputs:
+            raise ValueError("output index out of range")
+    J = np.empty((n, ns, ns))
+    G = np.empty((n, no, ns))
+    cdef double[:, :, ::1] Jv = J, Gv = G
+    cdef double[::1] yp = np.empty(ns), fp = np.empty(ns), fm = np.empty(ns)
+    cdef double[::1] op = np.empty(max(m.n_outputs, 1)), om = np.empty(max(m.n_outputs, 1))
+    cdef int[::1] md = _mode_buffer(m, element_modes)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef double d
+    cdef Ctx ctx
+    ctx.k = &k[0]
+    ctx.cache = &k[m.n_const]
+    ctx.law = &law[0]
+    ctx.law_par = &law_par[0]
+    ctx.mode = &md[0]
+    ctx.variant = 0
+    for j in range(n):
+        ctx.p = &P[j, 0]
+        m.prepare(&ctx)
+        m.update_modes(t[j], &Y[j, 0], &ctx)
+        for c in range(ns):
+            yp[c] = Y[j, c]
+        for c in range(ns):
+            d = 1e-6 * fmax(fabs(Y[j, c]), scale[c])
+            if not d > 0.0:
+                d = 1e-6
+            yp[c] = Y[j, c] + d
+            m.rhs(t[j], &yp[0], &fp[0], &ctx)
+            m.outputs(t[j], &yp[0], &op[0], &ctx)
+            yp[c] = Y[j, c] - d
+            m.rhs(t[j], &yp[0], &fm[0], &ctx)
+            m.outputs(t[j], &yp[0], &om[0], &ctx)
+            yp[c] = Y[j, c]
+            for r in range(ns):
+                Jv[j, r, c] = (fp[r] - fm[r]) / (2.0 * d)
+            for i in range(no):
+                Gv[j, i, c] = (op[outputs[i]] - om[outputs[i]]) / (2.0 * d)
+    return J, G
+
+
+def eval_events(object capsule, double[::1] p, int[::1] law, double[::1] law_par, double t,
+                double[::1] y, element_modes=None):
+    """The event functions at one point (cam segments looked up)."""
+    cdef ModelC* m = model_pointer(capsule)
+    g = np.empty(max(m.n_events, 1))
+    cdef double[::1] gv = g
+    cdef int[::1] md = _mode_buffer(m, element_modes)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef Ctx ctx
+    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    m.update_modes(t, &y[0], &ctx)
+    m.events(t, &y[0], &gv[0], &ctx)
+    return g[:m.n_events]
+
+
+def eval_mass_stiffness(object capsule, double[::1] p, int[::1] law, double[::1] law_par, double t,
+                        double[::1] y, element_modes=None):
+    """Mass matrix M and stiffness K = -df/dq at one point: the frozen system M q'' + K q."""
+    cdef ModelC* m = model_pointer(capsule)
+    cdef int n = m.n_q
+    M = np.zeros((n, n))
+    K = np.zeros((n, n))
+    cdef double[:, ::1] Mv = M, Kv = K
+    cdef int[::1] md = _mode_buffer(m, element_modes)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef Ctx ctx
+    if y.shape[0] != m.n_states:
+        raise ValueError("state vector of the wrong length")
+    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    m.update_modes(t, &y[0], &ctx)
+    if n:
+        m.mass_stiffness(t, &y[0], &Mv[0, 0], &Kv[0, 0], &ctx)
+    return M, K
+
+
+def eval_jacobian(object capsule, double[::1] p, int[::1] law, double[::1] law_par, double t,
+                  double[::1] y, element_modes=None, bint with_time=False):
+    """J = d(dy/dt)/dy at one point (n_states x n_states), cam segments looked up as by
+    eval_rhs, the force elements in ``element_modes``: the Jacobian of the current modes.
+    How the model forms it (symbolically or by differences in C) is its manifest's
+    "jacobian".  ``with_time``: (J, df/dt), for a model whose manifest's "time_derivative"
+    is "symbolic" (else df/dt comes back NaN)."""
+    cdef ModelC* m = model_pointer(capsule)
+    cdef int ns = m.n_states
+    J = np.zeros((ns, ns))
+    ft = np.full(ns, np.nan)
+    cdef double[:, ::1] Jv = J
+    cdef double[::1] ftv = ft
+    cdef int[::1] md = _mode_buffer(m, element_modes)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef Ctx ctx
+    if y.shape[0] != ns:
+        raise ValueError("state vector of the wrong length")
+    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    m.update_modes(t, &y[0], &ctx)
+    if ns:
+        m.jac(t, &y[0], &Jv[0, 0], &ftv[0] if with_time else NULL, &ctx)
+    return (J, ft) if with_time else J
+
+
+def rhs_cost_ns(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
+                double t, double[::1] y, long n):
+    """Mean wall time of one right-hand-side call in ns, over n calls in C through
+    the model's function pointer (the loops inline it and pay less)."""
+    cdef ModelC* m = model_pointer(capsule)
+    cdef double[::1] dy = np.zeros(m.n_states)
+    cdef int[::1] md = _mode_buffer(m, None)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef Ctx ctx
+    cdef timespec a, b
+    cdef long j
+    cdef double tt = t
+    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    m.update_modes(t, &y[0], &ctx)
+    with nogil:
+        clock_gettime(CLOCK_MONOTONIC, &a)
+        for j in range(n):
+            m.rhs(tt, &y[0], &dy[0], &ctx)
+            tt += 1e-12  # keep the call from being hoisted out of the loop
+        clock_gettime(CLOCK_MONOTONIC, &b)
+    return ((b.tv_sec - a.tv_sec) * 1e9 + (b.tv_nsec - a.tv_nsec)) / n

@@ -1,0 +1,1055 @@
+# The integration loops of camdyn: classical RK4, Dormand-Prince 5(4) and the
+# thesis's CAMSHAFT-1 scheme (4.23)-(4.31), written once here.
+#
+# Every generated model module includes this file after defining its inline
+# `rhs`, `update_modes` and `prepare` (see camdyn/derive/templates/model.pyx.j2),
+# so the C compiler inlines the model into every stage; camdyn.runtime.engine.driver
+# calls the resulting `run_loops` through ModelC.run once per run.  The types
+# (Run, Record, Ctx) and codes are in abi.pxd.
+#
+# Breakpoints.  The run goes from stop to stop (cam-law breakpoints in time,
+# then the end time).  The cam segments (modes) are fixed at the start of each
+# interval, steps are shortened to land on its end, and the state is recorded
+# twice at a stop: as the left limit (old modes and slope) and as the right
+# limit (new modes, new slope).
+#
+# Dense output.  Every point stores its slope f; on the step from point i to
+# i + 1 (length h) the state is
+#
+#     y(t_i + s h) = y_i + s (r1 + (1 - s) (r2 + s (r3 + (1 - s) r4)))
+#     r1 = y_i+1 - y_i,  r2 = h f_i - r1,  r3 = r1 - h f_i+1 - r2,
+#
+# Hairer's continuous-extension form: r4 = 0 is the cubic Hermite interpolant
+# (RK4, thesis scheme); DP54 stores its fourth-order r4 per step in `extra`.
+
+from libc.math cimport fabs, fmax, fmin, isfinite, isnan, pow, sqrt
+from libc.stdlib cimport free, malloc
+from libc.string cimport memcpy, memset
+
+from camdyn.runtime.engine.linalg cimport lu_factor, lu_solve
+
+
+cdef int _rec_grow(Record* r) noexcept nogil:
+    """Double the record's capacity in buffers of its own (copying what is there)."""
+    cdef Py_ssize_t cap = 2 * r.cap if r.cap >= 32 else 64
+    cdef double* rows = <double*> malloc(cap * r.width * sizeof(double))
+    cdef int* mode = <int*> malloc(cap * (_NM if _NM > 0 else 1) * sizeof(int))
+    if rows == NULL or mode == NULL:
+        free(rows)
+        free(mode)
+        return -1
+    if r.n:
+        memcpy(rows, r.rows, r.n * r.width * sizeof(double))
+        if _NM:
+            memcpy(mode, r.mode, r.n * _NM * sizeof(int))
+    if r.owned:
+        free(r.rows)
+        free(r.mode)
+    r.rows = rows
+    r.mode = mode
+    r.cap = cap
+    r.owned = True
+    return 0
+
+
+cdef inline int _rec_point(Run* run, double t, const double* y, const double* f) noexcept nogil:
+    cdef Record* r = &run.rec
+    cdef Py_ssize_t n = r.n
+    cdef double* row
+    if n == r.cap:
+        if _rec_grow(r) != 0:
+            return -1
+    row = r.rows + n * r.width
+    row[0] = t
+    memcpy(row + 1, y, _NS * sizeof(double))
+    memcpy(row + 1 + _NS, f, _NS * sizeof(double))
+    if r.with_extra:
+        memset(row + 1 + 2 * _NS, 0, _NS * sizeof(double))
+    if _NM:
+        memcpy(&r.mode[n * _NM], run.ctx.mode, _NM * sizeof(int))
+    r.n = n + 1
+    return 0
+
+
+cdef inline bint _finite(int n, const double* y) noexcept nogil:
+    cdef int i
+    for i in range(n):
+        if not isfinite(y[i]):
+            return False
+    return True
+
+
+cdef inline bint _crossed(int direction, double g) noexcept nogil:
+    # strict: an element that switched at g = 0 exactly (a gap closed at rest, as in a dwell)
+    # must still see the next crossing in the other direction
+    return g > 0.0 if direction > 0 else g < 0.0
+
+
+cdef inline void _dense(double s, double h, const double* y0, const double* y1, const double* f0,
+                        const double* f1, const double* r4, double* out) noexcept nogil:
+    """The step's continuous extension at s in [0, 1] (see the header); r4 may be NULL."""
+    cdef int i
+    cdef double r1, r2, r3, s1 = 1.0 - s
+    for i in range(_NS):
+        r1 = y1[i] - y0[i]
+        r2 = h * f0[i] - r1
+        r3 = r1 - h * f1[i] - r2
+        out[i] = y0[i] + s * (r1 + s1 * (r2 + s * (r3 + (s1 * r4[i] if r4 != NULL else 0.0))))
+
+
+cdef double _locate(Ctx* ctx, int k, double t, double h, const double* y0, const double* y1,
+                    const double* f0, const double* f1, const double* r4, double ga,
+                    double gb) noexcept nogil:
+    """Step fraction where event k crosses (Illinois method on the continuous extension):
+    an iterate where g is exactly zero, else the bracket's end on the crossed side."""
+    cdef double a = 0.0, b = 1.0, s, gs
+    cdef int it, side = 0, d = _EDIR[k]
+    cdef double ys[_NS]
+    cdef double gtmp[_NE1]
+    for it in range(100):
+        s = (a * gb - b * ga) / (gb - ga)
+        if not (a < s < b):
+            s = 0.5 * (a + b)
+        _dense(s, h, y0, y1, f0, f1, r4, ys)
+        events(t + s * h, ys, gtmp, ctx)
+        gs = gtmp[k]
+        if gs == 0.0:
+            # on the switching surface itself.  The strict test calls g = 0 not crossed, so b
+            # may still be the step end: the first secant hits a g linear in t exactly (the
+            # cam argument in a dwell), and b would put the rise start at the end of the step
+            return s
+        if _crossed(d, gs):
+            b, gb = s, gs
+            if side == -1:
+                ga *= 0.5
+            side = -1
+        else:
+            a, ga = s, gs
+            if side == 1:
+                gb *= 0.5
+            side = 1
+        if b - a <= 1e-14:
+            break
+    return b
+
+
+cdef int _event_in_step(Run* run, double t, double h, const double* y0, const double* y1,
+                        const double* f0, const double* f1, const double* r4, double* g0,
+                        double* g1, double* s_hit) noexcept nogil:
+    """The event that crosses first within the step, or -1; its step fraction in s_hit."""
+    cdef int k, hit = -1
+    cdef double s
+    s_hit[0] = 2.0
+    events(t + h, y1, g1, run.ctx)
+    for k in range(_NE):
+        if not _crossed(_EDIR[k], g0[k]) and _crossed(_EDIR[k], g1[k]):
+            s = _locate(run.ctx, k, t, h, y0, y1, f0, f1, r4, g0[k], g1[k])
+            if s < s_hit[0]:
+                s_hit[0] = s
+                hit = k
+    return hit
+
+
+cdef int _apply_event(Run* run, int k, double t, double* y, double* f, double* g0) noexcept nogil:
+    """Record the left limit at an event, apply it, record the right limit; f becomes the
+    new slope and g0 the event functions in the new modes."""
+    run.n_events += 1
+    if run.n_events > run.max_events:
+        return STATUS_EVENT_STORM
+    if _rec_point(run, t, y, f) != 0:
+        return STATUS_NO_MEMORY
+    on_event(k, t, y, run.ctx)
+    rhs(t, y, f, run.ctx)
+    run.n_rhs += 1
+    if _rec_point(run, t, y, f) != 0:
+        return STATUS_NO_MEMORY
+    events(t, y, g0, run.ctx)
+    if g0[k] == 0.0:
+        # the event was located on its surface exactly: if it stays armed (a breakpoint that
+        # switches nothing), g = 0 would count as not yet crossed and it would fire again at
+        # once; it has crossed, so say so
+        g0[k] = 5e-324 if _EDIR[k] > 0 else -5e-324
+    return STATUS_OK
+
+
+# the thesis scheme turns from fixed-point iteration to Newton's method once a sweep leaves more
+# than this fraction of the mid-step residual (about 13 more sweeps to rounding level)
+cdef extern from *:
+    """
+    #define NEWTON_RATIO 0.1
+    """
+    const double NEWTON_RATIO
+
+
+cdef int _koster_newton_matrix(Ctx* ctx, double t, const double* ym, const double* acc,
+                               const double* fm, double theta, double* J, double* W,
+                               int* piv, double* ya, double* fa) noexcept nogil:
+    """W = I - d a_mid/d a, LU-factored in place (piv), for the thesis scheme's mid-step
+    equation g(a) = a - F(t, X + X' theta + a theta^2/2, X' + a theta) = 0 at the iterate a
+    (acc; ym is the mid-step state there and fm its slope).  Returns the right-hand-side calls
+    spent (they count in n_rhs), or a negative code (below).
+
+    The model's symbolic Jacobian where it has one (_JAC_SYMBOLIC): d a_mid/d a =
+    dF/dX theta^2/2 + dF/dX' theta, the rows _NQ.._2NQ-1 of df/dy, no rhs calls.  Else the
+    mid-step map itself is differenced forward in each a_j (_NQ calls), increment sqrt(eps)
+    times the size of the accelerations: an error in W only slows Newton down (linear
+    convergence with a factor ~ that error), it does not move the solution.  -2 when W is
+    not finite (the state is blowing up), -1 when it is singular."""
+    cdef int i, j, calls = 0
+    cdef double tt = 0.5 * theta * theta, d, aj, scale = 0.0
+    if _JAC_SYMBOLIC:
+        jacobian(t, ym, J, NULL, ctx)
+        for i in range(_NQ):
+            for j in range(_NQ):
+                W[i * _NQ + j] = -(J[(_NQ + i) * _NS + j] * tt + J[(_NQ + i) * _NS + _NQ + j] * theta)
+    else:
+        for i in range(_NQ):
+            scale = fmax(scale, fmax(fabs(acc[i]), fabs(fm[_NQ + i])))
+        if scale == 0.0:
+            scale = 1.0
+        memcpy(ya, ym, _NS * sizeof(double))
+        for j in range(_NQ):
+            aj = acc[j]
+            d = 1.4901161193847656e-08 * fmax(fabs(aj), scale)
+            d = (aj + d) - aj       # the increment actually represented
+            ya[j] = ym[j] + d * tt
+            ya[_NQ + j] = ym[_NQ + j] + d * theta
+            rhs(t, ya, fa, ctx)
+            calls += 1
+            for i in range(_NQ):
+                W[i * _NQ + j] = -(fa[_NQ + i] - fm[_NQ + i]) / d
+            ya[j] = ym[j]
+            ya[_NQ + j] = ym[_NQ + j]
+    for i in range(_NQ):
+        W[i * _NQ + i] += 1.0
+    if not _finite(_NQ * _NQ, W):
+        return -2
+    if lu_factor(_NQ, W, piv) != 0:
+        return -1
+    return calls
+
+
+cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
+    """RK4 or the thesis scheme over [a, b] in equal steps no longer than run.h.
+
+    State and stages live in local arrays of compile-time size (_NS, _NQ from
+    the including model) and the context is a local copy, so that the compiler
+    can keep them in registers.  After an event the rest of the interval is cut
+    into equal steps again.
+    """
+    cdef Ctx local_ctx = run.ctx[0]
+    cdef Ctx* ctx = &local_ctx
+    cdef int i, it, ev, status = STATUS_OK
+    cdef long k = 0, nstep = fixed_steps(a, b, run.h), n_rhs = 0, n_steps = run.n_steps
+    cdef long max_steps = run.max_steps
+    cdef bint rk4 = run.method == METHOD_RK4
+    cdef double h = (b - a) / nstep, hh = 0.5 * h, h6 = h / 6.0, t = a, tn, amax, diff, prev, s_hit
+    cdef double y[_NS]
+    cdef double k1[_NS]
+    cdef double k2[_NS]
+    cdef double k3[_NS]
+    cdef double k4[_NS]
+    cdef double yn[_NS]
+    cdef double fn[_NS]
+    cdef double acc[_NQ1]
+    cdef double g0[_NE1]
+    cdef double g1[_NE1]
+    cdef int piv[_NQ1]
+    cdef int calls
+    cdef bint newton
+    cdef double* Jm = NULL     # koster's Newton: df/dy and the Newton matrix, allocated on first use
+    cdef double* Wm = NULL
+    memcpy(y, run.y, sizeof(y))
+    rhs(t, y, k1, ctx)
+    n_rhs += 1
+    if _rec_point(run, t, y, k1) != 0:
+        return STATUS_NO_MEMORY
+    if _NE > 0:
+        events(t, y, g0, ctx)
+    while k < nstep:
+        if n_steps >= max_steps:
+            status = STATUS_MAX_STEPS
+            break
+        # the new time is computed once, so that the last stage and the slope at the new
+        # point see the very same t (the model caches cam-law values by argument)
+        tn = a + (k + 1) * h if k + 1 < nstep else b
+        if rk4:
+            for i in range(_NS):
+                yn[i] = y[i] + hh * k1[i]
+            rhs(t + hh, yn, k2, ctx)
+            for i in range(_NS):
+                yn[i] = y[i] + hh * k2[i]
+            rhs(t + hh, yn, k3, ctx)
+            for i in range(_NS):
+                yn[i] = y[i] + h * k3[i]
+            rhs(tn, yn, k4, ctx)
+            for i in range(_NS):
+                yn[i] = y[i] + h6 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i])
+            n_rhs += 3
+        else:
+            # thesis (4.23)-(4.31): X'' held constant over the step at its value at
+            # mid-step theta = h/2, taken at X + dX, dX = X' theta + X'' theta^2/2 (4.24),
+            # with the mid-step velocity X' + X'' theta: the equation
+            # g(a) = a - F(t + theta, X + X' theta + a theta^2/2, X' + a theta) = 0.
+            # Fixed-point iteration first (cheap where it contracts fast: factor (h w)^2/8 on
+            # y'' = -w^2 y); once a sweep leaves more than NEWTON_RATIO of the residual (or
+            # it grows), Newton's method, g'(a) = I - dF/dX theta^2/2 - dF/dX' theta, which converges up
+            # to the scheme's stability boundary h w = 2 sqrt(2) and beyond (the fixed point
+            # stops contracting there), and in one step for a linear model: the thesis's own
+            # elimination of dX by hand (4.25)
+            for i in range(_NQ):
+                acc[i] = k1[_NQ + i]
+            prev = 1e300
+            newton = False
+            for it in range(100):
+                for i in range(_NQ):
+                    yn[i] = y[i] + (y[_NQ + i] + 0.5 * acc[i] * hh) * hh
+                    yn[_NQ + i] = y[_NQ + i] + acc[i] * hh
+                rhs(t + hh, yn, k2, ctx)
+                n_rhs += 1
+                if not _finite(_NS, k2):
+                    # a run blowing up (a step beyond the stability boundary): say so, not
+                    # "did not converge"
+                    status = STATUS_NOT_FINITE
+                    break
+                amax = 0.0
+                diff = 0.0
+                for i in range(_NQ):
+                    diff = fmax(diff, fabs(k2[_NQ + i] - acc[i]))
+                    amax = fmax(amax, fabs(k2[_NQ + i]))
+                # converged, or stalled at the rounding level of the acceleration; either way
+                # the last evaluation F(a) is taken, as a fixed-point sweep would
+                if diff <= 1e-13 * (1.0 + amax) or (diff >= prev and diff <= 1e-9 * (1.0 + amax)):
+                    for i in range(_NQ):
+                        acc[i] = k2[_NQ + i]
+                    break
+                if not newton and it >= 1 and not (diff <= NEWTON_RATIO * prev):
+                    newton = True
+                    if Jm == NULL:
+                        # heap, not stack: _NS^2 grows fast for models built from user files
+                        Jm = <double*> malloc((_NS * _NS + _NQ * _NQ) * sizeof(double))
+                        if Jm == NULL:
+                            status = STATUS_NO_MEMORY
+                            break
+                        Wm = Jm + _NS * _NS
+                if newton:
+                    calls = _koster_newton_matrix(ctx, t + hh, yn, acc, k2, hh, Jm, Wm, piv, k3, k4)
+                    if calls < 0:       # singular or non-finite Newton matrix
+                        status = STATUS_NOT_FINITE if calls == -2 else STATUS_NO_CONVERGENCE
+                        break
+                    n_rhs += calls
+                    for i in range(_NQ):
+                        k3[i] = k2[_NQ + i] - acc[i]        # -g(a)
+                    lu_solve(_NQ, Wm, piv, k3)
+                    for i in range(_NQ):
+                        acc[i] += k3[i]
+                else:
+                    for i in range(_NQ):
+                        acc[i] = k2[_NQ + i]
+                prev = diff
+            else:
+                status = STATUS_NO_CONVERGENCE
+            if status != STATUS_OK:
+                break
+            for i in range(_NQ):
+                yn[i] = y[i] + (y[_NQ + i] + 0.5 * acc[i] * h) * h      # (4.30), (4.31)
+                yn[_NQ + i] = y[_NQ + i] + acc[i] * h                    # (4.28), (4.29)
+        if not _finite(_NS, yn):
+            status = STATUS_NOT_FINITE
+            break
+        rhs(tn, yn, fn, ctx)   # slope at the new point: recorded, and the next step's k1
+        n_rhs += 1
+        n_steps += 1
+        if _NE > 0:
+            ev = _event_in_step(run, t, tn - t, y, yn, k1, fn, NULL, g0, g1, &s_hit)
+            if ev >= 0:
+                # cut the step at the crossing: state from the step's cubic Hermite extension
+                _dense(s_hit, tn - t, y, yn, k1, fn, NULL, k2)
+                tn = t + s_hit * (tn - t)
+                memcpy(y, k2, sizeof(y))
+                rhs(tn, y, k1, ctx)
+                n_rhs += 1
+                t = tn
+                status = _apply_event(run, ev, t, y, k1, g0)
+                if status != STATUS_OK:
+                    break
+                # the event refreshed run.ctx (the rhs variant of the new cam segments)
+                local_ctx = run.ctx[0]
+                a = t   # equal steps again over the rest of the interval
+                k = 0
+                nstep = fixed_steps(a, b, run.h) if b > a else 0
+                if nstep:
+                    h = (b - a) / nstep
+                    hh = 0.5 * h
+                    h6 = h / 6.0
+                continue
+            memcpy(g0, g1, sizeof(g0))
+        t = tn
+        memcpy(y, yn, sizeof(y))
+        memcpy(k1, fn, sizeof(k1))
+        k += 1
+        if _rec_point(run, t, y, k1) != 0:
+            status = STATUS_NO_MEMORY
+            break
+    free(Jm)
+    memcpy(run.y, y, sizeof(y))
+    run.n_rhs += n_rhs
+    run.n_steps = n_steps
+    if status != STATUS_OK:
+        run.t_fail = t
+    return status
+
+
+# Dormand-Prince 5(4) (Dormand & Prince 1980) and Hairer's dense-output weights,
+# as C compile-time constants
+cdef extern from *:
+    """
+    #define DP_C2 (1.0 / 5)
+    #define DP_C3 (3.0 / 10)
+    #define DP_C4 (4.0 / 5)
+    #define DP_C5 (8.0 / 9)
+    #define DP_A21 (1.0 / 5)
+    #define DP_A31 (3.0 / 40)
+    #define DP_A32 (9.0 / 40)
+    #define DP_A41 (44.0 / 45)
+    #define DP_A42 (-56.0 / 15)
+    #define DP_A43 (32.0 / 9)
+    #define DP_A51 (19372.0 / 6561)
+    #define DP_A52 (-25360.0 / 2187)
+    #define DP_A53 (64448.0 / 6561)
+    #define DP_A54 (-212.0 / 729)
+    #define DP_A61 (9017.0 / 3168)
+    #define DP_A62 (-355.0 / 33)
+    #define DP_A63 (46732.0 / 5247)
+    #define DP_A64 (49.0 / 176)
+    #define DP_A65 (-5103.0 / 18656)
+    #define DP_B1 (35.0 / 384)
+    #define DP_B3 (500.0 / 1113)
+    #define DP_B4 (125.0 / 192)
+    #define DP_B5 (-2187.0 / 6784)
+    #define DP_B6 (11.0 / 84)
+    #define DP_E1 (71.0 / 57600)
+    #define DP_E3 (-71.0 / 16695)
+    #define DP_E4 (71.0 / 1920)
+    #define DP_E5 (-17253.0 / 339200)
+    #define DP_E6 (22.0 / 525)
+    #define DP_E7 (-1.0 / 40)
+    #define DP_D1 (-12715105075.0 / 11282082432)
+    #define DP_D3 (87487479700.0 / 32700410799)
+    #define DP_D4 (-10690763975.0 / 1880347072)
+    #define DP_D5 (701980252875.0 / 199316789632)
+    #define DP_D6 (-1453857185.0 / 822651844)
+    #define DP_D7 (69997945.0 / 29380423)
+    """
+    const double DP_C2
+    const double DP_C3
+    const double DP_C4
+    const double DP_C5
+    const double DP_A21
+    const double DP_A31
+    const double DP_A32
+    const double DP_A41
+    const double DP_A42
+    const double DP_A43
+    const double DP_A51
+    const double DP_A52
+    const double DP_A53
+    const double DP_A54
+    const double DP_A61
+    const double DP_A62
+    const double DP_A63
+    const double DP_A64
+    const double DP_A65
+    const double DP_B1
+    const double DP_B3
+    const double DP_B4
+    const double DP_B5
+    const double DP_B6
+    const double DP_E1
+    const double DP_E3
+    const double DP_E4
+    const double DP_E5
+    const double DP_E6
+    const double DP_E7
+    const double DP_D1
+    const double DP_D3
+    const double DP_D4
+    const double DP_D5
+    const double DP_D6
+    const double DP_D7
+
+
+cdef inline double _absmax(double a, double b) noexcept nogil:
+    a = -a if a < 0.0 else a
+    b = -b if b < 0.0 else b
+    return a if a > b else b
+
+
+cdef inline double _rms(const double* v, const double* y0, const double* y1,
+                        double rtol, const double* atol) noexcept nogil:
+    cdef int i
+    cdef double s = 0.0, e
+    for i in range(_NS):
+        e = v[i] / (atol[i] + rtol * _absmax(y0[i], y1[i]))
+        s += e * e
+    return sqrt(s / _NS)
+
+
+cdef double _dp_first_step(Run* run, double t, const double* y, const double* f0,
+                           double span) noexcept nogil:
+    """Starting step from the sizes of y, y' and y'' (Hairer, Norsett & Wanner, II.4)."""
+    cdef int i
+    cdef double y1[_NS]
+    cdef double f1[_NS]
+    cdef double d0 = _rms(y, y, y, run.rtol, run.atol)
+    cdef double d1 = _rms(f0, y, y, run.rtol, run.atol)
+    cdef double h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
+    cdef double d2, h1
+    h0 = fmin(h0, span)
+    for i in range(_NS):
+        y1[i] = y[i] + h0 * f0[i]
+    rhs(t + h0, y1, f1, run.ctx)
+    run.n_rhs += 1
+    for i in range(_NS):
+        f1[i] -= f0[i]
+    d2 = _rms(f1, y, y, run.rtol, run.atol) / h0
+    if fmax(d1, d2) <= 1e-15:
+        h1 = fmax(1e-6, h0 * 1e-3)
+    else:
+        h1 = pow(0.01 / fmax(d1, d2), 0.2)
+    return fmin(fmin(100.0 * h0, h1), span)
+
+
+cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
+    """Dormand-Prince 5(4) over [a, b]: local extrapolation, PI step-size control."""
+    cdef Ctx local_ctx = run.ctx[0]
+    cdef Ctx* ctx = &local_ctx
+    cdef int i, status = STATUS_OK
+    cdef double y[_NS]
+    cdef double k1[_NS]
+    cdef double k2[_NS]
+    cdef double k3[_NS]
+    cdef double k4[_NS]
+    cdef double k5[_NS]
+    cdef double k6[_NS]
+    cdef double k7[_NS]
+    cdef double yn[_NS]
+    cdef double ys[_NS]
+    cdef double ev[_NS]
+    cdef double* r4
+    cdef double g0[_NE1]
+    cdef double g1[_NE1]
+    cdef int hit
+    cdef double s_hit
+    cdef double t = a, h, err, fac, rtol = run.rtol
+    cdef const double* atol = run.atol
+    cdef long n_steps = run.n_steps, n_rej = run.n_rejected, n_rhs = 0, max_steps = run.max_steps
+    cdef bint last, rejected = False
+    # Hairer's stiffness test (DOPRI5, Hairer & Wanner, Solving ODEs II, sec. IV.2): counters
+    # of detections (iasti) and of non-stiff steps since the last one (nonsti), per interval
+    cdef int iasti = 0, nonsti = 0
+    cdef double st_num, st_den, st_a, st_b, st_c, st_wq, d, e
+    memcpy(y, run.y, sizeof(y))
+    # slopes jump at a breakpoint: every interval starts afresh
+    rhs(t, y, k1, ctx)
+    n_rhs += 1
+    if _rec_point(run, t, y, k1) != 0:
+        return STATUS_NO_MEMORY
+    if _NE > 0:
+        events(t, y, g0, ctx)
+    if run.h <= 0.0:
+        run.h = _dp_first_step(run, t, y, k1, fmin(b - a, run.h_max))
+    h = fmin(run.h, run.h_max)
+    run.err_old = 1e-4
+    while t < b:
+        if n_steps + n_rej >= max_steps:
+            status = STATUS_MAX_STEPS
+            break
+        if h < 16.0 * 2.220446049250313e-16 * fmax(fabs(t), fabs(b)):
+            status = STATUS_STEP_UNDERFLOW
+            break
+        last = t + 1.01 * h >= b
+        if last:
+            h = b - t
+        for i in range(_NS):
+            ys[i] = y[i] + h * DP_A21 * k1[i]
+        rhs(t + DP_C2 * h, ys, k2, ctx)
+        for i in range(_NS):
+            ys[i] = y[i] + h * (DP_A31 * k1[i] + DP_A32 * k2[i])
+        rhs(t + DP_C3 * h, ys, k3, ctx)
+        for i in range(_NS):
+            ys[i] = y[i] + h * (DP_A41 * k1[i] + DP_A42 * k2[i] + DP_A43 * k3[i])
+        rhs(t + DP_C4 * h, ys, k4, ctx)
+        for i in range(_NS):
+            ys[i] = y[i] + h * (DP_A51 * k1[i] + DP_A52 * k2[i] + DP_A53 * k3[i] + DP_A54 * k4[i])
+        rhs(t + DP_C5 * h, ys, k5, ctx)
+        for i in range(_NS):
+            ys[i] = y[i] + h * (DP_A61 * k1[i] + DP_A62 * k2[i] + DP_A63 * k3[i] + DP_A64 * k4[i]
+                                + DP_A65 * k5[i])
+        rhs(t + h, ys, k6, ctx)
+        for i in range(_NS):
+            yn[i] = y[i] + h * (DP_B1 * k1[i] + DP_B3 * k3[i] + DP_B4 * k4[i] + DP_B5 * k5[i]
+                                + DP_B6 * k6[i])
+        rhs(t + h, yn, k7, ctx)
+        n_rhs += 6
+        for i in range(_NS):
+            ev[i] = h * (DP_E1 * k1[i] + DP_E3 * k3[i] + DP_E4 * k4[i] + DP_E5 * k5[i]
+                         + DP_E6 * k6[i] + DP_E7 * k7[i])
+        err = _rms(ev, y, yn, rtol, atol)
+        if not isfinite(err):
+            # a NaN in a trial stage: retry smaller unless the start itself is bad
+            if not _finite(_NS, y):
+                status = STATUS_NOT_FINITE
+                break
+            h *= 0.2
+            n_rej += 1
+            rejected = True
+            continue
+        if err <= 1.0:
+            # accepted: PI step-size control (Gustafsson), exponents as in Hairer's DOPRI5
+            if err == 0.0:
+                fac = 10.0
+            else:
+                fac = fmin(10.0, fmax(0.2, 0.9 * pow(err, -0.17) * pow(run.err_old, 0.04)))
+            if rejected:
+                fac = fmin(fac, 1.0)
+            run.err_old = fmax(err, 1e-4)
+            r4 = run.rec.rows + (run.rec.n - 1) * run.rec.width + 1 + 2 * _NS
+            for i in range(_NS):
+                r4[i] = h * (DP_D1 * k1[i] + DP_D3 * k3[i] + DP_D4 * k4[i] + DP_D5 * k5[i]
+                             + DP_D6 * k6[i] + DP_D7 * k7[i])
+            n_steps += 1
+            # stiffness test (Hairer's DOPRI5): stages 6 and 7 sit at the same time t + h
+            # (FSAL), so w = k7 - k6 ~ J v with v = yn - ys, and h |w|/|v| estimates h times
+            # the spectral radius of the Jacobian there; beyond 3.25 (near the boundary of
+            # DP5's stability region, 3.31 on the negative real axis) the step is limited by
+            # stability, not accuracy.  Fired at the 15th detection, counted back to zero
+            # after 6 non-stiff steps (DOPRI5's IASTI, NONSTI); only the first time is
+            # recorded, the run goes on.
+            # The norm: DOPRI5's Euclidean one reads |K x|/|x| = omega^2, not omega, for a
+            # difference along the positions of an undamped oscillator (J = [[0, 1], [-K, 0]]
+            # is far from normal when omega >> 1) and flags the one-DOF model at rtol 1e-6.
+            # Here the positions are weighted by the frequency estimate
+            # omega2 = |w_q'|/|v_q| (w_q = v_q' exactly), which makes the ratio omega for
+            # both an undamped and an overdamped mode; first-order states count plainly.
+            st_a = 0.0    # |v_q|^2
+            st_b = 0.0    # |v_q'|^2 (+ first-order states)
+            st_c = 0.0    # |w_q'|^2 (+ first-order states)
+            st_wq = 0.0   # |w_q|^2
+            for i in range(_NS):
+                d = yn[i] - ys[i]
+                e = k7[i] - k6[i]
+                if i < _NQ:
+                    st_a += d * d
+                    st_wq += e * e
+                else:
+                    st_b += d * d
+                    st_c += e * e
+            if st_a > 0.0:
+                d = sqrt(st_c / st_a) if _NQ > 0 else 1.0
+                st_num = d * st_wq + st_c
+                st_den = d * st_a + st_b
+            else:
+                st_num = st_wq + st_c
+                st_den = st_a + st_b
+            if st_den > 0.0 and h * sqrt(st_num / st_den) > 3.25:
+                nonsti = 0
+                iasti += 1
+                if iasti == 15 and isnan(run.t_stiff):
+                    run.t_stiff = t
+            else:
+                nonsti += 1
+                if nonsti == 6:
+                    iasti = 0
+            if _NE > 0:
+                hit = _event_in_step(run, t, h, y, yn, k1, k7, r4, g0, g1, &s_hit)
+                if hit >= 0:
+                    # cut the step at the crossing: state from the fourth-order extension; the
+                    # record keeps the cubic Hermite part of it over the shortened step
+                    _dense(s_hit, h, y, yn, k1, k7, r4, ys)
+                    for i in range(_NS):
+                        r4[i] = 0.0
+                    t = t + s_hit * h
+                    memcpy(y, ys, sizeof(y))
+                    rhs(t, y, k1, ctx)
+                    n_rhs += 1
+                    status = _apply_event(run, hit, t, y, k1, g0)
+                    if status != STATUS_OK:
+                        break
+                    # the event refreshed run.ctx (the rhs variant of the new cam segments)
+                    local_ctx = run.ctx[0]
+                    rejected = False
+                    continue
+                memcpy(g0, g1, sizeof(g0))
+            t = b if last else t + h
+            memcpy(y, yn, sizeof(y))
+            memcpy(k1, k7, sizeof(k1))
+            if _rec_point(run, t, y, k1) != 0:
+                status = STATUS_NO_MEMORY
+                break
+            if not last:
+                run.h = h
+            h = fmin(h * fac, run.h_max)
+            rejected = False
+        else:
+            h *= fmax(0.2, 0.9 * pow(err, -0.2))
+            n_rej += 1
+            rejected = True
+    memcpy(run.y, y, sizeof(y))
+    run.n_steps = n_steps
+    run.n_rejected = n_rej
+    run.n_rhs += n_rhs
+    if status != STATUS_OK:
+        run.t_fail = t
+    return status
+
+
+# -- RODAS4: the stiff solver (Hairer & Wanner II, sec. IV.7) ---------------------------
+#
+# Hairer & Wanner, Solving ODEs II, sec. IV.7: a Rosenbrock method in the form (7.25),
+#
+#     (I/(h gamma) - J) u_i = f(t + alpha_i h, y + sum_j a_ij u_j) + sum_j (c_ij/h) u_j
+#                             + gamma_i h df/dt,
+#
+# with J = df/dy and df/dt at the step's start.  RODAS4 is stiffly accurate: the argument
+# of stage 6 is the embedded third-order solution and y_1 = that + u_6, so u_6 itself is the
+# error estimate.  One LU of (I/(h gamma) - J) serves all six stages: no Newton iteration
+# that could fail to converge.  Dense output and event location use the cubic Hermite
+# interpolant of the record (O(h^4), as accurate as the method), so no `extra` is stored.
+# Coefficients: Hairer & Wanner's RODAS4 as tabulated in sec. IV.7 and in their code RODAS
+# (subroutine ROCOEF, METH = 1); gamma_i = RO4_D_i, alpha_i = RO4_C_i, alpha_5 = alpha_6 = 1.
+cdef extern from *:
+    """
+    #define RO4_GAMMA 0.25
+    #define RO4_C2 0.386
+    #define RO4_C3 0.21
+    #define RO4_C4 0.63
+    #define RO4_D1 0.25
+    #define RO4_D2 (-0.1043)
+    #define RO4_D3 0.1035
+    #define RO4_D4 (-0.3620000000000023e-01)
+    #define RO4_A21 1.544
+    #define RO4_A31 0.9466785280815826
+    #define RO4_A32 0.2557011698983284
+    #define RO4_A41 3.314825187068521
+    #define RO4_A42 2.896124015972201
+    #define RO4_A43 0.9986419139977817
+    #define RO4_A51 1.221224509226641
+    #define RO4_A52 6.019134481288629
+    #define RO4_A53 12.53708332932087
+    #define RO4_A54 (-0.6878860361058950)
+    #define RO4_C21 (-5.6688)
+    #define RO4_C31 (-2.430093356833875)
+    #define RO4_C32 (-0.2063599157091915)
+    #define RO4_C41 (-0.1073529058151375)
+    #define RO4_C42 (-9.594562251023355)
+    #define RO4_C43 (-20.47028614809616)
+    #define RO4_C51 7.496443313967647
+    #define RO4_C52 (-10.24680431464352)
+    #define RO4_C53 (-33.99990352819905)
+    #define RO4_C54 11.70890893206160
+    #define RO4_C61 8.083246795921522
+    #define RO4_C62 (-7.981132988064893)
+    #define RO4_C63 (-31.52159432874371)
+    #define RO4_C64 16.31930543123136
+    #define RO4_C65 (-6.058818238834054)
+    """
+    const double RO4_GAMMA
+    const double RO4_C2
+    const double RO4_C3
+    const double RO4_C4
+    const double RO4_D1
+    const double RO4_D2
+    const double RO4_D3
+    const double RO4_D4
+    const double RO4_A21
+    const double RO4_A31
+    const double RO4_A32
+    const double RO4_A41
+    const double RO4_A42
+    const double RO4_A43
+    const double RO4_A51
+    const double RO4_A52
+    const double RO4_A53
+    const double RO4_A54
+    const double RO4_C21
+    const double RO4_C31
+    const double RO4_C32
+    const double RO4_C41
+    const double RO4_C42
+    const double RO4_C43
+    const double RO4_C51
+    const double RO4_C52
+    const double RO4_C53
+    const double RO4_C54
+    const double RO4_C61
+    const double RO4_C62
+    const double RO4_C63
+    const double RO4_C64
+    const double RO4_C65
+
+
+cdef int _jacobian(Run* run, Ctx* ctx, double t, const double* y, const double* f0, double span,
+                   const double* ymag, double h, double* J, double* ft) noexcept nogil:
+    """J = df/dy (row-major: J[i * _NS + j] = df_i/dy_j) and ft = df/dt at (t, y); returns
+    the right-hand-side calls spent (they count in n_rhs).
+
+    The model's generated Jacobian where it is symbolic (_JAC_SYMBOLIC, set by the template);
+    else central differences, increment eps^(1/3) times the state's size: a Rosenbrock method is
+    not a W-method, an error dJ in the Jacobian enters its local error as h^2 dJ f, which
+    forward differences (dJ ~ sqrt(eps) |f|/|y|) made dominant on the beam follower, whose
+    rhs rounds at the level of large internal terms (half the steps rejected, the step
+    shrinking like rtol^(1/2)); central differences cut dJ to ~eps^(2/3) for 2 n + 2 calls.
+
+    The increment's floor: not only the state's declared scale (1e3 atol/rtol), which for the
+    beam's modal rates is the amplitudes' 1e-5 while the rates themselves are ~1, but also
+    ymag_j, the largest |y_j| of the interval so far, and |h f_j|, what y_j changes by over
+    the coming step (f must be smooth over that range anyway for the step to be accurate, and
+    an error dJ_ij enters only multiplied by such a change).  Without them a modal rate passing
+    through zero got an increment ~1e-10 while the constrained rhs rounds at 2e-7 |f| (the
+    ill-conditioned augmented solve of beam6): its Jacobian column came out 30 % wrong, the
+    error estimate fell like h instead of h^4 and the step collapsed to 1e-12 s in bursts
+    (1813 of them in the first 0.003 s at rtol 1e-6; 1.37 M steps a revolution).
+    """
+    cdef int i, j
+    cdef double yj, d, dt
+    cdef double yp[_NS]
+    cdef double fp[_NS]
+    cdef double fm[_NS]
+    cdef int calls = 0
+    if _JAC_SYMBOLIC:
+        # the model's generated Jacobian (derived symbolically with the equations): exact, and
+        # no rhs calls; its manifest says "symbolic"; df/dt with it where derived
+        jacobian(t, y, J, ft if _FT_SYMBOLIC else NULL, ctx)
+        if _FT_SYMBOLIC:
+            return 0
+    else:
+        memcpy(yp, y, sizeof(yp))
+        for j in range(_NS):
+            yj = y[j]
+            # relative to the state, but not below its scale (atol = 1e-3 rtol scale by
+            # default): a state passing through zero (a beam's mode amplitude at rest) would
+            # otherwise get an increment at which rounding in f swamps the difference
+            d = fmax(6.055454452393343e-06 * fmax(fmax(fabs(yj), ymag[j]), 1e3 * run.atol[j] / run.rtol),
+                     fabs(h * f0[j]))
+            if d == 0.0:
+                d = 6.055454452393343e-06
+            yp[j] = yj + d
+            d = yp[j] - yj      # the increment actually represented
+            rhs(t, yp, fp, ctx)
+            yp[j] = yj - d
+            rhs(t, yp, fm, ctx)
+            for i in range(_NS):
+                J[i * _NS + j] = (fp[i] - fm[i]) / (2.0 * d)
+            yp[j] = yj
+        calls = 2 * _NS
+    # the cam inputs make f depend on t; the increment scales with the interval when t ~ 0.
+    # (Only where df/dt is not derived: a kink of f in t near the trajectory, a unilateral
+    # contact, spoils this quotient and with it the method's order.)
+    dt = 6.055454452393343e-06 * fmax(fabs(t), span)
+    dt = (t + dt) - t
+    rhs(t + dt, y, fp, ctx)
+    rhs(t - dt, y, fm, ctx)
+    for i in range(_NS):
+        ft[i] = (fp[i] - fm[i]) / (2.0 * dt)
+    return calls + 2
+
+
+cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
+    """RODAS4 over [a, b]: one fresh Jacobian per accepted point (kept through rejections),
+    one LU per attempted step, the DP54 loop's breakpoint, event and failure handling."""
+    cdef Ctx local_ctx = run.ctx[0]
+    cdef Ctx* ctx = &local_ctx
+    cdef int i, hit, status = STATUS_OK
+    cdef double y[_NS]
+    cdef double f0[_NS]
+    cdef double ft[_NS]
+    cdef double u1[_NS]
+    cdef double u2[_NS]
+    cdef double u3[_NS]
+    cdef double u4[_NS]
+    cdef double u5[_NS]
+    cdef double u6[_NS]
+    cdef double ys[_NS]
+    cdef double yn[_NS]
+    cdef double fn[_NS]
+    cdef double ymag[_NS]   # largest |y_j| of the interval so far: the Jacobian's increments
+    cdef int piv[_NS]
+    cdef double g0[_NE1]
+    cdef double g1[_NE1]
+    cdef double t = a, tn, h, hinv, err, fac, s_hit, rtol = run.rtol
+    cdef const double* atol = run.atol
+    cdef long n_steps = run.n_steps, n_rej = run.n_rejected, n_rhs = 0, max_steps = run.max_steps
+    cdef bint last, rejected = False, have_jac = False
+    # heap, not stack: _NS^2 grows fast for models built from user files
+    cdef double* J = <double*> malloc(2 * _NS * _NS * sizeof(double))
+    cdef double* W
+    if J == NULL:
+        return STATUS_NO_MEMORY
+    W = J + _NS * _NS
+    memcpy(y, run.y, sizeof(y))
+    for i in range(_NS):
+        ymag[i] = fabs(y[i])
+    # slopes jump at a breakpoint: every interval starts afresh
+    rhs(t, y, f0, ctx)
+    n_rhs += 1
+    if _rec_point(run, t, y, f0) != 0:
+        free(J)
+        return STATUS_NO_MEMORY
+    if _NE > 0:
+        events(t, y, g0, ctx)
+    if run.h <= 0.0:
+        run.h = _dp_first_step(run, t, y, f0, fmin(b - a, run.h_max))
+    h = fmin(run.h, run.h_max)
+    while t < b:
+        if n_steps + n_rej >= max_steps:
+            status = STATUS_MAX_STEPS
+            break
+        if h < 16.0 * 2.220446049250313e-16 * fmax(fabs(t), fabs(b)):
+            status = STATUS_STEP_UNDERFLOW
+            break
+        last = t + 1.01 * h >= b
+        if last:
+            h = b - t
+        # one time for the last stages and the new point (the model caches cam values by t)
+        tn = b if last else t + h
+        if not have_jac:
+            n_rhs += _jacobian(run, ctx, t, y, f0, b - a, ymag, h, J, ft)
+            have_jac = True
+        hinv = 1.0 / h
+        for i in range(_NS * _NS):
+            W[i] = -J[i]
+        for i in range(_NS):
+            W[i * _NS + i] += hinv / RO4_GAMMA
+        if lu_factor(_NS, W, piv) != 0:
+            # 1/(h gamma) is an eigenvalue of J: any other step avoids it
+            h *= 0.5
+            n_rej += 1
+            rejected = True
+            continue
+        for i in range(_NS):
+            u1[i] = f0[i] + h * RO4_D1 * ft[i]
+        lu_solve(_NS, W, piv, u1)
+        for i in range(_NS):
+            ys[i] = y[i] + RO4_A21 * u1[i]
+        rhs(t + RO4_C2 * h, ys, fn, ctx)
+        for i in range(_NS):
+            u2[i] = fn[i] + hinv * RO4_C21 * u1[i] + h * RO4_D2 * ft[i]
+        lu_solve(_NS, W, piv, u2)
+        for i in range(_NS):
+            ys[i] = y[i] + RO4_A31 * u1[i] + RO4_A32 * u2[i]
+        rhs(t + RO4_C3 * h, ys, fn, ctx)
+        for i in range(_NS):
+            u3[i] = fn[i] + hinv * (RO4_C31 * u1[i] + RO4_C32 * u2[i]) + h * RO4_D3 * ft[i]
+        lu_solve(_NS, W, piv, u3)
+        for i in range(_NS):
+            ys[i] = y[i] + RO4_A41 * u1[i] + RO4_A42 * u2[i] + RO4_A43 * u3[i]
+        rhs(t + RO4_C4 * h, ys, fn, ctx)
+        for i in range(_NS):
+            u4[i] = (fn[i] + hinv * (RO4_C41 * u1[i] + RO4_C42 * u2[i] + RO4_C43 * u3[i])
+                     + h * RO4_D4 * ft[i])
+        lu_solve(_NS, W, piv, u4)
+        for i in range(_NS):
+            ys[i] = y[i] + RO4_A51 * u1[i] + RO4_A52 * u2[i] + RO4_A53 * u3[i] + RO4_A54 * u4[i]
+        rhs(tn, ys, fn, ctx)
+        for i in range(_NS):
+            u5[i] = fn[i] + hinv * (RO4_C51 * u1[i] + RO4_C52 * u2[i] + RO4_C53 * u3[i]
+                                    + RO4_C54 * u4[i])
+        lu_solve(_NS, W, piv, u5)
+        for i in range(_NS):
+            ys[i] += u5[i]      # the embedded third-order solution
+        rhs(tn, ys, fn, ctx)
+        for i in range(_NS):
+            u6[i] = fn[i] + hinv * (RO4_C61 * u1[i] + RO4_C62 * u2[i] + RO4_C63 * u3[i]
+                                    + RO4_C64 * u4[i] + RO4_C65 * u5[i])
+        lu_solve(_NS, W, piv, u6)
+        for i in range(_NS):
+            yn[i] = ys[i] + u6[i]
+        n_rhs += 5
+        err = _rms(u6, y, yn, rtol, atol)
+        if not isfinite(err):
+            # a NaN in a trial stage: retry smaller unless the start itself is bad
+            if not _finite(_NS, y):
+                status = STATUS_NOT_FINITE
+                break
+            h *= 0.2
+            n_rej += 1
+            rejected = True
+            continue
+        if err <= 1.0:
+            # standard controller for the embedded order 3 (err ~ h^4), limits as in RODAS
+            fac = 6.0 if err == 0.0 else fmin(6.0, fmax(0.2, 0.9 * pow(err, -0.25)))
+            if rejected:
+                fac = fmin(fac, 1.0)
+            rhs(tn, yn, fn, ctx)   # slope at the new point: recorded, and the next step's f0
+            n_rhs += 1
+            n_steps += 1
+            have_jac = False
+            if _NE > 0:
+                hit = _event_in_step(run, t, h, y, yn, f0, fn, NULL, g0, g1, &s_hit)
+                if hit >= 0:
+                    # cut the step at the crossing: state from the step's cubic Hermite extension
+                    _dense(s_hit, h, y, yn, f0, fn, NULL, ys)
+                    t = t + s_hit * h
+                    memcpy(y, ys, sizeof(y))
+                    rhs(t, y, f0, ctx)
+                    n_rhs += 1
+                    status = _apply_event(run, hit, t, y, f0, g0)
+                    if status != STATUS_OK:
+                        break
+                    # the event refreshed run.ctx (the rhs variant of the new cam segments)
+                    local_ctx = run.ctx[0]
+                    rejected = False
+                    continue
+                memcpy(g0, g1, sizeof(g0))
+            t = tn
+            memcpy(y, yn, sizeof(y))
+            memcpy(f0, fn, sizeof(f0))
+            for i in range(_NS):
+                ymag[i] = fmax(ymag[i], fabs(y[i]))
+            if _rec_point(run, t, y, f0) != 0:
+                status = STATUS_NO_MEMORY
+                break
+            if not last:
+                run.h = h
+            h = fmin(h * fac, run.h_max)
+            rejected = False
+        else:
+            h *= fmax(0.2, 0.9 * pow(err, -0.25))
+            n_rej += 1
+            rejected = True
+    free(J)
+    memcpy(run.y, y, sizeof(y))
+    run.n_steps = n_steps
+    run.n_rejected = n_rej
+    run.n_rhs += n_rhs
+    if status != STATUS_OK:
+        run.t_fail = t
+    return status
+
+
+cdef int run_loops(Run* run) noexcept nogil:
+    """Integrate from run.t0 through every stop; the record and statistics go into run."""
+    cdef int k, status = STATUS_OK
+    cdef double a = run.t0, b
+    if run.method == METHOD_KOSTER and _NS != 2 * _NQ:
+        return STATUS_BAD_MODEL
+    run.n_events = 0
+    prepare(run.ctx)
+    for k in range(run.n_stops):
+        b = run.stops[k]
+        if b <= a:
+            continue
+        # segments are decided inside the interval: a stop computed as (b_k - b)/a may round
+        # to a hair before the breakpoint, where its start would still see the old segment
+        update_modes(0.5 * (a + b), run.y, run.ctx)
+        if run.method == METHOD_DP54:
+            status = _loop_dp54(run, a, b)
+        elif run.method == METHOD_RODAS:
+            status = _loop_rodas(run, a, b)
+        else:
+            status = _loop_fixed(run, a, b)
+        if status != STATUS_OK:
+            return status
+        a = b
+    return STATUS_OK

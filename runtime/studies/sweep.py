@@ -1,0 +1,359 @@
+"""Sweeps: the headline figures of a target over a grid of its parameters, as tables and charts.
+
+``sweep(target, {"Fa": [...], "tau": [...]})`` runs every combination of the grid's values (the
+first axis slowest) and returns a :class:`SweepResult`: a column per axis, per figure and its
+error estimate (``<figure>_error``), the runs' ``warnings`` and their steps, written as CSV
+(and Parquet with pyarrow) with a chart per figure.  The target is whatever
+runtime/targets/resolve.py makes of the name: a model or a model file (the residual-vibration
+figures, fig. 4.11), the CAMSHAFT-1 study, a DYNACAM scene (its summary's figures; the grid's
+names are its [parameters]) or the beam follower (the tip's largest deflection; the names are
+the fields of its case).
+
+The runs go through runtime/targets/grid.py (compiled chunks on every core for a model, the
+answer contract on every point); with ``dask`` (a ``distributed.Client``, a cluster, or a
+scheduler's address) the chunks go to a Dask cluster instead; every worker must import camdyn.
+"""
+from __future__ import annotations
+
+import math
+import sys
+from dataclasses import dataclass, field
+from itertools import product
+from pathlib import Path
+
+import numpy as np
+
+from ..core.errors import CamdynInputError, out_folder
+from ..targets.grid import default_jobs, run_chunk, run_grid
+
+__all__ = ["parse_axis", "parse_grid", "sweep", "SweepResult", "default_jobs"]
+
+
+# -- the grid ---------------------------------------------------------------------------------
+
+def parse_axis(text: str) -> tuple[str, np.ndarray]:
+    """``NAME=START:STOP:N[:lin|log|inv]`` (N values; log: geometric; inv: uniform in 1/value,
+    as the tau grid of fig. 4.11, runtime/measure/envelope.py) or ``NAME=a,b,c``."""
+    name, sep, rng = text.partition("=")
+    name = name.strip()
+    if not sep or not name:
+        raise CamdynInputError(f"argument --grid: {text!r} is not NAME=START:STOP:N[:lin|log|inv] "
+                               "or NAME=a,b,c")
+    parts = rng.split(":")
+    syntax = CamdynInputError(f"argument --grid: {text!r} is not NAME=START:STOP:N[:lin|log|inv] "
+                              "or NAME=a,b,c")
+    try:
+        if len(parts) == 1:
+            values = np.array([float(v) for v in rng.split(",") if v.strip()])
+        elif len(parts) in (3, 4):
+            a, b, n = float(parts[0]), float(parts[1]), int(parts[2])
+            spacing = parts[3] if len(parts) == 4 else "lin"
+        else:
+            raise syntax
+    except ValueError:
+        raise syntax from None
+    if len(parts) > 1:
+        if spacing not in ("lin", "log", "inv"):
+            raise syntax
+        if not (np.isfinite(a) and np.isfinite(b)):
+            # before linspace, which warns on inf and nan
+            raise CamdynInputError(f"argument --grid: {name}: {rng!r} must give finite numbers")
+        if not 1 <= n <= 1_000_000:
+            raise CamdynInputError(f"argument --grid: {name}: N={n} is out of range: "
+                                   "1 <= N <= 1000000")
+        if spacing != "lin" and not (a > 0 and b > 0):
+            raise CamdynInputError(f"argument --grid: {name}: a {spacing} grid needs "
+                                   "START, STOP > 0")
+        if spacing == "log":
+            values = np.geomspace(a, b, n)
+        elif spacing == "inv":
+            values = 1.0 / np.linspace(1.0 / a, 1.0 / b, n)
+        else:
+            values = np.linspace(a, b, n)
+    if values.size == 0 or not np.all(np.isfinite(values)):
+        raise CamdynInputError(f"argument --grid: {name}: {rng!r} must give finite numbers")
+    return name, values
+
+
+MAX_POINTS = 1_000_000
+"""The most grid points of one sweep, all axes combined (as N of one axis)."""
+
+
+def parse_grid(texts) -> dict:
+    """{name: values} of repeated ``--grid`` texts (:func:`parse_axis`); a name given twice
+    is refused (a dict would keep the last one without a word)."""
+    grid: dict = {}
+    for text in texts:
+        name, values = parse_axis(text)
+        if name in grid:
+            raise CamdynInputError(f"argument --grid: {name} is given twice; give each "
+                                   "parameter one axis")
+        grid[name] = values
+    return grid
+
+
+def _axes(grid: dict) -> dict:
+    if not isinstance(grid, dict) or not grid:
+        raise CamdynInputError("a sweep needs a grid: {parameter name: values}")
+    out = {}
+    for name, values in grid.items():
+        v = np.atleast_1d(np.asarray(values, dtype=float)).ravel()
+        if v.size == 0 or not np.all(np.isfinite(v)):
+            raise CamdynInputError(f"grid {name}: give finite numbers, got {values!r}")
+        out[str(name)] = v
+    total = math.prod(v.size for v in out.values())
+    if total > MAX_POINTS:
+        # the table of every combination would not fit in memory (1e5 x 1e5 needed 75 GiB)
+        raise CamdynInputError(f"grid {' x '.join(f'{k} ({v.size})' for k, v in out.items())}: "
+                               f"{total:.3g} points; at most {MAX_POINTS:,} in one sweep")
+    return out
+
+
+def _points(axes: dict) -> np.ndarray:
+    """Every combination, the first axis slowest: shape (n_points, n_axes)."""
+    mesh = np.meshgrid(*axes.values(), indexing="ij")
+    return np.stack([m.ravel() for m in mesh], axis=1)
+
+
+# -- the result -------------------------------------------------------------------------------
+
+
+
+
+
+# -- the result -------------------------------------------------------------------------------
+
+@dataclass
+class SweepResult:
+    """A sweep's table: ``columns[name]`` for every axis, figure and statistic, one row per
+    grid point (the first axis slowest)."""
+
+    target: str
+    axes: dict                   # name -> the axis's values
+    figures: tuple               # every figure and its <figure>_error, in the table's order
+    columns: dict
+    seconds: float = 0.0         # wall time of the runs
+    where: str = "local"         # "local, K threads" or "dask <address>"
+    stats: tuple = ("warnings", "n_steps")
+    meta: dict = field(default_factory=dict)
+
+    def __len__(self) -> int:
+        return len(next(iter(self.columns.values())))
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        try:
+            return self.columns[name]
+        except KeyError:
+            raise KeyError(f"no column {name!r}; columns: {', '.join(self.columns)}") from None
+
+    @property
+    def names(self) -> list:
+        return [*self.axes, *self.figures, *self.stats]
+
+    def rows(self) -> list[dict]:
+        return [{k: _item(self.columns[k][i]) for k in self.names} for i in range(len(self))]
+
+    @property
+    def warned(self) -> int:
+        """How many grid points have a warning (the warnings column)."""
+        return int(sum(1 for w in self.columns["warnings"] if w))
+
+    def summary(self) -> str:
+        """One line: how many runs, where, the figures, how many points warned."""
+        warned = (f"; {self.warned} of {len(self)} points warned (the warnings column)"
+                  if self.warned else "; no warnings")
+        est = "" if self.meta.get("estimated", True) else "; no error estimates"
+        figs = [f for f in self.figures if not f.endswith("_error")]
+        return (f"{len(self)} runs of {self.target} in {self.seconds:.2f} s ({self.where}); "
+                f"figures: {', '.join(figs)}{est}{warned}")
+
+    def to_csv(self, path) -> Path:
+        path = Path(path)
+        names = self.names
+        with open(path, "w") as fh:
+            fh.write(",".join(names) + "\n")
+            for i in range(len(self)):
+                fh.write(",".join(_cell(self.columns[k][i]) for k in names) + "\n")
+        return path
+
+    def to_parquet(self, path) -> Path:
+        try:
+            import pyarrow as pa
+            import pyarrow.parquet as pq
+        except ImportError:
+            raise CamdynInputError("Parquet needs pyarrow: pip install pyarrow") from None
+        path = Path(path)
+        pq.write_table(pa.table({k: (self.columns[k].astype(str) if k == "warnings"
+                                     else self.columns[k]) for k in self.names}), path)
+        return path
+
+    def charts(self, out_dir) -> list[Path]:
+        """One PNG per figure (not its error estimate) against the last axis with more than
+        one value, a line for every combination of the other axes (up to 12, evenly picked)."""
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        out_dir = Path(out_dir)
+        out_dir.mkdir(parents=True, exist_ok=True)
+        names = list(self.axes)
+        shape = tuple(len(v) for v in self.axes.values())
+        multi = [k for k, n in enumerate(shape) if n > 1]
+        x_ax = multi[-1] if multi else len(names) - 1
+        others = [k for k in range(len(names)) if k != x_ax]
+        combos = list(product(*[range(shape[k]) for k in others]))
+        if len(combos) > 12:
+            combos = [combos[int(round(j))] for j in np.linspace(0, len(combos) - 1, 12)]
+        x = self.axes[names[x_ax]]
+        written = []
+        for fig_name in [f for f in self.figures if not f.endswith("_error")]:
+            data = np.asarray(self.columns[fig_name], dtype=float).reshape(shape)
+            fig, ax = plt.subplots(figsize=(7, 4.2))
+            for c in combos:
+                idx = [0] * len(names)
+                for k, j in zip(others, c):
+                    idx[k] = j
+                idx[x_ax] = slice(None)
+                label = ", ".join(f"{names[k]} = {self.axes[names[k]][j]:g}"
+                                  for k, j in zip(others, c))
+                # a marker where the x axis has one value: a line of one point draws nothing
+                ax.plot(x, data[tuple(idx)], lw=1.0, label=label or None,
+                        marker="o" if len(x) == 1 else None)
+            finite = data[np.isfinite(data)]
+            if finite.size and finite.min() > 0 and finite.max() > 100 * finite.min():
+                ax.set_yscale("log")     # U0 and U0'' span decades between the dips of (3.5)
+            ax.set_xlabel(names[x_ax])
+            ax.set_ylabel(fig_name)
+            ax.set_title(f"{self.target}: {fig_name}", fontsize=10)
+            ax.grid(alpha=0.3)
+            if combos and combos[0]:
+                ax.legend(fontsize=7)
+            fig.tight_layout()
+            path = out_dir / f"{fig_name}.png"
+            fig.savefig(path, dpi=110)
+            plt.close(fig)
+            written.append(path)
+        return written
+
+    def write(self, out_dir) -> list[Path]:
+        """sweep.csv, sweep.parquet (with pyarrow) and the charts into ``out_dir``."""
+        out_dir = out_folder(out_dir)
+        files = [self.to_csv(out_dir / "sweep.csv")]
+        try:
+            files.append(self.to_parquet(out_dir / "sweep.parquet"))
+        except CamdynInputError:
+            pass
+        return files + self.charts(out_dir)
+
+
+def _cell(v) -> str:
+    if isinstance(v, str):
+        return '"' + v.replace('"', '""') + '"' if v else ""
+    v = float(v)
+    if math.isnan(v):
+        return ""
+    return f"{v:.17g}" if v != int(v) or abs(v) >= 1e15 else str(int(v))
+
+
+def _item(v):
+    return v if isinstance(v, str) else v.item()
+
+
+MODEL_RTOL = 1e-9
+"""A model's sweep runs at this rtol unless told otherwise (fig. 4.11's grid)."""
+
+
+# -- the sweep ------------------------------------------------------------------------------------
+
+def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: bool = True,
+          t_end: float | None = None, method: str | None = None, rtol: float | None = None,
+          law: str | None = None, step: float | None = None, chunk: int | None = None,
+          estimate: bool = True) -> SweepResult:
+    """Run ``target`` (a name, or a target of runtime/targets) at every point of ``grid``
+    ({name: values}); ``jobs`` threads (default: every core), or the Dask cluster ``dask``;
+    a progress bar on stderr.  Every figure comes with its error estimate (the grid again
+    one notch tighter: twice the time) unless ``estimate`` is False, and every point with
+    its run's warnings (runtime/measure/contract.py)."""
+    from ..targets.resolve import is_model, resolve
+
+    if dask is not None and jobs is not None:
+        raise CamdynInputError("--jobs and --dask: give one (threads here, or the Dask "
+                               "cluster's workers)")
+    if isinstance(target, str):
+        if rtol is None and (method or "dp54") in ("dp54", "rodas4") and is_model(target):
+            rtol = MODEL_RTOL
+        tgt = resolve(target, t_end=t_end, method=method, rtol=rtol, law=law, step=step)
+    else:
+        tgt = target
+    axes = _axes(grid)
+    pts = _points(axes)
+    bar = _bar(len(pts) * (2 if estimate else 1), progress, tgt.name)
+    try:
+        mapper = _Dask(dask) if dask is not None else None
+        run = run_grid(tgt, tuple(axes), pts, estimate=estimate, jobs=jobs if dask is None else 1,
+                       chunk=chunk, bar=bar, mapper=mapper)
+    finally:
+        bar.close()
+    return SweepResult(tgt.name, axes, run.figures, run.columns, run.seconds, run.where,
+                       meta={"target": run.target, "tight": run.tight, "estimated": estimate})
+
+
+class _NoBar:
+    def update(self, n=1):
+        pass
+
+    def close(self):
+        pass
+
+
+def _bar(total: int, progress: bool, label: str):
+    if not progress:
+        return _NoBar()
+    from tqdm import tqdm
+
+    return tqdm(total=total, desc=f"sweep {label}", unit="run", file=sys.stderr, leave=False,
+                mininterval=0.2)
+
+
+class _Dask:
+    """Run the chunks on a Dask cluster (runtime/targets/grid.py's mapper)."""
+
+    def __init__(self, dask):
+        self.dask = dask
+        self.where = "dask"
+
+    def __call__(self, todo, names, bar) -> list:
+        out, self.where = _on_dask(self.dask, todo, names, bar)
+        return out
+
+
+def _on_dask(dask, todo, names, bar) -> tuple[list, str]:
+    try:
+        from distributed import Client
+    except ImportError:
+        raise CamdynInputError("--dask needs dask.distributed: pip install 'camdyn[dask]'") from None
+    own = False
+    if isinstance(dask, Client):
+        client = dask
+    elif isinstance(dask, str):
+        try:
+            client = Client(dask, timeout=10)
+        except (OSError, TimeoutError, ValueError) as exc:     # ValueError: no port in it
+            raise CamdynInputError(f"argument --dask: no Dask scheduler at {dask}: {exc}") from None
+        own = True
+    else:                          # a cluster object (LocalCluster, ...)
+        client = Client(dask)
+        own = True
+    try:
+        futures = client.map(run_chunk, [t for t, _ in todo], [names] * len(todo),
+                             [p for _, p in todo], pure=False)
+        out = []
+        for fut, (_, piece) in zip(futures, todo):
+            out.append(fut.result())
+            bar.update(len(piece))
+        where = f"dask {client.scheduler.address}"
+    finally:
+        if own:
+            client.close()
+    return out, where

@@ -1,0 +1,260 @@
+"""Running the Rayleigh-beam follower of the paper: the case, its checks, one compiled run, the
+frozen natural frequency at the outer dwell, and the paper's figures 4-9.
+
+A :class:`Case` holds what a user varies (SI units, defaults from the paper, sec. 4);
+:func:`run` integrates the generated ``beam<N>`` module for whole cam revolutions from the
+rigid follower's state at theta = 0 (zero deflection, the constraints (6), (7) and their
+rates satisfied), and :func:`summarize` reports the tip response and the constraint residual.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import asdict, replace
+
+import numpy as np
+
+from ..core.errors import CamdynInputError
+from ..core.laws import choose
+from ..core.models import load
+from .beam_case import FORMULATIONS, N_MAX, Case, check  # noqa: F401  (the case, re-exported)
+from ..measure.extremes import extreme
+from ..core.simulator import Simulator
+
+# summary keys, in the order printed
+KEYS = ("model", "formulation", "omega", "modes", "revolutions", "max_abs_tip_deflection",
+        "max_constraint_residual", "dwell_frequency_hz", "n_steps", "cpu_seconds")
+
+
+def parameters(case: Case) -> dict:
+    """The generated model's parameter values (manifest names) for a case."""
+    return {"Omega": case.omega, "d": case.distance, "r_b": case.base_radius,
+            "r_r": case.roller_radius, "S_T": case.rise, "a_rod": case.rod_radius, "E": case.E,
+            "rho": case.rho, "m_r": case.roller_mass, "J_r": case.J_r,
+            "rayleigh": 1.0 if case.rayleigh else 0.0, "w_B": case.w_B,
+            "formulation": FORMULATIONS[case.formulation]}
+
+
+def _law_arrays(case: Case) -> tuple[np.ndarray, np.ndarray]:
+    """The cam law as the compiled one-off evaluations (eval_rhs, eval_outputs) take it."""
+    law = choose(case.law)
+    return np.array([law.code], dtype=np.intc), np.array([law.par])
+
+
+def initial_state(case: Case, model, b=None, b_rate=None) -> np.ndarray:
+    """A consistent state at t = 0 for the mode amplitudes ``b`` and their rates ``b_rate``
+    (default: the rod straight and at rest transversally, as the paper starts).
+
+    The dependent coordinates come from the generated constraints themselves: x_E and theta
+    by Newton's method on Phi(Q, 0) = 0 (6), (7), started from the rigid follower at theta = 0;
+    their rates from the partitioned right-hand side, which solves Phi_Q Q' = -dPhi/dt for
+    them.  For b = 0 this is x_E = d - r(0), theta = 0, theta' = Omega, x_E' = -S'(0) Omega."""
+    from ..engine import driver
+
+    n = case.modes
+    names = model.state_names
+    # the model's declared start (x_E = d - r_b - r_r, theta' = Omega): the rigid follower at
+    # theta = 0 (every law starts its rise at S = 0), the first guess for the solve below
+    p_aug = model.parameter_vector({**parameters(case), "formulation": 0.0})
+    y = model.initial_state(p_aug)
+    if b is not None:
+        y[[names.index(f"b{i}") for i in range(1, n + 1)]] = np.asarray(b, dtype=float)
+    if b_rate is not None:
+        y[[names.index(f"b{i}d") for i in range(1, n + 1)]] = np.asarray(b_rate, dtype=float)
+    codes, pars = _law_arrays(case)
+    t0 = np.zeros(1)
+    dep = [names.index("xE"), names.index("theta")]
+    phis = [model.output_names.index("Phi1"), model.output_names.index("Phi2")]
+
+    def residual(p, yy):
+        return driver.eval_outputs(model.capsule, p, codes, pars, t0, yy[None, :])[0][phis]
+
+    for _ in range(30):
+        g = residual(p_aug, y)
+        if np.abs(g).max() < 1e-15:
+            break
+        J = np.empty((2, 2))
+        for j, k in enumerate(dep):
+            h = 1e-7 * (1.0 + abs(y[k]))
+            yp = y.copy()
+            yp[k] += h
+            J[:, j] = (residual(p_aug, yp) - g) / h
+        y[dep] -= np.linalg.solve(J, g)
+    else:
+        raise CamdynInputError(f"no consistent initial state: the constraints (6), (7) keep a "
+                               f"residual of {np.abs(g).max():.3g} m")
+    p_part = model.parameter_vector({**parameters(case), "formulation": 1.0})
+    f = driver.eval_rhs(model.capsule, p_part, codes, pars, t0, y[None, :])[0]
+    y[[names.index("xEd"), names.index("thetad")]] = f[dep]
+    return y
+
+
+def simulator(case: Case, t_end: float | None = None,
+              max_steps: int = 20_000_000) -> tuple[Simulator, object]:
+    check(case)
+    model = load(case.model)
+    t_end = case.revolutions * case.period if t_end is None else t_end
+    sim = Simulator(model, t_end, case.method, rtol=case.rtol, law=case.law,
+                    y0=initial_state(case, model), max_steps=max_steps)
+    return sim, model
+
+
+def run(case: Case, progress=None) -> tuple[dict, object]:
+    """Integrate ``case``; returns (summary, result)."""
+    sim, model = simulator(case)
+    if progress:
+        progress(f"beam follower: N = {case.modes}, Omega = {case.omega:g} rad/s, "
+                 f"{case.revolutions:g} revolution(s), {case.formulation}")
+    start = time.process_time()
+    res = sim.run(parameters(case))
+    cpu = time.process_time() - start
+    return summarize(case, res, cpu), res
+
+
+def tip_max(res) -> float:
+    """max |v_E| over the run (the paper's headline figure), refined on the dense output."""
+    return tip_extreme(res).value
+
+
+def tip_extreme(res):
+    """The largest |v_E| over the run with the sampling error of the scan that found it
+    (4 samples a recorded step, the peaks checked; runtime/measure/extremes.py)."""
+    return extreme(res, "vE", float(res.t[0]), float(res.t[-1]), absolute=True, minimum=False,
+                   per_step=4, candidates=4)
+
+
+def summarize(case: Case, res, cpu: float) -> dict:
+    """The run's summary; ``sampling`` in it: the sampling error of each largest value."""
+    tip = tip_extreme(res)
+    phi = [extreme(res, k, float(res.t[0]), float(res.t[-1]), absolute=True, minimum=False,
+                   per_step=4) for k in ("Phi1", "Phi2")]
+    worst = max(phi, key=lambda e: e.value)
+    return {"model": case.model, "formulation": case.formulation, "omega": case.omega,
+            "modes": case.modes, "revolutions": case.revolutions,
+            "max_abs_tip_deflection": tip.value, "max_constraint_residual": worst.value,
+            "dwell_frequency_hz": dwell_frequency(case), "n_steps": int(res.stats["n_steps"]),
+            # DP54's stiffness test (Hairer): where it fired, in the model's time t (s)
+            "stiff_from_T": res.stiff_from_T, "warnings": list(res.warnings),
+            "cpu_seconds": cpu, "case": asdict(case),
+            "sampling": {"max_abs_tip_deflection": tip.sampling_error,
+                         "max_constraint_residual": max(e.sampling_error for e in phi)}}
+
+
+def linearized(case: Case) -> np.ndarray:
+    """State matrix A of the transverse motion d[b, b']/dt = A [b, b'] at the outer dwell with
+    the length frozen there: numerical derivatives of the generated right-hand side in its
+    partitioned form (x_E, theta recovered from b by the constraints), at mid-dwell.  In the
+    dwell the pitch curve is a circle, so the linearization does not depend on the time."""
+    from ..engine import driver
+
+    c = replace(case, formulation="partitioned")
+    check(c)
+    model = load(c.model)
+    p = model.parameter_vector(parameters(c))
+    codes, pars = _law_arrays(c)
+    names = model.state_names
+    n = c.modes
+    theta0 = 3 * math.pi / 4
+    t0 = theta0 / c.omega
+    y0 = np.zeros(len(names))
+    y0[names.index("theta")] = theta0
+    y0[names.index("thetad")] = c.omega
+    y0[names.index("xE")] = c.free_length_raised
+    idx = [names.index(f"b{i}") for i in range(1, n + 1)]
+    idx += [names.index(f"b{i}d") for i in range(1, n + 1)]
+    acc = [names.index(f"b{i}d") for i in range(1, n + 1)]
+    A = np.zeros((2 * n, 2 * n))
+    A[:n, n:] = np.eye(n)
+    for j, k in enumerate(idx):
+        h = 1e-9 if j < n else 1e-9 * c.omega
+        ys = np.repeat(y0[None, :], 2, axis=0)
+        ys[0, k] += h
+        ys[1, k] -= h
+        f = driver.eval_rhs(model.capsule, p, codes, pars, np.full(2, t0), ys)
+        A[n:, j] = (f[0, acc] - f[1, acc]) / (2 * h)
+    return A
+
+
+def dwell_frequencies(case: Case) -> np.ndarray:
+    """Transverse natural frequencies [Hz], ascending, at the outer dwell (length frozen)."""
+    lam = np.linalg.eigvals(linearized(case))
+    w = np.sort(np.abs(lam.imag[lam.imag > 0]))
+    return w / (2 * math.pi)
+
+
+def dwell_frequency(case: Case) -> float:
+    """The lowest transverse natural frequency [Hz] at the outer dwell (follower raised)."""
+    return float(dwell_frequencies(case)[0])
+
+
+def cantilever_tip_mass_frequency(E: float, I: float, rho_A: float, L: float, m_tip: float) -> float:
+    """Lowest natural frequency [Hz] of an Euler-Bernoulli cantilever with a tip point mass:
+    the first root of 1 + cos(bL) cosh(bL) + r bL (cos(bL) sinh(bL) - sin(bL) cosh(bL)) = 0,
+    r = m_tip/(rho A L), and w = b^2 (E I/(rho A))^(1/2)."""
+    from scipy.optimize import brentq
+
+    r = m_tip / (rho_A * L)
+
+    def g(z):
+        return 1 + math.cos(z) * math.cosh(z) + r * z * (math.cos(z) * math.sinh(z) - math.sin(z) * math.cosh(z))
+
+    grid = np.linspace(1e-3, 2.0, 2001)
+    vals = [g(z) for z in grid]
+    k = next(i for i in range(len(grid) - 1) if vals[i] * vals[i + 1] < 0)
+    z = brentq(g, grid[k], grid[k + 1], xtol=1e-15)
+    return (z / L) ** 2 * math.sqrt(E * I / rho_A) / (2 * math.pi)
+
+
+# -- the paper's figures 4-9: the tip response against the cam angle, one parameter varied ---------
+
+FIGURES = {
+    "fig4_modes": ("modes", (2, 3, 4), "N"),
+    "fig5_omega": ("omega", (120.0, 240.0, 360.0), "Omega [rad/s]"),
+    "fig6_distance": ("distance", (0.102, 0.112, 0.122), "d [m]"),
+    "fig7_rod_radius": ("rod_radius", (0.007, 0.005, 0.003), "rod radius [m]"),
+    # the paper does not print its three base radii: 22, 26 and 30 mm taken
+    "fig8_base_radius": ("base_radius", (0.030, 0.026, 0.022), "r_b [m]"),
+    "fig9_rise": ("rise", (0.008, 0.015, 0.022), "S_T [m]"),
+}
+
+
+def sweep(case: Case, field: str, values, progress=None) -> list:
+    """(value, summary, result) for each value of one field of the case."""
+    out = []
+    for v in values:
+        c = replace(case, **{field: v})
+        s, res = run(c, progress)
+        out.append((v, s, res))
+    return out
+
+
+def plot_figures(case: Case, out_dir, progress=None, which=None) -> list:
+    """PNG files of figs 4-9 (tip deflection v_E against the cam angle Omega t in degrees)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from pathlib import Path
+
+    out = Path(out_dir)
+    out.mkdir(parents=True, exist_ok=True)
+    written = []
+    for name, (field, values, label) in FIGURES.items():
+        if which is not None and name not in which:
+            continue
+        fig, ax = plt.subplots(figsize=(8, 4))
+        for v, s, res in sweep(case, field, values, progress):
+            t = np.linspace(0.0, res.t[-1], 4000)
+            ax.plot(np.degrees(case.omega * t) if field != "omega" else np.degrees(v * t),
+                    res.sample(t)["vE"] * 1e3, lw=0.8, label=f"{label} = {v:g}")
+        ax.set_xlabel("cam angle [deg]")
+        ax.set_ylabel("tip deflection v_E [mm]")
+        ax.set_title(f"{name.replace('_', ' ')}: transverse response at the roller pin E")
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        path = out / f"{name}.png"
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        written.append(str(path))
+    return written

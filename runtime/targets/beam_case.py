@@ -1,0 +1,114 @@
+"""The Rayleigh-beam follower's case: what a user varies, its defaults (the paper's data,
+sec. 4) and its checks; light enough for the command line to read the defaults for its help
+without loading SciPy (the runs are in :mod:`camdyn.runtime.targets.beam`).
+"""
+from __future__ import annotations
+
+import math
+import pkgutil
+import re
+from dataclasses import dataclass
+
+from camdyn import generated
+
+from ..core.errors import CamdynInputError
+from ..core.laws import choose
+
+FORMULATIONS = {"augmented": 0.0, "partitioned": 1.0}
+"""How the constraints are solved: the model's parameter ``formulation`` for each name."""
+
+N_MAX = max(int(m.name[4:]) for m in pkgutil.iter_modules(generated.__path__)
+            if re.fullmatch(r"beam\d+", m.name))
+"""Largest number of assumed modes: the beam<N> modules that camdyn derive generated."""
+
+
+def _declared_defaults() -> dict:
+    """The model's parameter defaults (the paper's data, sec. 4) as its manifest declares
+    them: the declaration (camdyn/derive/models/beam.py) is their one home."""
+    from importlib import import_module
+
+    manifest = import_module("camdyn.generated.beam1").MANIFEST
+    return {p["name"]: p["default"] for p in manifest["parameters"]}
+
+
+_D = _declared_defaults()
+
+
+@dataclass(frozen=True)
+class Case:
+    """One Rayleigh-beam follower run.  Paper data (sec. 4) by default, read from the
+    model's manifest; the run's own settings (modes, revolutions, formulation, law, rtol,
+    method) are defaults of the case."""
+
+    omega: float = _D["Omega"]      # rad/s, cam speed (paper: 120, 240, 360)
+    modes: int = 3                  # N assumed modes (paper: 2, 3, 4; converged at 3)
+    rod_radius: float = _D["a_rod"]     # m (paper: 3, 5, 7 mm)
+    distance: float = _D["d"]       # m, cam centre to guide exit, d (paper: 102, 112, 122 mm)
+    base_radius: float = _D["r_b"]  # m, r_b
+    rise: float = _D["S_T"]         # m, S_T (paper: 8, 15, 22 mm)
+    revolutions: float = 1.0
+    rayleigh: bool = _D["rayleigh"] > 0.5   # rotary inertia of the rod
+    roller_inertia: float | None = None   # kg m^2; None: uniform disc m_r r_r^2/2
+    formulation: str = "augmented"
+    law: str = "cycloidal"
+    roller_radius: float = _D["r_r"]    # m, r_r
+    roller_mass: float = _D["m_r"]      # kg, m_r
+    E: float = _D["E"]              # Pa
+    rho: float = _D["rho"]          # kg/m^3
+    rtol: float = 1e-9
+    method: str = "dp54"            # an adaptive method: dp54, or rodas4 for stiff rods
+    w_B: float = _D["w_B"]          # rad/s, Baumgarte rate (augmented form)
+
+    @property
+    def model(self) -> str:
+        return f"beam{self.modes}"
+
+    @property
+    def J_r(self) -> float:
+        if self.roller_inertia is None:
+            return self.roller_mass * self.roller_radius**2 / 2
+        return self.roller_inertia
+
+    @property
+    def period(self) -> float:
+        return 2 * math.pi / self.omega
+
+    @property
+    def free_length_raised(self) -> float:
+        """x_E at the outer dwell, the follower fully raised: d - r_b - r_r - S_T."""
+        return self.distance - self.base_radius - self.roller_radius - self.rise
+
+
+def check(case: Case) -> Case:
+    """Refuse a case that cannot run, naming the parameter and its range."""
+    positive = ("omega", "rod_radius", "distance", "base_radius", "rise", "revolutions",
+                "roller_radius", "roller_mass", "E", "rho", "rtol")
+    for name in positive:
+        v = getattr(case, name)
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or v <= 0:
+            raise CamdynInputError(f"{name}={v!r}: must be a positive number")
+    if isinstance(case.modes, bool) or not isinstance(case.modes, int) or not 1 <= case.modes <= N_MAX:
+        raise CamdynInputError(f"modes={case.modes!r}: choose an integer from 1 to {N_MAX}")
+    if case.formulation not in FORMULATIONS:
+        raise CamdynInputError(f"formulation={case.formulation!r}: choose one of "
+                               f"{', '.join(FORMULATIONS)}")
+    if case.roller_inertia is not None and not (math.isfinite(case.roller_inertia)
+                                                 and case.roller_inertia >= 0):
+        raise CamdynInputError(f"roller_inertia={case.roller_inertia!r}: must be >= 0")
+    if not (math.isfinite(case.w_B) and case.w_B >= 0):
+        raise CamdynInputError(f"w_B={case.w_B!r}: must be >= 0")
+    # the roller (radius r_r about E) must stay clear of the guide when fully raised
+    if case.free_length_raised <= case.roller_radius:
+        limit = case.distance - 2 * case.roller_radius - case.rise
+        raise CamdynInputError(
+            f"base_radius={case.base_radius:g} m puts the roller into the guide at the top of the "
+            f"stroke (free rod {case.free_length_raised * 1e3:.3g} mm, roller radius "
+            f"{case.roller_radius * 1e3:g} mm): with distance={case.distance:g} m and "
+            f"rise={case.rise:g} m, base_radius must be below {limit:g} m")
+    from ..core.methods import ADAPTIVE  # here, not at the top: the help text loads this module
+
+    if case.method not in ADAPTIVE:
+        raise CamdynInputError(f"method={case.method!r}: the beam follower takes an adaptive "
+                               f"method: {', '.join(ADAPTIVE)}")
+    choose(case.law)
+    return case

@@ -1,0 +1,184 @@
+"""The Rayleigh-beam follower of the paper as a target: a case (runtime/targets/beam_case.py),
+whole cam revolutions of the generated beam<N> module, the tip response.
+
+Figures: the largest tip deflection |v_E| over the run (the paper's headline figure), the
+largest constraint residual |Phi| (the solver's own check: the exact solution has 0) and the
+lowest transverse natural frequency with the rod frozen at the outer dwell (an eigenproblem,
+exact to rounding).  A cam profile whose groove wall is undercut for this roller is reported,
+not refused: the model follows the pitch curve, so the run shows the designed motion, which a
+cam cut for this roller could not give.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, fields, replace
+
+from ..core.errors import CamdynInputError
+from ..core.methods import METHODS
+from ..core.models import load
+from . import beam, scene_files
+from .base import Figure, Outcome, Parameter, Target
+from .beam_case import N_MAX, Case, check
+from .problem import Problem
+
+FIGURES = (
+    Figure("max_abs_tip_deflection", "largest tip deflection |v_E| (the paper's figs 4-9)", "m"),
+    Figure("max_constraint_residual", "largest constraint residual |Phi| (6), (7)", "m"),
+    Figure("dwell_frequency_hz", "lowest transverse natural frequency at the outer dwell", "Hz",
+           estimate="exact"),
+)
+
+UNITS = {"omega": "rad/s", "rod_radius": "m", "distance": "m", "base_radius": "m",
+         "rise": "m", "roller_inertia": "kg m^2", "roller_radius": "m", "roller_mass": "kg",
+         "E": "Pa", "rho": "kg/m^3", "w_B": "rad/s", "max_abs_tip_deflection": "m",
+         "max_constraint_residual": "m", "dwell_frequency_hz": "Hz", "cpu_seconds": "s",
+         "figures_cpu_seconds": "s"}
+"""Units of the record's entries, for the table."""
+
+INPUTS = ("omega", "modes", "rod_radius", "distance", "base_radius", "rise", "revolutions",
+          "rayleigh", "roller_inertia", "formulation", "method")
+"""The case's fields a user sets on the command line, in the order of its record."""
+
+
+@dataclass(frozen=True)
+class BeamTarget(Target):
+    """A checked case of the beam follower."""
+
+    case: Case
+    label: str = "beam-follower"
+    title: str = "Rayleigh-beam follower"
+
+    kind = "beam-follower"
+    scene_kind = "beam-follower"
+    time_name = "t"
+
+    scene_doc = "the paper's Rayleigh-beam follower: tip response"
+
+    @staticmethod
+    def parse(data: dict, where: str):
+        """The scene file's tables, checked (runtime/targets/scene_files.py)."""
+        return scene_files.beam_from_dict(data, where)
+
+    @classmethod
+    def from_scene(cls, scene, label: str = ""):
+        return cls(scene.case, label or scene.path, scene.title)
+
+    @classmethod
+    def of(cls, case: Case, label: str = "beam-follower"):
+        return cls(check(case), label)
+
+    @property
+    def name(self) -> str:
+        return self.label
+
+    def parameters(self) -> dict:
+        out = {f.name: Parameter(f.name, doc="a positive number", low=0.0, open_low=True)
+               for f in fields(self.case) if f.type == "float"}
+        out["modes"] = Parameter("modes", doc="assumed modes N", low=1, high=N_MAX, integer=True)
+        return out
+
+    def figures(self) -> tuple:
+        return FIGURES
+
+    def with_parameters(self, values: dict):
+        if not values:
+            return self
+        # numbers from a grid or --set: the case's integer field (modes) takes them as integers
+        vals = {k: int(v) if k == "modes" and float(v).is_integer() else v
+                for k, v in values.items()}
+        try:
+            return replace(self, case=check(replace(self.case, **vals)))
+        except TypeError as exc:
+            raise CamdynInputError(f"the beam follower has no parameter: {exc}") from None
+
+    def with_settings(self, method=None, rtol=None, **rest):
+        if rest:
+            raise CamdynInputError(f"{', '.join(rest)} of a beam-follower scene come from the "
+                                   "scene file")
+        changes = {k: v for k, v in (("method", method), ("rtol", rtol)) if v is not None}
+        return replace(self, case=check(replace(self.case, **changes))) if changes else self
+
+    def method(self):
+        return METHODS[self.case.method](rtol=self.case.rtol)
+
+    def tighter(self):
+        m = self.method().tighter()
+        return None if m is None else replace(self, case=replace(self.case, rtol=m.rtol))
+
+    def run(self, progress=None) -> Outcome:
+        from ..cam.motion import RDFD
+
+        case = self.case
+        cut = RDFD.of(case.rise, case.base_radius, case.roller_radius, case.law).undercut()
+        summary, res = beam.run(case, progress)
+        record = {key: getattr(case, key) for key in INPUTS}
+        record["roller_inertia"] = case.J_r
+        record["roller_inertia_default"] = case.roller_inertia is None
+        for key in ("law", "roller_radius", "roller_mass", "E", "rho", "rtol", "w_B"):
+            record[key] = getattr(case, key)
+        record["model"] = summary["model"]
+        for f in FIGURES:
+            record[f.name] = summary[f.name]
+        record["undercut"] = cut.message if cut else None
+        record["n_steps"] = summary["n_steps"]
+        record["stiff_from_T"] = summary["stiff_from_T"]   # model time t, s
+        record["cpu_seconds"] = summary["cpu_seconds"]
+        warnings = list(summary["warnings"])
+        if cut:
+            warnings.append(f"{cut.message} The run follows the pitch curve all the same.")
+        stats = {k: summary[k] for k in ("n_steps", "cpu_seconds", "stiff_from_T")}
+        return Outcome({f.name: summary[f.name] for f in FIGURES}, dict(summary["sampling"]), {},
+                       warnings, record, stats, res)
+
+    def table(self, out: dict) -> list:
+        """The record as a table with units, each figure with its estimate."""
+        from ..measure.contract import plus_minus
+
+        rows = [(k, v) for k, v in out.items()
+                if k not in ("figures", "warnings", "error_sources") and not k.endswith("_error")]
+        rows = [(k, ("yes, see the warning" if v else "no") if k == "undercut" else v)
+                for k, v in rows]
+        width = max(len(k) for k, _ in rows)
+        lines = []
+        for k, v in rows:
+            text = f"{v:.6g}" if isinstance(v, float) else str(v)
+            text += plus_minus(out.get(f"{k}_error"))
+            lines.append(f"{k:<{width}}  {text} {UNITS.get(k, '')}".rstrip())
+        lines += [f"wrote {f}" for f in out.get("figures", [])]
+        return lines
+
+    def check_points(self, names, points) -> None:
+        allowed = self.parameters()
+        for k, name in enumerate(names):
+            if name not in allowed:
+                raise CamdynInputError(
+                    f"grid {name}: not a parameter of {self.name}; its parameters are "
+                    + ", ".join(f"{p.name} ({p.doc})" for p in allowed.values()))
+        for pt in points:
+            try:
+                self.with_parameters(dict(zip(names, map(float, pt))))
+            except CamdynInputError as exc:
+                raise CamdynInputError(f"grid {exc}") from None
+
+    def problem(self) -> Problem:
+        case = self.case
+        model = load(case.model)
+        return Problem(label=f"{self.title}: {case.model}, {case.formulation}", model=model,
+                       params=beam.parameters(case), t_end=case.revolutions * case.period,
+                       read=lambda run: {"max_abs_tip_deflection": beam.tip_max(run)},
+                       kind=self.kind, law=case.law, y0=beam.initial_state(case, model))
+
+    def figure_runs(self) -> list:
+        """The runs of the paper's figs 4-9 (one field of this case varied each): (figure,
+        field, value), each refused before anything runs if this case does not allow it."""
+        planned = []
+        for name, (field, values, _) in beam.FIGURES.items():
+            for v in values:
+                try:
+                    check(replace(self.case, **{field: v}))
+                except CamdynInputError as exc:
+                    raise CamdynInputError(
+                        f"argument --out: {name} sets {field}={v:g}, which this case does not "
+                        f"allow: {exc}") from None
+                planned.append((name, field, v))
+        return planned
+

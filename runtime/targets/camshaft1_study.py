@@ -1,0 +1,257 @@
+"""The CAMSHAFT-1 study of thesis ch. 4 as a target, and its main job (`camdyn run`'s
+default): report and charts.
+
+As a target it is CAMSHAFT-1 (4.15) with the scene's law, method and tolerance at the
+response's tau and its largest Fa (what a work-precision study or a sweep of the scene
+runs).  Its main job writes into the output folder
+
+    report.md      what was run and the key figures next to the thesis's, each with its
+                   error estimate, and the runs' warnings
+    report.json    the same for machines
+    response.png   X'' against T at one tau for several Fa (fig. 4.10)
+    graphs.png     U0, max deceleration and its instant, U0dd against tau (fig. 4.11), U0 and
+                   U0dd with their envelopes through the maxima (secs 3.5, 8.2.6)
+    envelopes.csv  U0 and U0dd and their envelopes per Fa and tau, with U0's and U0dd's
+                   error estimates
+"""
+from __future__ import annotations
+
+import json
+import math
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..measure import references
+from ..measure.contract import answer
+from ..measure.envelope import envelope, tau_grid
+from . import scene_files
+from .grid import run_grid
+from .model import ModelTarget
+
+
+def load_scene(path: str | None = None) -> dict:
+    """The study scene at ``path`` (a file or a built-in name) or the embedded default, checked
+    (:func:`camdyn.runtime.targets.scene_files.check_study`)."""
+    data, where = scene_files.read("default" if path is None else path)
+    scene_files.expect_kind(data, where, scene_files.STUDY)
+    return scene_files.check_study(data, where)
+
+
+@dataclass(frozen=True)
+class StudyTarget(ModelTarget):
+    """CAMSHAFT-1 with a study scene's settings; ``scene`` the checked study table."""
+
+    scene: object = None
+
+    kind = "camshaft1-study"
+    scene_kind = "camshaft1-study"
+
+    scene_doc = "the CAMSHAFT-1 study of thesis ch. 4 (figs 4.10, 4.11): report and charts"
+
+    @staticmethod
+    def parse(data: dict, where: str):
+        """The scene file's tables, checked (runtime/targets/scene_files.py)."""
+        return scene_files.check_study(data, where)
+
+    @classmethod
+    def from_scene(cls, data: dict, label: str = ""):
+        resp, run = data["study"]["response"], data["run"]
+        adaptive = run["method"] in ("dp54", "rodas4")
+        t = cls.of("camshaft1", {"tau": resp["tau"], "Fa": max(resp["Fa"])},
+                   method=run["method"], rtol=run["rtol"] if adaptive else None,
+                   law=data["law"], theta=data.get("theta"), label=label or data["title"])
+        return cls(**{**t.__getstate__(), "scene": data})
+
+    @property
+    def name(self) -> str:
+        return self.label
+
+    @property
+    def title(self) -> str:
+        return self.scene["title"] if self.scene else self.label
+
+    def job(self, out_dir, estimate: bool = True, progress=None) -> dict:
+        """`camdyn run`: the study (module doc); returns report.json's record with the files
+        written and the text to print."""
+        record = self.study(out_dir, estimate, progress)
+        record["lines"] = [f"report: {out_dir / 'report.md'}"]
+        return record
+
+    def study(self, out_dir, estimate: bool = True, progress=None) -> dict:
+        """The study (module doc); returns report.json's record with the files written."""
+        import matplotlib
+
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+
+        say = progress or (lambda msg: None)
+        out_dir.mkdir(parents=True, exist_ok=True)
+        t_start = time.perf_counter()
+        scene = self.scene
+        resp, graphs = scene["study"]["response"], scene["study"]["graphs"]
+
+        # fig. 4.10: response curves
+        say(f"response curves at tau = {resp['tau']} for Fa = {resp['Fa']}")
+        fig, ax = plt.subplots(2, 1, figsize=(8, 7), sharex=True)
+        T = np.linspace(0.0, 3.0, 3001)
+        summary = {"scene": scene["title"], "law": scene["law"], "response": []}
+        warnings = []
+        for Fa in resp["Fa"]:
+            a = answer(self.with_parameters({"tau": resp["tau"], "Fa": Fa}), estimate=estimate)
+            r = a.result
+            s = r.sample(T)
+            row = {"Fa": Fa, **{k: a.figures[k] for k in ("U0", "U0dd", "Xdd_min_rise",
+                                                         "T_at_Xdd_min")}}
+            row.update({f"{k}_error": a.errors.get(k) for k in ("U0", "U0dd", "Xdd_min_rise",
+                                                               "T_at_Xdd_min")})
+            row.update(r.stats)
+            row["warnings"] = list(a.warnings)
+            warnings += [f"Fa = {Fa:g}: {w}" for w in a.warnings]
+            summary["response"].append(row)
+            ax[0].plot(T, s["Xdd"], label=f"Fa = {Fa:g}")
+            ax[1].plot(T, s["U"], label=f"Fa = {Fa:g}")
+        ax[0].plot(T, s["Hdd"], "k--", lw=0.8, label="nominal H''")
+        ax[0].set_ylabel("X''  (h_m'/t_m^2)")
+        ax[1].set_ylabel("U = X - H  (h_m')")
+        ax[1].set_xlabel("T = t/t_m")
+        ax[0].set_title(f"CAMSHAFT-1, {scene['law']} rise, tau = {resp['tau']:g} "
+                        "(cf. thesis fig. 4.10)")
+        for a_ in ax:
+            a_.grid(alpha=0.3)
+            a_.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(out_dir / "response.png", dpi=120)
+        plt.close(fig)
+
+        # fig. 4.11: graphs against tau, uniform in 1/tau so that every tuning dip of (3.5) is
+        # resolved alike (runtime/measure/envelope.py), in one compiled grid on every core
+        taus = tau_grid(graphs["tau_min"], graphs["tau_max"], graphs["n_tau"])
+        say(f"  graphs: {len(taus) * len(graphs['Fa'])} runs"
+            f"{', each with its error estimate' if estimate else ''}")
+        pts = np.array([[Fa, tau] for Fa in graphs["Fa"] for tau in taus])
+        grid = run_grid(self, ("Fa", "tau"), pts, estimate=estimate)
+        cols = grid.columns
+        keys = ("U0", "U0dd", "Xdd_min_rise", "T_at_Xdd_min")
+        rows = {Fa: [{k: float(cols[k][j * len(taus) + i]) for k in keys}
+                     | {f"{k}_error": _float(cols[f"{k}_error"][j * len(taus) + i]) for k in keys}
+                     for i in range(len(taus))] for j, Fa in enumerate(graphs["Fa"])}
+        if grid.warned:
+            warnings.append(f"{grid.warned} of {len(pts)} graph runs warned (envelopes.csv)")
+        fig, ax = plt.subplots(2, 2, figsize=(11, 8))
+        envelopes = {}
+        for k, (Fa, vals) in enumerate(rows.items()):
+            colour = f"C{k}"
+            U0 = [v["U0"] for v in vals]
+            U0dd = [v["U0dd"] for v in vals]
+            # the curves a designer reads (secs 3.5, 8.2.6): through the maxima, bold; the
+            # raw graph thin beneath them
+            envelopes[Fa] = {"U0": envelope(taus, U0), "U0dd": envelope(taus, U0dd)}
+            ax[0, 0].semilogy(taus, U0, color=colour, lw=0.6, alpha=0.6)
+            ax[0, 0].semilogy(taus, envelopes[Fa]["U0"](taus), color=colour, lw=1.8,
+                              label=f"Fa = {Fa:g}")
+            ax[0, 1].plot(taus, [-v["Xdd_min_rise"] for v in vals], color=colour,
+                          label=f"Fa = {Fa:g}")
+            ax[1, 0].plot(taus, [v["T_at_Xdd_min"] for v in vals], color=colour,
+                          label=f"Fa = {Fa:g}")
+            ax[1, 1].plot(taus, U0dd, color=colour, lw=0.6, alpha=0.6)
+            ax[1, 1].plot(taus, envelopes[Fa]["U0dd"](taus), color=colour, lw=1.8,
+                          label=f"Fa = {Fa:g}")
+        if scene["law"] == "cycloidal":
+            fine = np.linspace(graphs["tau_min"], min(graphs["tau_max"], 0.99), 600)
+            ax[0, 0].semilogy(fine, references.U0(fine), "k:", lw=0.8, label="(3.5)")
+        ax[0, 0].set_ylabel("U0 (bold: envelope through the maxima)")
+        ax[0, 1].set_ylabel("-X''min during rise")
+        ax[1, 0].set_ylabel("T at X''min")
+        ax[1, 1].set_ylabel("U0'' (bold: envelope through the maxima)")
+        for a_ in ax.ravel():
+            a_.set_xlabel("tau")
+            a_.grid(alpha=0.3, which="both")
+        ax[0, 0].legend(fontsize=7)
+        fig.suptitle(f"CAMSHAFT-1 response graphs, {scene['law']} rise "
+                     "(cf. thesis fig. 4.11a-c)")
+        fig.tight_layout()
+        fig.savefig(out_dir / "graphs.png", dpi=120)
+        plt.close(fig)
+
+        summary["graphs"] = {"tau": taus.tolist(), "rows": {str(Fa): v for Fa, v in rows.items()}}
+        # the envelopes as data: their maxima per Fa, and the curves on the graph's tau grid
+        summary["envelopes"] = {str(Fa): {k: {"tau_at_maxima": e.tau.tolist(),
+                                              "maxima": e.value.tolist()}
+                                          for k, e in env.items()}
+                                for Fa, env in envelopes.items()}
+        with open(out_dir / "envelopes.csv", "w") as fh:
+            fh.write("Fa,tau,U0,U0_error,U0_envelope,U0dd,U0dd_error,U0dd_envelope,warnings\n")
+            for j, (Fa, vals) in enumerate(rows.items()):
+                e = envelopes[Fa]
+                for i, (tau, v) in enumerate(zip(taus, vals)):
+                    w = cols["warnings"][j * len(taus) + i]
+                    fh.write(f"{Fa:g},{tau:.10g},{v['U0']:.10g},{_cell(v['U0_error'])},"
+                             f"{e['U0'](tau):.10g},{v['U0dd']:.10g},{_cell(v['U0dd_error'])},"
+                             f"{e['U0dd'](tau):.10g},\"{w}\"\n")
+        ratio, ratio_error = None, None
+        by_fa = {d["Fa"]: d for d in summary["response"]}
+        if 0.0 in by_fa and 2.0 in by_fa:
+            a2, a0 = by_fa[2.0], by_fa[0.0]
+            ratio = a2["U0"] / a0["U0"]
+            if a2["U0_error"] is not None and a0["U0_error"] is not None:
+                # a quotient's relative errors add
+                ratio_error = ratio * (a2["U0_error"] / a2["U0"] + a0["U0_error"] / a0["U0"])
+        summary["U0_ratio_Fa2_Fa0"] = ratio
+        summary["U0_ratio_Fa2_Fa0_error"] = ratio_error
+        summary["warnings"] = warnings
+        summary["elapsed_seconds"] = time.perf_counter() - t_start
+        (out_dir / "report.json").write_text(json.dumps(summary, indent=1, default=_json))
+        (out_dir / "report.md").write_text(self._markdown(summary))
+        say(f"done in {summary['elapsed_seconds']:.1f} s")
+        summary["files"] = [str(out_dir / f) for f in ("report.md", "report.json",
+                                                       "response.png", "graphs.png",
+                                                       "envelopes.csv")]
+        return summary
+
+    def _markdown(self, summary) -> str:
+        scene = self.scene
+        resp = scene["study"]["response"]
+        lines = [f"# {scene['title']}", "",
+                 f"Model CAMSHAFT-1 (thesis (4.15)-(4.18)), {scene['law']} rise, integrated with "
+                 f"{scene['run']['method']} at rtol {scene['run']['rtol']:g} "
+                 "over T in [0, 3].  Every figure is given with its error estimate: the run "
+                 "again one notch tighter (rtol/10, or half the step), plus what the scan "
+                 "that found it leaves.", "",
+                 f"## Response at tau = {resp['tau']:g} (cf. fig. 4.10)", "",
+                 "| Fa | U0 | U0'' | X''min in rise | at T | steps | ms |",
+                 "|---:|---:|---:|---:|---:|---:|---:|"]
+        for d in summary["response"]:
+            lines.append(f"| {d['Fa']:g} | {_pm(d['U0'], d['U0_error'])} | "
+                         f"{_pm(d['U0dd'], d['U0dd_error'])} | "
+                         f"{_pm(d['Xdd_min_rise'], d['Xdd_min_rise_error'])} | "
+                         f"{d['T_at_Xdd_min']:.3f} | {d['n_steps']} | {1e3 * d['seconds']:.2f} |")
+        if summary["U0_ratio_Fa2_Fa0"] is not None:
+            lines += ["", f"U0 at Fa = 2 over U0 at Fa = 0: **"
+                      f"{_pm(summary['U0_ratio_Fa2_Fa0'], summary['U0_ratio_Fa2_Fa0_error'], 3)}"
+                      "** (thesis sec. 4.7 (1): about 17.5 at tau = 0.15)."]
+        lines += ["", "## Warnings", ""]
+        lines += [f"- {w}" for w in summary["warnings"]] or ["None."]
+        lines += ["", "## Charts", "", "![response](response.png)", "", "![graphs](graphs.png)",
+                  "", f"Elapsed: {summary['elapsed_seconds']:.1f} s.", ""]
+        return "\n".join(lines)
+
+
+def _float(v):
+    v = float(v)
+    return None if math.isnan(v) else v
+
+
+def _cell(v) -> str:
+    return "" if v is None else f"{v:.3g}"
+
+
+def _pm(v, e, digits: int = 4) -> str:
+    return f"{v:.{digits}g}" + ("" if e is None else f" ± {e:.2g}")
+
+
+def _json(v):
+    if isinstance(v, (np.floating, np.integer)):
+        return v.item()
+    raise TypeError(f"not JSON: {v!r}")

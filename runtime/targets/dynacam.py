@@ -1,0 +1,339 @@
+"""Running a DYNACAM scene: consistent initial state, one compiled run, the thesis's figures.
+
+The run starts at rest relative to the nominal motion, in the dwell before the rise
+(T = run.T_start < 0): the cam turns at w_s, every other velocity is zero and the
+positions are the static equilibrium under the spring preload, the external force and
+friction, with every element in its initial mode.  This is what the consistent initial
+conditions (6.49)-(6.68) of the thesis give; here they are found numerically from the
+generated right-hand side (all accelerations and first-order rates zero), so they hold
+for any option set.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from ..engine import driver
+from ..core.errors import SimulationError
+from ..measure.extremes import extreme
+from .scene_files import Scene
+from ..core.methods import METHODS
+from ..core.simulator import Simulator
+
+# summary keys, in the order printed
+KEYS = ("variant", "tau", "Fa", "Fv", "Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_rise", "U0dd", "U0",
+        "jump", "speed_variation_max", "motor_speed_variation_max", "n_events", "cpu_seconds")
+
+
+def characteristics(opts, p: dict) -> dict:
+    """tau, Fa, Fv of the scene's parameters, as App. 7 forms them.
+
+    c_c = 1/(1/c_x + 1/c_z) (4.3); m = m_x + m_z (c_c/c_z)^2 (4.39), (5.50);
+    tan alpha_me = h_m/(R_1/2 beta_m) (4.13) with R_1/2 = R_b + h_m/2 for radial cams (4.1),
+    R_b for axial ones; the shaft's tangential stiffness at R_1/2, 1/c_tan = R_1/2^2/k + 1/c_y
+    (4.4); Fa = (c_c/c_tan) tan^2 alpha_me (4.14); m_tan = (J/R_1/2^2)(c_tan/c_beta)^2 +
+    m_y (c_tan/c_y)^2 (5.51); Fv = (m/m_tan) tan^2 alpha_me (5.52); tau = T_e/t_m with
+    T_e = 2 pi (m/c_c)^(1/2) and t_m = beta_m/w_s.
+    """
+    c_x, m_x = p["c_x"], p["m_x"]
+    if opts.shaft_z:
+        c_c = 1.0 / (1.0 / c_x + 1.0 / p["c_z"])
+        m = m_x + p["m_z"] * (c_c / p["c_z"]) ** 2
+    else:
+        c_c, m = c_x, m_x
+    R_half = p["R_b"] + p["h_m"] / 2 if opts.cam == "radial" else p["R_b"]
+    tan_me = p["h_m"] / (R_half * p["beta_m"])
+    c_beta = p["k"] / R_half**2
+    flex = 1.0 / c_beta + (1.0 / p["c_y"] if opts.shaft_y else 0.0)
+    c_tan = 1.0 / flex
+    m_tan = p["J"] / R_half**2 * (c_tan / c_beta) ** 2
+    if opts.shaft_y:
+        m_tan += p["m_y"] * (c_tan / p["c_y"]) ** 2
+    t_m = p["beta_m"] / p["omega_s"]
+    return {"tau": 2 * math.pi * math.sqrt(m / c_c) / t_m, "Fa": c_c / c_tan * tan_me**2,
+            "Fv": m / m_tan * tan_me**2, "t_m": t_m, "c_c": c_c, "m": m, "tan_alpha_me": tan_me,
+            "c_tan": c_tan, "m_tan": m_tan}
+
+
+def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
+    """State at t = 0 in steady dwell: accelerations and first-order rates zero.
+
+    Unknowns: every position but the input angle phi (it is the time reference), the
+    first-order states; velocities are the nominal ones (cam at the input speed).
+    """
+    names = model.state_names
+    n_q = model.manifest["n_q"]
+    y = model.initial_state(p)
+    w_s = p[model.parameter_names.index("omega_s")]
+    # phi turns with the input; so does the squeeze-film gear wheel phir, which in steady dwell
+    # sits on its flank (a film carries load only while it closes): phir = phi, as declared
+    free = [k for k, s in enumerate(names) if k < n_q or (k >= 2 * n_q and s not in ("phi", "phir"))]
+    scale = model.state_scales()[free]
+    modes = np.array(sim.modes0, dtype=np.intc)
+    # sticking linkage friction leaves x undetermined: solve without it (the frictionless
+    # equilibrium has zero force to hold, so sticking is consistent there)
+    specs = model.manifest.get("modes", [])
+    for j, spec in enumerate(specs):
+        if spec["name"] == "linkfric":
+            p = p.copy()
+            p[model.parameter_names.index("nu_x")] = 0.0
+            modes[j] = spec["values"].index("forward")
+    t0 = np.zeros(1)
+    i_dw = names.index("dw") if "dw" in names else None
+    i_beta = names.index("beta")
+
+    def state(u):
+        yy = y.copy()
+        yy[free] = u * scale
+        yy[n_q + i_beta] = w_s + (yy[i_dw] if i_dw is not None else 0.0)
+        return yy
+
+    def resid(u):
+        f = driver.eval_rhs(model.capsule, p, sim.law_codes, sim.law_pars, t0, state(u)[None, :],
+                                element_modes=modes)[0]
+        r = np.concatenate([f[n_q:2 * n_q], [f[k] for k in free if k >= 2 * n_q]])
+        return r
+
+    r0 = np.abs(resid(y[free] / scale)) + 1.0
+    sol = least_squares(lambda u: resid(u) / r0, y[free] / scale, xtol=1e-15, ftol=1e-15,
+                        gtol=1e-15, max_nfev=2000)
+    out = state(sol.x)
+    if not np.all(np.isfinite(out)):
+        raise SimulationError("no consistent initial state found (non-finite equilibrium)")
+    return out
+
+
+def variant_model(scene: Scene, progress=None):
+    """The compiled variant the scene's options select (:func:`variants.options_model`)."""
+    from ..core.variants import options_model
+
+    return options_model(scene.options, progress)
+
+
+@dataclass
+class Prepared:
+    """A scene ready to run: its compiled variant, parameter values (beta_0 placed from
+    run.T_start), characteristic numbers (4.3)-(5.52), the Simulator from the consistent
+    initial state, and the time of the rise t_m."""
+
+    model: object
+    params: dict
+    characteristics: dict
+    simulator: Simulator
+    y0: np.ndarray
+    t_m: float
+    t_end: float
+
+
+def prepare(scene: Scene, method=None, progress=None) -> Prepared:
+    """The scene's run made ready: ``method`` by default the scene's (DP54 unless it says
+    rodas4) at its rtol with no step limit (a step-limited one serves as a reference)."""
+    model = variant_model(scene, progress)
+    params = dict(scene.parameters)
+    params["beta_0"] = -scene.T_start * params["beta_m"]
+    ch = characteristics(scene.options, params)
+    t_m = ch["t_m"]
+    t_end = (scene.T_end - scene.T_start) * t_m
+    if method is None:
+        method = METHODS[scene.method](rtol=scene.rtol)
+    law = scene.cam_law()
+    sim = Simulator(model, t_end, method, law=law, modes=scene.modes, max_steps=2_000_000)
+    p = model.parameter_vector(params)
+    y0 = equilibrium(model, p, sim)
+    sim = Simulator(model, t_end, method, law=law, modes=scene.modes, max_steps=2_000_000, y0=y0)
+    return Prepared(model, params, ch, sim, y0, t_m, t_end)
+
+
+@dataclass
+class SceneRun:
+    """One run of a scene: the summary (what `camdyn simulate` shows), the sampling error of
+    each figure found by a scan, and the run itself."""
+
+    summary: dict
+    sampling: dict
+    result: object
+
+
+def run_scene(scene: Scene, progress=None, method=None, prepared: Prepared | None = None) -> SceneRun:
+    """Run a scene (see :func:`prepare`)."""
+    pr = prepare(scene, method, progress) if prepared is None else prepared
+    if progress:
+        progress(f"{scene.title}: {scene.variant}, T from {scene.T_start:g} to {scene.T_end:g}")
+    start = time.process_time()
+    res = pr.simulator.run(pr.params)
+    cpu = time.process_time() - start
+    summary, sampling = summarize(scene, pr.model, res, pr.characteristics, cpu)
+    summary["method"] = pr.simulator.method.name
+    return SceneRun(summary, sampling, res)
+
+
+def run(scene: Scene, progress=None, method=None) -> tuple[dict, object]:
+    """Run a scene; returns (summary, result) (see :func:`run_scene`)."""
+    r = run_scene(scene, progress, method)
+    return r.summary, r.result
+
+
+FIGURES = ("Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_rise", "U0dd", "U0", "speed_variation_max",
+           "motor_speed_variation_max", "Xdd_absmax_return", "U0dd_return", "U0_return")
+"""The headline figures of a scene's summary that get an error estimate (the last three only
+with a full turn)."""
+
+
+def errors(scene: Scene, summary: dict) -> dict:
+    """``<figure>_error`` for the headline figures of ``summary`` (and ``jump_T_error``): the
+    scene run again one notch tighter (rtol/10, runtime/core/methods.py)."""
+    method = METHODS[scene.method](rtol=scene.rtol).tighter()
+    tight = None if method is None else run(scene, method=method)[0]
+    out = {}
+    for key in FIGURES:
+        v = summary.get(key)
+        if v is None:
+            continue
+        w = None if tight is None else tight.get(key)
+        out[f"{key}_error"] = None if w is None else abs(v - w)
+    jump = summary["jump"]
+    if jump["occurs"]:
+        T_t = None if tight is None else tight["jump"]["T"]
+        out["jump_T_error"] = None if T_t is None else abs(jump["T"] - T_t)
+    return out
+
+
+def nominal_T(scene: Scene, res) -> np.ndarray:
+    """Dimensionless time of the nominal motion, T = w_s t/beta_m + T_start."""
+    t_m = res.params["beta_m"] / res.params["omega_s"]
+    return res.t / t_m + scene.T_start
+
+
+def sample_at(scene: Scene, res, T: float, name: str = "Xdd") -> float:
+    """Output ``name`` at the nominal time T, through the dense output."""
+    t_m = res.params["beta_m"] / res.params["omega_s"]
+    return float(res.sample(np.array([(T - scene.T_start) * t_m]))[name][0])
+
+
+def mode_changes(scene: Scene, res, mode: str) -> list:
+    """(T, new value) at every switch of a force element's mode, in order."""
+    T = nominal_T(scene, res)
+    values = res.element_mode(mode)
+    return [(float(T[i + 1]), values[i + 1]) for i in np.flatnonzero(values[1:] != values[:-1])]
+
+
+def headline(scene: Scene, res, t_m: float) -> tuple[dict, dict]:
+    """The scene's headline figures of a run (a camdyn Result or another integrator's run that
+    offers ``sample``) and the sampling error of each: the extremes of X'' in the rise (nominal
+    0 < T < 1), U0'' and U0 in the dwell after it (to the run's end, or to the return of a
+    full turn), the largest speed variations over the run, and with a [turn] the return's
+    largest |X''| and U0, U0'' in the lower dwell after it.  Every extreme is refined on the
+    dense output, not read at the recorded steps."""
+    figures, sampling = {}, {}
+
+    def ext(key, name, a, b, absolute, minimum, time_key=None):
+        e = extreme(res, name, a, b, absolute=absolute, minimum=minimum)
+        figures[key] = e.value
+        sampling[key] = e.sampling_error
+        if time_key:
+            figures[time_key] = e.at / t_m + scene.T_start
+        return e
+
+    t0, t_end = float(res.t[0]), float(res.t[-1])
+    rise0, rise1 = -scene.T_start * t_m, (1 - scene.T_start) * t_m
+    ext("Xdd_min_rise", "Xdd", rise0, rise1, False, True, "T_at_Xdd_min")
+    ext("Xdd_max_rise", "Xdd", rise0, rise1, False, False)
+    turn = scene.cam_law() if scene.turn is not None else None
+    # with a full turn the dwell after the rise ends where the return starts
+    dwell_end = t_end if turn is None else min(t_end, (1 + turn.up - scene.T_start) * t_m)
+    figures["U0dd"] = figures["U0"] = None
+    if dwell_end > rise1:
+        ext("U0dd", "Xdd", rise1, dwell_end, True, False)
+        ext("U0", "U", rise1, dwell_end, True, False)
+    if turn is not None:
+        ret0 = (1 + turn.up - scene.T_start) * t_m
+        ret1 = (1 + turn.up + turn.r - scene.T_start) * t_m
+        low1 = min(t_end, (turn.period - scene.T_start) * t_m)
+        figures.update(Xdd_absmax_return=None, U0_return=None, U0dd_return=None)
+        if t_end > ret0:
+            ext("Xdd_absmax_return", "Xdd", ret0, min(ret1, t_end), True, False)
+        if low1 > ret1:
+            ext("U0_return", "U", ret1, low1, True, False)
+            ext("U0dd_return", "Xdd", ret1, low1, True, False)
+    ext("speed_variation_max", "speed_var", t0, t_end, True, False)
+    figures["motor_speed_variation_max"] = None
+    if "motor_speed_var" in res.model.output_names:
+        ext("motor_speed_variation_max", "motor_speed_var", t0, t_end, True, False)
+    return figures, sampling
+
+
+def dwell_spans(scene: Scene, t_m: float, t_end: float) -> dict:
+    """Output -> (start, end) of each dwell a figure is read from, in the run's time: the
+    dwell after the rise (to the run's end, or to a full turn's return) and a full turn's
+    lower dwell after the return (to the next rise or the run's end)."""
+    rise1 = (1 - scene.T_start) * t_m
+    if scene.turn is None:
+        return {"U0": (rise1, t_end), "U0dd": (rise1, t_end)}
+    turn = scene.cam_law()
+    up = min(t_end, (1 + turn.up - scene.T_start) * t_m)
+    ret1 = (1 + turn.up + turn.r - scene.T_start) * t_m
+    low1 = min(t_end, (turn.period - scene.T_start) * t_m)
+    return {"U0": (rise1, up), "U0dd": (rise1, up), "U0_return": (ret1, low1),
+            "U0dd_return": (ret1, low1)}
+
+
+def summarize(scene: Scene, model, res, ch: dict, cpu: float) -> tuple[dict, dict]:
+    """(summary, sampling errors) of a run: the headline figures in the order `camdyn
+    simulate` prints them, the jump of a follower that leaves the cam, and the run's record."""
+    T = nominal_T(scene, res)
+    t_m = res.params["beta_m"] / res.params["omega_s"]
+    figures, sampling = headline(scene, res, t_m)
+    out = {"title": scene.title, "variant": scene.variant, "tau": ch["tau"], "Fa": ch["Fa"],
+           "Fv": ch["Fv"]}
+    for key in ("Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_rise", "U0dd", "U0"):
+        out[key] = figures[key]
+    if scene.turn is not None:
+        turn = scene.cam_law()
+        out["turn"] = {"angles_deg": list(turn.angles_deg), "return_law": turn.ret.key,
+                       "period_T": turn.period}
+        for key in ("Xdd_absmax_return", "U0_return", "U0dd_return"):
+            out[key] = figures[key]
+    jump = {"occurs": False, "T": None}
+    if scene.options.roller == "contact":
+        free = res.element_mode("roller") == "free"
+        if free.any():
+            jump = {"occurs": True, "T": float(T[np.flatnonzero(free)[0]])}
+    out["jump"] = jump
+    out["speed_variation_max"] = figures["speed_variation_max"]
+    out["motor_speed_variation_max"] = figures["motor_speed_variation_max"]
+    out["n_events"] = int(res.stats["n_events"])
+    out["n_steps"] = int(res.stats["n_steps"])
+    # DP54's stiffness test (Hairer): where it fired, as the nominal T; fixed-step warnings
+    out["stiff_from_T"] = (None if res.stiff_from_T is None
+                           else res.stiff_from_T / t_m + scene.T_start)
+    out["warnings"] = list(res.warnings)
+    out["cpu_seconds"] = cpu
+    out["characteristics"] = {k: ch[k] for k in ("t_m", "c_c", "m", "tan_alpha_me", "c_tan", "m_tan")}
+    return out, sampling
+
+
+def reduced_models(scene: Scene, summary: dict) -> dict:
+    """Residual acceleration amplitude U0dd of the scene's run beside that of the reduced
+    models with the same characteristic numbers (thesis sec. 8.2.4, 8.2.5, fig. 8.3 curves
+    (4), (5), (6)): CAMSHAFT-2 at (tau, Fa, Fv) (5.15), (5.16) and CAMSHAFT-1 at (tau, Fa)
+    (4.15), each over the same dwell, 1 < T < T_end.
+
+    The comparison is the thesis's only when the scene is undamped, without follower spring
+    and with the roller held on the cam, as fig. 8.3's curves (4)-(6) are.
+    """
+    from ..measure.residual import residual
+    from ..core.simulator import simulate
+
+    tau, Fa, Fv = summary["tau"], summary["Fa"], summary["Fv"]
+    out = {"4dof": summary["U0dd"]}
+    for key, model, params in (("2dof", "camshaft2", {"tau": tau, "Fa": Fa, "Fv": Fv}),
+                               ("1dof", "camshaft1", {"tau": tau, "Fa": Fa})):
+        res = simulate(model, params, scene.T_end, "dp54", rtol=1e-10)
+        out[key] = residual(res).U0dd
+    return out
+
+

@@ -1,0 +1,493 @@
+"""A model as a target: a built-in generated model or a user's model file, one run of it.
+
+:class:`ModelTarget` reads the residual-vibration figures the model's manifest declares (U0
+(3.5), U0'' (3.6), the largest deceleration in the rise and its T, fig. 4.11) and, where the
+model has the outputs, the cam's largest speed deviation and the shaft's largest wind-up
+over the run (sec. 5.5.5, fig. 5.6).  :class:`StateTarget` reads the state at the run's end
+(any model, `camdyn integrate`).  A grid of parameter sets of a model with an adaptive method
+runs in compiled chunks that hold no GIL (runtime/engine/finder.pyx).
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, replace
+from functools import cached_property
+from pathlib import Path
+
+import numpy as np
+
+from ..core import methods as _methods
+from ..core.errors import CamdynInputError, SimulationError
+from ..core.models import available, load
+from ..core.simulator import Simulator
+from ..engine import finder, driver
+from ..measure import references
+from ..measure.extremes import extreme
+from ..measure.modes import slowest_periods
+from ..measure.residual import FIGURES as RESIDUAL_FIGURES, residual
+from .base import Batch, Figure, Outcome, Parameter, Target, Window
+
+DEFAULT_T_END = 3.0
+"""End of a run of a model with a rise, in its time unit: the rise and two rise times of dwell
+(T = t/t_m for the thesis's models); longer where a figure's window needs it."""
+
+RUN_EXTREMES = (
+    Figure("Bdot_dev_max", "the cam's largest speed deviation max |B' - 1| over the run "
+           "(sec. 5.5.5, fig. 5.6)", output="Bdot_dev", dwell=True),
+    Figure("windup_max", "the shaft's largest wind-up max (T - B) over the run (sec. 5.5.5, "
+           "fig. 5.6)", output="windup", dwell=True),
+)
+"""Figures over the whole run, for a model that has their output (CAMSHAFT-2)."""
+
+SAMPLES = 20.0
+CANDIDATES = 4
+"""A grid's compiled scan takes about SAMPLES x rtol^(1/5) samples a recorded step (every
+stride-th recorded point, or several a step at loose tolerances; :func:`scan_density`) and
+refines its CANDIDATES best peaks on the dense output, then checks the others
+(runtime/engine/finder.pyx)."""
+
+
+def scan_density(method) -> tuple[int, int]:
+    """(per_step, stride) of a grid's compiled scan.  An adaptive method's steps per period of
+    the fastest mode that carries amplitude grow as rtol^(-1/5) (DP54's error per step goes
+    as h^5): CAMSHAFT-1 at rtol 1e-9 takes 87 a period at tau = 0.06 (fig. 4.11's fastest),
+    1.4 rtol^(-1/5).  The scan keeps about SAMPLES per rtol^(-1/5) steps, i.e. 25 or more a
+    period: every 3rd recorded point at rtol 1e-9, every point at 1e-8, 2 a step at 1e-6."""
+    k = method.rtol ** -0.2
+    if k >= SAMPLES:
+        return 1, int(k // SAMPLES)
+    return math.ceil(SAMPLES / k), 1
+
+
+def model_ref(name: str) -> str:
+    """A built-in model's name (one-dof and one_dof both work) or a model file's absolute path
+    (a Dask worker may run elsewhere); a CamdynInputError for anything else."""
+    if name.endswith(".py") or Path(name).is_file():
+        path = Path(name)
+        if not path.is_file():
+            raise CamdynInputError(f"{name}: no such model file")
+        return str(path.resolve())
+    if name.replace("-", "_") in available():
+        return name.replace("-", "_")
+    raise CamdynInputError(f"MODEL {name!r} is neither a model file (.py) nor a built-in model; "
+                           f"built-in models: {', '.join(available())}")
+
+
+def load_ref(ref: str, progress=None):
+    """The compiled model of a reference made by :func:`model_ref` (a model file is built on
+    first use, runtime/core/ondemand.py)."""
+    if ref.endswith(".py"):
+        from ..core import ondemand
+
+        return ondemand.model_file(ref, progress)
+    return load(ref)
+
+
+def parameters_of(model) -> dict:
+    """The model's parameters as its manifest declares them."""
+    out = {}
+    for spec in model.manifest["parameters"]:
+        out[spec["name"]] = Parameter(spec["name"], spec.get("unit", ""), spec.get("doc", ""),
+                                      -math.inf if spec["low"] is None else spec["low"],
+                                      math.inf if spec["high"] is None else spec["high"],
+                                      spec["open_low"], spec["open_high"])
+    return out
+
+
+def _hashable_law(law):
+    return tuple(sorted(law.items())) if isinstance(law, dict) else law
+
+
+@dataclass(frozen=True)
+class ModelTarget(Target):
+    """One run of a model from its declared start (or ``initial`` values) to ``t_end``.
+
+    ref         a built-in model's name or a model file's absolute path (:func:`model_ref`)
+    params      (name, value) pairs given; the others take the manifest's defaults
+    method_name dp54, rodas4 (rtol), rk4, koster (step)
+    t_end       the run's end in the model's time; None: DEFAULT_T_END, or longer where a
+                figure's window needs it (``end_given`` says the user chose it)
+    law, theta  the cam law of the inputs (a name, a composed full turn, or {family: name})
+    """
+
+    ref: str
+    params: tuple = ()
+    method_name: str = "dp54"
+    rtol: float | None = None
+    step: float | None = None
+    t_end: float | None = None
+    end_given: bool = False
+    law: object = "cycloidal"
+    theta: float | None = None
+    initial: tuple = ()
+    label: str = ""
+
+    kind = "model"
+    chunk = 32
+    """Grid points per compiled call: small enough for a live progress bar and even shares."""
+
+    @classmethod
+    def of(cls, name: str, params: dict | None = None, *, method: str = "dp54", rtol=None,
+           step=None, t_end=None, law="cycloidal", theta=None, initial: dict | None = None,
+           label: str = "", progress=None):
+        """The target of a model named on the command line or in code, checked: parameters
+        in range, the method's options, the cam law, the initial values."""
+        t = cls(model_ref(str(name)), (), method, rtol, step,
+                None if t_end is None else float(t_end), t_end is not None,
+                _hashable_law(law), theta, tuple(sorted((initial or {}).items())), label)
+        t.load(progress)
+        t = t.with_parameters(params or {})
+        t.method()
+        t.simulator          # the law, the initial values and the span checked now
+        return t
+
+    # -- description ---------------------------------------------------------------------
+
+    def load(self, progress=None):
+        return load_ref(self.ref, progress)
+
+    @cached_property
+    def model(self):
+        return self.load()
+
+    @property
+    def name(self) -> str:
+        return self.model.name
+
+    @property
+    def title(self) -> str:
+        return self.label or self.model.manifest.get("title", self.model.name)
+
+    @property
+    def values(self) -> dict:
+        return dict(self.params)
+
+    def parameters(self) -> dict:
+        return parameters_of(self.model)
+
+    @cached_property
+    def spec(self) -> dict:
+        """The manifest's residual-vibration declaration: error and acceleration outputs, the
+        end of the rise."""
+        spec = self.model.manifest.get("residual")
+        if not spec:
+            raise CamdynInputError(f"model {self.model.name} declares no residual-vibration "
+                                   "outputs; use one that does (camshaft1, camshaft2, one_dof, "
+                                   "...), or camdyn integrate for the state at t_end")
+        return spec
+
+    def figures(self) -> tuple:
+        spec = self.spec
+        out = (Figure("U0", "amplitude of the positional error after the rise (3.5)",
+                      output=spec["error"], dwell=True),
+               Figure("U0dd", "amplitude of the residual acceleration after the rise (3.6)",
+                      output=spec["acceleration"], dwell=True),
+               Figure("Xdd_min_rise", "largest deceleration in the rise (fig. 4.11b)"),
+               Figure("T_at_Xdd_min", "where it is (fig. 4.11c)", place=True))
+        return out + tuple(f for f in RUN_EXTREMES if f.output in self.model.output_names)
+
+    @property
+    def end(self) -> float:
+        return DEFAULT_T_END if self.t_end is None else self.t_end
+
+    # -- variations --------------------------------------------------------------------------
+
+    def with_parameters(self, values: dict):
+        if not values:
+            return self
+        self.model.parameter_vector(values)           # names and ranges, named in the message
+        merged = {**dict(self.params), **{k: float(v) for k, v in values.items()}}
+        return replace(self, params=tuple(sorted(merged.items())))
+
+    def with_settings(self, **changes):
+        if "t_end" in changes and "end_given" not in changes:
+            changes["end_given"] = changes["t_end"] is not None
+        end = changes.get("t_end")
+        if end is not None:
+            if not (isinstance(end, (int, float)) and math.isfinite(end) and end > 0):
+                raise CamdynInputError(f"t_end={end!r} must be a finite number > 0")
+            rise_end = (self.model.manifest.get("residual") or {}).get("rise_end")
+            if rise_end is not None and type(self) is not StateTarget and not end > rise_end:
+                raise CamdynInputError(f"t_end={end:g} must exceed the end of the rise, "
+                                       f"{rise_end:g}")
+        if "method" in changes:
+            changes["method_name"] = changes.pop("method")
+        if "law" in changes:
+            changes["law"] = _hashable_law(changes["law"])
+        return replace(self, **changes)
+
+    def method(self):
+        rtol = self.rtol
+        if self.rtol is None and self.step is None and _methods.METHODS[self.method_name].adaptive:
+            rtol = 1e-8
+        return _methods.make(self.method_name, rtol=rtol, step=self.step)
+
+    def tighter(self):
+        m = self.method().tighter()
+        if m is None:
+            return None
+        return replace(self, rtol=m.rtol if m.adaptive else None,
+                       step=None if m.adaptive else m.step)
+
+    def default_step(self) -> float:
+        """A fixed step of 1/100 of the shortest period of the dwell's modes: the thesis's
+        fine step 0.01 tau for the one-DOF model and CAMSHAFT-1 (sec. 4.4.2), 0.01 min(tau,
+        tau_b) for CAMSHAFT-2, whose flywheel period is tau_b = tau (Fa/Fv)^(1/2) (5.19)."""
+        sim = Simulator(self.model, self.end, "dp54", law=self._law, theta=self.theta,
+                        y0=self._y0)
+        p = self.model.parameter_vector(self.values)
+        J = driver.eval_jacobian_fd(self.model.capsule, p, sim.law_codes, sim.law_pars,
+                                        np.zeros(1), sim.initial_state(p)[None, :],
+                                        np.ascontiguousarray(self.model.state_scales()))[0]
+        lam = np.linalg.eigvals(J)
+        osc = lam.imag[lam.imag > 1e-9 * np.abs(lam)]
+        if not osc.size:
+            raise CamdynInputError(f"argument --step: required for {self.name} (it has no "
+                                   "oscillation whose period would set one)")
+        return 0.01 * 2 * math.pi / osc.max()
+
+    # -- the run -----------------------------------------------------------------------------
+
+    @property
+    def _law(self):
+        return dict(self.law) if isinstance(self.law, tuple) else self.law
+
+    @cached_property
+    def _y0(self):
+        if not self.initial:
+            return None
+        m = self.model
+        y0 = m.initial_state(m.parameter_vector(self.values))
+        for name, value in self.initial:
+            if name not in m.state_names:
+                raise CamdynInputError(f"argument --initial: {m.name} has no state {name}; its "
+                                       f"states are {', '.join(m.state_names)}")
+            y0[m.state_names.index(name)] = value
+        return y0
+
+    @cached_property
+    def simulator(self) -> Simulator:
+        if not isinstance(self._law, str) and not self.model.manifest.get("cam_instances"):
+            # a full turn drives the cam inputs; without one it would be dropped unread
+            raise CamdynInputError(f"argument --turn: {self.model.name} has no cam input to drive")
+        return Simulator(self.model, self.end, self.method(), law=self._law, theta=self.theta,
+                         y0=self._y0)
+
+    def window(self) -> Window | None:
+        sim = self.simulator
+        p = self.model.parameter_vector(self.values)
+        return self._window(p[None, :], sim.initial_state(p)[None, :])[0]
+
+    def _window(self, P, Y0):
+        """(Window of the worst point, index of that point) over parameter sets P."""
+        spec = self.spec
+        sim = self.simulator
+        dwell = [f for f in self.figures() if f.dwell]
+        periods = slowest_periods(self.model, P, sim.law_codes, sim.law_pars, sim.t0, Y0,
+                                  [f.output for f in dwell],
+                                  np.array(sim.modes0, dtype=np.intc) if sim.modes0 else None)
+        worst = int(np.argmax(periods.max(axis=1))) if len(P) else 0
+        rise_end = float(spec["rise_end"])
+        unit = self.model.manifest["time"]["unit"]
+        w = Window(available=self.end - rise_end,
+                   needed={f.name: float(periods[worst, k]) for k, f in enumerate(dwell)},
+                   setting="t_end", end=self.end, end_for=lambda need: rise_end + need,
+                   given=self.end_given, unit="" if unit == "t_m" else unit)
+        return w, worst
+
+    def extended(self, needed: float):
+        return replace(self, t_end=max(DEFAULT_T_END, float(self.spec["rise_end"]) + needed),
+                       end_given=False)
+
+    def run(self, progress=None) -> Outcome:
+        c0 = time.process_time()
+        res = self.simulator.run(self.values)
+        out = self.read(res)
+        # integration and figures
+        out.stats["cpu_seconds"] = out.record["cpu_seconds"] = time.process_time() - c0
+        return out
+
+    def read(self, res) -> Outcome:
+        """The figures of a finished run (a camdyn Result, or a SciPy peer's run)."""
+        fig = residual(res)
+        figures = fig.as_dict()
+        sampling = dict(fig.sampling)
+        t0, t1 = float(res.t[0]), float(res.t[-1])
+        for f in self.figures()[4:]:
+            e = extreme(res, f.output, t0, t1, absolute=f.name == "Bdot_dev_max",
+                        minimum=False)
+            figures[f.name] = e.value
+            sampling[f.name] = e.sampling_error
+        stats = {k: int(v) for k, v in res.stats.items() if k != "seconds"} \
+            if hasattr(res, "stats") else {}
+        stats["stiff_from_T"] = getattr(res, "stiff_from_T", None)
+        record = {"model": self.model.name, **res.params, "law": self._law_name,
+                  "method": self.method_name, "t_end": self.end}
+        if self.theta is not None or self._law_name == "modified-sine":
+            laws = getattr(res, "laws", None)
+            if laws is not None:
+                record["theta"] = next(iter(laws.values())).par
+        record.update(rtol=self.rtol, step=self.step, **figures)
+        record.update({k: stats[k] for k in ("n_steps", "n_rejected", "n_rhs") if k in stats})
+        record["stiff_from_T"] = stats["stiff_from_T"]
+        return Outcome(figures, sampling, {}, list(getattr(res, "warnings", [])), record, stats,
+                       res)
+
+    @property
+    def _law_name(self):
+        law = self._law
+        return law if isinstance(law, str) else getattr(law, "key", str(law))
+
+    def references(self) -> dict:
+        """Closed forms to print beside the run, where the thesis has them (3.5), (3.6)."""
+        return references.beside(self.model.name, self._law_name,
+                                 dict(zip(self.model.parameter_names,
+                                          self.model.parameter_vector(self.values))))
+
+    # -- a grid ------------------------------------------------------------------------------
+
+    def fit_points(self, names: tuple, points: np.ndarray):
+        """Check a grid (names, ranges, the window every point needs) before any run: the
+        target itself, or extended to the longest dwell a point needs, or a refusal naming
+        the point."""
+        self.check_points(names, points)
+        P = self._grid_parameters(names, points)
+        sim = self.simulator
+        Y0 = sim.batch_inputs(P).Y0
+        w, worst = self._window(P, Y0)
+        short = w.short()
+        if not short:
+            return self
+        need = max(short.values())
+        if not w.given:
+            return self.extended(max(w.needed.values()))
+        at = ", ".join(f"{k} = {v:g}" for k, v in zip(names, points[worst]))
+        fig = max(short, key=short.get)
+        unit = f" {w.unit}" if w.unit else ""
+        raise CamdynInputError(
+            f"t_end={w.end:g} leaves {w.available:.4g}{unit} of dwell after the rise, less than "
+            f"one period of the slowest mode {fig} sees there at {at} ({need:.4g}{unit}): {fig} "
+            f"would come out too small; give t_end >= {w.end_for(need):.4g}")
+
+    def _grid_parameters(self, names, points) -> np.ndarray:
+        n = len(points)
+        P = np.tile(self.model.parameter_vector(self.values), (n, 1))
+        cols = [self.model.parameter_names.index(k) for k in names]
+        P[:, cols] = points
+        return np.ascontiguousarray(P)
+
+    def run_points(self, names: tuple, points: np.ndarray) -> Batch:
+        sim = self.simulator
+        if not sim.method.adaptive or len(self.figures()) > len(RESIDUAL_FIGURES) \
+                or self.spec.get("rise_state") and \
+                self.spec["rise_state"] not in self.model.state_names:
+            return self._points_one_by_one(names, points)
+        return self._points_compiled(names, points)
+
+    def _points_one_by_one(self, names, points) -> Batch:
+        """Fixed-step methods (their stability check lives in Simulator.run) and models with
+        figures the compiled chunk does not find: one run at a time, one Simulator."""
+        figs = self.figure_names()
+        out = np.full((len(points), len(figs)), np.nan)
+        samp = np.zeros_like(out)
+        warnings, steps = [], np.empty(len(points))
+        for j, pt in enumerate(points):
+            o = self.read(self.simulator.run({**self.values, **dict(zip(names, map(float, pt)))}))
+            out[j] = [o.figures[f] for f in figs]
+            samp[j] = [o.sampling.get(f, 0.0) for f in figs]
+            warnings.append(list(o.warnings))
+            steps[j] = o.stats["n_steps"]
+        return Batch(out, samp, warnings, steps)
+
+    def _points_compiled(self, names, points) -> Batch:
+        model, sim, spec = self.model, self.simulator, self.spec
+        b = sim.batch_inputs(self._grid_parameters(names, points))
+        n, ns = len(points), len(model.state_names)
+        index = {k: i for i, k in enumerate(model.state_names)}
+        index.update({k: ns + i for i, k in enumerate(model.output_names)})
+        i_rise = index[spec["rise_state"]] if spec.get("rise_state") else -1
+        per_step, stride = scan_density(sim.method)
+        figures = np.empty((n, len(finder.FIGURE_COLUMNS)))
+        stats = np.empty((n, len(finder.STAT_COLUMNS)), dtype=np.int64)
+        secs = np.empty(n)
+        finder.sweep_residual(
+            model.capsule, b.method, b.law_codes, b.law_pars, b.P, b.Y0, b.stops, b.n_stops,
+            b.t0, b.first_step, b.h_max, b.rtol, b.atol, b.max_steps, b.modes0, b.max_events,
+            index[spec["error"]], index[spec["acceleration"]], float(spec["rise_end"]), i_rise,
+            per_step, CANDIDATES, figures, stats, secs, 0, n, 4096, stride)
+        bad = np.flatnonzero(stats[:, 0] != 0)
+        if bad.size:
+            j = int(bad[0])
+            at = ", ".join(f"{k} = {v:g}" for k, v in zip(names, points[j]))
+            if stats[j, 0] == -1:
+                raise CamdynInputError(f"{model.name} at {at}: the run must cover the rise and "
+                                       f"part of the dwell after it (t_end = {sim.t_end:g})")
+            raise SimulationError(f"{model.name} with {sim.method.name} at {at}: "
+                                  f"{driver.STATUS_TEXT[int(stats[j, 0])]}")
+        col = {c: k for k, c in enumerate(finder.FIGURE_COLUMNS)}
+        samp = np.zeros((n, 4))
+        for k, f in enumerate(("U0", "U0dd", "Xdd_min_rise")):
+            samp[:, k] = figures[:, col[f + "_sampling"]]
+        return Batch(figures[:, :4].copy(), samp, [[] for _ in range(n)],
+                     stats[:, 1].astype(float))
+
+    # -- other studies -------------------------------------------------------------------
+
+    def problem(self):
+        """The run as a work-precision study takes it (runtime/studies/precision.py)."""
+        from .problem import Problem
+
+        return Problem(label=self.title, model=self.model, params=self.values, t_end=self.end,
+                       law=self._law, theta=self.theta, y0=self.simulator.initial_state(
+                           self.model.parameter_vector(self.values)),
+                       read=lambda run: _only(self.read(run).figures, self.scored()),
+                       kind=self.kind)
+
+
+@dataclass(frozen=True)
+class StateTarget(ModelTarget):
+    """Any model run to ``t_end``: its figures are the states at the end of the run (`camdyn
+    integrate`); t_end is required, there being no rise to set it."""
+
+    kind = "model-state"
+
+    def figures(self) -> tuple:
+        m = self.model
+        units = {s["name"]: s.get("unit", "") for s in m.manifest["states"]}
+        return tuple(Figure(n, f"state {n} at t_end", units.get(n, "")) for n in m.state_names)
+
+    def window(self):
+        return None
+
+    @property
+    def end(self) -> float:
+        if self.t_end is None:
+            raise CamdynInputError(f"argument --t-end: required for {self.name} (it declares no "
+                                   "rise whose dwell would set the run's length)")
+        return self.t_end
+
+    def read(self, res) -> Outcome:
+        final = res.sample([res.t[-1]])
+        figures = {n: float(final[n][0]) for n in self.model.state_names}
+        stats = {k: int(v) for k, v in res.stats.items() if k != "seconds"}
+        stats["stiff_from_T"] = res.stiff_from_T
+        record = {"model": self.model.name, "method": self.method_name, "t_end": self.end,
+                  "time_unit": self.model.manifest["time"]["unit"], "state": figures,
+                  "n_steps": stats["n_steps"], "n_rhs": stats["n_rhs"]}
+        return Outcome(figures, {}, {}, list(res.warnings), record, stats, res)
+
+    def run_points(self, names, points) -> Batch:
+        return self._points_one_by_one(names, points)
+
+    def problem(self):
+        from .problem import Problem
+
+        return Problem(label=self.title, model=self.model, params=self.values, t_end=self.end,
+                       law=self._law, theta=self.theta,
+                       y0=self.simulator.initial_state(self.model.parameter_vector(self.values)),
+                       read=lambda run: {}, kind=self.kind)
+
+
+def _only(figures: dict, names) -> dict:
+    return {k: figures[k] for k in names if figures.get(k) is not None}

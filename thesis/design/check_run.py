@@ -1,0 +1,51 @@
+"""The check run of a design point: one rise and dwell of the least model that is adequate
+(the one-DOF model (3.1) when the shaft's flexibility does not show in the envelope, else
+CAMSHAFT-1 (4.15)), its U0, U0'', X''min with error estimates beside the envelope values
+(runtime/measure/contract.py)."""
+from __future__ import annotations
+
+from camdyn.runtime.measure.contract import answer
+from camdyn.runtime.targets.model import ModelTarget
+
+ONE_DOF_TOLERANCE = 0.02
+"""The one-DOF model (3.1) stands in for CAMSHAFT-1 when the envelopes at Fa and at 0 differ
+by less than this, relatively (the check run's least adequate model)."""
+
+FIGURES = ("U0", "U0dd", "Xdd_min_rise", "T_at_Xdd_min")
+"""What the check run reports of the run (runtime/measure/residual.py), each with its error."""
+
+RTOL = 1e-10
+"""Tolerance of the check run (DP54): the thesis's scheme's accuracy and then some."""
+
+MODELS = {"one-dof": "one_dof", "camshaft1": "camshaft1"}
+"""The check run's models by the names the answer gives them."""
+
+
+def least_model(U0_env_Fa: float, U0_env_0: float, Fa: float,
+                tolerance: float = ONE_DOF_TOLERANCE) -> tuple[str, str]:
+    """(model, why): the one-DOF model (3.1) when the envelope at Fa and at Fa = 0 differ by
+    less than ``tolerance`` (the shaft's flexibility does not show), else CAMSHAFT-1 (4.15).
+
+    Kept small so that a general chooser of the least adequate model can take its place."""
+    if Fa == 0:
+        return "one-dof", "Fa = 0: a rigid shaft, constant fictitious angular velocity (ch. 3)"
+    change = abs(U0_env_Fa / U0_env_0 - 1.0)
+    if change < tolerance:
+        return "one-dof", (f"Fa = {Fa:.3g} changes the U0 envelope by {100 * change:.2g} % "
+                           f"(< {100 * tolerance:g} %) against Fa = 0: the shaft's flexibility "
+                           "does not show (ch. 3)")
+    return "camshaft1", (f"Fa = {Fa:.3g} changes the U0 envelope by {100 * change:.3g} % against "
+                         "Fa = 0: the variable fictitious angular velocity of CAMSHAFT-1 (4.15) is "
+                         "needed; the flywheel effect is left out (Fv -> oo, sec. 8.2.5)")
+
+
+def check_run(model: str, tau: float, Fa: float, law: str, theta) -> dict:
+    """U0, U0'', X''min and where it falls, of the run at (tau, Fa), each with its error
+    estimate by the answer contract (the run one notch tighter, rtol/10, and the sampling
+    error of the scan that found the extreme)."""
+    params = {"tau": tau} if model == "one-dof" else {"tau": tau, "Fa": Fa}
+    a = answer(ModelTarget.of(MODELS[model], params, method="dp54", rtol=RTOL, law=law,
+                              theta=theta))
+    out = {k: a.figures[k] for k in FIGURES}
+    out.update({f"{k}_error": a.errors[k] for k in FIGURES})
+    return out

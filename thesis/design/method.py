@@ -1,0 +1,326 @@
+"""Design by the rules: what a designer knows in, the thesis's answer out.
+
+Secs 8.3, 8.5, 8.6 and App. 7 describe one method, which :func:`design` follows:
+
+1. the machine's figures: T_e = 2 pi (m/c_c)^(1/2) (4.39), t_m = beta_m/w_s (App. 7 (8)),
+   tau = T_e/t_m (4.12), tan alpha_me = h_m'/(i R_1/2 beta_m) (4.13), Fa = (c_c/c_tan)
+   tan^2 alpha_me (4.14), the stiffness dip 1 + H'max^2 Fa (4.18), (4.19) (:mod:`.machine`);
+2. the response at (tau, Fa) read from the graphs U0(tau, Fa), U0''(tau, Fa) of fig. 4.11, i.e.
+   from the envelopes through their maxima (secs 3.5, 8.2.6): a designer never counts on a
+   tuning dip (:mod:`.graphs`);
+3. the requirement (positional accuracy u0 = U0 h_m', residual acceleration
+   u0'' = U0'' h_m'/t_m^2, sec. 3.3) turned into limits: the largest Fa at the given tau
+   and the largest tau at the given Fa (:mod:`.limits`);
+4. the rules of sec. 8.5 the input breaks (and the remedies (8.5) suggests) (:mod:`.rules`);
+5. the motor by sec. 8.3 (:mod:`.motor_sizing`);
+6. a check run of the design point with the least model that is adequate, its U0, U0'' with
+   error estimates beside the envelope values (:mod:`.check_run`).
+"""
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from camdyn.runtime.core import laws
+from camdyn.runtime.core.errors import CamdynInputError, SimulationError
+from camdyn.thesis.theory import examples as ex
+
+from .check_run import check_run, least_model
+from .graphs import PER_DIP, Graphs, Upper, phase_factor
+from .limits import Requirement, largest_Fa, largest_tau
+from .machine import Machine, machine, positive
+from .motor_sizing import motor
+from .rules import rules
+
+
+def design(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None, stiffness=None,
+           tau=None, Fa=None, c_tan=None, pitch_radius=None, ratio=None, tan_alpha_me=None,
+           accuracy=None, residual_acceleration=None, law="cycloidal", theta=None,
+           common_shaft=False, motor_args: dict | None = None, check: bool = True,
+           per_dip: int = PER_DIP, progress=None, chart_path=None) -> dict:
+    """The thesis's design method (module doc) as one dict (the JSON of `camdyn design`)."""
+    say = progress or (lambda msg: None)
+    M = machine(stroke=stroke, rise_time=rise_time, cam_angle_rad=cam_angle_rad, speed=speed,
+                mass=mass, stiffness=stiffness, tau=tau, Fa=Fa, c_tan=c_tan,
+                pitch_radius=pitch_radius, ratio=ratio, tan_alpha_me=tan_alpha_me)
+    acc = positive("accuracy", "--accuracy", accuracy, "m, largest positional error u0")
+    a_req = positive("acceleration", "--residual-acceleration", residual_acceleration,
+                      "m/s^2, largest residual acceleration u0''")
+    if a_req is not None and M.t_m is None:
+        raise CamdynInputError("argument --residual-acceleration: needs the rise time "
+                               "(--rise-time, or --cam-angle with --speed): u0'' = U0'' h_m'/t_m^2")
+    choice = laws.choose(law, theta)
+    if motor_args is not None:
+        if law != "cycloidal":
+            raise CamdynInputError("argument --law: the motor rules (8.1)-(8.4) and fig. 8.6 are "
+                                   "the cycloid's (its torque H' H'', (A.2.14)); use --law cycloidal "
+                                   "with a motor")
+        if M.t_m is None:
+            raise CamdynInputError("the motor (sec. 8.3) needs the rise time: tau_m = T_m/t_m")
+    graphs = Graphs(law, theta, per_dip)
+    H1 = float(np.max(np.abs(choice.evaluate(np.linspace(0, 1, 2001))[:, 1])))
+    out = {"law": law, "theta": choice.par if theta is not None or law == "modified-sine" else None,
+           "machine": {"stroke": M.stroke, "t_m": M.t_m, "T_e": M.T_e, "tau": M.tau,
+                       "tan_alpha_me": M.tan_alpha_me, "Fa": M.Fa, "mass": M.mass,
+                       "stiffness": M.stiffness, "c_tan": M.c_tan, "beta_m": M.beta_m,
+                       "w_s": M.w_s, "ratio": M.ratio, "pitch_radius": M.pitch_radius,
+                       "dip": ex.stiffness_dip(M.Fa, H1),
+                       "c_min": None if M.stiffness is None else M.stiffness / ex.stiffness_dip(M.Fa, H1),
+                       "freq_factor": ex.frequency_factor(M.Fa, H1),
+                       "sources": M.sources}}
+    say(f"envelope at tau = {M.tau:.4g}, Fa = {M.Fa:.4g}")
+    U0e, U2e = graphs.at(M.tau, M.Fa)
+    U0f, U2f = graphs.at(M.tau, M.Fa, per_dip=2 * per_dip)      # reported; U0e for its error
+    U00, U20 = graphs.at(M.tau, 0.0)
+    # the envelope's accuracy: twice the samples per dip; no less than the graph runs' own
+    # error (rtol 1e-9: about 1e-8 relative, measured against rtol 1e-11)
+    env = {"U0": U0f, "U0_error": max(abs(U0f - U0e), 1e-8 * U0f), "U0dd": U2f,
+           "U0dd_error": max(abs(U2f - U2e), 1e-8 * U2f),
+           "U0_Fa0": U00, "U0dd_Fa0": U20, "u0": U0f * M.stroke,
+           "u0dd": None if M.t_m is None else U2f * M.stroke / M.t_m**2,
+           # (8.5) is (3.5)'s envelope for small tau: the cycloid's only
+           "eq_8_5_u0": M.stroke * M.tau**3 / math.pi if law == "cycloidal" else None}
+    out["envelope"] = env
+    req = Requirement(M.stroke, acc, a_req)
+    ratio_design = None
+    if acc is not None or a_req is not None:
+        ratio_design = req.ratio(U0f, U2f, M.t_m)
+        out["requirement"] = {"accuracy": acc, "residual_acceleration": a_req,
+                              "ratio": float(ratio_design), "met": bool(ratio_design <= 1.0)}
+        say("largest Fa at this tau")
+        lf = largest_Fa(graphs, M.tau, req, M.t_m)
+        if lf.get("Fa_max") is not None and M.tan_alpha_me is not None and M.stiffness is not None:
+            lf["c_tan_min"] = M.stiffness * M.tan_alpha_me**2 / lf["Fa_max"]
+        if lf.get("Fa_max") and M.Fa > 0:
+            # torsion-dominated shaft: c_tan ~ d^4 (sec. 8.2.8, "2^(1/4) = 1.19")
+            lf["shaft_diameter_factor"] = (M.Fa / lf["Fa_max"]) ** 0.25
+        out["largest_Fa"] = lf
+        say("largest tau (smallest t_m) at this Fa")
+        lt = largest_tau(graphs, M.Fa, M.tau, req, T_e=M.T_e)
+        if lt.get("tau_max") is not None and M.T_e is not None:
+            lt["t_m_min"] = M.T_e / lt["tau_max"]
+            if lt.get("tau_max_error") is not None:
+                lt["t_m_min_error"] = lt["t_m_min"] * lt["tau_max_error"] / lt["tau_max"]
+            lt["speed_factor"] = lt["tau_max"] / M.tau
+        out["largest_tau"] = lt
+        if M.t_m is not None:
+            # the same question at this t_m: the softest follower, T_e = tau t_m (sec. 8.6)
+            say("largest T_e (least c_c/m) at this t_m")
+            le = lt if req.acceleration is None else largest_tau(graphs, M.Fa, M.tau, req, t_m=M.t_m)
+            le = {"tau_max": le.get("tau_max"), "tau_max_error": le.get("tau_max_error"),
+                  "limited_by": le.get("limited_by"), "reason": le.get("reason")}
+            if le["tau_max"] is not None:
+                le["T_e_max"] = le["tau_max"] * M.t_m
+                if le["tau_max_error"] is not None:
+                    le["T_e_max_error"] = le["tau_max_error"] * M.t_m
+                if M.mass is not None:
+                    le["c_c_min"] = M.mass * (2 * math.pi / le["T_e_max"]) ** 2
+            out["largest_T_e"] = le
+    motor_out = None
+    if motor_args is not None:
+        say("motor (sec. 8.3)")
+        motor_out = motor(t_m=M.t_m, mass=M.mass, stroke=M.stroke, w_s=M.w_s, **motor_args)
+        out["motor"] = motor_out
+    out["rules"] = rules(M, ratio_design or 0.0, common_shaft, motor_out,
+                         req.which(U0f, U2f, M.t_m) if ratio_design else "accuracy", law)
+    if check:
+        model, why = least_model(U0f, U00, M.Fa)
+        say(f"check run: {model}")
+        try:
+            run = check_run(model, M.tau, M.Fa, law, theta)
+        except SimulationError as exc:
+            run = {"failed": str(exc)}
+        run.update(model=model, why=why)
+        if "U0" in run:
+            run["u0"] = run["U0"] * M.stroke
+            if ratio_design is not None:
+                run["ratio"] = req.ratio(run["U0"], run["U0dd"], M.t_m)
+            if M.t_m is not None:
+                run["u0dd"] = run["U0dd"] * M.stroke / M.t_m**2
+                run["xdd_min_rise"] = run["Xdd_min_rise"] * M.stroke / M.t_m**2
+                if M.mass is not None:
+                    run["inertia_force_max"] = M.mass * abs(run["xdd_min_rise"])
+        out["check_run"] = run
+    if chart_path is not None:
+        say("chart")
+        out["chart"] = chart(out, graphs, M, chart_path)
+    out["graph_runs"] = graphs.runs
+    return out
+
+
+def chart_file(out) -> Path:
+    """Where the chart of a design goes in the folder ``out``."""
+    return Path(out) / "design.png"
+
+
+def write(result: dict, out) -> Path:
+    """design.json in the folder ``out``: the answer as `camdyn design --json` prints it."""
+    path = Path(out) / "design.json"
+    path.write_text(json.dumps(result, indent=1, default=float))
+    return path
+
+
+def chart_window(tau: float, tau_max: float | None) -> tuple[float, float]:
+    """(1/tau_hi, 1/tau_lo) of the chart: the design's tau and the largest tau, with room
+    on both sides.  An unmet requirement puts tau_max below tau (the window started at
+    0.8 tau and left the largest tau's line beside no envelope)."""
+    taus = [tau] + ([tau_max] if tau_max is not None else [])
+    return 1.0 / (1.5 * max(taus)), 1.0 / (0.8 * min(taus))
+
+
+def chart(d: dict, graphs: Graphs, M: Machine, path) -> str:
+    """The design on fig. 4.11a's axes: the envelope u0 = U0 h_m' over tau at the design's Fa
+    (with its graph), at the largest Fa that meets the requirement and at Fa = 0, the required
+    accuracy, the design point and the smallest t_m (largest tau)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    lf, lt = d.get("largest_Fa") or {}, d.get("largest_tau") or {}
+    x_lo, x_hi = chart_window(M.tau, lt.get("tau_max"))
+    fig, ax = plt.subplots(figsize=(7.5, 4.6))
+    curves = [(M.Fa, f"Fa = {M.Fa:.3g} (design)", "tab:blue")]
+    if lf.get("Fa_max") is not None:
+        curves.append((lf["Fa_max"], f"Fa = {lf['Fa_max']:.3g} (largest meeting the requirement)",
+                       "tab:orange"))
+    if M.Fa > 0:
+        curves.append((0.0, "Fa = 0 (rigid camshaft)", "0.4"))
+    for Fa, label, color in curves:
+        # two dip spacings more on either side, so that the drawn part lies between maxima
+        w = 2.0 / phase_factor(graphs.law, graphs.theta, Fa)
+        t, u0, _ = graphs.samples(max(x_lo - w, 1.0), x_hi + w, Fa)
+        env = Upper(t, u0)
+        shown = (t >= 1.0 / x_hi) & (t <= 1.0 / x_lo)
+        ax.plot(t[shown], env(t[shown]) * M.stroke, color=color, lw=1.8, label=label)
+        if Fa == M.Fa:
+            ax.plot(t[shown], u0[shown] * M.stroke, color=color, lw=0.6, alpha=0.6)
+    req = (d.get("requirement") or {}).get("accuracy")
+    if req is not None:
+        ax.axhline(req, color="k", ls="--", lw=1, label=f"required u0 <= {req:.3g} m")
+    ax.plot([M.tau], [d["envelope"]["u0"]], "o", color="tab:blue", label="design point")
+    if lt.get("tau_max") is not None:
+        ax.axvline(lt["tau_max"], color="tab:green", ls=":", lw=1.2,
+                   label=f"largest tau {lt['tau_max']:.4g}"
+                         + (f" (t_m >= {lt['t_m_min']:.4g} s)" if lt.get("t_m_min") else ""))
+    ax.set_yscale("log")
+    ax.set_xlabel("tau = T_e / t_m")
+    ax.set_ylabel("u0 = U0 h_m'  [m]  (envelope through the maxima)")
+    ax.set_title(f"camdyn design: {d['law']} law, stroke {M.stroke:g} m", fontsize=10)
+    ax.grid(alpha=0.3, which="both")
+    ax.legend(fontsize=7.5, loc="lower right")
+    fig.tight_layout()
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return str(path)
+
+
+# -- text ----------------------------------------------------------------------------------------
+def _g(v, digits=4) -> str:
+    if v is None:
+        return "-"
+    if isinstance(v, bool):
+        return "yes" if v else "no"
+    return f"{v:.{digits}g}"
+
+
+def _pm(v, e, digits=4) -> str:
+    return _g(v, digits) + (f" ± {e:.2g}" if e is not None else "")
+
+
+def text(d: dict) -> str:
+    """The answer of `camdyn design` as lines of text."""
+    M = d["machine"]
+    L = [f"camdyn design: {d['law']} rise" + (f" (theta {d['theta']:g})" if d.get("theta") else "")]
+    L.append("machine (App. 7 (5)-(12))")
+    for key, label, unit in (("stroke", "h_m'", "m"), ("beta_m", "beta_m", "rad"),
+                             ("w_s", "w_s", "rad/s"), ("t_m", "t_m", "s"), ("mass", "m", "kg"),
+                             ("stiffness", "c_c", "N/m"), ("T_e", "T_e", "s"), ("tau", "tau", ""),
+                             ("tan_alpha_me", "tan alpha_me", ""), ("c_tan", "c_tan", "N/m"),
+                             ("Fa", "Fa", ""), ("dip", "c_max/c_min", ""), ("c_min", "c_min", "N/m")):
+        if M.get(key) is not None:
+            src = M["sources"].get(key, "")
+            L.append(f"  {label:<14}{_g(M[key]):>12} {unit:<6}{src}")
+    e = d["envelope"]
+    L.append("envelope through the maxima of fig. 4.11 (CAMSHAFT-1), at the design point")
+    eq85 = f"; (8.5): u0 ~ {_g(e['eq_8_5_u0'])} m" if e["eq_8_5_u0"] is not None else ""
+    L.append(f"  U0   = {_pm(e['U0'], e['U0_error'])}   u0 = U0 h_m' = {_g(e['u0'])} m"
+             f"   (Fa = 0: {_g(e['U0_Fa0'])}{eq85})")
+    L.append(f"  U0'' = {_pm(e['U0dd'], e['U0dd_error'])}" +
+             (f"   u0'' = U0'' h_m'/t_m^2 = {_g(e['u0dd'])} m/s^2" if e["u0dd"] is not None else ""))
+    if "requirement" in d:
+        r = d["requirement"]
+        want = " and ".join(s for s in (
+            f"u0 <= {_g(r['accuracy'])} m" if r["accuracy"] is not None else "",
+            f"u0'' <= {_g(r['residual_acceleration'])} m/s^2"
+            if r["residual_acceleration"] is not None else "") if s)
+        L.append(f"requirement {want}: {'met' if r['met'] else 'NOT met'} "
+                 f"(envelope/requirement = {_g(r['ratio'])})")
+        lf = d["largest_Fa"]
+        if lf.get("Fa_max") is None:
+            L.append(f"  largest Fa at tau = {_g(M['tau'])}: none ({lf['reason']})")
+        else:
+            extra = ""
+            if lf.get("c_tan_min") is not None:
+                extra += f", least c_tan = {_g(lf['c_tan_min'])} N/m"
+            if lf.get("shaft_diameter_factor") is not None:
+                extra += (f", shaft diameter x {_g(lf['shaft_diameter_factor'], 3)} if torsion "
+                          "sets c_tan (~ d^4, sec. 8.2.8)")
+            L.append(f"  largest Fa at tau = {_g(M['tau'])}: {_pm(lf['Fa_max'], lf['Fa_max_error'])}"
+                     f" (limited by {lf['limited_by']}){extra}")
+        lt = d["largest_tau"]
+        if lt.get("tau_max") is None:
+            L.append(f"  largest tau at Fa = {_g(M['Fa'])}: none ({lt['reason']})")
+        else:
+            extra = ""
+            if lt.get("t_m_min") is not None:
+                extra += (f"; smallest t_m = {_pm(lt['t_m_min'], lt.get('t_m_min_error'))} s "
+                          f"(speed x {_g(lt['speed_factor'], 3)})")
+            if lt.get("beyond_last_maximum"):
+                extra += ("; NB past the graph's last maximum, where it dips again: the envelope "
+                          "is held flat there and may read low")
+            L.append(f"  largest tau at Fa = {_g(M['Fa'])}, this T_e: "
+                     f"{_pm(lt['tau_max'], lt['tau_max_error'])} (limited by {lt['limited_by']}){extra}")
+        le = d.get("largest_T_e")
+        if le is not None and le.get("T_e_max") is not None:
+            extra = f", c_c >= {_g(le['c_c_min'])} N/m at this m" if le.get("c_c_min") else ""
+            L.append(f"  largest T_e at this t_m: {_pm(le['T_e_max'], le.get('T_e_max_error'))} s "
+                     f"(tau {_g(le['tau_max'])}, limited by {le['limited_by']}){extra}")
+    if "motor" in d:
+        m = d["motor"]
+        L.append("motor (sec. 8.3)")
+        L.append(f"  tau_m = T_m/t_m = {_g(m['tau_m'])}; peak slip delta_max/delta_n = "
+                 f"{_g(m['slip_peak_rel'])} at P = 1 (fig. 8.6, at T = {_g(m['T_slip_peak'], 3)})")
+        L.append(f"  P = {_g(m['P'])} (8.1) with v_v = {m['v_v']}, eta_g = {_g(m['eta_g'])}, "
+                 f"delta_n = {_g(m['delta_n'])}, delta_lim = {_g(m['delta_lim'])}")
+        if m["M_ena"] is not None:
+            L.append(f"  rated torque at the camshaft M_ena = {_g(m['M_ena'])} N m (8.2)")
+        if m["N_n"] is not None:
+            L.append(f"  rated power N_n = {_g(m['N_n'])} W (8.3)")
+        L.append(f"  (8.4) delta_lim <= delta_n: {_g(m['rule_8_4'])}")
+    L.append("rules (secs 8.2-8.5)")
+    for r in d["rules"]:
+        L.append(f"  {r['status']:<9}{r['rule']}: {r['text']}")
+    if "check_run" in d:
+        c = d["check_run"]
+        L.append(f"check run: {c['model']} ({c['why']})")
+        if "failed" in c:
+            L.append(f"  failed: {c['failed']}")
+        else:
+            L.append(f"  U0   = {_pm(c['U0'], c.get('U0_error'), 6)}  (envelope {_g(e['U0'])})")
+            L.append(f"  U0'' = {_pm(c['U0dd'], c.get('U0dd_error'), 6)}  (envelope {_g(e['U0dd'])})")
+            L.append(f"  X''min during the rise = {_pm(c['Xdd_min_rise'], c.get('Xdd_min_rise_error'), 6)}"
+                     f" at T = {_g(c['T_at_Xdd_min'], 4)}" +
+                     (f"; x''min = {_g(c['xdd_min_rise'])} m/s^2" if c.get("xdd_min_rise") else "") +
+                     (f", inertia force {_g(c['inertia_force_max'])} N" if c.get("inertia_force_max")
+                      else ""))
+            if c.get("ratio") is not None:
+                L.append(f"  the run against the requirement: {_g(c['ratio'])} "
+                         f"({'met' if c['ratio'] <= 1 else 'NOT met'}; at a tuning dip the run "
+                         "may meet what the envelope does not)")
+    return "\n".join(L)

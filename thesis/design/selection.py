@@ -1,0 +1,216 @@
+"""Cam-law selection: the criteria of thesis sec. 9.2.2 for every law of the library at a given
+tau and Fa, and the nominal characteristics of App. 2 they start from.
+
+Per law:
+    U0_envelope, U0dd_envelope   the residual amplitudes a designer reads at (tau, Fa): the
+                                 envelope through the maxima of the CAMSHAFT-1 graphs (4.15)
+                                 around tau (runtime/measure/envelope.py; runs at tau from 0.8 tau to
+                                 1.25 tau, DP54 rtol 1e-9), not the value at tau itself, which
+                                 may sit in a tuning dip (secs 3.5, 8.2.6)
+    impact_T0, _T05, _T1         impact sensitivity after backlash at T = 0, 1/2, 1: the
+                                 relative impact speed per S^(2/3), r_e/S^(2/3) =
+                                 1/2 |H'''|^(1/3) 6^(2/3), from (3.15) made dimensionless as
+                                 (3.16) is read (thesis/theory/impact.py); infinite where H'' jumps
+                                 (an impact without backlash)
+    H1_max, H2_max, torque_max   peak velocity, peak |acceleration|, peak torque factor H' H''
+                                 (A.2.7), from the App. 2 table (thesis/theory/lawtable.py)
+    rho_min, alpha_max           with a cam geometry: the least radius of curvature of the
+                                 profile where it is convex and the largest pressure angle
+                                 (runtime/cam/profile.py)
+"""
+from __future__ import annotations
+
+import csv
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from camdyn.runtime.core.errors import CamdynInputError, SimulationError, out_folder
+from camdyn.runtime.core.simulator import simulate
+from camdyn.runtime.measure.envelope import envelope, tau_grid
+from camdyn.runtime.measure.residual import residual
+from camdyn.thesis.theory import lawtable
+
+SIX23 = 6 ** (2 / 3)
+
+
+def impact_sensitivity(jerk) -> float:
+    """r_e/S^(2/3) = 1/2 |H'''|^(1/3) 6^(2/3) at a reversal point (3.15), (3.16); inf for an
+    impulsive jerk (None in the App. 2 table: H'' jumps there)."""
+    if jerk is None or not math.isfinite(jerk):
+        return math.inf
+    return 0.5 * abs(jerk) ** (1 / 3) * SIX23
+
+
+def envelopes_at(key: str, tau: float, Fa: float, theta=None, n: int = 41) -> tuple:
+    """(U0, U0'') envelopes through the maxima of the CAMSHAFT-1 graphs of law ``key`` at tau."""
+    taus = tau_grid(0.8 * tau, min(1.25 * tau, 0.99), n)
+    u0, u2 = [], []
+    for t in taus:
+        r = residual(simulate("camshaft1", {"tau": float(t), "Fa": Fa}, 3.0, "dp54", rtol=1e-9,
+                              law=key, theta=theta))
+        u0.append(r.U0)
+        u2.append(r.U0dd)
+    return float(envelope(taus, u0)(tau)), float(envelope(taus, u2)(tau))
+
+
+FA_MAX = 100.0
+"""The largest Fa that CAMSHAFT-1, whose envelopes the selection reads, accepts."""
+
+
+def check(tau: float, Fa: float) -> None:
+    if not 0 < tau < 0.99:
+        raise CamdynInputError(f"tau={tau:g} is out of range: 0 < tau < 0.99")
+    if not 0 <= Fa <= FA_MAX:
+        # inf passed here and failed in the first run, after its progress line
+        raise CamdynInputError(f"Fa={Fa:g} is out of range: 0 <= Fa <= {FA_MAX:g} (CAMSHAFT-1's "
+                               "declared range, (4.14))")
+
+
+def criteria(key: str, tau: float, Fa: float, theta=None, geometry: dict | None = None) -> dict:
+    """The criteria of sec. 9.2.2 for law ``key`` (module doc); ``geometry``: stroke,
+    base_radius, roller_radius (m), optionally offset and angles_deg, for rho_min and
+    alpha_max."""
+    check(tau, Fa)
+    p = lawtable.properties(key, theta)
+    out = {"law": key, "tau": tau, "Fa": Fa}
+    try:
+        out["U0_envelope"], out["U0dd_envelope"] = envelopes_at(key, tau, Fa, theta)
+    except SimulationError as exc:       # an impulsive law the run cannot follow
+        out["U0_envelope"] = out["U0dd_envelope"] = None
+        out["note"] = str(exc)
+    out["impact_T0"] = impact_sensitivity(p.jerk_0)
+    out["impact_T05"] = impact_sensitivity(p.jerk_half)
+    out["impact_T1"] = impact_sensitivity(p.jerk_1)
+    out["H1_max"] = p.H1_max
+    out["H2_max"] = max(abs(p.H2_max), abs(p.H2_min))
+    out["torque_max"] = p.torque_max
+    if geometry:
+        from camdyn.runtime.cam.profile import CamProfile
+
+        cam = CamProfile(law=key, law_parameter=theta, **geometry)
+        tab = cam.table
+        rho_p = np.asarray(tab["rho_pitch"], float)
+        convex = np.isfinite(rho_p) & (rho_p > 0)
+        # the profile's radius where the pitch curve is convex: below zero it is undercut
+        out["rho_min"] = float((rho_p[convex] - cam.roller_radius).min()) if convex.any() else None
+        out["alpha_max_deg"] = float(np.max(np.abs(tab["alpha_deg"])))
+    return out
+
+
+def table(tau: float, Fa: float, theta=None, geometry=None, progress=None) -> list[dict]:
+    """The criteria of every law of the library (modified sine at ``theta``)."""
+    check(tau, Fa)                      # before the first run: one error, no progress lines
+    if theta is not None:
+        lawtable.properties("modified-sine", theta)     # its range, before the first law runs
+    if geometry:
+        from camdyn.runtime.cam.profile import CamProfile
+
+        CamProfile(**geometry)          # the geometry's ranges, checked once
+    rows = []
+    for key in lawtable.LAWS:
+        if progress:
+            progress(f"law {key}")
+        rows.append(criteria(key, tau, Fa, theta if key == "modified-sine" else None, geometry))
+    return rows
+
+
+COLUMNS = (("U0_envelope", "U0 env."), ("U0dd_envelope", "U0'' env."),
+           ("impact_T0", "impact T=0"), ("impact_T05", "impact T=1/2"),
+           ("impact_T1", "impact T=1"), ("H1_max", "H'max"), ("H2_max", "|H''|max"),
+           ("torque_max", "(H'H'')max"), ("rho_min", "rho_min m"), ("alpha_max_deg", "alpha_max"))
+
+
+def chart(rows: list[dict], path) -> str:
+    """One panel per criterion, a bar per law (lower is better for every one of them)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    cols = [(k, t) for k, t in COLUMNS if any(r.get(k) is not None for r in rows)]
+    fig, axes = plt.subplots(2, (len(cols) + 1) // 2, figsize=(3.2 * ((len(cols) + 1) // 2), 6.4))
+    names = [r["law"] for r in rows]
+    for ax, (k, title) in zip(axes.ravel(), cols):
+        vals = [r.get(k) for r in rows]
+        finite = [v for v in vals if v is not None and math.isfinite(v)]
+        top = 1.15 * max(finite) if finite else 1.0
+        bars = [top if v is not None and not math.isfinite(v) else (v or 0.0) for v in vals]
+        ax.barh(names, bars, color=["#e53935" if v is not None and not math.isfinite(v)
+                                    else "#1e88e5" for v in vals])
+        ax.set_title(title, fontsize=9)
+        ax.tick_params(labelsize=7)
+    for ax in axes.ravel()[len(cols):]:
+        ax.axis("off")
+    r0 = rows[0]
+    fig.suptitle(f"Cam-law selection at tau = {r0['tau']:g}, Fa = {r0['Fa']:g} "
+                 "(thesis sec. 9.2.2; red: infinite)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return str(path)
+
+
+def characteristics(theta=None) -> list:
+    """App. 2's nominal characteristics of every law of the library (modified sine at
+    ``theta``), as thesis/theory/lawtable.py derives them: `camdyn laws`."""
+    try:
+        return [lawtable.properties(k, theta if k == "modified-sine" else None)
+                for k in lawtable.LAWS]
+    except ValueError as exc:
+        raise CamdynInputError(str(exc)) from None
+
+
+@dataclass
+class Selection:
+    """The criteria of every law at (tau, Fa): the rows of :func:`table`, the columns any row
+    has a value in, and the files written."""
+
+    tau: float
+    Fa: float
+    rows: list
+    columns: list               # (key, title) of COLUMNS
+    files: list = field(default_factory=list)
+
+    def as_dict(self) -> dict:
+        """The rows with infinities as None (JSON has none) and the files."""
+        clean = [{k: (None if isinstance(v, float) and math.isinf(v) else v) for k, v in r.items()}
+                 for r in self.rows]
+        return {"rows": clean, "files": self.files}
+
+
+def write_csv(rows: list[dict], columns, path) -> str:
+    with open(path, "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(["law"] + [k for k, _ in columns])
+        for r in rows:
+            w.writerow([r["law"]] + [r.get(k) for k, _ in columns])
+    return str(path)
+
+
+def select(tau, Fa=None, theta=None, stroke=None, base_radius=None, roller_radius=None,
+           out=None, progress=None) -> Selection:
+    """`camdyn laws --tau T [--fa F]`: the criteria of sec. 9.2.2 for every law (Fa = 0 when
+    not given), with a cam geometry when all three of stroke, base and roller radius are
+    given; with ``out``, laws_selection.csv and laws_selection.png there."""
+    if tau is None:
+        raise CamdynInputError("argument --tau: required with --fa (0 < tau < 0.99)")
+    out_folder(out)
+    geo = (stroke, base_radius, roller_radius)
+    if any(g is not None for g in geo) and not all(g is not None for g in geo):
+        raise CamdynInputError("arguments --stroke, --base-radius, --roller-radius: give all "
+                               "three for the cam's curvature and pressure angle")
+    geometry = None if stroke is None else {
+        "stroke": stroke, "base_radius": base_radius, "roller_radius": roller_radius}
+    Fa = 0.0 if Fa is None else Fa
+    rows = table(tau, Fa, theta, geometry, progress)
+    cols = [(k, t) for k, t in COLUMNS if any(r.get(k) is not None for r in rows)]
+    result = Selection(tau, Fa, rows, cols)
+    if out:
+        folder = Path(out)
+        folder.mkdir(parents=True, exist_ok=True)
+        result.files = [write_csv(rows, cols, folder / "laws_selection.csv"),
+                        chart(rows, folder / "laws_selection.png")]
+    return result

@@ -1,0 +1,83 @@
+"""The statements beside a figure, computed now against the printed values, each with its error.
+
+A statement's value v comes from runs of the compiled models, or is a closed form or a
+parameter and then exact.  Its error estimate is |v - v'|, v' the same value computed again
+inside :func:`camdyn.runtime.core.methods.tightened`, where every run is one notch tighter:
+rtol/10, or half the step with Richardson's factor 2^p/(2^p - 1)
+(runtime/core/methods.py).  Whether the statement is reproduced is judged on v alone, as
+`camdyn check` judges it; an estimate larger than the band the rule accepts is flagged, for
+then the runs do not resolve the agreement.  A statement read from figures that carry their
+own estimates (the answer contract's, a sweep's) states its estimate from them instead.
+"""
+from __future__ import annotations
+
+from dataclasses import replace
+
+from camdyn.runtime.core.methods import estimate_factor, tightened
+from camdyn.thesis.checks import check as checks
+
+from .figure import Claim, ClaimResult, plus_minus
+
+
+def evaluate(claim: Claim, checks_by_key: dict) -> ClaimResult:
+    """Compute the claim's value now, compare it with the printed one and estimate its error."""
+    if claim.trend is not None:
+        return _trend(claim)
+    c = claim.check if isinstance(claim.check, checks.Check) else checks_by_key[claim.check]
+    o = checks.run(c)
+    derived = o.error or fmt(o.derived)
+    result = ClaimResult(c.item, c.reference, c.printed or "(symbolic)", derived, c.rule,
+                         o.status, o.passed, c.note, shown=derived,
+                         tolerance=checks.tolerance(c))
+    if o.error:
+        return result
+    if c.exact or c.rule == "identity":
+        return replace(result, shown=f"{derived} (exact)", exact=True)
+    e = _own_estimate(c.estimate) if c.estimate else _estimate(c.compute, o.derived, c.method)
+    return replace(result, shown=derived + plus_minus(e), estimates=(e,))
+
+
+def _own_estimate(estimate) -> float | None:
+    try:
+        return float(estimate())
+    except Exception:            # no estimate is shown as such, beside the value
+        return None
+
+
+def _estimate(compute, value, method: str) -> float | None:
+    """|value - value one notch tighter| times the method's factor; None if the tighter
+    computation cannot be made (a run at the tightest rtol, a run that fails)."""
+    try:
+        with tightened():
+            tight = compute()
+        return abs(float(value) - float(tight)) * estimate_factor(method)
+    except Exception:            # no estimate is shown as such, beside the value
+        return None
+
+
+def _trend(claim: Claim) -> ClaimResult:
+    try:
+        t = claim.trend()
+    except Exception as exc:     # reported in the index, not a crash of the whole build
+        error = f"{type(exc).__name__}: {exc}"
+        return ClaimResult(claim.text, claim.reference, "(trend)", error, "trend", "ERROR",
+                           False, shown=error)
+    try:
+        with tightened():
+            tight = claim.trend()
+        es = tuple(abs(a - b) * estimate_factor(t.method)
+                   for a, b in zip(t.values, tight.values))
+    except Exception:
+        es = (None,) * len(t.values)
+    return ClaimResult(claim.text, claim.reference, "(trend)", t.shown(), "trend",
+                       "pass" if t.holds else "FAIL", t.holds, shown=t.shown(es), estimates=es)
+
+
+def fmt(v) -> str:
+    """A computed value as the index shows it: four significant digits."""
+    if isinstance(v, bool) or v is None:
+        return str(v)
+    try:
+        return f"{float(v):.4g}"
+    except (TypeError, ValueError):
+        return str(v)
