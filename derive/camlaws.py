@@ -34,6 +34,8 @@ from functools import cached_property
 
 import sympy as sp
 
+from . import symbolic
+
 T = sp.Symbol("T", real=True)
 """Dimensionless time T = t/t_m (or cam angle B = beta/beta_m, App. 2)."""
 
@@ -107,8 +109,8 @@ class CamLaw:
         amp = sp.solve(sp.Eq(h0, 1), _A)
         if len(amp) != 1:
             raise ValueError(f"{self.key}: H(1) = 1 does not fix the amplitude")
-        amp = sp.simplify(amp[0])
-        tidy = sp.simplify if self.simplify_pieces else _collect_trig
+        amp = symbolic.simplify(amp[0])
+        tidy = symbolic.simplify if self.simplify_pieces else _collect_trig
         return tuple(tidy(h.subs(_A, amp)) for h in pieces), amp
 
     @property
@@ -175,7 +177,7 @@ def _collect_trig(h: sp.Expr) -> sp.Expr:
     """h as a sum of its sines and cosines times factored coefficients (and a factored rest)."""
     parts = sp.collect(sp.expand(h), sorted(h.atoms(sp.sin, sp.cos), key=sp.default_sort_key),
                        evaluate=False)
-    return sp.Add(*(k * sp.factor(v) for k, v in parts.items()))
+    return sp.Add(*(k * symbolic.factor(v) for k, v in parts.items()))
 
 
 def _law(key, code, title, reference, bounds, acceleration, parameter=None, displacement=()):
@@ -232,7 +234,7 @@ def polynomial_law(key: str, code: int, at0: dict | None = None, at1: dict | Non
     acc = sp.diff(H, T, 2)
     stat = sp.solveset(sp.diff(acc, T), T, sp.Interval(0, 1))
     if isinstance(stat, sp.FiniteSet):
-        acc = acc / max((sp.simplify(acc.subs(T, x)) for x in stat | {0, 1}), key=float)
+        acc = acc / max((symbolic.simplify(acc.subs(T, x)) for x in stat | {0, 1}), key=float)
     return _law(key, code, title or f"{key} polynomial", f"H = {terms.lstrip('+ ')}", (0, 1),
                 [_A * acc])
 
@@ -262,7 +264,7 @@ def scca_pieces(b, c, d):
     d = 1 simple harmonic, c = 1 constant acceleration, (1/4, 1/2, 1/4) the modified
     trapezoid, (1/4, 0, 3/4) the modified sine (thesis (A.2.17) with theta = 1/8)."""
     b, c, d = (sp.sympify(x) for x in (b, c, d))
-    if sp.simplify(b + c + d - 1) != 0:
+    if symbolic.simplify(b + c + d - 1) != 0:
         raise ValueError(f"SCCA needs b + c + d = 1, got {b + c + d}")
     ends = [0, b / 2, (1 - d) / 2, (1 + d) / 2, 1 - b / 2, 1]
     accs = [_A * sp.sin(_pi * T / b) if b != 0 else None,

@@ -15,6 +15,8 @@ import json
 
 import sympy as sp
 
+from . import symbolic
+
 from .emit import (Plain, doc_lines, manifest_common, math_imports, number, option_entries,
                    plainer, render as render_template, state_entries, time_functions,
                    with_source_hash)
@@ -70,7 +72,7 @@ def _rhs_expressions(m: Model, eq: Equations, plain: Plain):
     rates = [plain(z.rate) for z in m.first_order]
     if M.is_diagonal():
         acc = [f[i] / M[i, i] for i in range(n)]
-        acc = [sp.simplify(e) if M[i, i] != 1 and not e.has(sp.Piecewise) else e
+        acc = [symbolic.simplify(e) if M[i, i] != 1 and not e.has(sp.Piecewise) else e
                for i, e in enumerate(acc)]
         return acc + rates, True
     return list(M) + list(f) + rates, False

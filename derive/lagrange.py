@@ -29,6 +29,8 @@ from functools import cached_property
 
 import sympy as sp
 
+from . import symbolic
+
 from .model import Model
 
 
@@ -60,7 +62,7 @@ class Equations:
         """q'' = M^-1 f for unconstrained models (symbolic; small M only)."""
         if self.Phi.rows:
             raise ValueError("constrained model: solve the multiplier form instead")
-        return sp.simplify(self.M.LUsolve(self.f))
+        return symbolic.simplify(self.M.LUsolve(self.f))
 
 
 def _tidy(e):
@@ -68,7 +70,7 @@ def _tidy(e):
     as derived: simplify would take long and CSE shares their parts anyway."""
     if e.has(sp.Piecewise) or sp.count_ops(e) > 150:
         return e
-    return sp.simplify(e)
+    return symbolic.simplify(e)
 
 
 def derive(model: Model) -> Equations:

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:408b1023bc359bf0f065d3bfb8968ffc8d9c4c2ba8da024c6f7485c69af9bd1f
-# Text hash: sha256:5be4b6ca442d1fd682aa97c8529cc174cd534621bfc3a784252536b79af94f62
+# Derivation key: sha256:1457f15a9298bab5476b0e74e81f33a93b4b7cdaf085bd22a79973978f8f50e2
+# Text hash: sha256:e626f2e4da52d261162dd906be22a2947413ac821e3387c96db78ffca49700c4
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:bfb311a2dc642912ccf96df03b945a685fb049d1c1bb63babea364e48a9d993c

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:060213a8a51d2bf00aecdfceb553acb8f30a1d32be2f772eefbde9a9cdc0b229
-# Text hash: sha256:b7a6543b46a4fb214eee55f1f253789cd36a4cd5f950da12fe001eb4f63a06b4
+# Derivation key: sha256:cadb92706821a75faa52d461ed51d332d92b0987cc80ebfab7d588c8bf9075c4
+# Text hash: sha256:7ae8e59484a9454753ad7975e2c2428decf6beb8205cc41cc298ded641acb147
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
 # Source hash: sha256:921486bdc725aa760722bfb26290d6704b3ad8c2d314f01890c68f465878e573

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:5d31bc24976f7ca227e18658d3843f2857ef692cf0234b4941e9959faef80001
-# Text hash: sha256:fa2884bd23ad3b30f267e6128f63e36a6b77b82411be31846421381ed3a0974d
+# Derivation key: sha256:a5211e31429aa7a210bfa4fdfb49d7e55cfd8afe26c531340cbb4bda8d11f56b
+# Text hash: sha256:988780dfae1f69d0646396153ed1bc9a5cee17cf35cdfe78b27870d2da8aeb0a
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:1d8106cbb4c080dc1d4baa1e57662f2dae7c6b7184e85535a26798dca84a5c31

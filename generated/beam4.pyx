@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:99dfc69dd1cbd4ad795e27267138879b374f615cf0079971447a42ad575066c1
-# Text hash: sha256:fa21af700781f8a386326d755412abcbac09af2e8c55ea49fb03ec620889d4e6
+# Derivation key: sha256:4cffa88bc28f175667d8f99643bfd9a489baf22a5f759bc8643915f433b6dab4
+# Text hash: sha256:1688072f3cd5abeeffd2bf96fb485fdf3e828517d01ecf050a06f6bb57a9261d
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:005fc6dd88930eeb16af7091c0a74ba4fe7f9c436ef794c0f2976a8de40a1269

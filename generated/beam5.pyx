@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7ee9c6a077679d25361e8960996c71279530a0759415f574da408efaea40cea2
-# Text hash: sha256:b1787c83b08292601d61393ecab38c07b36869231323cb03a42472d3a105992d
+# Derivation key: sha256:709f62e1c640cfa2f240fc173e043251055ee655c6154ea9a553947e955ece0d
+# Text hash: sha256:acdf72fc5ce735f70301e62403c5952d10e93ce6609139b78bc3aa26fc06fd09
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:a91861c5ef9ef871d0972bdd6fadc95fb8bd8aa9c22b166a68b2e22724f00536

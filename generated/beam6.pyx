@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:148d367efdc1f4a7d443c219e3469683b5b66dfbab83a390ffc85b8352729a42
-# Text hash: sha256:5ecae0100a605093d9aea23ee7b56b6ba304c4d08796a94b605816673b0061ef
+# Derivation key: sha256:7c6df9c982a465a238463c76b3ecf96d77d3874add2f3298659a716ef9f07717
+# Text hash: sha256:86b0ef73dc4bdd0634c0bcef5f795736189df8ef217587c9bac86d88f7d9e54d
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:9d4ce2ed01f1ecad9d62194db1151f10c3655da69963e1cb0de52220801b3e5b

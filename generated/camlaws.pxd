@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:43878fe427f7d0b205359d18ac1704fe958ee69e4dd378aee44dbf9e01c5dc5a
-# Text hash: sha256:dae5204435ca9c67ac265d3d965a34f7b3bdf27ccccdc5d4633ad49730ae9df1
+# Derivation key: sha256:a470ebab39b8cf255daccfa068fea318a6a1dd1d8f4e31991e0409627d155aec
+# Text hash: sha256:9aab06ef93802af5ade09b423b8ea3552e427b77417b6b22b96be0d3d3fb9d4a
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),

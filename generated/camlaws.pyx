@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:43878fe427f7d0b205359d18ac1704fe958ee69e4dd378aee44dbf9e01c5dc5a
-# Text hash: sha256:06fc20e49f214aabd976475c4f278b513681f30f577bd87e56ceb29d20e8b04a
+# Derivation key: sha256:a470ebab39b8cf255daccfa068fea318a6a1dd1d8f4e31991e0409627d155aec
+# Text hash: sha256:599a6587d75f4322bd09067cea271808fe04f41b606ad5df613a49fe6d8b5f8e
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

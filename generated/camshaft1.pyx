@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0c371bbb7cc5490315c3a70c63e8648ef7fcad6d9365cf3e8669be117410efe6
-# Text hash: sha256:13eaf29250ce3dec731f3fa70f0312389b9d60fb7904cb77d8d00353e23282c3
+# Derivation key: sha256:730996d22e34215ec3eb9425c5817f42c89b8a4cadc03dabb21454a9619e3220
+# Text hash: sha256:515650e18d37814dc9bad95c9f52bbaa8c182484395863a2043f14153bf47197
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233

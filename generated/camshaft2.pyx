@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d416a2d919a9ef1e2ce40576e5c28baab152c3e0f3e0f34baf562ac4e5abc357
-# Text hash: sha256:7fe2842f05416470e2357a0d39fd0d5702fc6a07a3e1625c7d3d1093988f5ac0
+# Derivation key: sha256:3d9b48d5b946ef2b970c3c823cb2609b25f915a20ab99be97239d8e7ffa1e6a7
+# Text hash: sha256:48bd481c08747b954b76f10b424056866c5110239829b539a89ea0ddcff56fcc
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f06b6d54f0d141eacfbcc4373533078f5586ae5d8bcc046582beafcb872bd37e
-# Text hash: sha256:64d6fcde03464125beab0bd80004afbbd7c2cc471995e66936d8e870a1d41c6f
+# Derivation key: sha256:3203d770ad854075a2a8ef01f3acba4ca1ceb19083792a1bff2449e5177d1b2c
+# Text hash: sha256:e55f0fa7c426b26003235a08daf266e7b4dcc6cad2742f5730ed9a3c68c43b8e
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:8f77dd07c8ed4b4688df2d3c19ff019f5740d09221661f3282e318623b001c96

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:5fcd671fbda2d1888ea135d4ea0e9caaed15e938cd139b04d9aaee03925a447c
-# Text hash: sha256:8200ecdbe6be55c9a5357f75dd67810c7961d29668155561b95ac966736031e8
+# Derivation key: sha256:bcd7ba2f20b3dc255e9b0876b75fa461972ec73a2ba5b9caf5d48bedd9b9aefa
+# Text hash: sha256:b927e9db372391db60961221342e95106bc61b8196c4e1136d44e60d2860eb3d
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:8a86b6ab0f64a1ad41aa3dc8c8942dc37aa336ef30396ea9acf74fbea9619acb

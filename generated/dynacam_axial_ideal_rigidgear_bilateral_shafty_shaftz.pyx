@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7d2c1f855c734fa8e2fa2a684ba18630050bda18103e6b13d8146d6fd0d225a3
-# Text hash: sha256:4c5f1d1e17199cfa93cc4056bd75568310651a3a2149dd9d0027eccbe3cf00b9
+# Derivation key: sha256:747a3ebd24ebebcb09a416ab3bfa53fe3cf43c49c900289368f3a56f5606f889
+# Text hash: sha256:12e2db42d5015fee709a989ae280b406abaac98d8c44857869ee320135765446
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:f356169a69c515b9c42fefe373cc8acfc9be03f74c16a9cdb47e148eb2a59dfb

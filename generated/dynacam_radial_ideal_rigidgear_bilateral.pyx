@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:786215bbf9eb6d6240654e902a04eb1648f890c70d38674bafef05fa40ae1dc0
-# Text hash: sha256:95d0297cc4badca735b88e2e4b98e23a123321d1076b9043204ff588394da7f2
+# Derivation key: sha256:5b6b1c0a292d4d397f45477d070a41ccb3365f933c4ed45a3bc387bea7728511
+# Text hash: sha256:8ba4d1e62af3e2bcc93bc4461eb72e456379926e6b7670218269b8eedef5a017
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:68a26e070d019d08a18b136de438a3ead39168a76ade198c22c7707fe2202b40

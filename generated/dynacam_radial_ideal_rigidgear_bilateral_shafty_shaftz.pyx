@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c172f74631eb1917ce5e6ae5324b9e69e017b70a90cb150bb55c41f373407415
-# Text hash: sha256:5676c075aad02cc31e5013c26cd778ecfe6c8ed3f0197317edda7ed2fa4d304a
+# Derivation key: sha256:a9d5e8063b2d9fe687687552f81b8558e3844f57f6af9876c56b6e9d59bc2437
+# Text hash: sha256:a4cf2bff4df30a8c1ceef45e64f31d707f74e2b7a856f25e33cd93354d7288a8
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:52d0b492daa23ff0a6038d3692472c97bd3181f873d8a79b32f30d87ae0a259a

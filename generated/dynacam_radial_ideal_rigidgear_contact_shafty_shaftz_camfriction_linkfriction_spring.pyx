@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:19f6376c16af61453a3349914763402aa8a31c89fef0f6ed29d13c1de9c0d4f5
-# Text hash: sha256:c29b4cabe92eb8a1a79b7b9e200484493e6bea166677010c21d1c5f78a4c922b
+# Derivation key: sha256:76b3616a0c8e827cbaa0018c7807d5235deefb792e7229bc4e70ebf73f82e55a
+# Text hash: sha256:20e6f8877e4afc80e02f6dd09edd9d05272d7bb62e00e3470039b6ad23d2e9c8
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:4ac8bafb400a1646f69be4722317a3e6a1340e3e939fdbc69644456c4bc14bca

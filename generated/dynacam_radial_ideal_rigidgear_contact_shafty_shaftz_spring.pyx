@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d98c2fd9afc70da4d1113670d375637e47dedbec7a2e45d2c23600df7948f4a5
-# Text hash: sha256:71827b40e4acd9b7e38f44db26d6007a14b70b209d0b7042f5e934a2d6fa4e8b
+# Derivation key: sha256:64404674fda36070246c61d04a74edc1c1d03f737f85753db07c8ef3e102c0c5
+# Text hash: sha256:a3d2d4ad5e68b51869e01f8a63b6b44fb3cb56009c1e21016b51103831c3339d
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:1862b6bf75d2cf1f5185cac2d07e5bdde467e7941a088e8b8accffb28b9684a6

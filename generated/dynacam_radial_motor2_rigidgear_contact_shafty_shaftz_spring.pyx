@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f895a0adacd3bd82760437f9dd8868aad7bed909dfafcf1bfc9c5a9a8b1e7e14
-# Text hash: sha256:e6f832912df616558ef14bac3406fb4333648250cad03e988a84f325853711c0
+# Derivation key: sha256:bec6666b609fbda2d856074734f4378566baa60595fdbe4a8ece1e0302eec271
+# Text hash: sha256:8356802c78def75b7ebddcf08f62c03aab21846d5f9ed869eb05956a21cc5ac7
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7842898e4fc68e8102d2800cc75353ff3970859773edaaef2a378a7c26cacd8a

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:28c5e998f9a07bcfe7b666c6fc5e621bb14d145ce58ed4d7a5ea6c8a82c0ffca
-# Text hash: sha256:dc7004b8c006bfd26339e3b64483075e8f3cb0342753141bdf44f7c8d3746013
+# Derivation key: sha256:24735cd3d5ed8a1848aa84247abf7330034c24580eb2423d9c47c1242c9eff10
+# Text hash: sha256:de4823555a2364430890c07b80db25a3b2615d0d1dc136517e31b0bb98fdc8e8
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68

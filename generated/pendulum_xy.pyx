@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:bb040bc5cd283e5d906256bf44a28f9781db838f674d481da0d651662de158d6
-# Text hash: sha256:fbca86544d3cb4b1d4091c7618c4bb52630330213aa8d65c4e360caade88e64a
+# Derivation key: sha256:13f072f0c6444259f86c3766743bfe57b97f6484ce824a1df9688d042e409918
+# Text hash: sha256:be15f145f4a8cc3057c63524bd34438e4022c66354dd552731d5c660622e9357
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:e017c1589554bffedb179ec1f3fe3f8fdb43bb82d0bdd5e3f88df9f352e7786a

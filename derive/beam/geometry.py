@@ -48,7 +48,7 @@ from functools import cache, cached_property
 import numpy as np
 import sympy as sp
 
-from camdyn.derive import camlaws
+from camdyn.derive import camlaws, symbolic
 
 theta = sp.Symbol("theta", real=True)
 """Cam parameter: polar angle of the pitch-curve point in the cam frame (paper (4))."""
@@ -232,7 +232,7 @@ def _groove_walls() -> dict:
     a, b = sp.symbols("a b", real=True)
     point = p + a * t + b * m
     on = {X: point[0], Y: point[1]}
-    eqs = [sp.trigsimp(sp.expand(e.xreplace(on))) for e in (roller_family(), envelope_condition())]
+    eqs = [symbolic.trigsimp(sp.expand(e.xreplace(on))) for e in (roller_family(), envelope_condition())]
     roots = sp.solve(eqs, [a, b], dict=True)
     if len(roots) != 2 or any(sol[a] != 0 for sol in roots):
         raise RuntimeError(f"unexpected envelope roots {roots}")
@@ -252,7 +252,7 @@ def outward_normal() -> sp.Matrix:
     Taken from the derived envelope itself, (outer wall - p)/r_r, not from a
     formula for the normal.
     """
-    return sp.simplify((groove_walls()["outer"] - pitch_curve()) / r_r)
+    return symbolic.simplify((groove_walls()["outer"] - pitch_curve()) / r_r)
 
 
 def _cross(u, v):
@@ -268,7 +268,7 @@ def tan_pressure_angle() -> sp.Expr:
     """
     n = outward_normal()
     e_r = sp.Matrix([sp.cos(theta), sp.sin(theta)])
-    return sp.simplify(_cross(n, e_r) / n.dot(e_r))
+    return symbolic.simplify(_cross(n, e_r) / n.dot(e_r))
 
 
 @cache
@@ -276,7 +276,7 @@ def pressure_angle() -> sp.Expr:
     """phi = atan2(n x e_r, n . e_r), see :func:`tan_pressure_angle`."""
     n = outward_normal()
     e_r = sp.Matrix([sp.cos(theta), sp.sin(theta)])
-    return sp.atan2(sp.simplify(_cross(n, e_r)), sp.simplify(n.dot(e_r)))
+    return sp.atan2(symbolic.simplify(_cross(n, e_r)), symbolic.simplify(n.dot(e_r)))
 
 
 def signed_curvature(curve: sp.Matrix) -> sp.Expr:
@@ -288,7 +288,7 @@ def signed_curvature(curve: sp.Matrix) -> sp.Expr:
 @cache
 def pitch_curvature() -> sp.Expr:
     """Signed curvature of the pitch curve, from :func:`signed_curvature` (simplified)."""
-    return sp.simplify(signed_curvature(pitch_curve()))
+    return symbolic.simplify(signed_curvature(pitch_curve()))
 
 
 @cache
