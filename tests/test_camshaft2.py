@@ -201,7 +201,10 @@ def test_thesis_scheme_step_change_sec_5_4():
     1.9 %" (sec. 5.4).  The thesis does not say where; camdyn's "koster" method (mid-step
     acceleration held constant) with dT = 0.1 and 0.01 min(tau, tau_b) over tau = 0.07 .. 0.25,
     Fa = 0.5 .. 2, Fv = 0.7 .. 7.5 (table 5-I) changes U0 by 1.4 % (median): within a factor 2."""
-    assert 0.019 / 2 <= c2.step_change_median() <= 0.019 * 2
+    median, error = c2.step_change_median()
+    assert 0.019 / 2 <= median <= 0.019 * 2
+    # its error: what the scans of the U0 leave, far below the factor-2 band
+    assert 0.0 <= error < 1e-3 * median
 
 
 def test_thesis_scheme_agrees_with_dp54_at_fine_step():

@@ -32,6 +32,24 @@ def test_matches_printed_rounding_and_truncation():
     assert not checks.matches_printed(3.7155e-4, "3.75e-4")
 
 
+def test_an_estimate_wider_than_the_band_is_flagged():
+    """The estimate is |v - v'| with v' computed inside tightened(): a value that moves by more
+    than the band its rule accepts when the runs are tightened is not resolved by them."""
+    from camdyn.runtime.core import methods
+
+    moving = checks.Check("x", "x", "x", "2", lambda: 2.0 + 0.5 * methods.notches(),
+                          rule="rel:0.1")
+    out = checks.run(moving, estimate=True)
+    assert out.passed and out.estimate == pytest.approx(0.5) and out.wide
+    still = checks.Check("x", "x", "x", "2", lambda: 2.0 + 0.01 * methods.notches(),
+                         rule="rel:0.1")
+    out = checks.run(still, estimate=True)
+    assert out.estimate == pytest.approx(0.01) and not out.wide
+    exact = checks.Check("x", "x", "x", "2", lambda: 2.0 + methods.notches(), exact=True)
+    assert checks.run(exact, estimate=True).estimate == 0.0
+    assert checks.run(still).estimate is None
+
+
 def test_rules():
     c = checks.Check("x", "x", "x", "2", lambda: 2.1, rule="rel:0.1")
     assert checks.run(c).passed
@@ -84,6 +102,17 @@ def test_camdyn_check_command_json_and_exit_code():
     out = json.loads(p.stdout)
     assert out["passed"] and len(out["checks"]) == 10
     assert {c["status"] for c in out["checks"]} == {"pass", "errata"}
+    # every derived value leaves with its error estimate; checked against the closed forms
+    # (3.5), (3.6) at the tau = 2/(2k + 1) the rows stand for: the true error lies within ten
+    # times the estimate (plus the last bits of the closed form)
+    from camdyn.runtime.measure import references
+
+    for c in out["checks"]:
+        _, fig, k = c["key"].split(".", 2)
+        tau = {"0.105": 2 / 19, "0.222": 2 / 9, "0.286": 2 / 7, "0.4": 2 / 5, "0.66": 2 / 3}[k]
+        exact = getattr(references, fig)(tau)
+        assert 0 < c["derived_error"] < 1e-7 * exact, c["key"]
+        assert abs(c["derived"] - exact) <= 10 * c["derived_error"] + 1e-14 * exact, c["key"]
     p = subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", "check", "--topic", "nope"],
                        capture_output=True, text=True, timeout=60)
     assert p.returncode == 2 and "unknown topic" in p.stderr

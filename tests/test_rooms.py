@@ -2,7 +2,7 @@
 
 derive/ (SymPy, Jinja2) -> generated/ -> runtime/ (NumPy, SciPy, the compiled modules); the
 thesis room may import both sides and nothing in the pipeline imports it.  Inside runtime/ the
-floors open downwards only: engine < core < cam, measure < targets < studies < cli, and nothing
+floors open downwards only: engine < core < measure < cam < targets < studies < cli, and nothing
 imports the command line.  No import circle anywhere, counting imports inside functions; no
 module reads another module's private (underscore) names.  Checked on every
 import statement (module level and inside functions) of every module, with relative imports
@@ -251,7 +251,7 @@ def test_no_import_circle_anywhere():
             dfs(node, [])
 
 
-FLOORS = {"engine": 0, "core": 1, "cam": 2, "measure": 2, "targets": 3, "studies": 4, "cli": 5}
+FLOORS = {"engine": 0, "core": 1, "measure": 2, "cam": 3, "targets": 4, "studies": 5, "cli": 6}
 """runtime/'s subpackages by floor: an import goes to a lower floor, or stays in its own
 subpackage."""
 

@@ -127,10 +127,11 @@ def test_cells_fine_inaccurate_refused_blew_up():
     tau = 2 / 19
     w = 2 * math.pi / tau
     p = {"tau": tau}
-    ref = smap.reference(smap.load("one_dof"), p, 3.0, "cycloidal")
+    target = smap.target_of("one_dof", 3.0)
+    ref = smap.reference(target.with_parameters(p))
 
     def cell(x, check=True):
-        return smap.classify_cell("one_dof", "rk4", x / w, p, ref, threshold=1e-3, t_end=3.0,
+        return smap.classify_cell(target, "rk4", x / w, p, ref, threshold=1e-3, t_end=3.0,
                                   check_stability=check)
 
     assert cell(0.1).status == "fine"
@@ -181,6 +182,28 @@ def test_thesis_step_criterion_and_the_one_and_a_half_percent():
     assert 0.015 / 1.5 <= r["change_median"] <= 0.015 * 1.5          # measured 0.0128
     over = sum(c["change"] > 0.015 for c in r["cases"])
     assert 5 <= over <= 15 and r["change_max"] > 0.5                  # measured 10, 0.93
+
+
+def test_the_reference_carries_its_estimate_and_its_window():
+    """The map's reference is the answer contract's: its figure U0 at DP54 rtol 1e-11 with its
+    estimate, checked against (3.5) (the undamped one-DOF model is its closed form: the true
+    error lies within ten times the estimate); its run must hold the window U0 needs (one
+    period tau past the rise): at tau = 0.9 an end T = 1.5 given by the user is refused
+    naming the end it needs, 1.9."""
+    from camdyn.runtime.core.errors import CamdynInputError
+    from camdyn.runtime.measure import references
+
+    m = smap.run_map("one_dof", "tau", [2 / 9, 0.9], ["dp54"], rtols=[1e-6], threshold=1e-3)
+    for tau, u0, rel in zip(m.values, m.reference, m.reference_error):
+        exact = references.U0(tau)
+        assert 0 < rel < 1e-8
+        assert abs(u0 - exact) <= 10 * rel * u0 + 1e-15
+    assert m.t_end == [3.0, 3.0] and m.warnings == []
+    with pytest.raises(CamdynInputError, match="give t_end >= 1.9"):
+        smap.run_map("one_dof", "tau", [0.9], ["dp54"], rtols=[1e-6], t_end=1.5)
+    # a threshold the reference cannot resolve is said
+    m = smap.run_map("one_dof", "tau", [2 / 9], ["dp54"], rtols=[1e-6], threshold=1e-11)
+    assert len(m.warnings) == 1 and "cannot tell fine from inaccurate" in m.warnings[0]
 
 
 # -- the command ------------------------------------------------------------------------
@@ -234,6 +257,10 @@ def test_beam_map_cells_against_their_own_runs():
     m = stability_beam.run_map("N", [1], ["dp54", "rodas4"], [1e-3, 1e-8], threshold=1e-5)
     ref = beam.run(Case(modes=1, rtol=1e-9))[0]["max_abs_tip_deflection"]
     assert m.reference[0] == pytest.approx(ref, rel=1e-12)
+    # its estimate: the change from rtol 1e-8, a bound well inside the threshold
+    loose = beam.run(Case(modes=1, rtol=1e-8))[0]["max_abs_tip_deflection"]
+    assert m.reference_error[0] == pytest.approx(abs(ref - loose) / ref, rel=1e-9)
+    assert m.reference_error[0] < 1e-6 and m.warnings == []
     for c in m.cells:
         v = beam.run(Case(modes=1, rtol=c.setting, method=c.method))[0]["max_abs_tip_deflection"]
         assert c.figure == pytest.approx(v, rel=1e-12)

@@ -38,6 +38,7 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 
 from ..core.errors import CamdynInputError
+from ..measure.contract import chart_note
 from ..core.laws import choose
 from .motion import RDFD, failing_spans
 
@@ -46,7 +47,9 @@ TWO_PI = 2 * math.pi
 
 @dataclass(frozen=True)
 class Check:
-    """One design check: ``ok``, where it is worst and the intervals where it fails (deg)."""
+    """One design check: ``ok``, where it is worst, the worst value with its sampling error
+    (how far the sampled worst lay from the refined one) and the intervals where it fails
+    (deg)."""
 
     name: str
     ok: bool
@@ -55,11 +58,14 @@ class Check:
     limit: float
     intervals_deg: tuple
     message: str
+    error: float = 0.0
 
     def as_dict(self) -> dict:
         # strict JSON: no curvature of that sign at all (rho infinite) is null
+        finite = math.isfinite(self.value)
         return {"check": self.name, "ok": self.ok, "worst_angle_deg": self.worst_deg,
-                "value": self.value if math.isfinite(self.value) else None, "limit": self.limit,
+                "value": self.value if finite else None,
+                "value_error": self.error if finite else None, "limit": self.limit,
                 "intervals_deg": [list(iv) for iv in self.intervals_deg],
                 "message": self.message}
 
@@ -229,7 +235,10 @@ class CamProfile:
         return np.union1d(np.append(self.phi, TWO_PI), self.cam.breakpoints)
 
     def _worst(self, f, th):
-        """Refine the largest value of f (sampled on th) between its grid neighbours."""
+        """(where, value, sampled value) of the largest value of f: sampled on th, then refined
+        between the grid neighbours of the largest sample.  How far the refinement moved it
+        from the sample bounds what it could still be off by, choosing among near-equal
+        peaks: the extreme's sampling error."""
         v = f(th)
         i = int(np.argmax(v))
         lo, hi = th[max(i - 1, 0)], th[min(i + 1, th.size - 1)]
@@ -237,8 +246,8 @@ class CamProfile:
             r = minimize_scalar(lambda x: -float(f(np.array([x]))[0]), bounds=(lo, hi),
                                 method="bounded", options={"xatol": 1e-12})
             if -r.fun > v[i]:
-                return float(r.x), float(-r.fun)
-        return float(th[i]), float(v[i])
+                return float(r.x), float(-r.fun), float(v[i])
+        return float(th[i]), float(v[i]), float(v[i])
 
     @cached_property
     def checks(self) -> tuple:
@@ -254,8 +263,9 @@ class CamProfile:
             bad = g(th) < 0
             runs = failing_spans(th, bad, lambda x: float(g(x)[0]))
             # worst: the largest curvature of that sign, i.e. the smallest |rho_p|
-            at, k = self._worst(lambda x: -d * self.curvature(x), th)
+            at, k, k_sampled = self._worst(lambda x: -d * self.curvature(x), th)
             rho = 1.0 / k if k > 0 else math.inf
+            rho_error = abs(rho - 1.0 / k_sampled) if k_sampled > 0 and k > 0 else 0.0
             shape = "convex" if d < 0 else "concave"
             if runs:
                 spans = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}]" for a, b in runs)
@@ -268,12 +278,13 @@ class CamProfile:
                 msg = (f"no undercut of the {wall}: smallest {shape} |rho_p| = {rho * 1e3:.4g} mm "
                        f"at {math.degrees(at):.2f} deg > roller radius {rr * 1e3:.4g} mm")
             out.append(Check(name, not runs, math.degrees(at), rho, rr,
-                             tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg))
+                             tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg,
+                             rho_error))
         lim = math.radians(self.max_pressure_angle_deg)
 
         def fa(x):
             return np.abs(self.pressure_angle(x))
-        at, amax = self._worst(fa, th)
+        at, amax, sampled = self._worst(fa, th)
         bad = fa(th) > lim
         runs = failing_spans(th, bad, lambda x: float(fa(x)[0]) - lim)
         if runs:
@@ -288,7 +299,8 @@ class CamProfile:
                    f"|alpha| = {math.degrees(amax):.2f} deg at {math.degrees(at):.2f} deg")
         out.append(Check("pressure angle", not runs, math.degrees(at), math.degrees(amax),
                          self.max_pressure_angle_deg,
-                         tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg))
+                         tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg,
+                         math.degrees(amax - sampled)))
         return tuple(out)
 
     @property
@@ -300,15 +312,12 @@ class CamProfile:
         on the closed-form profile between the samples around the sampled extreme, with its
         sampling error: how far the sampled extreme lay from the refined one, a bound of what
         the refinement could still be off by choosing among near-equal peaks."""
-        th = self._grid()
-        at, amax = self._worst(lambda x: np.abs(self.pressure_angle(x)), th)
-        sampled_a = float(np.max(np.abs(self.pressure_angle(th))))
-        k_at, kmax = self._worst(lambda x: np.abs(self.curvature(x)), th)
-        sampled_k = float(np.max(np.abs(self.curvature(th))))
+        alpha = next(c for c in self.checks if c.name == "pressure angle")
+        _, kmax, sampled_k = self._worst(lambda x: np.abs(self.curvature(x)), self._grid())
         rho = 1.0 / kmax if kmax > 0 else math.inf
         rho_sampled = 1.0 / sampled_k if sampled_k > 0 else math.inf
-        return {"max_abs_pressure_angle_deg": math.degrees(amax),
-                "max_abs_pressure_angle_deg_error": math.degrees(abs(amax - sampled_a)),
+        return {"max_abs_pressure_angle_deg": alpha.value,
+                "max_abs_pressure_angle_deg_error": alpha.error,
                 "min_rho_pitch": rho,
                 "min_rho_pitch_error": abs(rho - rho_sampled) if math.isfinite(rho) else 0.0}
 
@@ -326,7 +335,8 @@ class CamProfile:
                 "points": int(self.phi.size),
                 **self.extremes(),
                 "checks": [c.as_dict() for c in self.checks],
-                "ok": not self.failures}
+                "ok": not self.failures,
+                "warnings": [c.message for c in self.failures]}
 
     # -- writers -----------------------------------------------------------------------
     def write_csv(self, path) -> Path:
@@ -422,7 +432,14 @@ class CamProfile:
         a2.set_xlabel("cam angle phi, deg")
         a2.legend(fontsize=7)
         a2.grid(True, lw=0.3)
-        fig.tight_layout()
+        ex = self.extremes()
+        fig.text(0.01, 0.01, chart_note(
+            {"largest |alpha| (deg)": (ex["max_abs_pressure_angle_deg"],
+                                       ex["max_abs_pressure_angle_deg_error"]),
+             "smallest |rho_pitch| (m)": (ex["min_rho_pitch"], ex["min_rho_pitch_error"])},
+            [c.message for c in self.failures]) + " (the estimates: what the sampling leaves)",
+            fontsize=7)
+        fig.tight_layout(rect=(0, 0.04, 1, 1))
         fig.savefig(path, dpi=110)
         plt.close(fig)
         return path

@@ -108,7 +108,8 @@ def run(args) -> int:
                     say(f"  {msg}")
 
             c0 = time.process_time()
-            out["figures"] = beam.plot_figures(target.case, args.out, progress=figure_progress)
+            out["figures"] = target.paper_figures(args.out, progress=figure_progress,
+                                                  estimate=not args.no_error_estimate)
             out["figures_cpu_seconds"] = time.process_time() - c0
     except CamdynInputError as exc:
         return fail(prog, _beam_argument(str(exc)))

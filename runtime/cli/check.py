@@ -5,7 +5,7 @@ import json
 import sys
 
 from ..core.errors import CamdynInputError
-from .common import fail, fmt
+from .common import add_estimate_option, fail, fmt
 
 
 def add(sub):
@@ -14,6 +14,7 @@ def add(sub):
     c.add_argument("-k", default=None, help="only checks whose key contains this text")
     c.add_argument("--topic", action="append", help="only this topic (repeatable)")
     c.add_argument("--quiet", action="store_true", help="no progress lines")
+    add_estimate_option(c)
     return c
 
 
@@ -29,7 +30,8 @@ def run(args) -> int:
         return fail(prog, f"cannot load the checks: {exc}")
     quiet = args.json or args.quiet
     outcomes = suite.run(todo, progress=None if quiet else (
-        lambda i, n, c: print(f"  [{i}/{n}] {c.key}", file=sys.stderr, flush=True)))
+        lambda i, n, c: print(f"  [{i}/{n}] {c.key}", file=sys.stderr, flush=True)),
+        estimate=not args.no_error_estimate)
     passed = all(o.passed for o in outcomes)
     if args.json:
         print(json.dumps({"passed": passed, "checks": [o.as_dict() for o in outcomes]}, indent=1))
@@ -43,7 +45,7 @@ def _print_table(outcomes) -> None:
     for o in outcomes:
         c = o.check
         rel = "-" if o.rel_diff is None else f"{o.rel_diff:.2g}"
-        derived = o.error if o.error else fmt(o.derived)
+        derived = o.error if o.error else fmt(o.derived) + _estimate(o)
         rows.append((c.item, c.reference, c.printed or "(symbolic)", derived, rel, o.status))
     widths = [min(max(len(r[i]) for r in rows), 60) for i in range(len(rows[0]))]
     for k, r in enumerate(rows):
@@ -51,10 +53,27 @@ def _print_table(outcomes) -> None:
         if k == 0:
             print("  ".join("-" * w for w in widths))
     n_fail = sum(not o.passed for o in outcomes)
+    wide = [o for o in outcomes if o.wide]
     n_err = sum(o.check.errata for o in outcomes)
     print(f"\n{len(outcomes)} checks: {len(outcomes) - n_fail} passed ({n_err} of them printed "
           f"values shown to be misprints), {n_fail} failed, "
           f"{sum(o.seconds for o in outcomes):.1f} s")
+    if outcomes and outcomes[0].estimated:
+        print("derived values: value ± the error estimate of the runs behind it (the value "
+              "again with every run one notch tighter), or (exact)")
+    for o in wide:
+        print(f"  warning {o.check.key}: the estimate {o.estimate:.2g} exceeds the band the "
+              f"rule accepts ({o.check.rule}): the runs do not resolve the agreement")
     for o in outcomes:
         if o.check.errata and o.check.note:
             print(f"  errata {o.check.key}: {o.check.note}")
+
+
+def _estimate(o) -> str:
+    """" ± e", " (exact)", " (no estimate)" beside a derived value, or "" when none was asked
+    for."""
+    if not o.estimated or o.check.rule == "identity":
+        return ""
+    if o.exact:
+        return " (exact)"
+    return " (no estimate)" if o.estimate is None else f" ± {o.estimate:.2g}"

@@ -93,6 +93,8 @@ def run(args) -> int:
         return fail(PROG, name_argument(str(exc)))
     except SimulationError as exc:
         return run_failed(PROG, f"a graph run: {exc}")
+    for w in result["warnings"]:
+        print(f"{PROG}: warning: {w}", file=sys.stderr)
     if args.json:
         print(json.dumps(result, indent=1, default=float))
     else:

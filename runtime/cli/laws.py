@@ -7,6 +7,7 @@ import json
 import sys
 
 from ..core.errors import SimulationError
+from ..measure.contract import plus_minus
 from .common import fail, law_names, run_failed
 from .residual import name_argument
 
@@ -43,7 +44,8 @@ def add(sub):
     lw.add_argument("--values", default=None, metavar="V1,V2,...",
                     help="with --sweep: these parameter values instead of the grid")
     lw.add_argument("--no-error-estimate", action="store_true",
-                    help="with --sweep: skip the second run per point at rtol/10")
+                    help="with --sweep or --tau: skip the second run per point at rtol/10 "
+                         "that estimates each figure's error (for speed)")
     return lw
 
 
@@ -63,15 +65,14 @@ def run(args) -> int:
             result = selection.select(args.tau, args.fa, args.theta, args.stroke,
                                       args.base_radius, args.roller_radius, out=args.out,
                                       progress=lambda msg: print(f"{PROG}: {msg}", file=sys.stderr,
-                                                                 flush=True))
+                                                                 flush=True),
+                                      estimate=not args.no_error_estimate)
         else:
             result = selection.characteristics(args.theta)
     except ValueError as exc:
         return fail(PROG, name_argument(str(exc)))
     except SimulationError as exc:
-        if not sweep:
-            raise
-        return run_failed(PROG, f"a run of the sweep: {exc}")
+        return run_failed(PROG, f"a run of the {'sweep' if sweep else 'selection'}: {exc}")
     if args.json:
         data = [r.as_dict() for r in result] if not (sweep or chosen) else result.as_dict()
         print(json.dumps(data, indent=1))
@@ -100,7 +101,7 @@ def _stray_option(args) -> str | None:
     """An option of one mode of `camdyn laws` given in another would be dropped unread: the
     message naming it, or None."""
     given = lambda name: getattr(args, name, None) not in (None, False)   # noqa: E731
-    sweep_only = ("law", "n", "values", "no_error_estimate")
+    sweep_only = ("law", "n", "values")
     selection_only = ("tau", "fa", "stroke", "base_radius", "roller_radius")
     flag = lambda name: "--" + name.replace("_", "-")                       # noqa: E731
     if given("sweep"):
@@ -113,6 +114,9 @@ def _stray_option(args) -> str | None:
     bad = [n for n in sweep_only if given(n)]
     if bad:
         return f"argument {flag(bad[0])}: only with --sweep SCENE"
+    if given("no_error_estimate") and not (given("tau") or given("fa")):
+        return ("argument --no-error-estimate: only with --sweep or --tau (App. 2's "
+                "characteristics are closed forms, exact)")
     if not (given("tau") or given("fa")):
         bad = [n for n in ("stroke", "base_radius", "roller_radius", "out") if given(n)]
         if bad:
@@ -136,6 +140,14 @@ def _num(v) -> str:
     return {float("inf"): "inf", float("-inf"): "-inf"}.get(v, f"{v:.4g}")
 
 
+def _cell(row: dict, key: str) -> str:
+    """A selection cell: the value, "± e" beside it where it has an estimate."""
+    v = row.get(key)
+    if v is None:
+        return "-"
+    return _num(v) + plus_minus(row.get(f"{key}_error"))
+
+
 def _print_sweep(s) -> None:
     """U0'' and the largest fictitious angular-velocity variation against the law's shape
     parameter (fig. 8.8), each with its error estimate."""
@@ -150,6 +162,10 @@ def _print_sweep(s) -> None:
             if s.law == "modified-sine" else "")
     print(f"\n{s.scene}, {s.law}: least U0'' at {name} = {b[name]:.4g}, least speed variation "
           f"at {name} = {v[name]:.4g}{note}")
+    warned = s.warnings
+    if warned:
+        print(f"{PROG}: warning: {len(warned)} of {len(s.rows)} points warned (the warnings "
+              f"column of laws_sweep.csv); the first: {warned[0]}", file=sys.stderr)
     for f in s.files:
         print(f"wrote {f}")
 
@@ -157,12 +173,15 @@ def _print_sweep(s) -> None:
 def _print_selection(s) -> None:
     """The criteria of sec. 9.2.2 for every law."""
     head = ("law",) + tuple(t for _, t in s.columns)
-    table = [head] + [(r["law"],) + tuple(_num(r.get(k)) if r.get(k) is not None else "-"
-                                          for k, _ in s.columns) for r in s.rows]
+    table = [head] + [(r["law"],) + tuple(_cell(r, k) for k, _ in s.columns) for r in s.rows]
     _print_table(table)
     print(f"\nSelection criteria of thesis sec. 9.2.2 at tau = {s.tau:g}, Fa = {s.Fa:g}: "
           "envelopes through the maxima of CAMSHAFT-1's U0 and U0'' around tau; impact = "
           "r_e/S^(2/3) after backlash (3.15)-(3.16), inf where H'' jumps; lower is better in "
-          "every column.")
+          "every column. ± the error estimate of what runs (the runs one notch tighter, and the "
+          "envelope's sampling) or a sampled profile give; the other columns are App. 2's "
+          "closed forms.")
+    for w in s.warnings:
+        print(f"{PROG}: warning: {w}", file=sys.stderr)
     for f in s.files:
         print(f"wrote {f}")

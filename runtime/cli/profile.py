@@ -6,6 +6,7 @@ import sys
 from pathlib import Path
 
 from ..core.errors import CamdynInputError, out_folder
+from ..measure.contract import plus_minus
 from .common import fail, law_names
 
 
@@ -87,6 +88,10 @@ def run(args) -> int:
           f"{cam.offset * 1e3:g} mm, {out['points']} points")
     for c in cam.checks:
         print(f"{'ok  ' if c.ok else 'FAIL'} {c.message}")
+    print(f"     largest |alpha| = {out['max_abs_pressure_angle_deg']:.6g}"
+          f"{plus_minus(out['max_abs_pressure_angle_deg_error'])} deg, smallest |rho_pitch| = "
+          f"{out['min_rho_pitch'] * 1e3:.6g}{plus_minus(out['min_rho_pitch_error'] * 1e3)} mm "
+          "(refined between the samples; ± what the sampling leaves)")
     for f in out["files"].values():
         print(f"wrote {f}")
     return 0

@@ -30,7 +30,9 @@ def add(sub):
     st.add_argument("--threshold", type=float, default=1e-3,
                     help="relative error of the headline figure above which a run is "
                          "inaccurate (default 1e-3)")
-    st.add_argument("--t-end", type=float, default=3.0, help="end of each run (default 3)")
+    st.add_argument("--t-end", type=float, default=None,
+                    help="end of each run (default: for a model with a rise, 3 or one period of "
+                         "the slowest mode its U0 sees past the rise if longer; else 3)")
     st.add_argument("--law", default="cycloidal", choices=law_names())
     st.add_argument("--run-refused", action="store_true",
                     help="run refused steps anyway and show what they do (stability check off)")
@@ -101,7 +103,7 @@ def run(args) -> int:
         if not 0 < args.threshold < 1:
             raise CamdynInputError(f"argument --threshold: {args.threshold:g} is out of range: "
                                    f"0 < threshold < 1")
-        if not args.t_end > 0:
+        if args.t_end is not None and not args.t_end > 0:
             raise CamdynInputError(f"argument --t-end: {args.t_end:g} must be positive")
         out = out_folder(args.out, create=False)       # checked before the runs
         m, label = study_of(args, say)
@@ -114,12 +116,17 @@ def run(args) -> int:
         return run_failed(prog, f"the reference run (dp54, rtol {smap.REF_RTOL:g}) failed: {exc}")
     summary = {"model": m.model, "param": m.param, "values": m.values, "counts": m.counts(),
                "largest_fine": {k: smap.largest_fine(m, k) for k in m.settings},
-               "step_limit": m.step_limit, "files": files}
+               "step_limit": m.step_limit, "reference_run": m.reference_run,
+               "reference": m.reference, "reference_error": m.reference_error,
+               "warnings": m.warnings, "files": files}
+    for w in m.warnings:
+        print(f"{prog}: warning: {w}", file=sys.stderr)
     if args.json:
         print(json.dumps(summary, indent=1))
         return 0
     print(f"{m.model}: stability map over {m.param} = {', '.join(f'{v:.4g}' for v in m.values)} "
-          f"({m.figure} within {m.threshold:g} counts as fine)")
+          f"({m.figure} within {m.threshold:g} of {m.reference_run} counts as fine; that "
+          f"reference good to {max(m.reference_error):.2g}, relative)")
     for k, c in summary["counts"].items():
         fine = ", ".join("-" if f is None else f"{f:.3g}" for f in summary["largest_fine"][k])
         line = f"  {k:7s} " + " ".join(f"{n} {c[n]}" for n in smap.CLASSES)

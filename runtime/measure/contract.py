@@ -100,6 +100,7 @@ def answer(target, *, estimate: bool = True, progress=None) -> Answer:
     errors, sources, missing = combine(target, base, tight, estimate)
     for name in missing:
         warnings.append(f"no error estimate for {name}: the tighter run does not give it")
+    warnings += unresolved(base.figures, errors, _scales(target))
     return Answer(target.name, target.kind, dict(base.figures), errors, sources, warnings,
                   base.record, base.stats, estimate, base.result)
 
@@ -150,8 +151,93 @@ def grid_columns(target, base, tight) -> dict:
         if tight is not None:
             est = np.abs(base.figures[:, k] - tight.figures[:, k]) * factor + base.sampling[:, k]
         cols[f"{names[k]}_error"] = est
-    cols["warnings"] = np.array(["; ".join(w) for w in base.warnings], dtype=object)
+    # the points with a figure that its estimate does not resolve, found on the whole arrays
+    # (a grid has thousands of points), then worded as a single run words them
+    shown = [(k, f) for k, f in enumerate(names) if f"{f}_error" in cols]
+    scales = _scales(target)
+    flagged = np.zeros(len(base.figures), dtype=bool)
+    for k, f in shown:
+        e, v = cols[f"{f}_error"], base.figures[:, k]
+        with np.errstate(invalid="ignore"):
+            flagged |= (np.isfinite(e) & np.isfinite(v)
+                        & (e > UNRESOLVED * (np.abs(v) + scales.get(f, 0.0))))
+    warnings = [list(w) for w in base.warnings]
+    for j in np.flatnonzero(flagged):
+        warnings[j] += unresolved({f: float(base.figures[j, k]) for k, f in shown},
+                                  {f: float(cols[f"{f}_error"][j]) for _, f in shown}, scales)
+    cols["warnings"] = np.array(["; ".join(w) for w in warnings], dtype=object)
     return cols
+
+
+def quotient(a: float, ea: float, b: float, eb: float) -> tuple[float, float]:
+    """(a/b, its error) where a and b carry errors ea and eb: the largest distance from a/b
+    to the quotients over the box [a - ea, a + ea] x [b - eb, b + eb] (exact, where adding
+    relative errors holds only while they are small); infinite where the box holds b = 0, for
+    then the quotient is not bounded."""
+    r = a / b
+    if eb >= abs(b):
+        return r, math.inf
+    corners = [(a + sa * ea) / (b + sb * eb) for sa in (-1, 1) for sb in (-1, 1)]
+    return r, max(abs(c - r) for c in corners)
+
+
+UNRESOLVED = 0.5
+"""An estimate above this fraction of its figure leaves the figure unknown to within a factor
+of two or worse: the run does not resolve it, and says so."""
+
+
+def _scales(target) -> dict:
+    """Figure -> the size below which it counts as zero (targets/base.py Figure.scale)."""
+    return {f.name: f.scale for f in target.figures() if f.scale}
+
+
+def unresolved(figures: dict, errors: dict, scales: dict | None = None) -> list:
+    """A warning for every figure whose estimate exceeds UNRESOLVED of |figure| + its scale
+    (``scales``, 0 where not given): the run does not resolve it (its tolerance or step is too
+    coarse for it, or it lies at a zero of the response, which the run cannot tell from a
+    small value)."""
+    out = []
+    for name, e in errors.items():
+        v = figures.get(name)
+        if _number(e) and _number(v) and e > UNRESOLVED * (abs(v) + (scales or {}).get(name, 0.0)):
+            out.append(f"{name} = {v:.4g} ± {e:.2g}: the estimate exceeds half the figure"
+                       f"{' (and its scale)' if (scales or {}).get(name) else ''}, which the run "
+                       "does not resolve; tighten rtol (or the step)")
+    return out
+
+
+# -- the contract on a chart: a footnote with the estimates and the warnings -------------
+def chart_note(estimates: dict, warnings, points: int | None = None) -> str:
+    """The footnote a chart carries (the answer contract on a picture): for each figure drawn,
+    ``estimates[name] = (values, errors)`` (numbers or arrays), its largest estimate, absolute
+    and relative to the figure; and the warnings: ``warnings`` a list of lines, or of one
+    string per point of a grid ("" for none; ``points`` of them)."""
+    parts = []
+    for name, (values, errors) in estimates.items():
+        v = np.abs(np.ravel(np.asarray(values, dtype=float)))
+        e = np.atleast_1d(np.asarray([np.nan if x is None else x for x in np.ravel(errors)],
+                                     dtype=float))
+        if not np.all(np.isfinite(e)):
+            parts.append(f"{name}: no error estimate"
+                         + ("" if not np.any(np.isfinite(e)) else " at some points"))
+            continue
+        with np.errstate(divide="ignore", invalid="ignore"):
+            rel = np.where(v > 0, e / v, np.nan)
+        big = float(e.max())
+        text = f"{name} ± {big:.2g}" if e.size == 1 else f"{name} ± up to {big:.2g}"
+        if np.any(np.isfinite(rel)) and big > 0:
+            text += f" ({float(np.nanmax(rel)):.2g} relative)"
+        parts.append(text)
+    lines = ["error estimates: " + "; ".join(parts)] if parts else []
+    warned = [w for w in warnings if w]
+    if points is not None:
+        lines.append(f"{len(warned)} of {points} points warned" if warned else "no warnings")
+    elif warned:
+        first = warned[0] if len(warned[0]) <= 110 else warned[0][:107] + "..."
+        lines.append(f"{len(warned)} warning{'s' if len(warned) > 1 else ''}: {first}")
+    else:
+        lines.append("no warnings")
+    return "\n".join(lines)
 
 
 # -- the contract in text: a figure and its estimate on one line ------------------------
@@ -160,9 +246,26 @@ def plus_minus(e) -> str:
     return f" ± {e:.2g}" if _number(e) else ""
 
 
-def with_errors(figures: dict) -> list:
+def note(out: dict, key: str, exact=()) -> str:
+    """What follows figure ``key``'s value in a text table: " (exact)" for a figure in
+    ``exact`` (it follows from the parameters), " ± e" with its estimate, " (no error
+    estimate)" where the record has none for it, "" for what is no figure."""
+    if key in exact:
+        return " (exact)"
+    e = out.get(f"{key}_error")
+    if _number(e):
+        return plus_minus(e)
+    return " (no error estimate)" if f"{key}_error" in out else ""
+
+
+def exact_figures(target) -> set:
+    """The names of ``target``'s figures that follow from its parameters (no run's error)."""
+    return {f.name for f in target.figures() if f.estimate == "exact"}
+
+
+def with_errors(figures: dict, exact=()) -> list:
     """Lines "name  value ± e" for a text table, the *_error keys folded into the line of
-    their figure; a figure whose estimate is None says so."""
+    their figure (:func:`note`)."""
     rows = []
     keys = [k for k in figures if not (k.endswith("_error") and k[:-6] in figures)
             and k not in ("warnings", "error_sources")]
@@ -170,11 +273,5 @@ def with_errors(figures: dict) -> list:
     for k in keys:
         v = figures[k]
         text = f"{v:.6g}" if isinstance(v, float) else f"{v}"
-        e = figures.get(f"{k}_error")
-        if _number(e):
-            text += plus_minus(e)
-        elif f"{k}_error" in figures:
-            text += " (no error estimate)"
-        rows.append(f"{k:<{width}}  {text}")
+        rows.append(f"{k:<{width}}  {text}{note(figures, k, exact)}")
     return rows
-

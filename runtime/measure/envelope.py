@@ -112,6 +112,30 @@ def maxima(tau, values) -> tuple[np.ndarray, np.ndarray]:
     return np.array(out_t), np.array(out_v)
 
 
+def envelope_error(tau, values, errors):
+    """The error of :func:`envelope` of a sampled graph, as a function of tau: what the
+    sampling leaves (the envelope of every other sample against that of all: a maximum
+    refined from samples twice as far apart moves by more than the one refined from all, so
+    this bounds it) plus what the samples' own errors (``errors``, the answer contract's)
+    move it by (the envelope of the values raised by their errors against it)."""
+    t, v = np.asarray(tau, float), np.asarray(values, float)
+    e = np.nan_to_num(np.asarray(errors, float), nan=np.inf)
+    full = envelope(t, v)
+    order = np.argsort(t)
+    half = envelope(t[order][::2], v[order][::2]) if t.size >= 6 else None
+    raised = envelope(t, v + e) if np.all(np.isfinite(e)) else None
+
+    def error(x):
+        x = np.asarray(x, float)
+        at = full(x)
+        sampling = np.abs(half(x) - at) if half is not None else np.full(np.shape(x), np.inf)
+        runs = np.abs(raised(x) - at) if raised is not None else np.full(np.shape(x), np.inf)
+        out = sampling + runs
+        return float(out) if np.ndim(out) == 0 else out
+
+    return error
+
+
 def envelope(tau, values) -> Envelope:
     """The envelope of a sampled graph (module doc); with no interior maximum, the graph."""
     mt, mv = maxima(tau, values)

@@ -21,7 +21,10 @@ blown up.  ``check_stability=False`` makes ``status`` that outcome.
 
 Headline figure: U0, the residual amplitude after the rise (thesis (3.5), sec. 3.3) for
 models that declare one; else the state at t_end, its error the largest over the states of
-|y - y_ref|/(|y_ref| + scale).  Reference: DP54 at rtol ``REF_RTOL``.  CPU time: the
+|y - y_ref|/(|y_ref| + scale).  Reference: DP54 at rtol ``REF_RTOL``, the model's target
+(runtime/targets/model.py) with its window and its own error estimate (the answer contract,
+runtime/measure/contract.py): a reference whose estimate is not well inside the threshold
+cannot tell fine from inaccurate, and the map says so in its warnings.  CPU time: the
 process time of the run that gave the outcome (integration, stability check), not of the
 figure's extraction; ``loop_seconds`` the compiled loops' own wall time alone; with step
 counts and right-hand-side calls.
@@ -46,8 +49,9 @@ import numpy as np
 from ..core import stability as _stability
 from ..core.errors import CamdynInputError, SimulationError, UnstableStep
 from ..core.methods import METHODS
-from ..core.models import CompiledModel, load
+from ..core.models import CompiledModel
 from ..core.simulator import Simulator
+from ..measure.contract import answer, fit_window
 
 CLASSES = ("fine", "inaccurate", "refused", "blew up")
 COLOURS = {"fine": "#4caf50", "inaccurate": "#ffc107", "refused": "#9e9e9e", "blew up": "#e53935"}
@@ -94,6 +98,9 @@ class StabilityMap:
     step_limit: dict        # fixed method -> b/|lambda| per parameter value (the theory line)
     cells: list = field(default_factory=list)
     reference_run: str = f"DP54 rtol {REF_RTOL:g}"   # what the figures are measured against
+    reference_error: list = field(default_factory=list)   # its estimate, relative, per value
+    t_end: list = field(default_factory=list)       # each value's run end (its window)
+    warnings: list = field(default_factory=list)
 
     def rows(self) -> list[dict]:
         return [asdict(c) for c in self.cells]
@@ -164,9 +171,13 @@ class StabilityMap:
             ax.set_title(f"{self.model}: {meth}", fontsize=9)
         handles = [Patch(color=COLOURS[k], label=k) for k in CLASSES]
         fig.legend(handles=handles, loc="upper center", ncol=4, fontsize=8)
+        ref_note = (f", good to {max(self.reference_error):.2g} relative"
+                    if self.reference_error else "")
+        warned = (f"; {len(self.warnings)} warning{'s' if len(self.warnings) > 1 else ''}: "
+                  f"{self.warnings[0][:100]}" if self.warnings else "; no warnings")
         fig.text(0.01, 0.01, f"numbers: CPU ms per run; inaccurate: |{self.figure} error| > "
-                             f"{self.threshold:g} (relative, against {self.reference_run})",
-                 fontsize=7)
+                             f"{self.threshold:g} (relative, against {self.reference_run}"
+                             f"{ref_note}){warned}", fontsize=7)
         fig.tight_layout(rect=(0, 0.03, 1, 0.93))
         fig.savefig(path, dpi=110)
         plt.close(fig)
@@ -196,12 +207,17 @@ def _edges(v: np.ndarray, geo: bool = True) -> np.ndarray:
 
 @dataclass(frozen=True)
 class Reference:
-    """The reference run of one parameter value: its figure and states' largest values."""
+    """The reference run of one parameter value: its figure, the figure's relative error
+    estimate (the answer contract's, in the norm of :func:`figure_error`), the states' largest
+    values, the run, and the run's end (the window its figure needs)."""
 
     figure: float
     state: np.ndarray
     y_max: np.ndarray
     result: object
+    error: float
+    t_end: float
+    warnings: tuple
 
 
 def figure_name(model: CompiledModel) -> str:
@@ -223,12 +239,35 @@ def figure_error(model: CompiledModel, value, ref: Reference) -> float:
     return float(np.max(np.abs(value - ref.state) / (np.abs(ref.state) + model.state_scales())))
 
 
-def reference(model: CompiledModel, params: dict, t_end: float, law: str) -> Reference:
-    res = Simulator(model, t_end, "dp54", rtol=REF_RTOL, law=law).run(params)
-    value = headline(model, res)
+def target_of(name, t_end=None, law: str = "cycloidal", progress=None):
+    """The target a map runs (runtime/targets/resolve.py): a model with a rise (its U0), or
+    any model to t_end (its state; to the end a rise's run takes, DEFAULT_T_END, unless
+    given).  ``t_end`` None leaves a rise's run end to its target and its window."""
+    from ..targets.model import DEFAULT_T_END, StateTarget
+    from ..targets.resolve import model
+
+    target = model(str(name), progress=progress, t_end=t_end, law=law)
+    if isinstance(target, StateTarget) and target.t_end is None:
+        target = target.with_settings(t_end=DEFAULT_T_END)
+    return target
+
+
+def reference(target) -> Reference:
+    """The reference of ``target`` at its parameter values: its window fitted (extended where
+    camdyn chose the run's end, refused where the user gave one too short), then one run at
+    DP54, rtol REF_RTOL, with its error estimate."""
+    t = fit_window(target).with_settings(method="dp54", rtol=REF_RTOL)
+    a = answer(t)
+    res, m = a.result, t.model
+    value = headline(m, res)
+    if np.ndim(value) == 0:
+        rel = (a.errors["U0"] or 0.0) / abs(value) if value else (a.errors["U0"] or 0.0)
+    else:
+        e = np.array([a.errors[n] or 0.0 for n in m.state_names])
+        rel = float(np.max(e / (np.abs(value) + m.state_scales())))
     return Reference(figure=value if np.ndim(value) == 0 else float("nan"),
                      state=np.asarray(res.y[-1], float), y_max=np.abs(res.y).max(axis=0),
-                     result=res)
+                     result=res, error=float(rel), t_end=t.end, warnings=tuple(a.warnings))
 
 
 def step_limit(model: CompiledModel, method: str, ref: Reference) -> float:
@@ -296,15 +335,15 @@ def classify_cell(model, method: str, setting: float, params: dict, ref: Referen
                   threshold: float, t_end: float, law: str = "cycloidal",
                   check_stability: bool = True, param: float = float("nan")) -> Cell:
     """One cell: run ``method`` at ``setting`` (step or rtol) and classify it (module doc)."""
-    m = model if isinstance(model, CompiledModel) else load(model)
+    m = model.model if hasattr(model, "model") else target_of(model, t_end, law).model
     fixed = not METHODS[method].adaptive
     kw = {"step": setting} if fixed else {"rtol": setting}
     refused = False
     try:
-        out = _outcome(m, Simulator(m, t_end, method, law=law, **kw), params, ref, threshold)
+        out = _outcome(m, Simulator(m, ref.t_end, method, law=law, **kw), params, ref, threshold)
     except UnstableStep:
         refused = True
-        out = _outcome(m, Simulator(m, t_end, method, law=law, check_stability=False, **kw),
+        out = _outcome(m, Simulator(m, ref.t_end, method, law=law, check_stability=False, **kw),
                        params, ref, threshold)
     status = "refused" if refused and check_stability else out[0]
     return Cell(method, float(param), float(setting), status, out[0], refused, *out[1:])
@@ -313,11 +352,14 @@ def classify_cell(model, method: str, setting: float, params: dict, ref: Referen
 # -- the map ------------------------------------------------------------------------------
 
 def run_map(model, param: str, values, methods, *, steps=None, rtols=None,
-            fixed: dict | None = None, threshold: float = 1e-3, t_end: float = 3.0,
+            fixed: dict | None = None, threshold: float = 1e-3, t_end: float | None = None,
             law: str = "cycloidal", check_stability: bool = True, progress=None) -> StabilityMap:
     """The map of ``methods`` over ``values`` of parameter ``param``: fixed-step methods over
-    ``steps``, adaptive ones over ``rtols`` (a list, or a dict method -> list)."""
-    m = model if isinstance(model, CompiledModel) else load(model)
+    ``steps``, adaptive ones over ``rtols`` (a list, or a dict method -> list).  ``model`` is a
+    model's name or file, or its target (:func:`target_of`); ``t_end`` None leaves each run's
+    end to the window its figure needs."""
+    target = model if hasattr(model, "model") else target_of(model, t_end, law, progress)
+    m = target.model
     fixed = dict(fixed or {})
     if param not in m.parameter_names:
         raise CamdynInputError(f"model {m.name} has no parameter {param}; its parameters are "
@@ -350,16 +392,26 @@ def run_map(model, param: str, values, methods, *, steps=None, rtols=None,
     for v in values:
         params = {**fixed, param: v}
         m.parameter_vector(params)   # names and ranges checked before any run
-        refs.append(reference(m, params, t_end, law))
+    for v in values:
+        refs.append(reference(target.with_parameters({**fixed, param: v})))
         for k in limits:
             limits[k].append(step_limit(m, k, refs[-1]))
     smap = StabilityMap(m.name, param, values, fixed, settings, threshold, figure_name(m),
-                        check_stability, [r.figure for r in refs], limits)
+                        check_stability, [r.figure for r in refs], limits,
+                        reference_error=[r.error for r in refs], t_end=[r.t_end for r in refs])
+    for v, r in zip(values, refs):
+        smap.warnings += [f"the reference at {param} = {v:g}: {w}" for w in r.warnings]
+        if r.error > 0.1 * threshold:
+            smap.warnings.append(
+                f"the reference at {param} = {v:g} is only good to {r.error:.2g} (relative), "
+                f"not well inside the threshold {threshold:g}: it cannot tell fine from "
+                "inaccurate there; raise --threshold")
     for meth, grid in settings.items():
         for v, ref in zip(values, refs):
             params = {**fixed, param: v}
-            row = [classify_cell(m, meth, s, params, ref, threshold=threshold, t_end=t_end,
-                                 law=law, check_stability=check_stability, param=v) for s in grid]
+            row = [classify_cell(target, meth, s, params, ref, threshold=threshold,
+                                 t_end=ref.t_end, law=law, check_stability=check_stability,
+                                 param=v) for s in grid]
             smap.cells += row
             say(f"{m.name} {meth} {param}={v:g}: " + " ".join(c.status.replace(" ", "_")
                                                             for c in row))
@@ -396,14 +448,14 @@ DEFAULT_PARAMS = {"one_dof": ("tau", TAU_MAXIMA), "camshaft1": ("tau", TAU_MAXIM
 
 
 def study(name: str, param, methods, fixed: dict, rtols, steps, *, threshold: float,
-          t_end: float, law: str, check_stability: bool = True, progress=None) -> StabilityMap:
+          t_end: float | None, law: str, check_stability: bool = True,
+          progress=None) -> StabilityMap:
     """The map of a model (a built-in one or a model file) over ``param`` = (name, values),
     or its default grid: ``methods`` (default: rk4, koster where the model is second order,
     dp54, rodas4), ``rtols`` (default 1e-3 .. 1e-10, 8), ``steps`` (default: 10 on a log grid
     around the theory's boundary over the grid, 1/50 of the smallest to 1.6 x the largest)."""
-    from ..targets.model import load_ref, model_ref
-
-    model = load_ref(model_ref(name), progress)
+    target = target_of(name, t_end, law, progress)
+    model = target.model
     if param is None:
         param = DEFAULT_PARAMS.get(model.name)
         if param is None:
@@ -426,8 +478,8 @@ def study(name: str, param, methods, fixed: dict, rtols, steps, *, threshold: fl
         for v in values:
             p = {**fixed, pname: v}
             model.parameter_vector(p)
-            lims.append(step_limit(model, "rk4", reference(model, p, t_end, law)))
+            lims.append(step_limit(model, "rk4", reference(target.with_parameters(p))))
         steps = list(np.geomspace(min(lims) / 50, max(lims) * 1.6, 10))
-    return run_map(model, pname, values, methods, steps=steps, rtols=rtols, fixed=fixed,
+    return run_map(target, pname, values, methods, steps=steps, rtols=rtols, fixed=fixed,
                    threshold=threshold, t_end=t_end, law=law, check_stability=check_stability,
                    progress=progress)

@@ -24,6 +24,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.errors import CamdynInputError, out_folder
+from ..measure.contract import chart_note
 from ..targets.grid import default_jobs, run_chunk, run_grid
 
 __all__ = ["parse_axis", "parse_grid", "sweep", "SweepResult", "default_jobs"]
@@ -188,8 +189,10 @@ class SweepResult:
         return path
 
     def charts(self, out_dir) -> list[Path]:
-        """One PNG per figure (not its error estimate) against the last axis with more than
-        one value, a line for every combination of the other axes (up to 12, evenly picked)."""
+        """One PNG per figure against the last axis with more than one value, a line for every
+        combination of the other axes (up to 12, evenly picked), its error estimate shaded
+        about it, the points that warned marked, and a footnote with the largest estimate and
+        how many points warned (the answer contract on a chart)."""
         import matplotlib
 
         matplotlib.use("Agg")
@@ -207,9 +210,12 @@ class SweepResult:
             combos = [combos[int(round(j))] for j in np.linspace(0, len(combos) - 1, 12)]
         x = self.axes[names[x_ax]]
         written = []
+        warned = np.array([bool(w) for w in self.columns["warnings"]]).reshape(shape)
         for fig_name in [f for f in self.figures if not f.endswith("_error")]:
             data = np.asarray(self.columns[fig_name], dtype=float).reshape(shape)
-            fig, ax = plt.subplots(figsize=(7, 4.2))
+            err = self.columns.get(f"{fig_name}_error")
+            err = None if err is None else np.asarray(err, dtype=float).reshape(shape)
+            fig, ax = plt.subplots(figsize=(7, 4.6))
             for c in combos:
                 idx = [0] * len(names)
                 for k, j in zip(others, c):
@@ -217,9 +223,16 @@ class SweepResult:
                 idx[x_ax] = slice(None)
                 label = ", ".join(f"{names[k]} = {self.axes[names[k]][j]:g}"
                                   for k, j in zip(others, c))
+                y = data[tuple(idx)]
                 # a marker where the x axis has one value: a line of one point draws nothing
-                ax.plot(x, data[tuple(idx)], lw=1.0, label=label or None,
-                        marker="o" if len(x) == 1 else None)
+                line, = ax.plot(x, y, lw=1.0, label=label or None,
+                                marker="o" if len(x) == 1 else None)
+                if err is not None and np.any(np.isfinite(err[tuple(idx)])):
+                    e = err[tuple(idx)]
+                    ax.fill_between(x, y - e, y + e, color=line.get_color(), alpha=0.25, lw=0)
+                w = warned[tuple(idx)]
+                if w.any():
+                    ax.plot(np.asarray(x)[w], y[w], "x", color="#e53935", ms=5)
             finite = data[np.isfinite(data)]
             if finite.size and finite.min() > 0 and finite.max() > 100 * finite.min():
                 ax.set_yscale("log")     # U0 and U0'' span decades between the dips of (3.5)
@@ -229,7 +242,13 @@ class SweepResult:
             ax.grid(alpha=0.3)
             if combos and combos[0]:
                 ax.legend(fontsize=7)
-            fig.tight_layout()
+            note = chart_note({fig_name: (data, err if err is not None else
+                                          np.full(data.shape, np.nan))},
+                              self.columns["warnings"], points=len(self))
+            fig.text(0.01, 0.01, note + ("; x: a point that warned" if warned.any() else "")
+                     + ("; shaded: ± the estimate" if err is not None
+                        and np.any(np.isfinite(err)) else ""), fontsize=7)
+            fig.tight_layout(rect=(0, 0.07, 1, 1))
             path = out_dir / f"{fig_name}.png"
             fig.savefig(path, dpi=110)
             plt.close(fig)

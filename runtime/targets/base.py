@@ -91,6 +91,10 @@ class Figure:
     place      where an extreme lies rather than its value: Brent locates it to
                sqrt(eps)|T|, so its error tells of the locator more than of the run (a
                work-precision study does not score it)
+    scale      the size below which the figure counts as zero (a state's scale, for a state
+               that may end near zero); 0 for an amplitude or extreme, which is judged
+               against itself: the contract warns where the estimate exceeds half of
+               |figure| + scale (runtime/measure/contract.py)
     """
 
     name: str
@@ -100,6 +104,7 @@ class Figure:
     output: str | None = None
     dwell: bool = False
     place: bool = False
+    scale: float = 0.0
 
 
 @dataclass
@@ -278,9 +283,9 @@ class Target:
 
     def table(self, out: dict) -> list:
         """The answer (``Answer.as_dict()``) as lines of text, each figure with its estimate."""
-        from ..measure.contract import with_errors
+        from ..measure.contract import exact_figures, with_errors
 
-        return with_errors(out)
+        return with_errors(out, exact_figures(self))
 
     def job(self, out_dir, estimate: bool = True, progress=None) -> dict:
         """`camdyn run`: the answer, the target's files (diagrams) and report.json in

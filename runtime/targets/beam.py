@@ -226,35 +226,3 @@ def sweep(case: Case, field: str, values, progress=None) -> list:
         s, res = run(c, progress)
         out.append((v, s, res))
     return out
-
-
-def plot_figures(case: Case, out_dir, progress=None, which=None) -> list:
-    """PNG files of figs 4-9 (tip deflection v_E against the cam angle Omega t in degrees)."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from pathlib import Path
-
-    out = Path(out_dir)
-    out.mkdir(parents=True, exist_ok=True)
-    written = []
-    for name, (field, values, label) in FIGURES.items():
-        if which is not None and name not in which:
-            continue
-        fig, ax = plt.subplots(figsize=(8, 4))
-        for v, s, res in sweep(case, field, values, progress):
-            t = np.linspace(0.0, res.t[-1], 4000)
-            ax.plot(np.degrees(case.omega * t) if field != "omega" else np.degrees(v * t),
-                    res.sample(t)["vE"] * 1e3, lw=0.8, label=f"{label} = {v:g}")
-        ax.set_xlabel("cam angle [deg]")
-        ax.set_ylabel("tip deflection v_E [mm]")
-        ax.set_title(f"{name.replace('_', ' ')}: transverse response at the roller pin E")
-        ax.grid(True, lw=0.3)
-        ax.legend(fontsize=8)
-        fig.tight_layout()
-        path = out / f"{name}.png"
-        fig.savefig(path, dpi=110)
-        plt.close(fig)
-        written.append(str(path))
-    return written

@@ -24,8 +24,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..measure import references
-from ..measure.contract import answer
-from ..measure.envelope import envelope, tau_grid
+from ..measure.contract import answer, chart_note, quotient
+from ..measure.envelope import envelope, envelope_error, tau_grid
 from . import scene_files
 from .grid import run_grid
 from .model import ModelTarget
@@ -121,7 +121,11 @@ class StudyTarget(ModelTarget):
         for a_ in ax:
             a_.grid(alpha=0.3)
             a_.legend(fontsize=8)
-        fig.tight_layout()
+        resp_rows = summary["response"]
+        fig.text(0.01, 0.01, chart_note(
+            {k: ([d[k] for d in resp_rows], [d[f"{k}_error"] for d in resp_rows])
+             for k in ("U0", "U0dd", "Xdd_min_rise")}, warnings), fontsize=7)
+        fig.tight_layout(rect=(0, 0.05, 1, 1))
         fig.savefig(out_dir / "response.png", dpi=120)
         plt.close(fig)
 
@@ -140,7 +144,7 @@ class StudyTarget(ModelTarget):
         if grid.warned:
             warnings.append(f"{grid.warned} of {len(pts)} graph runs warned (envelopes.csv)")
         fig, ax = plt.subplots(2, 2, figsize=(11, 8))
-        envelopes = {}
+        envelopes, envelope_errors = {}, {}
         for k, (Fa, vals) in enumerate(rows.items()):
             colour = f"C{k}"
             U0 = [v["U0"] for v in vals]
@@ -148,6 +152,11 @@ class StudyTarget(ModelTarget):
             # the curves a designer reads (secs 3.5, 8.2.6): through the maxima, bold; the
             # raw graph thin beneath them
             envelopes[Fa] = {"U0": envelope(taus, U0), "U0dd": envelope(taus, U0dd)}
+            if estimate:
+                envelope_errors[Fa] = {
+                    k: envelope_error(taus, [v[k] for v in vals],
+                                      [np.nan if v[f"{k}_error"] is None else v[f"{k}_error"]
+                                       for v in vals])(taus) for k in ("U0", "U0dd")}
             ax[0, 0].semilogy(taus, U0, color=colour, lw=0.6, alpha=0.6)
             ax[0, 0].semilogy(taus, envelopes[Fa]["U0"](taus), color=colour, lw=1.8,
                               label=f"Fa = {Fa:g}")
@@ -171,7 +180,10 @@ class StudyTarget(ModelTarget):
         ax[0, 0].legend(fontsize=7)
         fig.suptitle(f"CAMSHAFT-1 response graphs, {scene['law']} rise "
                      "(cf. thesis fig. 4.11a-c)")
-        fig.tight_layout()
+        fig.text(0.01, 0.01, chart_note(
+            {k: (cols[k], cols[f"{k}_error"]) for k in keys}, cols["warnings"],
+            points=len(pts)), fontsize=7)
+        fig.tight_layout(rect=(0, 0.04, 1, 1))
         fig.savefig(out_dir / "graphs.png", dpi=120)
         plt.close(fig)
 
@@ -182,22 +194,29 @@ class StudyTarget(ModelTarget):
                                           for k, e in env.items()}
                                 for Fa, env in envelopes.items()}
         with open(out_dir / "envelopes.csv", "w") as fh:
-            fh.write("Fa,tau,U0,U0_error,U0_envelope,U0dd,U0dd_error,U0dd_envelope,warnings\n")
+            fh.write("Fa,tau,U0,U0_error,U0_envelope,U0_envelope_error,U0dd,U0dd_error,"
+                     "U0dd_envelope,U0dd_envelope_error,warnings\n")
             for j, (Fa, vals) in enumerate(rows.items()):
                 e = envelopes[Fa]
+                ee = envelope_errors.get(Fa, {"U0": [None] * len(taus),
+                                              "U0dd": [None] * len(taus)})
                 for i, (tau, v) in enumerate(zip(taus, vals)):
                     w = cols["warnings"][j * len(taus) + i]
                     fh.write(f"{Fa:g},{tau:.10g},{v['U0']:.10g},{_cell(v['U0_error'])},"
-                             f"{e['U0'](tau):.10g},{v['U0dd']:.10g},{_cell(v['U0dd_error'])},"
-                             f"{e['U0dd'](tau):.10g},\"{w}\"\n")
+                             f"{e['U0'](tau):.10g},{_cell(ee['U0'][i])},"
+                             f"{v['U0dd']:.10g},{_cell(v['U0dd_error'])},"
+                             f"{e['U0dd'](tau):.10g},{_cell(ee['U0dd'][i])},\"{w}\"\n")
         ratio, ratio_error = None, None
         by_fa = {d["Fa"]: d for d in summary["response"]}
         if 0.0 in by_fa and 2.0 in by_fa:
             a2, a0 = by_fa[2.0], by_fa[0.0]
             ratio = a2["U0"] / a0["U0"]
             if a2["U0_error"] is not None and a0["U0_error"] is not None:
-                # a quotient's relative errors add
-                ratio_error = ratio * (a2["U0_error"] / a2["U0"] + a0["U0_error"] / a0["U0"])
+                ratio, ratio_error = quotient(a2["U0"], a2["U0_error"], a0["U0"], a0["U0_error"])
+                if not math.isfinite(ratio_error):
+                    warnings.append("the U0 ratio of Fa = 2 to Fa = 0 is not bounded: U0 at "
+                                    "Fa = 0 may be zero within its estimate; tighten rtol")
+                    ratio_error = None
         summary["U0_ratio_Fa2_Fa0"] = ratio
         summary["U0_ratio_Fa2_Fa0_error"] = ratio_error
         summary["warnings"] = warnings
@@ -226,7 +245,8 @@ class StudyTarget(ModelTarget):
             lines.append(f"| {d['Fa']:g} | {_pm(d['U0'], d['U0_error'])} | "
                          f"{_pm(d['U0dd'], d['U0dd_error'])} | "
                          f"{_pm(d['Xdd_min_rise'], d['Xdd_min_rise_error'])} | "
-                         f"{d['T_at_Xdd_min']:.3f} | {d['n_steps']} | {1e3 * d['seconds']:.2f} |")
+                         f"{_pm(d['T_at_Xdd_min'], d['T_at_Xdd_min_error'])} | {d['n_steps']} | "
+                         f"{1e3 * d['seconds']:.2f} |")
         if summary["U0_ratio_Fa2_Fa0"] is not None:
             lines += ["", f"U0 at Fa = 2 over U0 at Fa = 0: **"
                       f"{_pm(summary['U0_ratio_Fa2_Fa0'], summary['U0_ratio_Fa2_Fa0_error'], 3)}"
@@ -248,7 +268,7 @@ def _cell(v) -> str:
 
 
 def _pm(v, e, digits: int = 4) -> str:
-    return f"{v:.{digits}g}" + ("" if e is None else f" ± {e:.2g}")
+    return f"{v:.{digits}g}" + (" (no error estimate)" if e is None else f" ± {e:.2g}")
 
 
 def _json(v):

@@ -7,6 +7,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.errors import out_folder
+from ..measure.contract import chart_note
 from .dynacam import nominal_T
 from .scene_files import Scene
 
@@ -20,8 +21,15 @@ DIAGRAMS = (
 )
 
 
+NOTED = {"Xdd": ("Xdd_min_rise", "Xdd_max_rise", "U0dd", "U0"),
+         "speed_var": ("speed_variation_max",), "motor_speed_var": ("motor_speed_variation_max",)}
+"""The headline figures each diagram shows, noted with their estimates beneath it."""
+
+
 def plot(scene: Scene, res, summary: dict, out_dir) -> list:
-    """The thesis's diagrams (figs 7.11, 7.12, 7.15, 7.16) as PNG files in ``out_dir``."""
+    """The thesis's diagrams (figs 7.11, 7.12, 7.15, 7.16) as PNG files in ``out_dir``, each
+    with a footnote: the figures it shows with their estimates (``summary`` is the answer,
+    ``<figure>_error`` beside each figure) and the run's warnings."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -58,7 +66,10 @@ def plot(scene: Scene, res, summary: dict, out_dir) -> list:
         axes[-1, 0].set_xlabel("T = t/t_m")
         fig.suptitle(f"{scene.title}\n{title} (tau={summary['tau']:.3g}, Fa={summary['Fa']:.3g})",
                      fontsize=9)
-        fig.tight_layout()
+        shown = {k: (summary[k], summary.get(f"{k}_error")) for k in NOTED.get(key, ())
+                 if summary.get(k) is not None}
+        fig.text(0.01, 0.01, chart_note(shown, summary.get("warnings", [])), fontsize=7)
+        fig.tight_layout(rect=(0, 0.06 if len(series) == 1 else 0.035, 1, 1))
         path = out_dir / f"{Path(scene.path).stem}_{key}.png"
         fig.savefig(path, dpi=110)
         plt.close(fig)

@@ -204,21 +204,21 @@ class DynacamTarget(Target):
 
     def table(self, out: dict) -> list:
         """The summary as `camdyn simulate` prints it, each figure with its estimate."""
-        from ..measure.contract import plus_minus
+        from ..measure.contract import exact_figures, note, plus_minus
 
         def fmt(v):
             return "-" if v is None else f"{float(v):.4g}"
 
-        exact = {f.name for f in self.figures() if f.estimate == "exact"}
+        exact = exact_figures(self)
         lines = [self.scene.title]
         for key in dynacam.KEYS:
             v = out.get(key)
-            err = out.get(f"{key}_error")
             if key == "jump":
                 v = f"from T = {v['T']:.4g}" if v["occurs"] else "no"
-                err = out.get("jump_T_error")
-            note = " (exact)" if key in exact else plus_minus(err)
-            lines.append(f"  {key:26s} {v if isinstance(v, str) else fmt(v)}{note}")
+                extra = plus_minus(out.get("jump_T_error"))
+            else:
+                extra = note(out, key, exact)
+            lines.append(f"  {key:26s} {v if isinstance(v, str) else fmt(v)}{extra}")
         if "turn" in out:
             t = out["turn"]
             lines.append(f"  full turn: rise, upper dwell, return, lower dwell "
@@ -234,4 +234,4 @@ class DynacamTarget(Target):
     def main_job(self, out_dir, answer, progress=None) -> list:
         from .dynacam_diagrams import plot
 
-        return plot(self.scene, answer.result, answer.record, out_dir)
+        return plot(self.scene, answer.result, answer.as_dict(), out_dir)

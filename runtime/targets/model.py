@@ -454,8 +454,9 @@ class StateTarget(ModelTarget):
 
     def figures(self) -> tuple:
         m = self.model
-        units = {s["name"]: s.get("unit", "") for s in m.manifest["states"]}
-        return tuple(Figure(n, f"state {n} at t_end", units.get(n, "")) for n in m.state_names)
+        spec = {s["name"]: s for s in m.manifest["states"]}
+        return tuple(Figure(n, f"state {n} at t_end", spec[n].get("unit", ""),
+                            scale=float(spec[n]["scale"])) for n in m.state_names)
 
     def window(self):
         return None

@@ -22,8 +22,13 @@ that derived value *and* does not reproduce the misprint under ``rule``: a
 NaN, a zero, a wild value or the misprint itself all fail.
 
 A value computed from runs of the compiled models carries the error of those runs; one that
-is a closed form or a parameter says so (``exact``).  :func:`tolerance` is the half-width of
-the band a check accepts, to set an error estimate against.
+is a closed form, a parameter or an identity says so (``exact``).  With ``estimate=True``
+:func:`run` estimates it (:func:`error_estimate`): |v - v'|, v' the same value computed again
+inside :func:`camdyn.runtime.core.methods.tightened`, where every run is one notch tighter
+(rtol/10, or half the step with Richardson's factor 2^p/(2^p - 1)), unless the check's runs
+carry estimates of their own (``estimate``).  Whether a check passes is judged on v alone;
+:func:`tolerance` is the half-width of the band it accepts, and an estimate wider than that
+band means the runs do not resolve the agreement (``Outcome.wide``).
 """
 from __future__ import annotations
 
@@ -32,6 +37,8 @@ import time
 from dataclasses import dataclass
 from decimal import Decimal
 from typing import Callable
+
+from camdyn.runtime.core.methods import estimate_factor, tightened
 
 @dataclass(frozen=True)
 class Check:
@@ -69,6 +76,19 @@ class Outcome:
     seconds: float
     error: str = ""
     expected_agrees: bool = True
+    estimate: float | None = None   # the derived value's error estimate (0 where exact)
+    estimated: bool = False         # whether one was asked for (run(..., estimate=True))
+
+    @property
+    def exact(self) -> bool:
+        return is_exact(self.check)
+
+    @property
+    def wide(self) -> bool:
+        """The estimate exceeds the half-width of the band the rule accepts: the runs do not
+        resolve whether the value agrees."""
+        tol = tolerance(self.check) if self.estimate is not None else None
+        return tol is not None and self.estimate > tol
 
     @property
     def passed(self) -> bool:
@@ -95,7 +115,7 @@ class Outcome:
                 "derived": _plain(self.derived), "rel_diff": self.rel_diff, "rule": c.rule,
                 "status": self.status, "passed": self.passed, "note": c.note,
                 "errata": c.errata, "expected": c.expected, "expected_rule": c.expected_rule or None,
-                "error": self.error, "seconds": self.seconds}
+                "derived_error": self.estimate, "error": self.error, "seconds": self.seconds}
 
 
 def _plain(value):
@@ -155,7 +175,9 @@ def compare(check: Check, derived) -> tuple[bool, float | None]:
         raise ValueError(f"{check.key}: {exc}") from None
 
 
-def run(check: Check) -> Outcome:
+def run(check: Check, estimate: bool = False) -> Outcome:
+    """The check computed and judged; with ``estimate`` the derived value's error estimate
+    too (:func:`error_estimate`)."""
     t0 = time.perf_counter()
     try:
         derived = check.compute()
@@ -163,11 +185,34 @@ def run(check: Check) -> Outcome:
         expected_agrees = True
         if check.errata:
             expected_agrees = _agrees(check.expected_rule, float(derived), check.expected)[0]
-        return Outcome(check, derived, rel, agrees, time.perf_counter() - t0,
-                       expected_agrees=expected_agrees)
     except Exception as exc:  # a check that cannot run is a failure, reported, not a crash
         return Outcome(check, None, None, False, time.perf_counter() - t0,
                        error=f"{type(exc).__name__}: {exc}")
+    e = error_estimate(check, derived) if estimate else None
+    return Outcome(check, derived, rel, agrees, time.perf_counter() - t0,
+                   expected_agrees=expected_agrees, estimate=e, estimated=estimate)
+
+
+def is_exact(check: Check) -> bool:
+    """The value is a closed form, a parameter or a symbolic identity: no run, no run's error."""
+    return check.exact or check.rule == "identity"
+
+
+def error_estimate(check: Check, derived) -> float | None:
+    """The error estimate of ``derived`` (module doc): 0 for an exact value; the check's own
+    estimate where its runs carry one; else |derived - derived one notch tighter| times the
+    method's factor.  None where no estimate can be made (a run already at the tightest rtol,
+    a tighter run that fails): shown as such beside the value."""
+    if is_exact(check):
+        return 0.0
+    try:
+        if check.estimate is not None:
+            return float(check.estimate())
+        with tightened():
+            tight = check.compute()
+        return abs(float(derived) - float(tight)) * estimate_factor(check.method)
+    except Exception:            # no estimate is shown as such, beside the value
+        return None
 
 
 def tolerance(check: Check) -> float | None:

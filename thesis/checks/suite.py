@@ -30,12 +30,12 @@ def select(topics=None, k: str | None = None) -> list[Check]:
     return [c for c in registry(topics) if not k or k in c.key]
 
 
-def run(checks: list[Check], progress=None) -> list[Outcome]:
-    """The outcome of every check, in order; ``progress(i, n, check)`` is called before the
-    i-th of n."""
+def run(checks: list[Check], progress=None, estimate: bool = True) -> list[Outcome]:
+    """The outcome of every check, in order, each derived value with its error estimate
+    (``estimate``); ``progress(i, n, check)`` is called before the i-th of n."""
     outcomes = []
     for i, c in enumerate(checks, 1):
         if progress:
             progress(i, len(checks), c)
-        outcomes.append(check.run(c))
+        outcomes.append(check.run(c, estimate))
     return outcomes

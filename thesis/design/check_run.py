@@ -42,10 +42,11 @@ def least_model(U0_env_Fa: float, U0_env_0: float, Fa: float,
 def check_run(model: str, tau: float, Fa: float, law: str, theta) -> dict:
     """U0, U0'', X''min and where it falls, of the run at (tau, Fa), each with its error
     estimate by the answer contract (the run one notch tighter, rtol/10, and the sampling
-    error of the scan that found the extreme)."""
+    error of the scan that found the extreme), and the run's warnings."""
     params = {"tau": tau} if model == "one-dof" else {"tau": tau, "Fa": Fa}
     a = answer(ModelTarget.of(MODELS[model], params, method="dp54", rtol=RTOL, law=law,
                               theta=theta))
     out = {k: a.figures[k] for k in FIGURES}
     out.update({f"{k}_error": a.errors[k] for k in FIGURES})
+    out["warnings"] = list(a.warnings)
     return out

@@ -26,6 +26,7 @@ import numpy as np
 
 from camdyn.runtime.core import laws
 from camdyn.runtime.core.errors import CamdynInputError, SimulationError
+from camdyn.runtime.measure.contract import chart_note
 from camdyn.thesis.theory import examples as ex
 
 from .check_run import check_run, least_model
@@ -144,6 +145,10 @@ def design(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None,
                 if M.mass is not None:
                     run["inertia_force_max"] = M.mass * abs(run["xdd_min_rise"])
         out["check_run"] = run
+    # the answer's warnings, on every road (text, --json, design.json)
+    out["warnings"] = ([f"check run: {w}" for w in out.get("check_run", {}).get("warnings", ())]
+                       + ([f"check run failed: {out['check_run']['failed']}"]
+                          if "failed" in out.get("check_run", {}) else []))
     if chart_path is not None:
         say("chart")
         out["chart"] = chart(out, graphs, M, chart_path)
@@ -212,7 +217,14 @@ def chart(d: dict, graphs: Graphs, M: Machine, path) -> str:
     ax.set_title(f"camdyn design: {d['law']} law, stroke {M.stroke:g} m", fontsize=10)
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7.5, loc="lower right")
-    fig.tight_layout()
+    env = d["envelope"]
+    shown = {"U0 (envelope)": (env["U0"], env["U0_error"])}
+    if lf.get("Fa_max") is not None:
+        shown["largest Fa"] = (lf["Fa_max"], lf.get("Fa_max_error"))
+    if lt.get("tau_max") is not None:
+        shown["largest tau"] = (lt["tau_max"], lt.get("tau_max_error"))
+    fig.text(0.01, 0.01, chart_note(shown, d.get("warnings", [])), fontsize=7)
+    fig.tight_layout(rect=(0, 0.06, 1, 1))
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=110)

@@ -28,10 +28,13 @@ from pathlib import Path
 import numpy as np
 
 from camdyn.runtime.core.errors import CamdynInputError, SimulationError, out_folder
-from camdyn.runtime.core.simulator import simulate
-from camdyn.runtime.measure.envelope import envelope, tau_grid
-from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.measure.contract import chart_note
+from camdyn.runtime.measure.envelope import envelope, envelope_error, tau_grid
+from camdyn.runtime.targets.grid import run_grid
+from camdyn.runtime.targets.model import ModelTarget
 from camdyn.thesis.theory import lawtable
+
+from .graphs import RTOL
 
 SIX23 = 6 ** (2 / 3)
 
@@ -44,16 +47,26 @@ def impact_sensitivity(jerk) -> float:
     return 0.5 * abs(jerk) ** (1 / 3) * SIX23
 
 
-def envelopes_at(key: str, tau: float, Fa: float, theta=None, n: int = 41) -> tuple:
-    """(U0, U0'') envelopes through the maxima of the CAMSHAFT-1 graphs of law ``key`` at tau."""
+def envelopes_at(key: str, tau: float, Fa: float, theta=None, n: int = 41,
+                 estimate: bool = True) -> dict:
+    """The (U0, U0'') envelopes through the maxima of the CAMSHAFT-1 graphs of law ``key`` at
+    tau, from one compiled grid of runs at tau from 0.8 tau to 1.25 tau (DP54, rtol 1e-9),
+    each with its error (runtime/measure/envelope.py's envelope_error: the sampling and the
+    runs' own estimates) and the runs' warnings."""
     taus = tau_grid(0.8 * tau, min(1.25 * tau, 0.99), n)
-    u0, u2 = [], []
-    for t in taus:
-        r = residual(simulate("camshaft1", {"tau": float(t), "Fa": Fa}, 3.0, "dp54", rtol=1e-9,
-                              law=key, theta=theta))
-        u0.append(r.U0)
-        u2.append(r.U0dd)
-    return float(envelope(taus, u0)(tau)), float(envelope(taus, u2)(tau))
+    target = ModelTarget.of("camshaft1", {"tau": tau, "Fa": Fa}, rtol=RTOL, law=key,
+                            theta=theta)
+    cols = run_grid(target, ("tau",), taus[:, None], estimate=estimate, jobs=1).columns
+    out = {}
+    for fig in ("U0", "U0dd"):
+        out[f"{fig}_envelope"] = float(envelope(taus, cols[fig])(tau))
+        out[f"{fig}_envelope_error"] = (
+            float(envelope_error(taus, cols[fig], cols[f"{fig}_error"])(tau))
+            if estimate else None)
+    warned = [w for w in cols["warnings"] if w]
+    out["warnings"] = ([f"{len(warned)} of {len(taus)} runs of the envelope warned; the first: "
+                        f"{warned[0]}"] if warned else [])
+    return out
 
 
 FA_MAX = 100.0
@@ -69,15 +82,17 @@ def check(tau: float, Fa: float) -> None:
                                "declared range, (4.14))")
 
 
-def criteria(key: str, tau: float, Fa: float, theta=None, geometry: dict | None = None) -> dict:
-    """The criteria of sec. 9.2.2 for law ``key`` (module doc); ``geometry``: stroke,
-    base_radius, roller_radius (m), optionally offset and angles_deg, for rho_min and
-    alpha_max."""
+def criteria(key: str, tau: float, Fa: float, theta=None, geometry: dict | None = None,
+             estimate: bool = True) -> dict:
+    """The criteria of sec. 9.2.2 for law ``key`` (module doc), each figure a run gives with
+    its error (``<figure>_error``; the closed forms of App. 2 are exact) and the runs'
+    ``warnings``; ``geometry``: stroke, base_radius, roller_radius (m), optionally offset and
+    angles_deg, for rho_min and alpha_max."""
     check(tau, Fa)
     p = lawtable.properties(key, theta)
-    out = {"law": key, "tau": tau, "Fa": Fa}
+    out = {"law": key, "tau": tau, "Fa": Fa, "warnings": []}
     try:
-        out["U0_envelope"], out["U0dd_envelope"] = envelopes_at(key, tau, Fa, theta)
+        out.update(envelopes_at(key, tau, Fa, theta, estimate=estimate))
     except SimulationError as exc:       # an impulsive law the run cannot follow
         out["U0_envelope"] = out["U0dd_envelope"] = None
         out["note"] = str(exc)
@@ -91,16 +106,20 @@ def criteria(key: str, tau: float, Fa: float, theta=None, geometry: dict | None 
         from camdyn.runtime.cam.profile import CamProfile
 
         cam = CamProfile(law=key, law_parameter=theta, **geometry)
-        tab = cam.table
-        rho_p = np.asarray(tab["rho_pitch"], float)
-        convex = np.isfinite(rho_p) & (rho_p > 0)
-        # the profile's radius where the pitch curve is convex: below zero it is undercut
-        out["rho_min"] = float((rho_p[convex] - cam.roller_radius).min()) if convex.any() else None
-        out["alpha_max_deg"] = float(np.max(np.abs(tab["alpha_deg"])))
+        checks = {c.name: c for c in cam.checks}
+        # the profile's radius where the pitch curve is convex (below zero it is undercut):
+        # the smallest convex |rho_p| less the roller, refined between the samples
+        under = checks["undercut"]
+        finite = math.isfinite(under.value)
+        out["rho_min"] = under.value - cam.roller_radius if finite else None
+        out["rho_min_error"] = under.error if finite else None
+        alpha = checks["pressure angle"]
+        out["alpha_max_deg"], out["alpha_max_deg_error"] = alpha.value, alpha.error
     return out
 
 
-def table(tau: float, Fa: float, theta=None, geometry=None, progress=None) -> list[dict]:
+def table(tau: float, Fa: float, theta=None, geometry=None, progress=None,
+          estimate: bool = True) -> list[dict]:
     """The criteria of every law of the library (modified sine at ``theta``)."""
     check(tau, Fa)                      # before the first run: one error, no progress lines
     if theta is not None:
@@ -113,9 +132,14 @@ def table(tau: float, Fa: float, theta=None, geometry=None, progress=None) -> li
     for key in lawtable.LAWS:
         if progress:
             progress(f"law {key}")
-        rows.append(criteria(key, tau, Fa, theta if key == "modified-sine" else None, geometry))
+        rows.append(criteria(key, tau, Fa, theta if key == "modified-sine" else None, geometry,
+                             estimate))
     return rows
 
+
+ESTIMATED = ("U0_envelope", "U0dd_envelope", "rho_min", "alpha_max_deg")
+"""The columns a run or a sampled profile gives, each with its ``<column>_error``; the others
+are App. 2's closed forms, exact."""
 
 COLUMNS = (("U0_envelope", "U0 env."), ("U0dd_envelope", "U0'' env."),
            ("impact_T0", "impact T=0"), ("impact_T05", "impact T=1/2"),
@@ -147,7 +171,13 @@ def chart(rows: list[dict], path) -> str:
     r0 = rows[0]
     fig.suptitle(f"Cam-law selection at tau = {r0['tau']:g}, Fa = {r0['Fa']:g} "
                  "(thesis sec. 9.2.2; red: infinite)", fontsize=10)
-    fig.tight_layout()
+    shown = {t: ([r[k] for r in rows if r.get(k) is not None],
+                 [r.get(f"{k}_error") for r in rows if r.get(k) is not None])
+             for k, t in cols if k in ESTIMATED}
+    fig.text(0.01, 0.01, chart_note(shown, [f"{r['law']}: {w}" for r in rows
+                                            for w in r.get("warnings", ())])
+             + "; the other columns: App. 2's closed forms", fontsize=7)
+    fig.tight_layout(rect=(0, 0.05, 1, 1))
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return str(path)
@@ -174,24 +204,32 @@ class Selection:
     columns: list               # (key, title) of COLUMNS
     files: list = field(default_factory=list)
 
+    @property
+    def warnings(self) -> list:
+        """The runs' warnings, each naming its law."""
+        return [f"{r['law']}: {w}" for r in self.rows for w in r.get("warnings", ())]
+
     def as_dict(self) -> dict:
-        """The rows with infinities as None (JSON has none) and the files."""
+        """The rows with infinities as None (JSON has none), the warnings and the files."""
         clean = [{k: (None if isinstance(v, float) and math.isinf(v) else v) for k, v in r.items()}
                  for r in self.rows]
-        return {"rows": clean, "files": self.files}
+        return {"rows": clean, "warnings": self.warnings, "files": self.files}
 
 
 def write_csv(rows: list[dict], columns, path) -> str:
+    """One row per law: every column, ``<column>_error`` beside those a run gives, and the
+    law's warnings."""
+    keys = [x for k, _ in columns for x in ((k, f"{k}_error") if k in ESTIMATED else (k,))]
     with open(path, "w", newline="") as fh:
         w = csv.writer(fh)
-        w.writerow(["law"] + [k for k, _ in columns])
+        w.writerow(["law"] + keys + ["warnings"])
         for r in rows:
-            w.writerow([r["law"]] + [r.get(k) for k, _ in columns])
+            w.writerow([r["law"]] + [r.get(k) for k in keys] + ["; ".join(r.get("warnings", ()))])
     return str(path)
 
 
 def select(tau, Fa=None, theta=None, stroke=None, base_radius=None, roller_radius=None,
-           out=None, progress=None) -> Selection:
+           out=None, progress=None, estimate: bool = True) -> Selection:
     """`camdyn laws --tau T [--fa F]`: the criteria of sec. 9.2.2 for every law (Fa = 0 when
     not given), with a cam geometry when all three of stroke, base and roller radius are
     given; with ``out``, laws_selection.csv and laws_selection.png there."""
@@ -205,7 +243,7 @@ def select(tau, Fa=None, theta=None, stroke=None, base_radius=None, roller_radiu
     geometry = None if stroke is None else {
         "stroke": stroke, "base_radius": base_radius, "roller_radius": roller_radius}
     Fa = 0.0 if Fa is None else Fa
-    rows = table(tau, Fa, theta, geometry, progress)
+    rows = table(tau, Fa, theta, geometry, progress, estimate)
     cols = [(k, t) for k, t in COLUMNS if any(r.get(k) is not None for r in rows)]
     result = Selection(tau, Fa, rows, cols)
     if out:

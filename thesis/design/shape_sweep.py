@@ -9,8 +9,9 @@ positional-error optimum" (theta = 0.25 is the cycloid (A.2.17)).
 
 :func:`sweep` runs the scene once per value of the law's shape parameter (modified sine's
 theta, or the constant-acceleration fraction c of the sine-constant-cosine law) and keeps the
-summary's U0dd, U0 and speed_variation_max (runtime/targets/dynacam.py), each with the error estimate
-of a second run at rtol/10 unless asked not to.
+summary's U0dd, U0 and speed_variation_max (runtime/targets/dynacam_scene.py), each with the
+error estimate of the answer contract (a second run at rtol/10, the sampling and the window)
+unless asked not to, and the run's warnings.
 """
 from __future__ import annotations
 
@@ -24,7 +25,9 @@ import numpy as np
 from camdyn.generated import camlaws
 from camdyn.runtime.core import laws
 from camdyn.runtime.core.errors import CamdynInputError, out_folder
-from camdyn.runtime.targets import dynacam, scene_files
+from camdyn.runtime.measure.contract import answer, chart_note
+from camdyn.runtime.targets import scene_files
+from camdyn.runtime.targets.dynacam_scene import DynacamTarget
 
 FIELDS = ("U0dd", "speed_variation_max", "U0")
 """The summary figures kept per grid point."""
@@ -60,7 +63,8 @@ def grid(law: str, n: int) -> np.ndarray:
 def sweep(scene, law: str = "modified-sine", values=None, n: int = 9, errors: bool = True,
           progress=None) -> list[dict]:
     """One row per shape-parameter value: the value and the scene's U0dd, speed variation and
-    U0 (with ``<figure>_error`` when ``errors``)."""
+    U0 (with ``<figure>_error`` when ``errors``: the answer contract's, runtime/measure/
+    contract.py) and the run's warnings, joined by "; "."""
     spec = shape_parameter(law)
     values = grid(law, n) if values is None else np.asarray(values, dtype=float).ravel()
     for v in values:
@@ -72,13 +76,13 @@ def sweep(scene, law: str = "modified-sine", values=None, n: int = 9, errors: bo
 
         it = tqdm(values, desc=f"sweep {spec['name']}", unit="run", file=progress)
     for v in it:
-        sc = dataclasses.replace(scene, law=law, theta=float(v))
-        summary, _ = dynacam.run(sc)
+        target = DynacamTarget.from_scene(dataclasses.replace(scene, law=law, theta=float(v)))
+        a = answer(target, estimate=errors)
         row = {spec["name"]: float(v)}
-        row.update({k: summary[k] for k in FIELDS})
+        row.update({k: a.figures[k] for k in FIELDS})
         if errors:
-            err = dynacam.errors(sc, summary)
-            row.update({f"{k}_error": err.get(f"{k}_error") for k in FIELDS})
+            row.update({f"{k}_error": a.errors.get(k) for k in FIELDS})
+        row["warnings"] = "; ".join(a.warnings)
         rows.append(row)
     return rows
 
@@ -122,7 +126,11 @@ def write_png(rows: list[dict], name: str, title: str, path, own=None) -> Path:
         ax.legend(fontsize=8)
     axes[1].set_xlabel(name)
     axes[0].set_title(title, fontsize=9)
-    fig.tight_layout()
+    fig.text(0.01, 0.01, chart_note(
+        {f: ([r[f] for r in rows], [r.get(f"{f}_error") for r in rows])
+         for f in ("U0dd", "speed_variation_max")},
+        [r.get("warnings", "") for r in rows], points=len(rows)), fontsize=7)
+    fig.tight_layout(rect=(0, 0.06, 1, 1))
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=110)
@@ -145,9 +153,15 @@ class Sweep:
     def best(self, figure: str) -> dict:
         return best(self.rows, figure)
 
+    @property
+    def warnings(self) -> list:
+        """The runs' warnings, each naming its parameter value."""
+        return [f"{self.parameter} = {r[self.parameter]:.4g}: {r['warnings']}"
+                for r in self.rows if r["warnings"]]
+
     def as_dict(self) -> dict:
         return {"scene": self.scene, "law": self.law, "parameter": self.parameter,
-                "rows": self.rows, "files": self.files}
+                "rows": self.rows, "warnings": self.warnings, "files": self.files}
 
 
 def parse_values(law: str, text: str) -> list:

@@ -24,35 +24,16 @@ def evaluate(claim: Claim, checks_by_key: dict) -> ClaimResult:
     if claim.trend is not None:
         return _trend(claim)
     c = claim.check if isinstance(claim.check, checks.Check) else checks_by_key[claim.check]
-    o = checks.run(c)
+    o = checks.run(c, estimate=True)
     derived = o.error or fmt(o.derived)
     result = ClaimResult(c.item, c.reference, c.printed or "(symbolic)", derived, c.rule,
                          o.status, o.passed, c.note, shown=derived,
                          tolerance=checks.tolerance(c))
     if o.error:
         return result
-    if c.exact or c.rule == "identity":
+    if checks.is_exact(c):
         return replace(result, shown=f"{derived} (exact)", exact=True)
-    e = _own_estimate(c.estimate) if c.estimate else _estimate(c.compute, o.derived, c.method)
-    return replace(result, shown=derived + plus_minus(e), estimates=(e,))
-
-
-def _own_estimate(estimate) -> float | None:
-    try:
-        return float(estimate())
-    except Exception:            # no estimate is shown as such, beside the value
-        return None
-
-
-def _estimate(compute, value, method: str) -> float | None:
-    """|value - value one notch tighter| times the method's factor; None if the tighter
-    computation cannot be made (a run at the tightest rtol, a run that fails)."""
-    try:
-        with tightened():
-            tight = compute()
-        return abs(float(value) - float(tight)) * estimate_factor(method)
-    except Exception:            # no estimate is shown as such, beside the value
-        return None
+    return replace(result, shown=derived + plus_minus(o.estimate), estimates=(o.estimate,))
 
 
 def _trend(claim: Claim) -> ClaimResult:
