@@ -20,7 +20,7 @@ from scipy.integrate import odeint, solve_ivp
 
 from camdyn.runtime.engine import driver
 from camdyn.runtime.core import laws as camlaws
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 from camdyn.runtime.core.simulator import Simulator, simulate
 
 import yardstick

@@ -116,7 +116,7 @@ def roller_case(model: str, params: dict, rtols, peer_rtols, repeat: int) -> Cas
     from camdyn.runtime.core import methods as M
     from camdyn.runtime.studies import peers
     from camdyn.runtime.core.errors import SimulationError
-    from camdyn.runtime.core.models import load
+    from camdyn.runtime.core.compiled import load
     from camdyn.runtime.core.simulator import Simulator
 
     title = f"{model} " + ", ".join(f"{k} = {v:g}" for k, v in params.items())

@@ -75,7 +75,7 @@ def main(argv=None) -> int:
     from camdyn.runtime.measure.envelope import tau_grid
     from camdyn.runtime.measure.residual import FIGURES, residual, residual_reference
     from camdyn.runtime.targets.grid import default_jobs, run_chunk
-    from camdyn.runtime.targets.model import ModelTarget
+    from camdyn.runtime.targets.model_target import ModelTarget
 
     t_bench = time.perf_counter()
     taus = tau_grid(0.06, 0.7, n_tau)

@@ -17,7 +17,7 @@ import pytest
 
 from camdyn.runtime.core import methods
 from camdyn.runtime.measure.contract import answer
-from camdyn.runtime.targets.model import ModelTarget
+from camdyn.runtime.targets.model_target import ModelTarget
 
 CASE = {"tau": 0.1, "Fa": 1.0}
 FIGS = ("U0", "U0dd", "Xdd_min_rise")

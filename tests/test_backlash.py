@@ -32,7 +32,7 @@ import math
 import numpy as np
 import pytest
 
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 from camdyn.runtime.core.simulator import Simulator
 
 MODEL = "dynacam_axial_ideal_backlash_groove_shafty_shaftz"

@@ -25,7 +25,7 @@ from camdyn.runtime.engine import driver
 from camdyn.runtime.targets import beam
 from camdyn.runtime.core.errors import CamdynInputError
 from camdyn.runtime.core.laws import choose
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 
 from . import beam_reference
 

@@ -41,7 +41,7 @@ import pytest
 from scipy.optimize import brentq
 
 from camdyn.runtime.targets import beam
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 from camdyn.runtime.core.simulator import Simulator
 
 from . import beam_reference as ref

@@ -16,7 +16,7 @@ from camdyn.derive.model import CamFunction
 from camdyn.derive.models import REGISTRY
 from camdyn.runtime.engine import driver
 from camdyn.runtime.core import laws as rt_laws
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -28,7 +28,7 @@ from scipy.integrate import solve_ivp
 
 from camdyn.runtime.core import laws
 from camdyn.runtime.core.errors import SimulationError
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 from camdyn.runtime.core.simulator import Simulator
 
 T_END = 3.0

@@ -19,7 +19,7 @@ from camdyn.runtime.studies import sweep
 from camdyn.runtime.measure.residual import residual, residual_reference
 from camdyn.runtime.measure.extremes import extreme, extreme_reference
 from camdyn.runtime.core.simulator import Simulator
-from camdyn.runtime.targets.model import ModelTarget
+from camdyn.runtime.targets.model_target import ModelTarget
 
 TAUS = (0.07, 0.15, 0.33, 0.6)
 FAS = (0.0, 0.5, 2.0, 10.0)
@@ -107,7 +107,7 @@ def test_camshaft2_rise_ends_where_B_reaches_one():
 
 def test_sweep_figures_equal_the_reference_on_a_grid(runs):
     """The sweep's own scan (every 3rd recorded point at rtol 1e-9, the 4 best peaks refined
-    on the dense output and the others checked; runtime/targets/model.py's scan_density) against the
+    on the dense output and the others checked; runtime/targets/model_target.py's scan_density) against the
     reference's (12 samples a step) on the 4 x 4 grid.  Where several peaks are equal to
     within the integration error (every peak of the undamped dwell is U0), either scan may
     refine another one: measured U0, U0'' within 5e-8 relative (at rtol 1e-9, the dwell's

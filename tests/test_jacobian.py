@@ -38,7 +38,7 @@ import sympy as sp
 from camdyn.derive.models import REGISTRY
 from camdyn.runtime.engine import driver
 from camdyn.runtime.core import laws
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 
 TOL = 1e-6
 LAWS = ("cycloidal", "modified-trapezoid")

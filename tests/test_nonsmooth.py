@@ -9,7 +9,7 @@ import pytest
 
 from camdyn.runtime.engine import driver
 from camdyn.runtime.core import laws
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 from camdyn.runtime.core.simulator import Simulator
 
 

@@ -221,6 +221,6 @@ def test_dynacam_variant_outside_generated_is_built_on_first_use(tmp_path, monke
 
 
 def ondemand_available():
-    from camdyn.runtime.core.models import available
+    from camdyn.runtime.core.compiled import available
 
     return available()

@@ -24,7 +24,7 @@ from scipy.optimize import brentq
 from scipy.special import ellipk
 
 from camdyn.runtime.engine import driver
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 from camdyn.runtime.core.simulator import simulate
 
 ROOT = Path(__file__).resolve().parents[1]

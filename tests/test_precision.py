@@ -11,7 +11,7 @@ from camdyn.runtime.measure import references as closed_forms
 from camdyn.runtime.studies import peers, precision
 from camdyn.runtime.cli import main
 from camdyn.runtime.targets.resolve import load_scene
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 from camdyn.runtime.measure.residual import residual
 from camdyn.runtime.core.simulator import simulate
 

@@ -16,7 +16,7 @@ from camdyn.runtime import cli
 from camdyn.runtime.targets import scene_files as scenes
 from camdyn.runtime.core.errors import CamdynInputError
 from camdyn.runtime.core.methods import METHODS, RODAS4, make
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 from camdyn.runtime.core.simulator import Simulator, simulate
 
 

@@ -21,7 +21,7 @@ import pytest
 
 from camdyn.runtime.engine import driver
 from camdyn.runtime.measure import references as closed_forms
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 from camdyn.runtime.measure.residual import residual
 from camdyn.runtime.core.simulator import Simulator
 

@@ -224,7 +224,7 @@ EDGES = _edges()
 
 def test_the_edges_are_seen():
     """The census must see known imports, at module level and inside functions."""
-    assert ("camdyn.runtime.targets.model", "camdyn.runtime.core.simulator") in EDGES
+    assert ("camdyn.runtime.targets.model_target", "camdyn.runtime.core.simulator") in EDGES
     assert ("camdyn.runtime.cli.run", "camdyn.runtime.targets.resolve") in EDGES   # in run()
     assert len(EDGES) > 300
 

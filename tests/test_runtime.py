@@ -7,7 +7,7 @@ import pytest
 from camdyn.runtime.engine import driver
 from camdyn.runtime.core import methods
 from camdyn.runtime.core.errors import CamdynInputError, SimulationError
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 from camdyn.runtime.measure.residual import residual
 from camdyn.runtime.core.simulator import simulate, stop_times
 

@@ -91,7 +91,7 @@ def test_every_builtin_scene_loads_as_its_kind():
     files = sorted(p.stem for p in scenes.builtin("indexing").parent.glob("*.toml"))
     listed = json.loads(_cli("scenes", "--json").stdout)
     assert [r["name"] for r in listed] == files
-    types = {"dynacam": scenes.Scene, "camshaft1-study": dict, "beam-follower": scenes.BeamScene}
+    types = {"dynacam": scenes.DynacamScene, "camshaft1-study": dict, "beam-follower": scenes.BeamScene}
     for row in listed:
         data = _data(row["name"])
         assert row["kind"] == data["kind"] and row["title"] == data["title"]

@@ -240,7 +240,7 @@ def test_finite_difference_jacobian_of_the_compiled_rhs():
     """eval_jacobian_fd against the one-DOF model's Jacobian by hand, thesis (3.1) with the damper
     of (6.47): d(X, X')/dT = (X', w^2 (H - X) - 2 q w (X' - H')), J = [[0, 1], [-w^2, -2 q w]]."""
     from camdyn.runtime.engine import driver
-    from camdyn.runtime.core.models import load
+    from camdyn.runtime.core.compiled import load
 
     m = load("one_dof")
     res = simulate("one_dof", {"tau": 0.05, "q": 0.1}, 1.5, "dp54", rtol=1e-8)

@@ -10,7 +10,7 @@ import pytest
 from camdyn.generated import camlaws as lib
 from camdyn.runtime.core import laws
 from camdyn.runtime.core.errors import CamdynInputError
-from camdyn.runtime.core.models import load
+from camdyn.runtime.core.compiled import load
 from camdyn.runtime.cam.motion import RDFD
 from camdyn.runtime.core.simulator import simulate, stop_times
 

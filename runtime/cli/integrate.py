@@ -64,7 +64,7 @@ def law_arg(args) -> tuple:
 def run(args) -> int:
     from ..measure.contract import answer
     from ..targets import resolve
-    from ..targets.model import StateTarget
+    from ..targets.model_target import StateTarget
 
     prog = "camdyn integrate"
     say = say_on_stderr()

@@ -7,7 +7,7 @@ import json
 import sys
 
 from ..core.errors import SimulationError
-from ..measure.contract import plus_minus
+from ..measure.contract import note
 from .common import fail, law_names, run_failed
 from .residual import name_argument
 
@@ -145,7 +145,7 @@ def _cell(row: dict, key: str) -> str:
     v = row.get(key)
     if v is None:
         return "-"
-    return _num(v) + plus_minus(row.get(f"{key}_error"))
+    return _num(v) + note(row, key)
 
 
 def _print_sweep(s) -> None:

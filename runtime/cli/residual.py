@@ -81,7 +81,7 @@ def parameters(model: str, tau: float, fa, fv, q) -> dict:
 def target(args):
     """The run `camdyn residual` asks for, as a target."""
     from ..core.methods import METHODS
-    from ..targets.model import ModelTarget
+    from ..targets.model_target import ModelTarget
 
     if args.rtol is not None and args.step is not None:
         raise CamdynInputError("argument --step: not allowed with argument --rtol")

@@ -32,7 +32,7 @@ from importlib import metadata
 from pathlib import Path
 
 from .errors import CamdynInputError
-from .models import CompiledModel
+from .compiled import CompiledModel
 
 ENV_CACHE = "CAMDYN_CACHE_DIR"
 

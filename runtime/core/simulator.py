@@ -16,7 +16,7 @@ import numpy as np
 from ..engine import driver
 from . import laws as _laws, methods as _methods, stability as _stability
 from .errors import CamdynInputError, SimulationError, UnstableStep
-from .models import CompiledModel, load
+from .compiled import CompiledModel, load
 from .result import Result
 
 

@@ -52,7 +52,7 @@ Options.__module__ = __name__
 def options_model(options, progress=None):
     """The compiled variant of an option set: pre-generated, or else derived, generated and
     compiled on first use into the user cache (:mod:`camdyn.runtime.core.ondemand`)."""
-    from .models import available, load
+    from .compiled import available, load
 
     if options.name in available():
         return load(options.name)
@@ -68,7 +68,7 @@ def variant_manifest(options, progress=None) -> dict:
 def is_compiled(options) -> bool:
     """Whether the variant of an option set loads without a build: pre-generated, or already in
     the on-demand cache (:mod:`camdyn.runtime.core.ondemand`)."""
-    from .models import available
+    from .compiled import available
 
     if options.name in available():
         return True

@@ -114,23 +114,42 @@ def maxima(tau, values) -> tuple[np.ndarray, np.ndarray]:
 
 def envelope_error(tau, values, errors):
     """The error of :func:`envelope` of a sampled graph, as a function of tau: what the
-    sampling leaves (the envelope of every other sample against that of all: a maximum
-    refined from samples twice as far apart moves by more than the one refined from all, so
-    this bounds it) plus what the samples' own errors (``errors``, the answer contract's)
-    move it by (the envelope of the values raised by their errors against it)."""
+    sampling leaves plus what the samples' own errors (``errors``, the answer contract's) move
+    it by.  The first: the envelope of every other sample against that of all (a maximum
+    refined from samples twice as far apart moves by more than one refined from all, so this
+    bounds it), the largest difference at tau and at the samples on either side of it (the
+    two curves cross, so their difference at one point can vanish).  The second: the
+    envelope of the values raised by their errors against it.  NaN beyond the outermost
+    maxima where the envelope is the outermost maximum held over a dip: a maximum the
+    samples just miss at their end could raise it there by any amount (read it from a window
+    that brackets tau with maxima); where the graph is its own envelope the estimate stands.
+    NaN too where a sample has no estimate."""
     t, v = np.asarray(tau, float), np.asarray(values, float)
-    e = np.nan_to_num(np.asarray(errors, float), nan=np.inf)
-    full = envelope(t, v)
+    e = np.asarray(errors, float)
     order = np.argsort(t)
-    half = envelope(t[order][::2], v[order][::2]) if t.size >= 6 else None
+    t, v, e = t[order], v[order], e[order]
+    full = envelope(t, v)
+    half = envelope(t[::2], v[::2]) if t.size >= 6 else None
     raised = envelope(t, v + e) if np.all(np.isfinite(e)) else None
+
+    def gap(x):
+        at = full(x)
+        return np.abs(half(x) - at) + np.abs(raised(x) - at)
 
     def error(x):
         x = np.asarray(x, float)
-        at = full(x)
-        sampling = np.abs(half(x) - at) if half is not None else np.full(np.shape(x), np.inf)
-        runs = np.abs(raised(x) - at) if raised is not None else np.full(np.shape(x), np.inf)
-        out = sampling + runs
+        if half is None or raised is None:
+            out = np.full(np.shape(x), np.nan)
+        else:
+            k = np.clip(np.searchsorted(t, x), 1, t.size - 1)
+            out = np.maximum(gap(x), np.maximum(gap(t[k - 1]), gap(t[k])))
+            inside = ((x >= full.tau[0]) & (x <= full.tau[-1]) if full.tau.size
+                      else np.zeros(np.shape(x), dtype=bool))
+            held = through_maxima(np.atleast_1d(x), full.tau, full.value,
+                                  dips(full.sample_tau, full.sample_value)).reshape(np.shape(x))
+            graph = np.interp(x, full.sample_tau, full.sample_value)
+            own = np.isnan(held) | (graph >= np.nan_to_num(held))
+            out = np.where(inside | own, out, np.nan)
         return float(out) if np.ndim(out) == 0 else out
 
     return error

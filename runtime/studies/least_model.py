@@ -257,7 +257,7 @@ def chain(sc, tolerance: float = TOLERANCE, build: bool = False) -> list[Candida
                                              "1 + Fa H'^2 in the rise; the one-DOF model is "
                                              "Fa = 0 (fig. 4.11: at tau = 0.15, Fa = 2 gives "
                                              "17.5 times the U0 of Fa = 0)")]))
-    from ..core.models import load
+    from ..core.compiled import load
 
     for c in out:
         if c.scene is not None:

@@ -30,7 +30,7 @@ from scipy.interpolate import CubicHermiteSpline
 
 from ..engine import driver
 from ..core.errors import CamdynInputError
-from ..core.models import CompiledModel, load
+from ..core.compiled import CompiledModel, load
 from ..core.simulator import law_choices, stop_times
 
 PEERS = ("RK45", "DOP853", "Radau", "BDF", "LSODA", "odeint")

@@ -40,7 +40,7 @@ import numpy as np
 
 from ..core import stability as _stability
 from ..core.errors import CamdynInputError, SimulationError
-from ..core.models import CompiledModel, load
+from ..core.compiled import CompiledModel, load
 from ..core.simulator import Simulator
 
 GROWTH = 2.0        # a difference grown by more than this over the run is unbounded

@@ -22,7 +22,7 @@ blown up.  ``check_stability=False`` makes ``status`` that outcome.
 Headline figure: U0, the residual amplitude after the rise (thesis (3.5), sec. 3.3) for
 models that declare one; else the state at t_end, its error the largest over the states of
 |y - y_ref|/(|y_ref| + scale).  Reference: DP54 at rtol ``REF_RTOL``, the model's target
-(runtime/targets/model.py) with its window and its own error estimate (the answer contract,
+(runtime/targets/model_target.py) with its window and its own error estimate (the answer contract,
 runtime/measure/contract.py): a reference whose estimate is not well inside the threshold
 cannot tell fine from inaccurate, and the map says so in its warnings.  CPU time: the
 process time of the run that gave the outcome (integration, stability check), not of the
@@ -49,7 +49,7 @@ import numpy as np
 from ..core import stability as _stability
 from ..core.errors import CamdynInputError, SimulationError, UnstableStep
 from ..core.methods import METHODS
-from ..core.models import CompiledModel
+from ..core.compiled import CompiledModel
 from ..core.simulator import Simulator
 from ..measure.contract import answer, fit_window
 
@@ -243,7 +243,7 @@ def target_of(name, t_end=None, law: str = "cycloidal", progress=None):
     """The target a map runs (runtime/targets/resolve.py): a model with a rise (its U0), or
     any model to t_end (its state; to the end a rise's run takes, DEFAULT_T_END, unless
     given).  ``t_end`` None leaves a rise's run end to its target and its window."""
-    from ..targets.model import DEFAULT_T_END, StateTarget
+    from ..targets.model_target import DEFAULT_T_END, StateTarget
     from ..targets.resolve import model
 
     target = model(str(name), progress=progress, t_end=t_end, law=law)

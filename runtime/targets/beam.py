@@ -16,7 +16,7 @@ import numpy as np
 
 from ..core.errors import CamdynInputError
 from ..core.laws import choose
-from ..core.models import load
+from ..core.compiled import load
 from .beam_case import FORMULATIONS, N_MAX, Case, check  # noqa: F401  (the case, re-exported)
 from ..measure.extremes import extreme
 from ..core.simulator import Simulator

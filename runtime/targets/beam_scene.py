@@ -14,7 +14,7 @@ from dataclasses import dataclass, fields, replace
 
 from ..core.errors import CamdynInputError
 from ..core.methods import METHODS
-from ..core.models import load
+from ..core.compiled import load
 from . import beam, scene_files
 from .base import Figure, Outcome, Parameter, Target
 from .beam_case import N_MAX, Case, check

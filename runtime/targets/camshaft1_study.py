@@ -28,7 +28,7 @@ from ..measure.contract import answer, chart_note, quotient
 from ..measure.envelope import envelope, envelope_error, tau_grid
 from . import scene_files
 from .grid import run_grid
-from .model import ModelTarget
+from .model_target import ModelTarget
 
 
 def load_scene(path: str | None = None) -> dict:

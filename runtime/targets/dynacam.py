@@ -20,7 +20,7 @@ from scipy.optimize import least_squares
 from ..engine import driver
 from ..core.errors import SimulationError
 from ..measure.extremes import extreme
-from .scene_files import Scene
+from .scene_files import DynacamScene
 from ..core.methods import METHODS
 from ..core.simulator import Simulator
 
@@ -107,7 +107,7 @@ def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
     return out
 
 
-def variant_model(scene: Scene, progress=None):
+def variant_model(scene: DynacamScene, progress=None):
     """The compiled variant the scene's options select (:func:`variants.options_model`)."""
     from ..core.variants import options_model
 
@@ -129,7 +129,7 @@ class Prepared:
     t_end: float
 
 
-def prepare(scene: Scene, method=None, progress=None) -> Prepared:
+def prepare(scene: DynacamScene, method=None, progress=None) -> Prepared:
     """The scene's run made ready: ``method`` by default the scene's (DP54 unless it says
     rodas4) at its rtol with no step limit (a step-limited one serves as a reference)."""
     model = variant_model(scene, progress)
@@ -158,7 +158,7 @@ class SceneRun:
     result: object
 
 
-def run_scene(scene: Scene, progress=None, method=None, prepared: Prepared | None = None) -> SceneRun:
+def run_scene(scene: DynacamScene, progress=None, method=None, prepared: Prepared | None = None) -> SceneRun:
     """Run a scene (see :func:`prepare`)."""
     pr = prepare(scene, method, progress) if prepared is None else prepared
     if progress:
@@ -171,7 +171,7 @@ def run_scene(scene: Scene, progress=None, method=None, prepared: Prepared | Non
     return SceneRun(summary, sampling, res)
 
 
-def run(scene: Scene, progress=None, method=None) -> tuple[dict, object]:
+def run(scene: DynacamScene, progress=None, method=None) -> tuple[dict, object]:
     """Run a scene; returns (summary, result) (see :func:`run_scene`)."""
     r = run_scene(scene, progress, method)
     return r.summary, r.result
@@ -183,7 +183,7 @@ FIGURES = ("Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_rise", "U0dd", "U0", "speed_
 with a full turn)."""
 
 
-def errors(scene: Scene, summary: dict) -> dict:
+def errors(scene: DynacamScene, summary: dict) -> dict:
     """``<figure>_error`` for the headline figures of ``summary`` (and ``jump_T_error``): the
     scene run again one notch tighter (rtol/10, runtime/core/methods.py)."""
     method = METHODS[scene.method](rtol=scene.rtol).tighter()
@@ -202,26 +202,26 @@ def errors(scene: Scene, summary: dict) -> dict:
     return out
 
 
-def nominal_T(scene: Scene, res) -> np.ndarray:
+def nominal_T(scene: DynacamScene, res) -> np.ndarray:
     """Dimensionless time of the nominal motion, T = w_s t/beta_m + T_start."""
     t_m = res.params["beta_m"] / res.params["omega_s"]
     return res.t / t_m + scene.T_start
 
 
-def sample_at(scene: Scene, res, T: float, name: str = "Xdd") -> float:
+def sample_at(scene: DynacamScene, res, T: float, name: str = "Xdd") -> float:
     """Output ``name`` at the nominal time T, through the dense output."""
     t_m = res.params["beta_m"] / res.params["omega_s"]
     return float(res.sample(np.array([(T - scene.T_start) * t_m]))[name][0])
 
 
-def mode_changes(scene: Scene, res, mode: str) -> list:
+def mode_changes(scene: DynacamScene, res, mode: str) -> list:
     """(T, new value) at every switch of a force element's mode, in order."""
     T = nominal_T(scene, res)
     values = res.element_mode(mode)
     return [(float(T[i + 1]), values[i + 1]) for i in np.flatnonzero(values[1:] != values[:-1])]
 
 
-def headline(scene: Scene, res, t_m: float) -> tuple[dict, dict]:
+def headline(scene: DynacamScene, res, t_m: float) -> tuple[dict, dict]:
     """The scene's headline figures of a run (a camdyn Result or another integrator's run that
     offers ``sample``) and the sampling error of each: the extremes of X'' in the rise (nominal
     0 < T < 1), U0'' and U0 in the dwell after it (to the run's end, or to the return of a
@@ -266,7 +266,7 @@ def headline(scene: Scene, res, t_m: float) -> tuple[dict, dict]:
     return figures, sampling
 
 
-def dwell_spans(scene: Scene, t_m: float, t_end: float) -> dict:
+def dwell_spans(scene: DynacamScene, t_m: float, t_end: float) -> dict:
     """Output -> (start, end) of each dwell a figure is read from, in the run's time: the
     dwell after the rise (to the run's end, or to a full turn's return) and a full turn's
     lower dwell after the return (to the next rise or the run's end)."""
@@ -281,7 +281,7 @@ def dwell_spans(scene: Scene, t_m: float, t_end: float) -> dict:
             "U0dd_return": (ret1, low1)}
 
 
-def summarize(scene: Scene, model, res, ch: dict, cpu: float) -> tuple[dict, dict]:
+def summarize(scene: DynacamScene, model, res, ch: dict, cpu: float) -> tuple[dict, dict]:
     """(summary, sampling errors) of a run: the headline figures in the order `camdyn
     simulate` prints them, the jump of a follower that leaves the cam, and the run's record."""
     T = nominal_T(scene, res)
@@ -316,7 +316,7 @@ def summarize(scene: Scene, model, res, ch: dict, cpu: float) -> tuple[dict, dic
     return out, sampling
 
 
-def reduced_models(scene: Scene, summary: dict) -> dict:
+def reduced_models(scene: DynacamScene, summary: dict) -> dict:
     """Residual acceleration amplitude U0dd of the scene's run beside that of the reduced
     models with the same characteristic numbers (thesis sec. 8.2.4, 8.2.5, fig. 8.3 curves
     (4), (5), (6)): CAMSHAFT-2 at (tau, Fa, Fv) (5.15), (5.16) and CAMSHAFT-1 at (tau, Fa)

@@ -9,7 +9,7 @@ import numpy as np
 from ..core.errors import out_folder
 from ..measure.contract import chart_note
 from .dynacam import nominal_T
-from .scene_files import Scene
+from .scene_files import DynacamScene
 
 DIAGRAMS = (
     ("Xdd", "X''", "acceleration of the output member, x'' t_m^2/h_m"),
@@ -26,7 +26,7 @@ NOTED = {"Xdd": ("Xdd_min_rise", "Xdd_max_rise", "U0dd", "U0"),
 """The headline figures each diagram shows, noted with their estimates beneath it."""
 
 
-def plot(scene: Scene, res, summary: dict, out_dir) -> list:
+def plot(scene: DynacamScene, res, summary: dict, out_dir) -> list:
     """The thesis's diagrams (figs 7.11, 7.12, 7.15, 7.16) as PNG files in ``out_dir``, each
     with a footnote: the figures it shows with their estimates (``summary`` is the answer,
     ``<figure>_error`` beside each figure) and the run's warnings."""

@@ -56,7 +56,7 @@ class DynacamTarget(Target):
     """A checked DYNACAM scene and how its runs are made: ``notches`` tighter than its own
     method (for the error estimate)."""
 
-    scene: object                    # scene_files.Scene
+    scene: object                    # scene_files.DynacamScene
     label: str = ""
     notches: int = 0
 

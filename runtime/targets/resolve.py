@@ -10,12 +10,12 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..core.errors import CamdynInputError
-from ..core.models import available
+from ..core.compiled import available
 from . import scene_files
 from .beam_scene import BeamTarget
 from .camshaft1_study import StudyTarget
 from .dynacam_scene import DynacamTarget
-from .model import ModelTarget, StateTarget, load_ref, model_ref
+from .model_target import ModelTarget, StateTarget, load_ref, model_ref
 
 SCENE_TARGETS = {cls.scene_kind: cls for cls in (DynacamTarget, StudyTarget, BeamTarget)}
 """Scene kind -> the target class that runs it (its ``parse`` checks the scene file's tables,

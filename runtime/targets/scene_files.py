@@ -45,8 +45,8 @@ _RUN = {"T_start": (-5.0, 0.0), "T_end": (1.0, 50.0), "rtol": (1e-13, 1e-2), "me
 
 
 @dataclass(frozen=True)
-class Scene:
-    """A checked scene."""
+class DynacamScene:
+    """A checked DYNACAM scene (kind "dynacam")."""
 
     path: str
     title: str
@@ -151,7 +151,7 @@ def check_study(data: dict, where: str) -> dict:
     the ranges the CAMSHAFT-1 manifest declares, a known method and law."""
     from ..core.laws import choose
     from ..core.methods import METHODS
-    from ..core.models import load
+    from ..core.compiled import load
 
     _check(data, STUDY_SCHEMA, where)
     choose(data["law"])
@@ -355,7 +355,7 @@ def expect_kind(data: dict, where: str, kind: str) -> None:
                                f"any kind")
 
 
-def load(path) -> Scene:
+def load(path) -> DynacamScene:
     """Read and check a DYNACAM scene file (or a built-in scene name)."""
     data, where = read(path)
     expect_kind(data, where, "dynacam")
@@ -428,7 +428,7 @@ def beam_from_dict(data: dict, path: str = "<scene>") -> BeamScene:
                      reference=str(data.get("reference", "")), case=case)
 
 
-def from_dict(data: dict, path: str = "<scene>") -> Scene:
+def from_dict(data: dict, path: str = "<scene>") -> DynacamScene:
     unknown = sorted(set(data) - _TOP)
     if unknown:
         raise CamdynInputError(f"{unknown[0]} is not a scene key; keys are {', '.join(sorted(_TOP))}")
@@ -469,13 +469,13 @@ def from_dict(data: dict, path: str = "<scene>") -> Scene:
     if not isinstance(modes, dict) or not all(isinstance(v, str) for v in modes.values()):
         raise CamdynInputError("[modes] must map mode names to value names")
     turn = _turn(data.get("turn"), params)
-    return Scene(path=path, title=str(data.get("title", Path(path).stem)),
+    return DynacamScene(path=path, title=str(data.get("title", Path(path).stem)),
                  reference=str(data.get("reference", "")), law=law, theta=theta,
                  options=options, parameters=params, modes=dict(modes), turn=turn, **settings)
 
 
-def replace(sc: Scene, options: dict | None = None, parameters: dict | None = None,
-            drop: tuple = ()) -> Scene:
+def replace(sc: DynacamScene, options: dict | None = None, parameters: dict | None = None,
+            drop: tuple = ()) -> DynacamScene:
     """The scene with some options or parameters changed (``drop``: parameters the new
     options no longer have), checked again as a scene file would be."""
     from dataclasses import asdict
@@ -492,6 +492,6 @@ def replace(sc: Scene, options: dict | None = None, parameters: dict | None = No
     return from_dict(data, sc.path)
 
 
-def without_backlash(sc: Scene) -> Scene:
+def without_backlash(sc: DynacamScene) -> DynacamScene:
     """The scene with a rigid gear and a bilateral roller (figs 7.15 against 7.16)."""
     return replace(sc, {"gear": "rigid", "roller": "bilateral"}, drop=("s_g", "s_r", "V_T", "V_R"))

@@ -49,7 +49,7 @@ def frozen_matrices(B0: float, Fa: float, Fv: float, tau: float = 0.16, model: s
     moving at the nominal speed (B' = 1, X' = dH/dB); for camshaft1 at T = B0."""
     from camdyn.runtime.engine import driver
     from camdyn.runtime.core import laws
-    from camdyn.runtime.core.models import load
+    from camdyn.runtime.core.compiled import load
 
     m = load(model)
     law = laws.choose("cycloidal")

@@ -5,7 +5,7 @@ CAMSHAFT-1 (4.15)), its U0, U0'', X''min with error estimates beside the envelop
 from __future__ import annotations
 
 from camdyn.runtime.measure.contract import answer
-from camdyn.runtime.targets.model import ModelTarget
+from camdyn.runtime.targets.model_target import ModelTarget
 
 ONE_DOF_TOLERANCE = 0.02
 """The one-DOF model (3.1) stands in for CAMSHAFT-1 when the envelopes at Fa and at 0 differ

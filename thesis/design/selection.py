@@ -4,9 +4,10 @@ tau and Fa, and the nominal characteristics of App. 2 they start from.
 Per law:
     U0_envelope, U0dd_envelope   the residual amplitudes a designer reads at (tau, Fa): the
                                  envelope through the maxima of the CAMSHAFT-1 graphs (4.15)
-                                 around tau (runtime/measure/envelope.py; runs at tau from 0.8 tau to
-                                 1.25 tau, DP54 rtol 1e-9), not the value at tau itself, which
-                                 may sit in a tuning dip (secs 3.5, 8.2.6)
+                                 around tau (runtime/measure/envelope.py; runs over 1.5 tuning
+                                 dips either side of tau, DP54 rtol 1e-9), not the value at tau
+                                 itself, which may sit in a tuning dip (secs 3.5, 8.2.6), with
+                                 their errors
     impact_T0, _T05, _T1         impact sensitivity after backlash at T = 0, 1/2, 1: the
                                  relative impact speed per S^(2/3), r_e/S^(2/3) =
                                  1/2 |H'''|^(1/3) 6^(2/3), from (3.15) made dimensionless as
@@ -31,10 +32,10 @@ from camdyn.runtime.core.errors import CamdynInputError, SimulationError, out_fo
 from camdyn.runtime.measure.contract import chart_note
 from camdyn.runtime.measure.envelope import envelope, envelope_error, tau_grid
 from camdyn.runtime.targets.grid import run_grid
-from camdyn.runtime.targets.model import ModelTarget
+from camdyn.runtime.targets.model_target import ModelTarget
 from camdyn.thesis.theory import lawtable
 
-from .graphs import RTOL
+from .graphs import LATTICE_CAP, PER_DIP, RTOL, phase_factor
 
 SIX23 = 6 ** (2 / 3)
 
@@ -47,25 +48,57 @@ def impact_sensitivity(jerk) -> float:
     return 0.5 * abs(jerk) ** (1 / 3) * SIX23
 
 
-def envelopes_at(key: str, tau: float, Fa: float, theta=None, n: int = 41,
-                 estimate: bool = True) -> dict:
+def window(key: str, tau: float, Fa: float, theta=None, spacings: float = 1.5) -> np.ndarray:
+    """The tau grid the envelopes at tau are read from: ``spacings`` tuning-dip spacings either
+    side of 1/tau (the dips of CAMSHAFT-1 lie about 1/phase_factor apart in 1/tau,
+    graphs.py), so that maxima bracket tau on both sides (a window of 0.8 to 1.25 tau held
+    one maximum at tau = 0.3 and read the envelope 15 % low there, held flat from tau =
+    0.286), 2 PER_DIP samples a spacing, uniform in 1/tau (every other one of them is the
+    grid of the envelope's sampling error); tau at most LATTICE_CAP."""
+    w = spacings / phase_factor(key, theta, Fa)
+    x_lo, x_hi = max(1.0 / tau - w, 1.0 / LATTICE_CAP), 1.0 / tau + w
+    n = max(int(math.ceil(PER_DIP * (x_hi - x_lo))), 2)
+    return tau_grid(1.0 / x_hi, 1.0 / x_lo, 2 * n + 1)
+
+
+WIDEST = 4.5
+"""The widest window, in dip spacings either side: a law whose dips lie further apart than
+CAMSHAFT-1's cycloid (the parabolic law's) is read from a wider one, up to this."""
+
+
+def envelopes_at(key: str, tau: float, Fa: float, theta=None, estimate: bool = True) -> dict:
     """The (U0, U0'') envelopes through the maxima of the CAMSHAFT-1 graphs of law ``key`` at
-    tau, from one compiled grid of runs at tau from 0.8 tau to 1.25 tau (DP54, rtol 1e-9),
-    each with its error (runtime/measure/envelope.py's envelope_error: the sampling and the
-    runs' own estimates) and the runs' warnings."""
-    taus = tau_grid(0.8 * tau, min(1.25 * tau, 0.99), n)
+    tau, from one compiled grid of runs over :func:`window` (DP54, rtol RTOL), each with its
+    error (runtime/measure/envelope.py's envelope_error: the sampling and the runs' own
+    estimates) and the runs' warnings."""
     target = ModelTarget.of("camshaft1", {"tau": tau, "Fa": Fa}, rtol=RTOL, law=key,
                             theta=theta)
-    cols = run_grid(target, ("tau",), taus[:, None], estimate=estimate, jobs=1).columns
+    spacings = 1.5
+    while True:
+        # widened a spacing at a time until maxima bracket tau (the estimate exists) on both
+        # graphs, or the window reaches WIDEST or the largest tau
+        taus = window(key, tau, Fa, theta, spacings)
+        cols = run_grid(target, ("tau",), taus[:, None], estimate=True, jobs=1).columns
+        errs = {f: float(envelope_error(taus, cols[f], cols[f"{f}_error"])(tau))
+                for f in ("U0", "U0dd")}
+        if all(map(math.isfinite, errs.values())) or spacings >= WIDEST \
+                or taus[-1] >= LATTICE_CAP * (1 - 1e-12) and taus[0] <= 1.0 / (1.0 / tau + WIDEST):
+            break
+        spacings += 1.0
     out = {}
     for fig in ("U0", "U0dd"):
         out[f"{fig}_envelope"] = float(envelope(taus, cols[fig])(tau))
-        out[f"{fig}_envelope_error"] = (
-            float(envelope_error(taus, cols[fig], cols[f"{fig}_error"])(tau))
-            if estimate else None)
+        e = errs[fig]
+        out[f"{fig}_envelope_error"] = e if estimate and math.isfinite(e) else None
     warned = [w for w in cols["warnings"] if w]
     out["warnings"] = ([f"{len(warned)} of {len(taus)} runs of the envelope warned; the first: "
                         f"{warned[0]}"] if warned else [])
+    unbracketed = [f for f in ("U0", "U0dd") if not math.isfinite(errs[f])]
+    if estimate and unbracketed:
+        out["warnings"].append(
+            f"no estimate of the {' and '.join(unbracketed)} envelope at tau = {tau:g}: no "
+            f"maximum of the graph brackets it within {spacings:g} dip spacings (or below tau = "
+            f"{LATTICE_CAP:g}), so the envelope there holds the nearest maximum")
     return out
 
 

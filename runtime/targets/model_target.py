@@ -19,7 +19,7 @@ import numpy as np
 
 from ..core import methods as _methods
 from ..core.errors import CamdynInputError, SimulationError
-from ..core.models import available, load
+from ..core.compiled import available, load
 from ..core.simulator import Simulator
 from ..engine import finder, driver
 from ..measure import references
