@@ -8,7 +8,7 @@ camdyn.<room>.<sub>..., so a new subpackage cannot be left out of the wheel (one
 camdyn.thesis.checks, while only the editable install was tested).
 
 Cython finds cimported .pxd and included .pxi files by package path
-(camdyn/runtime/engine/abi.pxd, camdyn/runtime/engine/loops.pxi), but the design card keeps the
+(camdyn/runtime/engine/abi.pxd, camdyn/runtime/engine/loops.pxi), but the repository keeps the
 sources in top-level folders (runtime/, generated/).  So the headers are copied into
 build/cython_include/camdyn/ first and that tree is put on Cython's include path.
 """

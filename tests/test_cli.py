@@ -268,3 +268,29 @@ def test_refused_input_leaves_no_out_folder(tmp_path, capsys):
         assert main([*argv, "--out", str(new)]) == 2
         assert not new.exists(), argv[0]
     capsys.readouterr()
+
+
+def test_help_texts_state_the_librarys_defaults():
+    """The defaults a help text names are the ones the library applies (each has one home:
+    methods.DEFAULT_RTOL, the model target's DEFAULT_T_END, the sweep's MODEL_RTOL, the
+    residual command's RESIDUAL_RTOL)."""
+    from camdyn.runtime.cli import residual as residual_cmd
+    from camdyn.runtime.core.methods import DEFAULT_RTOL
+    from camdyn.runtime.studies.sweep import MODEL_RTOL
+    from camdyn.runtime.targets.model_target import DEFAULT_T_END
+
+    def helptext(*argv):
+        return " ".join(subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", *argv,
+                                        "--help"], capture_output=True, text=True).stdout.split())
+
+    import re
+
+    def number(text, pattern):
+        return float(re.search(pattern, text).group(1))
+
+    assert number(helptext("integrate"), r"tolerance \(default ([0-9.e-]+)\)") == DEFAULT_RTOL
+    assert number(helptext("residual"), r"tolerance \(default ([0-9.e-]+)\)") \
+        == residual_cmd.RESIDUAL_RTOL
+    sweep = helptext("sweep")
+    assert number(sweep, r"scene's, ([0-9.e-]+) for a model\)") == MODEL_RTOL
+    assert number(sweep, r"past the rise \(default ([0-9.]+)\)") == DEFAULT_T_END

@@ -20,13 +20,6 @@ def fail(prog: str, message: str) -> int:
     return 2
 
 
-def run_health(res) -> dict:
-    """What a run says about its own reliability, for the JSON: ``warnings`` (a fixed step near
-    the stability boundary) and ``stiff_from_T`` (DP54: where the problem became stiff, else
-    None)."""
-    return {"warnings": list(res.warnings), "stiff_from_T": res.stiff_from_T}
-
-
 # the implicit method the stiffness note names (runtime/core/methods.py RODAS4)
 IMPLICIT_HINT = "the implicit (L-stable) method rodas4 (--method rodas4)"
 

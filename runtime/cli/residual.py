@@ -15,6 +15,10 @@ LIMITS = {"one-dof": "Fv -> 0, a cam of infinite inertia", "camshaft1": "Fv -> o
 """What the flywheel factor is in the models without a cam inertia (thesis sec. 5.7)."""
 
 
+RESIDUAL_RTOL = 1e-10
+"""The tolerance of `camdyn residual` when none is given: one run, so a tight one."""
+
+
 def add(sub):
     all_methods, _ = method_names()
     r = sub.add_parser("residual", help="residual vibration after one rise (thesis ch. 3-5)")
@@ -89,7 +93,7 @@ def target(args):
         raise CamdynInputError(f"--t-end={args.t_end:g} must exceed the end of the rise, T = 1")
     rtol = args.rtol
     if METHODS[args.method].adaptive and rtol is None and args.step is None:
-        rtol = 1e-10
+        rtol = RESIDUAL_RTOL
     step = args.step
     params = parameters(args.model, args.tau, args.fa, args.fv, args.q)
     if not METHODS[args.method].adaptive and step is None:

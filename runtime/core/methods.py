@@ -38,6 +38,9 @@ def _positive(name: str, value, upper: float | None = None) -> float:
     return v
 
 
+DEFAULT_RTOL = 1e-8
+"""The tolerance of an adaptive method (dp54, rodas4) when none is given."""
+
 RTOL_MIN = 1e-14
 """The tightest rtol an adaptive method accepts: a run there has no tighter neighbour."""
 
@@ -118,7 +121,7 @@ class DP54:
     resolved and must not be read from the run.
     """
 
-    rtol: float = 1e-8
+    rtol: float = DEFAULT_RTOL
     atol: float | None = None
     first_step: float | None = None
     max_step: float = math.inf
@@ -229,7 +232,7 @@ def make(name: str, *, rtol=None, atol=None, step=None):
         if step is not None:
             raise CamdynInputError("step applies to the fixed-step methods rk4 and koster; "
                                    f"{name} takes rtol")
-        return cls(rtol=1e-8 if rtol is None else rtol, atol=atol)
+        return cls(rtol=DEFAULT_RTOL if rtol is None else rtol, atol=atol)
     if rtol is not None or atol is not None:
         raise CamdynInputError(f"rtol/atol apply to dp54 and rodas4; {name} takes step")
     if step is None:

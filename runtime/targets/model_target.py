@@ -218,10 +218,8 @@ class ModelTarget(Target):
         return replace(self, **changes)
 
     def method(self):
-        rtol = self.rtol
-        if self.rtol is None and self.step is None and _methods.METHODS[self.method_name].adaptive:
-            rtol = 1e-8
-        return _methods.make(self.method_name, rtol=rtol, step=self.step)
+        # an adaptive method without rtol takes methods.DEFAULT_RTOL
+        return _methods.make(self.method_name, rtol=self.rtol, step=self.step)
 
     def tighter(self):
         m = self.method().tighter()

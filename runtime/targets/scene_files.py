@@ -36,6 +36,7 @@ from importlib import resources
 from pathlib import Path
 
 from ..core.errors import CamdynInputError
+from ..core.methods import DEFAULT_RTOL
 
 _TOP = {"kind", "title", "reference", "note", "law", "theta", "options", "parameters", "run", "modes",
         "turn"}
@@ -58,7 +59,7 @@ class DynacamScene:
     modes: dict = field(default_factory=dict)
     T_start: float = -0.1
     T_end: float = 1.5
-    rtol: float = 1e-8
+    rtol: float = DEFAULT_RTOL
     method: str = "dp54"
     turn: dict | None = None
     """The ``[turn]`` table, checked: upper_dwell, return (deg), return_law, return_theta."""
