@@ -61,10 +61,12 @@ def _number(v) -> bool:
     return isinstance(v, (int, float, np.floating)) and not isinstance(v, bool) and math.isfinite(v)
 
 
-def fit_window(target):
+def fit_window(target, window=None, at: str = ""):
     """``target`` itself, or extended to the dwell its figures need, or a refusal
-    (CamdynInputError) naming the setting that ends the run and the least value it needs."""
-    w = target.window()
+    (CamdynInputError) naming the setting that ends the run and the least value it needs.
+    ``window``: the target's (None: ``target.window()``), or a grid's worst point's, which
+    ``at`` names ("tau = 0.9")."""
+    w = target.window() if window is None else window
     if w is None:
         return target
     short = w.short()
@@ -75,10 +77,12 @@ def fit_window(target):
         return target.extended(need)
     worst = max(short, key=short.get)
     unit = f" {w.unit}" if w.unit else ""
+    where = f" at {at}" if at else ""
     raise CamdynInputError(
         f"{w.setting}={w.end:g} leaves {w.available:.4g}{unit} of dwell after the rise, less "
-        f"than one period of the slowest mode {worst} sees there ({short[worst]:.4g}{unit}): "
-        f"{worst} would come out too small; give {w.setting} >= {w.end_for(need):.4g}")
+        f"than one period of the slowest mode {worst} sees there{where} ({short[worst]:.4g}"
+        f"{unit}): {worst} would come out too small; give {w.setting} >= "
+        f"{w.end_for(need):.4g}")
 
 
 def answer(target, *, estimate: bool = True, progress=None) -> Answer:

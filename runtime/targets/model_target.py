@@ -23,6 +23,7 @@ from ..core.compiled import available, load
 from ..core.simulator import Simulator
 from ..engine import finder, driver
 from ..measure import references
+from ..measure.contract import fit_window
 from ..measure.extremes import extreme
 from ..measure.modes import slowest_periods
 from ..measure.residual import FIGURES as RESIDUAL_FIGURES, residual
@@ -354,19 +355,8 @@ class ModelTarget(Target):
         sim = self.simulator
         Y0 = sim.batch_inputs(P).Y0
         w, worst = self._window(P, Y0)
-        short = w.short()
-        if not short:
-            return self
-        need = max(short.values())
-        if not w.given:
-            return self.extended(max(w.needed.values()))
-        at = ", ".join(f"{k} = {v:g}" for k, v in zip(names, points[worst]))
-        fig = max(short, key=short.get)
-        unit = f" {w.unit}" if w.unit else ""
-        raise CamdynInputError(
-            f"t_end={w.end:g} leaves {w.available:.4g}{unit} of dwell after the rise, less than "
-            f"one period of the slowest mode {fig} sees there at {at} ({need:.4g}{unit}): {fig} "
-            f"would come out too small; give t_end >= {w.end_for(need):.4g}")
+        return fit_window(self, w, at=", ".join(f"{k} = {v:g}"
+                                                for k, v in zip(names, points[worst])))
 
     def _grid_parameters(self, names, points) -> np.ndarray:
         n = len(points)
