@@ -47,8 +47,7 @@ class BeamTarget(Target):
     label: str = "beam-follower"
     title: str = "Rayleigh-beam follower"
 
-    kind = "beam-follower"
-    scene_kind = "beam-follower"
+    kind = scene_kind = scene_files.BEAM
     time_name = "t"
 
     scene_doc = "the paper's Rayleigh-beam follower: tip response"

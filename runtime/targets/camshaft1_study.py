@@ -45,8 +45,7 @@ class StudyTarget(ModelTarget):
 
     scene: object = None
 
-    kind = "camshaft1-study"
-    scene_kind = "camshaft1-study"
+    kind = scene_kind = scene_files.STUDY
 
     scene_doc = "the CAMSHAFT-1 study of thesis ch. 4 (figs 4.10, 4.11): report and charts"
 

@@ -60,8 +60,7 @@ class DynacamTarget(Target):
     label: str = ""
     notches: int = 0
 
-    kind = "dynacam"
-    scene_kind = "dynacam"
+    kind = scene_kind = scene_files.DYNACAM
 
     scene_doc = "a DYNACAM mechanism (thesis ch. 6-8): summary and diagrams"
 

@@ -137,7 +137,11 @@ def builtin(name: str) -> Path:
 
 # -- the CAMSHAFT-1 study (kind camshaft1-study), run by camdyn.runtime.targets.camshaft1_study --------------
 
+DYNACAM = "dynacam"
 STUDY = "camshaft1-study"
+BEAM = "beam-follower"
+"""The kinds of scene file, each the ``scene_kind`` of the target class that runs it
+(runtime/targets/resolve.py)."""
 STUDY_SCHEMA = {
     "kind": str, "title": str, "law": str,
     "study": {"response": {"tau": float, "Fa": list},
@@ -359,7 +363,7 @@ def expect_kind(data: dict, where: str, kind: str) -> None:
 def load(path) -> DynacamScene:
     """Read and check a DYNACAM scene file (or a built-in scene name)."""
     data, where = read(path)
-    expect_kind(data, where, "dynacam")
+    expect_kind(data, where, DYNACAM)
     return from_dict(data, where)
 
 
