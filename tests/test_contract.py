@@ -45,8 +45,9 @@ def test_a_figure_its_estimate_does_not_resolve_warns():
 def test_chart_note_states_the_largest_estimate_and_the_warnings():
     values, errors = np.array([1e-3, 2e-3, 4e-3]), np.array([1e-10, 3e-10, 1e-10])
     note = contract.chart_note({"U0": (values, errors)}, ["", "x", ""], points=3)
-    assert "U0 ± up to 3e-10 (1.5e-07 relative)" in note and "1 of 3 points warned" in note
+    assert "U0 ± up to 3e-10 (7.5e-08 of its largest |value|)" in note
+    assert "1 of 3 points warned" in note
     note = contract.chart_note({"U0": (values, [1e-10, None, 1e-10])}, [])
     assert "U0: no error estimate at some points" in note and "no warnings" in note
     one = contract.chart_note({"tip": (0.02, 1e-12)}, ["a", "b"])
-    assert "tip ± 1e-12" in one and one.endswith("2 warnings: a")
+    assert "tip ± 1e-12 (5e-11 relative)" in one and one.endswith("2 warnings: a")

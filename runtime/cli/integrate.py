@@ -87,7 +87,7 @@ def run(args) -> int:
         if args.out:
             from ..targets.series import write_series
 
-            files = write_series(a.result, args.out)
+            files = write_series(a, args.out)
     except CamdynInputError as exc:
         return fail(prog, str(exc))
     except SimulationError as exc:

@@ -44,6 +44,8 @@ class Answer:
     stats: dict = field(default_factory=dict)
     estimated: bool = True
     result: object = None
+    tight_result: object = None     # the run one notch tighter (None without an estimate)
+    factor: float = 1.0             # the method's factor of |v - v'| (Richardson's for rk4)
 
     def as_dict(self) -> dict:
         """The command's record with ``<figure>_error`` beside it, the warnings and the
@@ -106,7 +108,8 @@ def answer(target, *, estimate: bool = True, progress=None) -> Answer:
         warnings.append(f"no error estimate for {name}: the tighter run does not give it")
     warnings += unresolved(base.figures, errors, _scales(target))
     return Answer(target.name, target.kind, dict(base.figures), errors, sources, warnings,
-                  base.record, base.stats, estimate, base.result)
+                  base.record, base.stats, estimate, base.result,
+                  None if tight is None else tight.result, target.method().estimate_factor)
 
 
 def combine(target, base, tight, estimate: bool) -> tuple[dict, dict, list]:
@@ -214,7 +217,7 @@ def unresolved(figures: dict, errors: dict, scales: dict | None = None) -> list:
 def chart_note(estimates: dict, warnings, points: int | None = None) -> str:
     """The footnote a chart carries (the answer contract on a picture): for each figure drawn,
     ``estimates[name] = (values, errors)`` (numbers or arrays), its largest estimate, absolute
-    and relative to the figure; and the warnings: ``warnings`` a list of lines, or of one
+    and relative to the figure (to the largest |value| of an array); and the warnings: ``warnings`` a list of lines, or of one
     string per point of a grid ("" for none; ``points`` of them)."""
     parts = []
     for name, (values, errors) in estimates.items():
@@ -225,12 +228,12 @@ def chart_note(estimates: dict, warnings, points: int | None = None) -> str:
             parts.append(f"{name}: no error estimate"
                          + ("" if not np.any(np.isfinite(e)) else " at some points"))
             continue
-        with np.errstate(divide="ignore", invalid="ignore"):
-            rel = np.where(v > 0, e / v, np.nan)
-        big = float(e.max())
-        text = f"{name} ± {big:.2g}" if e.size == 1 else f"{name} ± up to {big:.2g}"
-        if np.any(np.isfinite(rel)) and big > 0:
-            text += f" ({float(np.nanmax(rel)):.2g} relative)"
+        big, top = float(e.max()), float(v.max()) if v.size else 0.0
+        if e.size == 1:
+            text = f"{name} ± {big:.2g}" + (f" ({big / top:.2g} relative)" if top > 0 else "")
+        else:    # against the largest value drawn: a curve through zero has no relative error
+            text = f"{name} ± up to {big:.2g}" + (f" ({big / top:.2g} of its largest |value|)"
+                                                  if top > 0 else "")
         parts.append(text)
     lines = ["error estimates: " + "; ".join(parts)] if parts else []
     warned = [w for w in warnings if w]
