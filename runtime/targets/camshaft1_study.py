@@ -26,6 +26,7 @@ import numpy as np
 from ..measure import references
 from ..measure.contract import answer, chart_note, quotient
 from ..measure.envelope import envelope, envelope_error, tau_grid
+from ..measure.residual import FIGURES as RESIDUAL_FIGURES
 from . import scene_files
 from .grid import run_grid
 from .model_target import ModelTarget
@@ -101,10 +102,8 @@ class StudyTarget(ModelTarget):
             a = answer(self.with_parameters({"tau": resp["tau"], "Fa": Fa}), estimate=estimate)
             r = a.result
             s = r.sample(T)
-            row = {"Fa": Fa, **{k: a.figures[k] for k in ("U0", "U0dd", "Xdd_min_rise",
-                                                         "T_at_Xdd_min")}}
-            row.update({f"{k}_error": a.errors.get(k) for k in ("U0", "U0dd", "Xdd_min_rise",
-                                                               "T_at_Xdd_min")})
+            row = {"Fa": Fa, **{k: a.figures[k] for k in RESIDUAL_FIGURES}}
+            row.update({f"{k}_error": a.errors.get(k) for k in RESIDUAL_FIGURES})
             row.update(r.stats)
             row["warnings"] = list(a.warnings)
             warnings += [f"Fa = {Fa:g}: {w}" for w in a.warnings]
@@ -123,7 +122,7 @@ class StudyTarget(ModelTarget):
         resp_rows = summary["response"]
         fig.text(0.01, 0.01, chart_note(
             {k: ([d[k] for d in resp_rows], [d[f"{k}_error"] for d in resp_rows])
-             for k in ("U0", "U0dd", "Xdd_min_rise")}, warnings), fontsize=7)
+             for k in RESIDUAL_FIGURES[:3]}, warnings), fontsize=7)
         fig.tight_layout(rect=(0, 0.05, 1, 1))
         fig.savefig(out_dir / "response.png", dpi=120)
         plt.close(fig)
@@ -136,7 +135,7 @@ class StudyTarget(ModelTarget):
         pts = np.array([[Fa, tau] for Fa in graphs["Fa"] for tau in taus])
         grid = run_grid(self, ("Fa", "tau"), pts, estimate=estimate)
         cols = grid.columns
-        keys = ("U0", "U0dd", "Xdd_min_rise", "T_at_Xdd_min")
+        keys = RESIDUAL_FIGURES
         rows = {Fa: [{k: float(cols[k][j * len(taus) + i]) for k in keys}
                      | {f"{k}_error": _float(cols[f"{k}_error"][j * len(taus) + i]) for k in keys}
                      for i in range(len(taus))] for j, Fa in enumerate(graphs["Fa"])}

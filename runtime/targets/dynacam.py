@@ -289,7 +289,7 @@ def summarize(scene: DynacamScene, model, res, ch: dict, cpu: float) -> tuple[di
     figures, sampling = headline(scene, res, t_m)
     out = {"title": scene.title, "variant": scene.variant, "tau": ch["tau"], "Fa": ch["Fa"],
            "Fv": ch["Fv"]}
-    for key in ("Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_rise", "U0dd", "U0"):
+    for key in FIGURES[:5]:          # the rise's and the dwell's; the speeds follow below
         out[key] = figures[key]
     if scene.turn is not None:
         turn = scene.cam_law()

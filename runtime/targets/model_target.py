@@ -415,7 +415,7 @@ class ModelTarget(Target):
                                   f"{driver.STATUS_TEXT[int(stats[j, 0])]}")
         col = {c: k for k, c in enumerate(finder.FIGURE_COLUMNS)}
         samp = np.zeros((n, 4))
-        for k, f in enumerate(("U0", "U0dd", "Xdd_min_rise")):
+        for k, f in enumerate(RESIDUAL_FIGURES[:3]):     # the extremes; the last is a place
             samp[:, k] = figures[:, col[f + "_sampling"]]
         return Batch(figures[:, :4].copy(), samp, [[] for _ in range(n)],
                      stats[:, 1].astype(float))

@@ -5,13 +5,14 @@ CAMSHAFT-1 (4.15)), its U0, U0'', X''min with error estimates beside the envelop
 from __future__ import annotations
 
 from camdyn.runtime.measure.contract import answer
+from camdyn.runtime.measure.residual import FIGURES as RESIDUAL_FIGURES
 from camdyn.runtime.targets.model_target import ModelTarget
 
 ONE_DOF_TOLERANCE = 0.02
 """The one-DOF model (3.1) stands in for CAMSHAFT-1 when the envelopes at Fa and at 0 differ
 by less than this, relatively (the check run's least adequate model)."""
 
-FIGURES = ("U0", "U0dd", "Xdd_min_rise", "T_at_Xdd_min")
+FIGURES = RESIDUAL_FIGURES
 """What the check run reports of the run (runtime/measure/residual.py), each with its error."""
 
 RTOL = 1e-10
