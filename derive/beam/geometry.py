@@ -174,6 +174,15 @@ def pitch_radius(S, r_b=r_b, r_r=r_r):
     return r_b + r_r + S
 
 
+def bind(expr, r_expr):
+    """Replace the generic r(theta) and its derivatives in ``expr`` by ``r_expr``."""
+    orders = [d.derivative_count for d in expr.atoms(sp.Derivative) if d.expr == r]
+    table = {sp.Derivative(r, (theta, k)): sp.diff(r_expr, theta, k)
+             for k in range(1, max(orders, default=0) + 1)}
+    table[r] = r_expr
+    return expr.xreplace(table)  # top-down: derivatives are matched whole before r
+
+
 def _to_jet(expr):
     """r, r', r'', r''' -> plain symbols r0..r3, for lambdify."""
     table = {sp.Derivative(r, (theta, k)): _jet[k] for k in range(1, 4)}
