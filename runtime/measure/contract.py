@@ -214,6 +214,10 @@ def unresolved(figures: dict, errors: dict, scales: dict | None = None) -> list:
 
 
 # -- the contract on a chart: a footnote with the estimates and the warnings -------------
+WIDTH = 130
+"""The longest line of a chart's footnote, in characters."""
+
+
 def chart_note(estimates: dict, warnings, points: int | None = None) -> str:
     """The footnote a chart carries (the answer contract on a picture): for each figure drawn,
     ``estimates[name] = (values, errors)`` (numbers or arrays), its largest estimate, absolute
@@ -235,7 +239,16 @@ def chart_note(estimates: dict, warnings, points: int | None = None) -> str:
             text = f"{name} ± up to {big:.2g}" + (f" ({big / top:.2g} of its largest |value|)"
                                                   if top > 0 else "")
         parts.append(text)
-    lines = ["error estimates: " + "; ".join(parts)] if parts else []
+    lines = []
+    if parts:        # a line of at most about WIDTH characters, so that no part is cut off
+        line = "error estimates: " + parts[0]
+        for part in parts[1:]:
+            if len(line) + len(part) + 2 > WIDTH:
+                lines.append(line + ";")
+                line = "  " + part
+            else:
+                line += "; " + part
+        lines.append(line)
     warned = [w for w in warnings if w]
     if points is not None:
         lines.append(f"{len(warned)} of {points} points warned" if warned else "no warnings")

@@ -181,7 +181,7 @@ class StudyTarget(ModelTarget):
         fig.text(0.01, 0.01, chart_note(
             {k: (cols[k], cols[f"{k}_error"]) for k in keys}, cols["warnings"],
             points=len(pts)), fontsize=7)
-        fig.tight_layout(rect=(0, 0.04, 1, 1))
+        fig.tight_layout(rect=(0, 0.06, 1, 1))
         fig.savefig(out_dir / "graphs.png", dpi=120)
         plt.close(fig)
 
