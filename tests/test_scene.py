@@ -230,3 +230,49 @@ def test_variant_names_are_words_that_each_mean_one_thing():
             value = getattr(opts, key)
             shown = value if isinstance(value, str) else ("yes" if value else "no")
             assert f"#   {key} = {shown}: " in head, (opts.name, key)
+
+
+@pytest.mark.parametrize("what", ["device", "fifo", "folder", "huge"])
+def test_only_a_regular_scene_file_is_read(what, tmp_path):
+    """A named pipe would block the reader for ever and /dev/zero never end: only a regular
+    file of at most 1 MiB is opened; anything else is one line naming the path, exit 2, at
+    once (the subprocess has 60 s; it answers in well under one)."""
+    import os
+
+    path = {"device": "/dev/zero", "folder": str(tmp_path)}.get(what)
+    if what == "fifo":
+        path = str(tmp_path / "scene.toml")
+        os.mkfifo(path)
+    elif what == "huge":
+        path = str(tmp_path / "huge.toml")
+        with open(path, "w") as fh:
+            fh.write('kind = "dynacam"\n' + "# padding\n" * 200_000)
+    for cmd in (["simulate", path], ["run", path, "--out", str(tmp_path / "o")]):
+        p = subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", *cmd],
+                           capture_output=True, text=True, timeout=60)
+        assert p.returncode == 2 and p.stdout == "", (cmd, p.stderr)
+        lines = p.stderr.strip().splitlines()
+        assert len(lines) == 1 and f"scene file {path}" in lines[0], lines
+        assert {"device": "not a regular file", "fifo": "not a regular file",
+                "folder": "a folder", "huge": "too large"}[what] in lines[0]
+
+
+@pytest.mark.parametrize("name", ["h_m", "R_b"])
+def test_parameters_beyond_any_mechanism_are_refused_by_name(name, tmp_path):
+    """1e300 m of stroke or base radius overflowed tau, Fa, Fv (4.3)-(5.52) with a traceback;
+    now one line listing the parameters they are formed from, exit 2.  beta_m, an angle, has
+    a range of its own: 0 < beta_m <= 2 pi."""
+    base = (scenes.builtin("spring_loaded")).read_text()
+    text = "\n".join(f"{name} = 1e300" if line.startswith(f"{name} = ") else line
+                     for line in base.splitlines())
+    path = tmp_path / "big.toml"
+    path.write_text(text)
+    p = _cli("simulate", str(path))
+    assert p.returncode == 2, p.stderr
+    assert p.stderr.count("\n") == 1 and f"{name} = 1e+300" in p.stderr
+    assert "no finite, positive tau, Fa and Fv" in p.stderr
+    text = "\n".join("beta_m = 7.0" if line.startswith("beta_m = ") else line
+                     for line in base.splitlines())
+    path.write_text(text)
+    p = _cli("simulate", str(path))
+    assert p.returncode == 2 and p.stderr.count("\n") == 1 and "beta_m=7" in p.stderr

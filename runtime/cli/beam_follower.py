@@ -12,7 +12,8 @@ FLAGS = {"omega": "--omega", "modes": "--modes", "rod_radius": "--rod-radius",
                "distance": "--distance", "base_radius": "--base-radius", "rise": "--rise",
                "revolutions": "--revolutions", "rayleigh": "--rayleigh",
                "roller_inertia": "--roller-inertia", "formulation": "--formulation",
-               "method": "--method"}
+               "method": "--method", "rtol": "--rtol"}
+
 
 def _beam_argument(message: str) -> str:
     """Prefix the flag a :func:`camdyn.runtime.targets.beam.check` message is about (``name=value ...``)."""
@@ -71,6 +72,9 @@ def add(sub):
     b.add_argument("--method", choices=ADAPTIVE,
                    help=f"integration method (default {dflt['method']}); rodas4, the stiff "
                         f"solver, suits stiff rods (large E, many modes)")
+    b.add_argument("--rtol", type=float, metavar="RTOL",
+                   help=f"relative tolerance of the method, 1e-14 <= rtol < 1 (default "
+                        f"{dflt['rtol']:g}; the error estimate runs again at rtol/10)")
     b.add_argument("--json", action="store_true", help="one JSON object on stdout")
     add_estimate_option(b)
     b.add_argument("--out", default=None, metavar="DIR",

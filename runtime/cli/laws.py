@@ -25,13 +25,13 @@ def add(sub):
     lw.add_argument("--fa", type=float, default=None,
                     help="Fa of the selection, 0 <= Fa <= 100 (default 0)")
     lw.add_argument("--stroke", type=float, default=None, metavar="M",
-                    help="with --tau, --base-radius and --roller-radius: stroke in m, >= 0; "
+                    help="with --tau, --base-radius and --roller-radius: stroke in m, 0 <= h < 1000; "
                          "adds the cam's least radius of curvature and largest pressure angle "
                          "(90/90/90/90 deg cam)")
     lw.add_argument("--base-radius", type=float, default=None, metavar="M",
-                    help="with --stroke: base circle radius in m, > 0")
+                    help="with --stroke: base circle radius in m, 0 < r_b < 1000")
     lw.add_argument("--roller-radius", type=float, default=None, metavar="M",
-                    help="with --stroke: roller radius in m, > 0")
+                    help="with --stroke: roller radius in m, 0 < r_r < 1000")
     lw.add_argument("--out", default=None, help="folder for laws_selection.png/.csv "
                     "(laws_sweep.png/.csv with --sweep)")
     lw.add_argument("--sweep", default=None, metavar="SCENE",

@@ -30,6 +30,7 @@ declared range is refused with a message that names it.  `camdyn run SCENE` runs
 from __future__ import annotations
 
 import math
+import stat
 import tomllib
 from dataclasses import dataclass, field, fields
 from importlib import resources
@@ -318,11 +319,31 @@ def check_parameters(options, table) -> dict:
     return out
 
 
+MAX_SCENE_BYTES = 1 << 20
+"""The largest scene file read: the built-in ones are about 2 KB; a device or a huge file is
+refused before it is read."""
+
+
 def read(path) -> tuple[dict, str]:
-    """The TOML table of a scene file (or a built-in scene name), and the path it came from."""
+    """The TOML table of a scene file (or a built-in scene name), and the path it came from.
+    Only a regular file is opened: a named pipe would block, a device (/dev/zero) never
+    end."""
     path = Path(path)
     if not path.suffix and not path.exists():
         path = builtin(str(path))
+    try:
+        info = path.stat()
+    except FileNotFoundError:
+        raise CamdynInputError(f"scene file {path} not found") from None
+    except OSError as exc:      # no permission on a folder above it, a name too long
+        raise CamdynInputError(f"scene file {path}: {exc.strerror}") from None
+    if not stat.S_ISREG(info.st_mode):
+        what = "a folder" if stat.S_ISDIR(info.st_mode) else "not a regular file"
+        raise CamdynInputError(f"scene file {path}: {what}; give a TOML scene file or a "
+                               "built-in scene name (camdyn scenes lists them)")
+    if info.st_size > MAX_SCENE_BYTES:
+        raise CamdynInputError(f"scene file {path}: {info.st_size} bytes is too large for a "
+                               f"scene (at most {MAX_SCENE_BYTES} bytes)")
     try:
         return tomllib.loads(path.read_text()), str(path)
     except FileNotFoundError:

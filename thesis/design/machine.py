@@ -15,8 +15,14 @@ from camdyn.thesis.theory import examples as ex
 from .limits import FA_CAP, TAU_CAP
 
 
-def positive(name: str, flag: str, value, unit: str, upper: float | None = None):
-    """``value`` as a float > 0 (and < ``upper``), None for None; else a CamdynInputError naming
+LARGEST = 1e12
+"""The largest value a design input takes in SI units unless it has a bound of its own: far
+beyond any machine, and far enough below the largest float that the products and squares of
+the design formulas stay finite (a rise time of 1e300 s overflowed them)."""
+
+
+def positive(name: str, flag: str, value, unit: str, upper: float | None = LARGEST):
+    """``value`` as a float > 0 and < ``upper``, None for None; else a CamdynInputError naming
     the option ``flag``, the quantity and its unit."""
     if value is None:
         return None
