@@ -16,7 +16,6 @@ import json
 import sympy as sp
 
 from . import symbolic
-
 from .emit import (Plain, doc_lines, manifest_common, math_imports, number, option_entries,
                    plainer, render as render_template, state_entries, time_functions,
                    with_source_hash)
@@ -291,10 +290,17 @@ def model_context(eq: Equations) -> dict:
     plain = plainer(m, all_exprs)
 
     rhs_exprs, diagonal = _rhs_expressions(m, eq, plain)
+    # a diagonal M is divided out symbolically, so its entries are checked where they are not
+    # positive by construction (a positive number, or a parameter whose declared range is
+    # positive): a negative or zero mass makes q'' NaN, which stops the run, and the runtime
+    # names the coordinate (runtime/core/diagnosis.py); a dense M is checked by its Cholesky
+    # factorization
+    mass_checks = [i for i in range(n) if not eq.M[i, i].is_positive] if diagonal else []
+    checked = rhs_exprs + [plain(eq.M[i, i]) for i in mass_checks]
     cam_syms = [[sp.Symbol(f"_cam{i}_{k}", real=True) for k in range(order + 1)]
                 for i, order in enumerate(plain.orders)]
     specialise = 0 < len(plain.instances) <= MAX_VARIANT_INSTANCES
-    variants = dwell_variants(rhs_exprs, cam_syms) if specialise else [rhs_exprs]
+    variants = dwell_variants(checked, cam_syms) if specialise else [checked]
 
     # parameter-only subexpressions: computed once per run by prepare()
     consts = ConstantTable({p.symbol for p in m.parameters})
@@ -376,6 +382,7 @@ def model_context(eq: Equations) -> dict:
         "n_families": len(manifest["cam_families"]),
         "n_modes": len(m.modes),
         "diagonal": diagonal,
+        "mass_checks": mass_checks,
         "specialise": specialise,
         "variants": rhs_variants,
         "temporaries": [name for v in rhs_variants for name, _ in v["lines"]],

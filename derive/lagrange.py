@@ -24,13 +24,14 @@ forms in the tests.
 """
 from __future__ import annotations
 
+import random
 from dataclasses import dataclass
 from functools import cached_property
 
+import numpy as np
 import sympy as sp
 
 from . import symbolic
-
 from .model import Model
 
 
@@ -71,6 +72,25 @@ def _tidy(e):
     if e.has(sp.Piecewise) or sp.count_ops(e) > 150:
         return e
     return symbolic.simplify(e)
+
+
+def generic_rank(A: sp.Matrix, seed: int = 0) -> int:
+    """The rank of A at a generic point: every symbol, coordinate and applied function (and
+    its derivatives) replaced by a pseudo-random number in [0.5, 1.5) from a seeded generator,
+    so that the answer does not change from one derivation to the next."""
+    rng = random.Random(seed)
+    values = {}
+    for d in sorted(A.atoms(sp.Subs, sp.Derivative), key=sp.default_sort_key):
+        values[d] = sp.Float(0.5 + rng.random())
+    for f in sorted(A.atoms(sp.core.function.AppliedUndef), key=sp.default_sort_key):
+        values[f] = sp.Float(0.5 + rng.random())
+    for x in sorted(A.free_symbols, key=sp.default_sort_key):
+        values.setdefault(x, sp.Float(0.5 + rng.random()))
+    try:
+        numeric = np.array(A.xreplace(values).evalf(), dtype=float)
+    except (TypeError, ValueError):     # something left that has no number: no verdict
+        return min(A.shape)
+    return int(np.linalg.matrix_rank(numeric)) if numeric.size else 0
 
 
 def derive(model: Model) -> Equations:
@@ -114,6 +134,12 @@ def derive(model: Model) -> Equations:
     Phi = sp.Matrix([c.expr for c in model.constraints])
     if Phi.rows:
         Phi_q = Phi.jacobian(q)
+        rank = generic_rank(Phi_q)
+        if rank < Phi.rows:
+            raise ValueError(
+                f"{model.name}: the {Phi.rows} constraints are dependent or contradict each "
+                f"other (their Jacobian Phi_q has rank {rank} at a generic point): each "
+                "constraint must remove a degree of freedom of its own")
         # d2Phi/dt2 = Phi_q q'' - gamma: gamma is minus the part free of q''
         gamma = (-sp.expand(Phi.diff(t, 2)).xreplace(zero)).applyfunc(_tidy)
     else:

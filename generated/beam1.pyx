@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1457f15a9298bab5476b0e74e81f33a93b4b7cdaf085bd22a79973978f8f50e2
-# Text hash: sha256:e626f2e4da52d261162dd906be22a2947413ac821e3387c96db78ffca49700c4
+# Derivation key: sha256:4154e79fa2fe389475e3bf90d7db6a9c98183e42943d4757bdf9e2ff51544db1
+# Text hash: sha256:f8799fa19844d0c911a16056e8efd81d11aa50b336a5186f0569cc67f95eaa7f
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:bfb311a2dc642912ccf96df03b945a685fb049d1c1bb63babea364e48a9d993c
@@ -1113,6 +1113,38 @@ def initial_state(p):
 def cam_time_affine(p):
     """No cam input with a time-affine argument: a profile follows a state of the model."""
     return []
+
+
+def consistent_state(double[::1] p, double[::1] k, int[::1] law, double[::1] law_par,
+                     int[::1] mode, double t, double[::1] y, double[::1] out):
+    """The state y with its dependent coordinates (the last _NC) and their rates recovered
+    from the independent ones (Newton's method on Phi = 0, then Phi_Q Q' = -dPhi/dt), into
+    out; returns (0 or 1 without convergence, the largest |Phi| and |Phi'| of y itself).
+    ``k``: n_const + n_cache + 1 doubles of scratch, ``mode``: the modes buffer."""
+    cdef Ctx ctx
+    cdef double _g[_NC]
+    cdef double _J[_NC * _NQ]
+    cdef double _gt[_NC]
+    cdef double phi = 0.0, phid = 0.0, v
+    cdef int i, j, status
+    ctx.p = &p[0]
+    ctx.k = &k[0]
+    ctx.cache = &k[94]
+    ctx.law = &law[0]
+    ctx.law_par = &law_par[0]
+    ctx.mode = &mode[0]
+    ctx.variant = 0
+    prepare(&ctx)
+    update_modes(t, &y[0], &ctx)
+    _constraints(t, &y[0], _g, _J, _gt, &ctx)
+    for i in range(_NC):
+        v = _gt[i]
+        for j in range(_NQ):
+            v += _J[i * _NQ + j] * y[_NQ + j]
+        phi = max(phi, fabs(_g[i]))
+        phid = max(phid, fabs(v))
+    status = _recover(t, &y[0], &out[0], &ctx)
+    return status, phi, phid
 
 
 cdef ModelC _model

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a5211e31429aa7a210bfa4fdfb49d7e55cfd8afe26c531340cbb4bda8d11f56b
-# Text hash: sha256:988780dfae1f69d0646396153ed1bc9a5cee17cf35cdfe78b27870d2da8aeb0a
+# Derivation key: sha256:e53248ab38ca38c85a99cd98dd28b3e991c4e9074b7107533a5d0572e4b6f887
+# Text hash: sha256:66e066f8aced9ec0b4bc449cdf977346dbf5396512f484d7955f01c6f9ac0563
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:1d8106cbb4c080dc1d4baa1e57662f2dae7c6b7184e85535a26798dca84a5c31
@@ -1954,6 +1954,38 @@ def initial_state(p):
 def cam_time_affine(p):
     """No cam input with a time-affine argument: a profile follows a state of the model."""
     return []
+
+
+def consistent_state(double[::1] p, double[::1] k, int[::1] law, double[::1] law_par,
+                     int[::1] mode, double t, double[::1] y, double[::1] out):
+    """The state y with its dependent coordinates (the last _NC) and their rates recovered
+    from the independent ones (Newton's method on Phi = 0, then Phi_Q Q' = -dPhi/dt), into
+    out; returns (0 or 1 without convergence, the largest |Phi| and |Phi'| of y itself).
+    ``k``: n_const + n_cache + 1 doubles of scratch, ``mode``: the modes buffer."""
+    cdef Ctx ctx
+    cdef double _g[_NC]
+    cdef double _J[_NC * _NQ]
+    cdef double _gt[_NC]
+    cdef double phi = 0.0, phid = 0.0, v
+    cdef int i, j, status
+    ctx.p = &p[0]
+    ctx.k = &k[0]
+    ctx.cache = &k[231]
+    ctx.law = &law[0]
+    ctx.law_par = &law_par[0]
+    ctx.mode = &mode[0]
+    ctx.variant = 0
+    prepare(&ctx)
+    update_modes(t, &y[0], &ctx)
+    _constraints(t, &y[0], _g, _J, _gt, &ctx)
+    for i in range(_NC):
+        v = _gt[i]
+        for j in range(_NQ):
+            v += _J[i * _NQ + j] * y[_NQ + j]
+        phi = max(phi, fabs(_g[i]))
+        phid = max(phid, fabs(v))
+    status = _recover(t, &y[0], &out[0], &ctx)
+    return status, phi, phid
 
 
 cdef ModelC _model

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4cffa88bc28f175667d8f99643bfd9a489baf22a5f759bc8643915f433b6dab4
-# Text hash: sha256:1688072f3cd5abeeffd2bf96fb485fdf3e828517d01ecf050a06f6bb57a9261d
+# Derivation key: sha256:510fc2a8c5568d8d2ee32feda37c87ee9b488d7576b6510a37c5c180c8672b78
+# Text hash: sha256:455260dbe6131eaf189d04de412682a2a43aacfdaf1f54abe8729b119278a654
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:005fc6dd88930eeb16af7091c0a74ba4fe7f9c436ef794c0f2976a8de40a1269
@@ -2660,6 +2660,38 @@ def initial_state(p):
 def cam_time_affine(p):
     """No cam input with a time-affine argument: a profile follows a state of the model."""
     return []
+
+
+def consistent_state(double[::1] p, double[::1] k, int[::1] law, double[::1] law_par,
+                     int[::1] mode, double t, double[::1] y, double[::1] out):
+    """The state y with its dependent coordinates (the last _NC) and their rates recovered
+    from the independent ones (Newton's method on Phi = 0, then Phi_Q Q' = -dPhi/dt), into
+    out; returns (0 or 1 without convergence, the largest |Phi| and |Phi'| of y itself).
+    ``k``: n_const + n_cache + 1 doubles of scratch, ``mode``: the modes buffer."""
+    cdef Ctx ctx
+    cdef double _g[_NC]
+    cdef double _J[_NC * _NQ]
+    cdef double _gt[_NC]
+    cdef double phi = 0.0, phid = 0.0, v
+    cdef int i, j, status
+    ctx.p = &p[0]
+    ctx.k = &k[0]
+    ctx.cache = &k[343]
+    ctx.law = &law[0]
+    ctx.law_par = &law_par[0]
+    ctx.mode = &mode[0]
+    ctx.variant = 0
+    prepare(&ctx)
+    update_modes(t, &y[0], &ctx)
+    _constraints(t, &y[0], _g, _J, _gt, &ctx)
+    for i in range(_NC):
+        v = _gt[i]
+        for j in range(_NQ):
+            v += _J[i * _NQ + j] * y[_NQ + j]
+        phi = max(phi, fabs(_g[i]))
+        phid = max(phid, fabs(v))
+    status = _recover(t, &y[0], &out[0], &ctx)
+    return status, phi, phid
 
 
 cdef ModelC _model

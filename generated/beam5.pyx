@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:709f62e1c640cfa2f240fc173e043251055ee655c6154ea9a553947e955ece0d
-# Text hash: sha256:acdf72fc5ce735f70301e62403c5952d10e93ce6609139b78bc3aa26fc06fd09
+# Derivation key: sha256:6f55e2ec389254e65ad53ea105611e7f40ae49afc1e53414e29add22dba9cd64
+# Text hash: sha256:70d112f04a3cf387a6c0fc1057ac5e8d1cdd6466a48386529c3ffd69348774fb
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:a91861c5ef9ef871d0972bdd6fadc95fb8bd8aa9c22b166a68b2e22724f00536
@@ -3484,6 +3484,38 @@ def initial_state(p):
 def cam_time_affine(p):
     """No cam input with a time-affine argument: a profile follows a state of the model."""
     return []
+
+
+def consistent_state(double[::1] p, double[::1] k, int[::1] law, double[::1] law_par,
+                     int[::1] mode, double t, double[::1] y, double[::1] out):
+    """The state y with its dependent coordinates (the last _NC) and their rates recovered
+    from the independent ones (Newton's method on Phi = 0, then Phi_Q Q' = -dPhi/dt), into
+    out; returns (0 or 1 without convergence, the largest |Phi| and |Phi'| of y itself).
+    ``k``: n_const + n_cache + 1 doubles of scratch, ``mode``: the modes buffer."""
+    cdef Ctx ctx
+    cdef double _g[_NC]
+    cdef double _J[_NC * _NQ]
+    cdef double _gt[_NC]
+    cdef double phi = 0.0, phid = 0.0, v
+    cdef int i, j, status
+    ctx.p = &p[0]
+    ctx.k = &k[0]
+    ctx.cache = &k[484]
+    ctx.law = &law[0]
+    ctx.law_par = &law_par[0]
+    ctx.mode = &mode[0]
+    ctx.variant = 0
+    prepare(&ctx)
+    update_modes(t, &y[0], &ctx)
+    _constraints(t, &y[0], _g, _J, _gt, &ctx)
+    for i in range(_NC):
+        v = _gt[i]
+        for j in range(_NQ):
+            v += _J[i * _NQ + j] * y[_NQ + j]
+        phi = max(phi, fabs(_g[i]))
+        phid = max(phid, fabs(v))
+    status = _recover(t, &y[0], &out[0], &ctx)
+    return status, phi, phid
 
 
 cdef ModelC _model

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:730996d22e34215ec3eb9425c5817f42c89b8a4cadc03dabb21454a9619e3220
-# Text hash: sha256:515650e18d37814dc9bad95c9f52bbaa8c182484395863a2043f14153bf47197
+# Derivation key: sha256:c5108a446b1e3380e98c63705a47434b94ece0b1820792246fd441046038ec23
+# Text hash: sha256:0c8f4c0ab7827c69f71cbde97ea41f6325a564c9c4e58a24f3d38290f65a681c
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:3d9b48d5b946ef2b970c3c823cb2609b25f915a20ab99be97239d8e7ffa1e6a7
-# Text hash: sha256:48bd481c08747b954b76f10b424056866c5110239829b539a89ea0ddcff56fcc
+# Derivation key: sha256:c29d911f81ef91f5497e98a6bdab09f0bf74234a6b9a9f2308419a098045ca60
+# Text hash: sha256:9a41c304532d510cd94e0af56fc9bf2c0da72815ab1b7bb581345aaeb6cd69a4
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a

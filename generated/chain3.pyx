@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:18de918d022e7f57a832b22747cd1a71a7309231f78190812d9bc806ef3ef3a5
-# Text hash: sha256:c81c00476f6b71bb62f8886b68ed3ade6c98645340fa12f2a4504808ddf664e2
+# Derivation key: sha256:e857efa475fabc80a361e91b107aa644cad7ea9853b0868769fdec3ac01df0b5
+# Text hash: sha256:33fc42b4895a20008e41a9e8a6ee3d185b458a7f480361d14725cfb9b89ae4c2
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f

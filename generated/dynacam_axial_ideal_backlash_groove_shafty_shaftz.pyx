@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:3203d770ad854075a2a8ef01f3acba4ca1ceb19083792a1bff2449e5177d1b2c
-# Text hash: sha256:e55f0fa7c426b26003235a08daf266e7b4dcc6cad2742f5730ed9a3c68c43b8e
+# Derivation key: sha256:6adf50ff3d1dd36a48d19892cc78ac85f4f6e8050ccea35a83b36e4573c0ad8d
+# Text hash: sha256:a6caf00925ccb02011b7a3e992cd55ce8ad76743891082b9e1f0b599d532ff17
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:8f77dd07c8ed4b4688df2d3c19ff019f5740d09221661f3282e318623b001c96
+# Source hash: sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -1217,13 +1217,13 @@ _MANIFEST_JSON = """
   },
   {
    "default": 0.436,
-   "doc": "cam angle of the rise",
-   "high": null,
+   "doc": "cam angle of the rise (within one turn)",
+   "high": 6.283185307179586,
    "low": 0.0,
    "name": "beta_m",
    "open_high": false,
    "open_low": true,
-   "range": "0 < beta_m",
+   "range": "0 < beta_m <= 6.28319",
    "unit": "rad"
   },
   {
@@ -1421,7 +1421,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:8f77dd07c8ed4b4688df2d3c19ff019f5740d09221661f3282e318623b001c96",
+ "source_hash": "sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:bcd7ba2f20b3dc255e9b0876b75fa461972ec73a2ba5b9caf5d48bedd9b9aefa
-# Text hash: sha256:b927e9db372391db60961221342e95106bc61b8196c4e1136d44e60d2860eb3d
+# Derivation key: sha256:f64e496f55ad2235d9e1ba715f4f0b9c0b56e1d4753a34b918e11b6044fc96a7
+# Text hash: sha256:39ff9265f26ba7472da4838bd564780f82b06417e598641ced5fcdc315017ee0
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:8a86b6ab0f64a1ad41aa3dc8c8942dc37aa336ef30396ea9acf74fbea9619acb
+# Source hash: sha256:244320aa74994aa9e669e9639536961ba92c6b1c23be07561292a0c9dea13c5c
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -2849,13 +2849,13 @@ _MANIFEST_JSON = """
   },
   {
    "default": 0.436,
-   "doc": "cam angle of the rise",
-   "high": null,
+   "doc": "cam angle of the rise (within one turn)",
+   "high": 6.283185307179586,
    "low": 0.0,
    "name": "beta_m",
    "open_high": false,
    "open_low": true,
-   "range": "0 < beta_m",
+   "range": "0 < beta_m <= 6.28319",
    "unit": "rad"
   },
   {
@@ -3075,7 +3075,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:8a86b6ab0f64a1ad41aa3dc8c8942dc37aa336ef30396ea9acf74fbea9619acb",
+ "source_hash": "sha256:244320aa74994aa9e669e9639536961ba92c6b1c23be07561292a0c9dea13c5c",
  "states": [
   {
    "doc": "cam angle",

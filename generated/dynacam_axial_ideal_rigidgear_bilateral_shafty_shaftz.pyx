@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:747a3ebd24ebebcb09a416ab3bfa53fe3cf43c49c900289368f3a56f5606f889
-# Text hash: sha256:12e2db42d5015fee709a989ae280b406abaac98d8c44857869ee320135765446
+# Derivation key: sha256:d8718adeca9be78b9fa9e7f6d9784caaf3dc22888f819a6813c16d618cc38ae8
+# Text hash: sha256:4c3b55d928716104f698dbf0d7f4dc973d353fa1cb66ded3de4b3cae1657815d
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:f356169a69c515b9c42fefe373cc8acfc9be03f74c16a9cdb47e148eb2a59dfb
+# Source hash: sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -1598,13 +1598,13 @@ _MANIFEST_JSON = """
   },
   {
    "default": 0.436,
-   "doc": "cam angle of the rise",
-   "high": null,
+   "doc": "cam angle of the rise (within one turn)",
+   "high": 6.283185307179586,
    "low": 0.0,
    "name": "beta_m",
    "open_high": false,
    "open_low": true,
-   "range": "0 < beta_m",
+   "range": "0 < beta_m <= 6.28319",
    "unit": "rad"
   },
   {
@@ -1780,7 +1780,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:f356169a69c515b9c42fefe373cc8acfc9be03f74c16a9cdb47e148eb2a59dfb",
+ "source_hash": "sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:5b6b1c0a292d4d397f45477d070a41ccb3365f933c4ed45a3bc387bea7728511
-# Text hash: sha256:8ba4d1e62af3e2bcc93bc4461eb72e456379926e6b7670218269b8eedef5a017
+# Derivation key: sha256:715c8ca7e15b744fa94b29b21ee614587ccf6a9fe5c8849bac3d91ebee88ab25
+# Text hash: sha256:d1ae1112a38134a4bb15055433818c3e693bf2e310b5035898da6bfde837887f
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:68a26e070d019d08a18b136de438a3ead39168a76ade198c22c7707fe2202b40
+# Source hash: sha256:747e34dbea18a7d307dc7101158b4419fb0642de73f52917507a7d1b1d7004c3
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -857,13 +857,13 @@ _MANIFEST_JSON = """
   },
   {
    "default": 0.436,
-   "doc": "cam angle of the rise",
-   "high": null,
+   "doc": "cam angle of the rise (within one turn)",
+   "high": 6.283185307179586,
    "low": 0.0,
    "name": "beta_m",
    "open_high": false,
    "open_low": true,
-   "range": "0 < beta_m",
+   "range": "0 < beta_m <= 6.28319",
    "unit": "rad"
   },
   {
@@ -973,7 +973,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:68a26e070d019d08a18b136de438a3ead39168a76ade198c22c7707fe2202b40",
+ "source_hash": "sha256:747e34dbea18a7d307dc7101158b4419fb0642de73f52917507a7d1b1d7004c3",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a9d5e8063b2d9fe687687552f81b8558e3844f57f6af9876c56b6e9d59bc2437
-# Text hash: sha256:a4cf2bff4df30a8c1ceef45e64f31d707f74e2b7a856f25e33cd93354d7288a8
+# Derivation key: sha256:ae5ca4d53149c55f3cc1ff849857f7e17c14d35799edf09409e24ba0ee4137e7
+# Text hash: sha256:cecac3ad6cb4d9e5144737e93e6b20b082ec61ae2026fd3ca1b965db3d95b88b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:52d0b492daa23ff0a6038d3692472c97bd3181f873d8a79b32f30d87ae0a259a
+# Source hash: sha256:478faccf329f7294d2cd47f536ad5f78fa53fe5d590d1d87b6cb5079502bd98d
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -2337,13 +2337,13 @@ _MANIFEST_JSON = """
   },
   {
    "default": 0.436,
-   "doc": "cam angle of the rise",
-   "high": null,
+   "doc": "cam angle of the rise (within one turn)",
+   "high": 6.283185307179586,
    "low": 0.0,
    "name": "beta_m",
    "open_high": false,
    "open_low": true,
-   "range": "0 < beta_m",
+   "range": "0 < beta_m <= 6.28319",
    "unit": "rad"
   },
   {
@@ -2519,7 +2519,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:52d0b492daa23ff0a6038d3692472c97bd3181f873d8a79b32f30d87ae0a259a",
+ "source_hash": "sha256:478faccf329f7294d2cd47f536ad5f78fa53fe5d590d1d87b6cb5079502bd98d",
  "states": [
   {
    "doc": "cam angle",

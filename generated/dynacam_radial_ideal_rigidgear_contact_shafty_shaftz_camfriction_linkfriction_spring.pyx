@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:76b3616a0c8e827cbaa0018c7807d5235deefb792e7229bc4e70ebf73f82e55a
-# Text hash: sha256:20e6f8877e4afc80e02f6dd09edd9d05272d7bb62e00e3470039b6ad23d2e9c8
+# Derivation key: sha256:debfc425d03bdd76d784b9bbb128b05e1608d686dcace32b4dae1d2eaddb2011
+# Text hash: sha256:d2a327f02d5357f9b5972c789d6c6479bddeedd46f930c535cdac2f928c76e30
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:4ac8bafb400a1646f69be4722317a3e6a1340e3e939fdbc69644456c4bc14bca
+# Source hash: sha256:7df6f3da3414231df3e2e1f7adc385d77f7cfc0e35b975f115056fce8cb53bba
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -1651,13 +1651,13 @@ _MANIFEST_JSON = """
   },
   {
    "default": 0.436,
-   "doc": "cam angle of the rise",
-   "high": null,
+   "doc": "cam angle of the rise (within one turn)",
+   "high": 6.283185307179586,
    "low": 0.0,
    "name": "beta_m",
    "open_high": false,
    "open_low": true,
-   "range": "0 < beta_m",
+   "range": "0 < beta_m <= 6.28319",
    "unit": "rad"
   },
   {
@@ -1877,7 +1877,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:4ac8bafb400a1646f69be4722317a3e6a1340e3e939fdbc69644456c4bc14bca",
+ "source_hash": "sha256:7df6f3da3414231df3e2e1f7adc385d77f7cfc0e35b975f115056fce8cb53bba",
  "states": [
   {
    "doc": "cam angle",

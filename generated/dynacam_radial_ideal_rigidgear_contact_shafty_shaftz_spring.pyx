@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:64404674fda36070246c61d04a74edc1c1d03f737f85753db07c8ef3e102c0c5
-# Text hash: sha256:a3d2d4ad5e68b51869e01f8a63b6b44fb3cb56009c1e21016b51103831c3339d
+# Derivation key: sha256:df26e4848fe6c6e7d0ca35c8d46eec5450a59805a119fdf7eabae908f86b7f66
+# Text hash: sha256:aaa1497910037a06e7e940401e9676b947be44fc4ae35c5e1f5acb62241b0264
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:1862b6bf75d2cf1f5185cac2d07e5bdde467e7941a088e8b8accffb28b9684a6
+# Source hash: sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -1308,13 +1308,13 @@ _MANIFEST_JSON = """
   },
   {
    "default": 0.436,
-   "doc": "cam angle of the rise",
-   "high": null,
+   "doc": "cam angle of the rise (within one turn)",
+   "high": 6.283185307179586,
    "low": 0.0,
    "name": "beta_m",
    "open_high": false,
    "open_low": true,
-   "range": "0 < beta_m",
+   "range": "0 < beta_m <= 6.28319",
    "unit": "rad"
   },
   {
@@ -1512,7 +1512,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:1862b6bf75d2cf1f5185cac2d07e5bdde467e7941a088e8b8accffb28b9684a6",
+ "source_hash": "sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:bec6666b609fbda2d856074734f4378566baa60595fdbe4a8ece1e0302eec271
-# Text hash: sha256:8356802c78def75b7ebddcf08f62c03aab21846d5f9ed869eb05956a21cc5ac7
+# Derivation key: sha256:cb9d05395b32e5ef45d397d4d833f90367021d2882c5f3d55d076d51958e92fd
+# Text hash: sha256:1d209e95f1505326225bba084838f0b956d5027b261b8cd769818485b4a8b184
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:7842898e4fc68e8102d2800cc75353ff3970859773edaaef2a378a7c26cacd8a
+# Source hash: sha256:775dc74d7dd69da69bafb1940d40799b0a663f4cd304542cf146150dfdb0178d
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -1534,13 +1534,13 @@ _MANIFEST_JSON = """
   },
   {
    "default": 0.436,
-   "doc": "cam angle of the rise",
-   "high": null,
+   "doc": "cam angle of the rise (within one turn)",
+   "high": 6.283185307179586,
    "low": 0.0,
    "name": "beta_m",
    "open_high": false,
    "open_low": true,
-   "range": "0 < beta_m",
+   "range": "0 < beta_m <= 6.28319",
    "unit": "rad"
   },
   {
@@ -1793,7 +1793,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:7842898e4fc68e8102d2800cc75353ff3970859773edaaef2a378a7c26cacd8a",
+ "source_hash": "sha256:775dc74d7dd69da69bafb1940d40799b0a663f4cd304542cf146150dfdb0178d",
  "states": [
   {
    "doc": "cam angle",

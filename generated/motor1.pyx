@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:24735cd3d5ed8a1848aa84247abf7330034c24580eb2423d9c47c1242c9eff10
-# Text hash: sha256:de4823555a2364430890c07b80db25a3b2615d0d1dc136517e31b0bb98fdc8e8
+# Derivation key: sha256:189e2210c88e29a91e1770cb6c8fd37adb0ac26c63f5e255a2805c12bbb77803
+# Text hash: sha256:3b1475e6bd541529936939dc821c1eebe94b5bc26c9bfeeb40b6b0c3e39c2cdf
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68

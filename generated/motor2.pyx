@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c1e93a322e1f0239a0c1c071e8680ab979b0d13e6c0a926ee03d27d99b30bdcb
-# Text hash: sha256:2cd7c321cac2337f0944cba4ae724ea9841e67ca891f197b5dd3d991c04213c7
+# Derivation key: sha256:6f59112c32361cfa658305d7a1c2076e1e6065f486508989c0326d92e28d1201
+# Text hash: sha256:0e57b2c916c2335aab36184c4ea02eb3c6357faddf71ba7843d2180fb5f0aa19
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c46fe508255abf8e9c27fbd3597d36812e0d3b013c407d6a9ed4945446d9843e
-# Text hash: sha256:c183df1cec6af76e4963ee9d2544eb64ed2a65dd54b92e394a09886a9f770c1d
+# Derivation key: sha256:0b989aeb2a46c15e3b79ad3d01c01d97fde20040e50eceb71f270ad19fa7d974
+# Text hash: sha256:d203985d75975b71fdb6e340c432194a2021075212a52608ae8c1b237df54a6b
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:13f072f0c6444259f86c3766743bfe57b97f6484ce824a1df9688d042e409918
-# Text hash: sha256:be15f145f4a8cc3057c63524bd34438e4022c66354dd552731d5c660622e9357
+# Derivation key: sha256:62e04885429af3e90130be37bb2b009bc0930710c6dc39f455bb3ab44c118d3e
+# Text hash: sha256:918b0a4051f385f8a205ccec3b36887a7151dc7b8a749fea3d9f3234cb2fe0b6
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:e017c1589554bffedb179ec1f3fe3f8fdb43bb82d0bdd5e3f88df9f352e7786a
@@ -364,6 +364,38 @@ def initial_state(p):
 def cam_time_affine(p):
     """No cam input with a time-affine argument: a profile follows a state of the model."""
     return []
+
+
+def consistent_state(double[::1] p, double[::1] k, int[::1] law, double[::1] law_par,
+                     int[::1] mode, double t, double[::1] y, double[::1] out):
+    """The state y with its dependent coordinates (the last _NC) and their rates recovered
+    from the independent ones (Newton's method on Phi = 0, then Phi_Q Q' = -dPhi/dt), into
+    out; returns (0 or 1 without convergence, the largest |Phi| and |Phi'| of y itself).
+    ``k``: n_const + n_cache + 1 doubles of scratch, ``mode``: the modes buffer."""
+    cdef Ctx ctx
+    cdef double _g[_NC]
+    cdef double _J[_NC * _NQ]
+    cdef double _gt[_NC]
+    cdef double phi = 0.0, phid = 0.0, v
+    cdef int i, j, status
+    ctx.p = &p[0]
+    ctx.k = &k[0]
+    ctx.cache = &k[6]
+    ctx.law = &law[0]
+    ctx.law_par = &law_par[0]
+    ctx.mode = &mode[0]
+    ctx.variant = 0
+    prepare(&ctx)
+    update_modes(t, &y[0], &ctx)
+    _constraints(t, &y[0], _g, _J, _gt, &ctx)
+    for i in range(_NC):
+        v = _gt[i]
+        for j in range(_NQ):
+            v += _J[i * _NQ + j] * y[_NQ + j]
+        phi = max(phi, fabs(_g[i]))
+        phid = max(phid, fabs(v))
+    status = _recover(t, &y[0], &out[0], &ctx)
+    return status, phi, phid
 
 
 cdef ModelC _model

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e955deec8d45784c5e95eb75de8df7217b4ce68e20eaf03435d815ea94826a3e
-# Text hash: sha256:2c3f578a27fbd97a62336069759c88450aa0344ea753e89cce22a2af221e91e3
+# Derivation key: sha256:ae980c2683a214a0d966a5531b21b5469c75528d18d3a349cb41ba46f2ac72f2
+# Text hash: sha256:e836e77eebca92bfa93503189ae2a8a32f3eca7c2c4cd078f30644ca52c63d9e
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27

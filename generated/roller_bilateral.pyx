@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:079a60d7d62efb40cb2df25eb8ad3ce23e8bdb1e0e9bcb03376353d6bd2a73ca
-# Text hash: sha256:b6d96eb8833de954fbd109e2824cc82414a063335a0008d1986083606c7127c1
+# Derivation key: sha256:c56df463449375b9ac144a1c7a978ddcb52f573961f83eb15ac4e557bccb3a55
+# Text hash: sha256:8579e611f6e888aeff3f35d725b30277558ac3d929285416e2ac42161b6e3cbf
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360

@@ -41,6 +41,7 @@ it has) is in its manifest; a scene generates only what it asks for.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import asdict, dataclass, field, fields
 
 import sympy as sp
@@ -157,7 +158,7 @@ def _p(name, default, unit, doc, low=0.0, open_low=True, high=float("inf")):
 
 # parameters, SI; defaults roughly those of the spring-loaded follower of fig. 7.2 (App. 7)
 h_m = _p("h_m", 0.015, "m", "stroke of the output member (reduced)")
-beta_m = _p("beta_m", 0.436, "rad", "cam angle of the rise")
+beta_m = _p("beta_m", 0.436, "rad", "cam angle of the rise (within one turn)", high=2 * math.pi)
 beta_0 = _p("beta_0", 0.0, "rad", "cam angle where the rise starts", low=-100.0, open_low=False)
 R_b = _p("R_b", 0.0675, "m", "base pitch radius (reduced) (6.21)")
 omega_s = _p("omega_s", 4.95, "rad/s", "nominal angular velocity of the camshaft")

@@ -14,7 +14,7 @@ from functools import lru_cache
 import numpy as np
 
 from ..engine import driver
-from . import laws as _laws, methods as _methods, stability as _stability
+from . import diagnosis, laws as _laws, methods as _methods, stability as _stability
 from .errors import CamdynInputError, SimulationError, UnstableStep
 from .compiled import CompiledModel, load
 from .result import Result
@@ -115,13 +115,18 @@ class Simulator:
             (runtime/studies/stability_map.py), which must see what the step does: the estimate is
             still computed and kept in ``result.stability``, a run that becomes non-finite
             still raises SimulationError.
+    consistent
+            True (the default): a constrained model starts on its constraints, its dependent
+            coordinates and rates recovered from the independent ones, with a note when that
+            moved them.  False starts from the state as given, off the constraints, to study
+            how the formulation pulls it back (Baumgarte's terms, tests/test_pendulum_xy.py).
     """
 
     def __init__(self, model, t_end: float = 3.0, method="dp54", *, rtol: float | None = None,
                  atol: float | None = None, step: float | None = None, law="cycloidal",
                  theta: float | None = None, y0=None, t0: float = 0.0, max_steps: int = 5_000_000,
                  modes: dict | None = None, max_events: int = 1_000_000,
-                 check_stability: bool = True):
+                 check_stability: bool = True, consistent: bool = True):
         m = model if isinstance(model, CompiledModel) else load(model)
         if isinstance(method, str):
             method = _methods.make(method, rtol=rtol, atol=atol, step=step)
@@ -141,6 +146,7 @@ class Simulator:
         if not isinstance(check_stability, bool):
             raise CamdynInputError(f"check_stability must be True or False, got {check_stability!r}")
         self.check_stability = check_stability
+        self.consistent = bool(consistent)
         self.laws, self.law_codes, self.law_pars = law_choices(m, law, theta)
         n = len(m.state_names)
         # a default initial state that depends on the parameters is worked out per run
@@ -241,6 +247,10 @@ class Simulator:
         stops, cap = self.stops_and_capacity(p)
         y0 = None if self._y0_given else m.initial_state(p)
         tname = m.manifest["time"]["name"]
+        notes = []
+        if self.consistent and hasattr(m.module, "consistent_state"):
+            y0, note = self._consistent(p, self._y_init if y0 is None else y0)
+            notes += [note] if note else []
         fixed = not self.method.adaptive
         est = None
         if fixed:
@@ -263,12 +273,17 @@ class Simulator:
             if self.check_stability and est is not None and not est.stable:
                 raise UnstableStep(_stability.refusal(m.name, tname, est), est)
         if out.status != 0:
-            raise SimulationError(f"{m.name} with {self.method.name}: "
-                                  f"{driver.STATUS_TEXT[out.status]} at "
-                                  f"{tname} = {out.t_fail:.6g}")
+            # the integrator's words say what it saw; the model's state says why
+            fault = diagnosis.explain(m, p, self.law_codes, self.law_pars, out)
+            if fault is not None and fault.at_start:     # the input, not the run
+                raise CamdynInputError(f"{m.name}: {fault.text}")
+            raise SimulationError(f"{m.name} with {self.method.name}: " + (
+                fault.text if fault else
+                f"{driver.STATUS_TEXT[out.status]} at {tname} = {out.t_fail:.6g}"))
         if not cap:
             self._cap = max(256, out.n + out.n // 4)
         res = Result(self, p, out)
+        res.warnings += notes
         res.stability = est
         if est is not None and est.near:
             res.warnings.append(_stability.warning(tname, est))
@@ -276,6 +291,31 @@ class Simulator:
             res.warnings.append("run with the stability check off: "
                                 + _stability.refusal(m.name, tname, est))
         return res
+
+    def _consistent(self, p, y):
+        """A constrained model's initial state on its constraints: the dependent coordinates
+        (the last ones declared) and their rates recovered from the independent ones, in
+        every formulation, with a note when that moved them (the run starts, and its record
+        reports, the consistent state); a CamdynInputError when no consistent state is found."""
+        m = self.model
+        y = np.ascontiguousarray(y, dtype=float)
+        try:
+            yc, phi, phid = driver.consistent_state(
+                m.capsule, m.module, p, self.law_codes, self.law_pars, self.t0, y,
+                np.array(self.modes0, dtype=np.intc) if self.modes0 else None)
+        except ValueError:
+            raise CamdynInputError(
+                f"{m.name}: no state satisfies the constraints near the initial one "
+                f"({', '.join(f'{n} = {v:.6g}' for n, v in zip(m.state_names, y))}); give "
+                "initial values closer to them") from None
+        moved = np.abs(yc - y) > 1e-10 * (np.abs(y) + m.state_scales())
+        if not moved.any():
+            return y, None
+        names = [n for n, k in zip(m.state_names, moved) if k]
+        return yc, (f"the initial state violated the constraints (|Phi| = {phi:.3g}, "
+                    f"|Phi'| = {phid:.3g}): {', '.join(names)} recovered from the independent "
+                    "coordinates (" + ", ".join(f"{n} = {v:.6g}" for n, v
+                                                in zip(m.state_names, yc) if n in names) + ")")
 
     def _stability(self, p, times, states, modes=None):
         """The stability estimate of this fixed-step method at the points given."""

@@ -451,6 +451,23 @@ def eval_events(object capsule, double[::1] p, int[::1] law, double[::1] law_par
     return g[:m.n_events]
 
 
+def consistent_state(object capsule, object module, double[::1] p, int[::1] law,
+                     double[::1] law_par, double t, double[::1] y, element_modes=None):
+    """(y with its dependent coordinates and their rates recovered from the independent ones,
+    the largest |Phi| and |Phi'| of y) of a constrained model (its module's
+    consistent_state); a SimulationError-free ValueError when Newton's method fails."""
+    cdef ModelC* m = model_pointer(capsule)
+    cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
+    cdef int[::1] md = _mode_buffer(m, element_modes)
+    if y.shape[0] != m.n_states:
+        raise ValueError("state vector of the wrong length")
+    out = np.empty(m.n_states)
+    status, phi, phid = module.consistent_state(p, k, law, law_par, md, t, y, out)
+    if status:
+        raise ValueError("Newton's method on the constraints did not converge")
+    return out, phi, phid
+
+
 def eval_mass_stiffness(object capsule, double[::1] p, int[::1] law, double[::1] law_par, double t,
                         double[::1] y, element_modes=None):
     """Mass matrix M and stiffness K = -df/dq at one point: the frozen system M q'' + K q."""

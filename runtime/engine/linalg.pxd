@@ -1,5 +1,7 @@
 # Small dense linear algebra for generated right-hand sides (inline, nogil).
 
+from libc.math cimport sqrt
+
 cdef inline int solve_inplace(int n, double* A, double* b) noexcept nogil:
     """Solve A x = b by Gaussian elimination with partial pivoting.
 
@@ -94,3 +96,37 @@ cdef inline void lu_solve(int n, const double* LU, const int* piv, double* b) no
         for j in range(i + 1, n):
             v -= LU[i * n + j] * b[j]
         b[i] = v / LU[i * n + i]
+
+
+cdef inline int cholesky_solve(int n, double* A, double* b) noexcept nogil:
+    """Solve A x = b for a symmetric A that must be positive definite (a mass matrix), by
+    Cholesky's factorization A = L L^T, in place (the lower triangle of A becomes L, the upper
+    is left); b becomes x.  Returns 0, or k + 1 when pivot k is not positive: the leading
+    (k+1) x (k+1) block is not positive definite, and x is not computed.  Half the work of
+    solve_inplace, and it tells an indefinite or singular mass matrix apart."""
+    cdef int i, j, k
+    cdef double v
+    for k in range(n):
+        v = A[k * n + k]
+        for j in range(k):
+            v -= A[k * n + j] * A[k * n + j]
+        if not v > 0.0:            # also catches NaN
+            return k + 1
+        v = sqrt(v)
+        A[k * n + k] = v
+        for i in range(k + 1, n):
+            for j in range(k):
+                A[i * n + k] -= A[i * n + j] * A[k * n + j]
+            A[i * n + k] /= v
+    for i in range(n):                      # L y = b
+        v = b[i]
+        for j in range(i):
+            v -= A[i * n + j] * b[j]
+        b[i] = v / A[i * n + i]
+    for i in range(n - 1, -1, -1):          # L^T x = y
+        v = b[i]
+        for j in range(i + 1, n):
+            v -= A[j * n + i] * b[j]
+        b[i] = v / A[i * n + i]
+    return 0
+

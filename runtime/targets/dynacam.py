@@ -18,7 +18,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from ..engine import driver
-from ..core.errors import SimulationError
+from ..core.errors import CamdynInputError, SimulationError
 from ..measure.extremes import extreme
 from .scene_files import DynacamScene
 from ..core.methods import METHODS
@@ -39,6 +39,22 @@ def characteristics(opts, p: dict) -> dict:
     m_y (c_tan/c_y)^2 (5.51); Fv = (m/m_tan) tan^2 alpha_me (5.52); tau = T_e/t_m with
     T_e = 2 pi (m/c_c)^(1/2) and t_m = beta_m/w_s.
     """
+    try:
+        out = _characteristics(opts, p)
+    except (OverflowError, ZeroDivisionError):
+        out = {}
+    if not out or not all(math.isfinite(v) and v > 0 for v in out.values()):
+        used = ["c_x", "m_x", "h_m", "R_b", "beta_m", "omega_s", "k", "J"]
+        used += ["c_z", "m_z"] if opts.shaft_z else []
+        used += ["c_y", "m_y"] if opts.shaft_y else []
+        raise CamdynInputError(
+            "the scene's parameters give no finite, positive tau, Fa and Fv ((4.3)-(5.52)): "
+            + ", ".join(f"{k} = {p[k]:g}" for k in used)
+            + "; check their magnitudes (SI units: m, kg, N/m, rad)")
+    return out
+
+
+def _characteristics(opts, p: dict) -> dict:
     c_x, m_x = p["c_x"], p["m_x"]
     if opts.shaft_z:
         c_c = 1.0 / (1.0 / c_x + 1.0 / p["c_z"])

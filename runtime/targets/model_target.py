@@ -367,7 +367,9 @@ class ModelTarget(Target):
 
     def run_points(self, names: tuple, points: np.ndarray) -> Batch:
         sim = self.simulator
+        # constrained models start from their projected initial state (Simulator.run)
         if not sim.method.adaptive or len(self.figures()) > len(RESIDUAL_FIGURES) \
+                or hasattr(self.model.module, "consistent_state") \
                 or self.spec.get("rise_state") and \
                 self.spec["rise_state"] not in self.model.state_names:
             return self._points_one_by_one(names, points)
@@ -411,8 +413,12 @@ class ModelTarget(Target):
             if stats[j, 0] == -1:
                 raise CamdynInputError(f"{model.name} at {at}: the run must cover the rise and "
                                        f"part of the dwell after it (t_end = {sim.t_end:g})")
-            raise SimulationError(f"{model.name} with {sim.method.name} at {at}: "
-                                  f"{driver.STATUS_TEXT[int(stats[j, 0])]}")
+            why = driver.STATUS_TEXT[int(stats[j, 0])]
+            try:        # the failed point alone, through Simulator.run, says why
+                sim.run({**self.values, **dict(zip(names, map(float, points[j])))})
+            except SimulationError as exc:
+                why = str(exc).split(": ", 1)[-1]
+            raise SimulationError(f"{model.name} with {sim.method.name} at {at}: {why}")
         col = {c: k for k, c in enumerate(finder.FIGURE_COLUMNS)}
         samp = np.zeros((n, 4))
         for k, f in enumerate(RESIDUAL_FIGURES[:3]):     # the extremes; the last is a place
