@@ -83,6 +83,9 @@ def _law(flag: str, key: str, parameter):
 MAX_LENGTH = 1000.0
 """The largest stroke and radius (m) a cam takes: a kilometre is beyond any cam, and far
 enough below the square root of the largest float for every formula of the profile."""
+MIN_RADIUS = 1e-6
+"""The smallest base and roller radius (m): a micrometre is below any cam, and far enough
+above the smallest float that curvatures (1/radius, squared) stay finite."""
 
 
 def _positive(name, value, low=0.0, strict=True, high=None):
@@ -119,8 +122,10 @@ class CamProfile:
 
     def __post_init__(self):
         h = _positive("stroke", self.stroke, strict=False, high=MAX_LENGTH)
-        rb = _positive("base-radius", self.base_radius, high=MAX_LENGTH)
-        rr = _positive("roller-radius", self.roller_radius, high=MAX_LENGTH)
+        rb = _positive("base-radius", self.base_radius, low=MIN_RADIUS, strict=False,
+                       high=MAX_LENGTH)
+        rr = _positive("roller-radius", self.roller_radius, low=MIN_RADIUS, strict=False,
+                       high=MAX_LENGTH)
         try:
             e = float(self.offset)
         except (TypeError, ValueError):

@@ -29,9 +29,9 @@ def add(sub):
                          "adds the cam's least radius of curvature and largest pressure angle "
                          "(90/90/90/90 deg cam)")
     lw.add_argument("--base-radius", type=float, default=None, metavar="M",
-                    help="with --stroke: base circle radius in m, 0 < r_b < 1000")
+                    help="with --stroke: base circle radius in m, 1e-6 <= r_b < 1000")
     lw.add_argument("--roller-radius", type=float, default=None, metavar="M",
-                    help="with --stroke: roller radius in m, 0 < r_r < 1000")
+                    help="with --stroke: roller radius in m, 1e-6 <= r_r < 1000")
     lw.add_argument("--out", default=None, help="folder for laws_selection.png/.csv "
                     "(laws_sweep.png/.csv with --sweep)")
     lw.add_argument("--sweep", default=None, metavar="SCENE",

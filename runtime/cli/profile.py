@@ -33,10 +33,10 @@ def add(sub):
                    help="the return law's shape parameter")
     p.add_argument("--stroke", type=float, required=True, metavar="M", help="stroke h, m, 0 <= h < 1000")
     p.add_argument("--base-radius", type=float, required=True, metavar="M",
-                   help="base circle of the cam profile r_b, m, 0 < r_b < 1000 (roller centre on the "
+                   help="base circle of the cam profile r_b, m, 1e-6 <= r_b < 1000 (roller centre on the "
                         "prime circle r_b + r_r at the bottom of the stroke)")
     p.add_argument("--roller-radius", type=float, required=True, metavar="M",
-                   help="roller radius r_r, m, 0 < r_r < 1000")
+                   help="roller radius r_r, m, 1e-6 <= r_r < 1000")
     p.add_argument("--offset", type=float, default=0.0, metavar="M",
                    help="follower offset e, m, |e| < r_b + r_r (default 0; e > 0 lowers the "
                         "pressure angle on the rise)")
