@@ -51,3 +51,41 @@ def test_chart_note_states_the_largest_estimate_and_the_warnings():
     assert "U0: no error estimate at some points" in note and "no warnings" in note
     one = contract.chart_note({"tip": (0.02, 1e-12)}, ["a", "b"])
     assert "tip ± 1e-12 (5e-11 relative)" in one and one.endswith("2 warnings: a")
+
+
+def test_a_failed_estimate_leaves_the_answer_with_its_reason():
+    """The run one notch tighter fails (a step budget, a collapse): the figures stand, their
+    estimates are None and a warning says why; the command does not fail."""
+    from camdyn.runtime.core.errors import SimulationError
+    from camdyn.runtime.core.methods import make
+    from camdyn.runtime.targets.base import Figure, Outcome, Target
+
+    class Twin(Target):
+        name, kind = "twin", "test"
+
+        def __init__(self, tight=False):
+            self.tight = tight
+
+        def figures(self):
+            return (Figure("U0"),)
+
+        def method(self):
+            return make("dp54", rtol=1e-6)
+
+        def window(self):
+            return None
+
+        def tighter(self):
+            return Twin(tight=True)
+
+        def run(self, progress=None):
+            if self.tight:
+                raise SimulationError("twin with dp54: the step budget (max_steps) was used up")
+            return Outcome({"U0": 0.25}, record={"U0": 0.25})
+
+    a = contract.answer(Twin())
+    assert a.figures == {"U0": 0.25} and a.errors == {"U0": None}
+    (w,) = a.warnings
+    assert w.startswith("no error estimate: the run one notch tighter failed (twin with dp54: "
+                        "the step budget")
+    assert a.as_dict()["U0_error"] is None
