@@ -144,6 +144,58 @@ def test_two_processes_building_at_once_leave_one_whole_entry(tmp_path):
     assert (cache / entries[0] / "build.json").is_file()
 
 
+CHILD = """
+import contextlib, io, json, os, sys
+from camdyn.runtime import cli
+access = os.access
+os.access = lambda p, mode, **kw: not (str(p).endswith("secret.py") and mode & os.R_OK) \
+    and access(p, mode, **kw)
+out = []
+for path in sys.argv[2:]:
+    err = io.StringIO()
+    with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+        rc = cli.main([*json.loads(sys.argv[1]).replace("MODEL", path).split("|")])
+    out.append([path, rc, err.getvalue().splitlines()])
+print(json.dumps(out))
+"""
+
+COMMANDS = {"integrate": "integrate|MODEL|--t-end|1", "sweep": "sweep|MODEL|--grid|c=1:2:2",
+            "precision": "precision|MODEL|--quick", "stability": "stability|MODEL|--param|c=1:2:2"}
+
+
+@pytest.mark.parametrize("command", sorted(COMMANDS))
+def test_a_model_argument_that_is_no_model_file_is_refused_without_blocking(tmp_path, command):
+    """MODEL of integrate, sweep, precision and stability (one resolver,
+    runtime/targets/model_target.py model_file): a folder (named .py or not), a file not
+    ending in .py, /dev/zero, a named pipe (named .py or not) or a file this process may not
+    read is refused in one line naming it, exit status 2, and nothing is opened: a named
+    pipe would block its reader, /dev/zero never ends."""
+    scenes = command in ("sweep", "precision")
+    (tmp_path / "adir").mkdir()
+    (tmp_path / "folder.py").mkdir()
+    (tmp_path / "notes.txt").write_text("x = 1\n")
+    (tmp_path / "secret.py").write_text(readme_model())
+    os.mkfifo(tmp_path / "pipe")
+    os.mkfifo(tmp_path / "pipe.py")
+    allowed = "a model file (.py) or a scene file (.toml)" if scenes else "a model file (.py)"
+    want = {"adir": f"adir is a folder, not {allowed}",
+            "folder.py": f"folder.py is a folder, not {allowed}",
+            "notes.txt": "notes.txt: neither a model file (.py) nor a scene file (.toml)"
+            if scenes else "notes.txt: not a model file (a .py file defining build())",
+            "/dev/zero": f"/dev/zero is a device, not {allowed}",
+            "pipe": f"pipe is a named pipe, not {allowed}",
+            "pipe.py": f"pipe.py is a named pipe, not {allowed}",
+            "secret.py": "secret.py: cannot read the model file (permission denied)"}
+    p = subprocess.run([sys.executable, "-c", CHILD, json.dumps(COMMANDS[command]), *want],
+                       capture_output=True, text=True, timeout=120, cwd=tmp_path,
+                       env={**os.environ, "CAMDYN_CACHE_DIR": str(tmp_path / "cache")})
+    assert p.returncode == 0, p.stderr
+    lead = f"camdyn {command}: error: " + ("SCENE_OR_MODEL " if command == "precision" else "")
+    for path, rc, lines in json.loads(p.stdout):
+        assert rc == 2 and lines == [lead + want[path]], (path, rc, lines)
+    assert not (tmp_path / "cache").exists()
+
+
 BAD_FILES = {
     "syntax": ("def build(:\n", "cannot import it: SyntaxError"),
     "no-build": ("x = 1\n", "defines no build()"),

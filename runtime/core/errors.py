@@ -1,4 +1,5 @@
-"""Errors users see: bad input is named, failed runs say where they failed."""
+"""Errors users see: bad input is named, failed runs say where they failed; and the checks of
+the paths users give (folders to write in, files to read) that name them."""
 
 
 class CamdynInputError(ValueError):
@@ -52,3 +53,26 @@ def out_folder(out, create: bool = True):
         raise CamdynInputError(f"argument --out: cannot create the folder {path}: "
                                f"{exc.strerror or exc}") from None
     return path
+
+
+def on_disk(path) -> str | None:
+    """What ``path`` is on disk, from os.stat alone: "file" (a regular one), "folder", "named
+    pipe", "device" or "socket"; None where nothing is (or a file lies on the way).  Nothing
+    is opened: a reader of a named pipe blocks until a writer comes, one of /dev/zero never
+    reaches the end."""
+    import os
+    import stat
+
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):      # missing, below a file, a NUL in the name
+        return None
+    if stat.S_ISREG(mode):
+        return "file"
+    if stat.S_ISDIR(mode):
+        return "folder"
+    if stat.S_ISFIFO(mode):
+        return "named pipe"
+    if stat.S_ISSOCK(mode):
+        return "socket"
+    return "device"

@@ -35,7 +35,7 @@ from dataclasses import dataclass, field, fields
 from importlib import resources
 from pathlib import Path
 
-from ..core.errors import CamdynInputError
+from ..core.errors import CamdynInputError, on_disk
 from ..core.methods import DEFAULT_RTOL
 
 _TOP = {"kind", "title", "reference", "note", "law", "theta", "options", "parameters", "run", "modes",
@@ -323,6 +323,9 @@ def read(path) -> tuple[dict, str]:
     path = Path(path)
     if not path.suffix and not path.exists():
         path = builtin(str(path))
+    what = on_disk(path)
+    if what not in (None, "file"):    # never opened: a named pipe or /dev/zero would not end
+        raise CamdynInputError(f"scene file {path} is a {what}, not a scene file (.toml)")
     try:
         return tomllib.loads(path.read_text()), str(path)
     except FileNotFoundError:
