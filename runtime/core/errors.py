@@ -47,11 +47,26 @@ def out_folder(out, create: bool = True):
             raise CamdynInputError(f"argument --out: cannot create the folder {path}: "
                                    f"{probe} is {why}")
         return path
+    return writable_folder(path, argument="argument --out")
+
+
+def writable_folder(path, what: str = "folder", hint: str = "", argument: str = ""):
+    """The folder ``path``, made where missing, that this process may write in; else a
+    CamdynInputError naming the ``argument`` it came from and ``what`` it is, followed by
+    ``hint`` (what to do)."""
+    import os
+    from pathlib import Path
+
+    path = Path(path)
+    lead = f"{argument}: " if argument else ""
     try:
         path.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise CamdynInputError(f"argument --out: cannot create the folder {path}: "
-                               f"{exc.strerror or exc}") from None
+        why = "a file is in its place" if isinstance(exc, FileExistsError) else \
+            exc.strerror or str(exc)
+        raise CamdynInputError(f"{lead}cannot create the {what} {path}: {why}{hint}") from None
+    if not os.access(path, os.W_OK | os.X_OK):
+        raise CamdynInputError(f"{lead}cannot write in the {what} {path}: not writable{hint}")
     return path
 
 
