@@ -10,7 +10,8 @@ model behind:
 
 ``MODEL.py`` defines ``build()`` returning a :class:`~camdyn.derive.model.Model`, exactly as
 the built-in declarations in ``derive/models/`` do.  DIR receives ``<name>.pyx``, the
-compiled ``<name>`` extension and ``build.json`` (name, source, the time of each stage).
+compiled ``<name>`` extension and ``build.json`` (name, source, the time of each stage, the
+user's modules the build imported with their sha256: :func:`user_sources`).
 Progress goes to stderr, one line per stage with its time.  A declaration that does not
 import, has no ``build()`` or is refused by the derivation ends with one line naming the file
 and the problem, exit status 2.
@@ -50,6 +51,9 @@ def declaration_from_file(path: Path):
     where = str(path)
     if not path.is_file():
         raise BuildError(f"{where}: no such model file")
+    # the model's folder first, as `python MODEL.py` has it: a helper module beside the model
+    # imports from any working folder
+    sys.path.insert(0, str(path.resolve().parent))
     spec = importlib.util.spec_from_file_location(f"camdyn_user_model_{path.stem}", path)
     module = importlib.util.module_from_spec(spec)
     try:
@@ -67,6 +71,42 @@ def declaration_from_file(path: Path):
         raise BuildError(f"{where}: build() returned {type(model).__name__}, not a "
                          "camdyn.derive.model.Model")
     return model
+
+
+def user_sources() -> dict:
+    """{path: sha256} of every module this process imported from outside the Python
+    installation and camdyn: the user's own modules that a model file imports, however it
+    imports them (beside it, below it, on PYTHONPATH, conditionally or by importlib).
+
+    Executing the file is the only sure way to know what it imports, and the build does that
+    anyway, in a process of its own; so the build records exactly the modules it used, and the
+    runtime rebuilds the entry when one of them has changed (runtime/core/ondemand.py).  A
+    hash of every .py file in the model's folder would instead miss modules found on
+    PYTHONPATH, rebuild on edits to files the model never imports, and read a whole tree on
+    every load of a model kept in a large folder (a home folder, a project with a virtual
+    environment).  Installed packages are left out: their versions are not the user's
+    code, and SymPy's and Cython's are in the cache key already."""
+    import hashlib
+    import site
+
+    installed = {Path(p).resolve() for p in (
+        sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix,
+        *site.getsitepackages(), site.getusersitepackages(),
+        *(sysconfig.get_paths()[k] for k in ("stdlib", "platstdlib", "purelib", "platlib")))}
+    # the program itself, under __main__ and multiprocessing's __mp_main__
+    main = getattr(sys.modules.get("__main__"), "__file__", None)
+    if main:
+        installed.add(Path(main).resolve())
+    out = {}
+    for name, module in list(sys.modules.items()):
+        file = getattr(module, "__file__", None)
+        if name == "camdyn" or name.startswith("camdyn.") or not file:
+            continue
+        path = Path(file).resolve()
+        if not path.is_file() or any(path.is_relative_to(root) for root in installed):
+            continue
+        out[str(path)] = hashlib.sha256(path.read_bytes()).hexdigest()
+    return dict(sorted(out.items()))
 
 
 def declaration(args):
@@ -120,7 +160,8 @@ def compile_module(name: str, pyx: str, out: Path) -> Path:
     from Cython.Build import cythonize
     from setuptools import Distribution, Extension
 
-    with tempfile.TemporaryDirectory(prefix="camdyn-build-") as tmp:
+    # the work folder inside ``out``: a killed build leaves it where the next one removes it
+    with tempfile.TemporaryDirectory(prefix=".work-", dir=out) as tmp:
         work = Path(tmp)
         _stage_headers(work / "include")
         src = work / f"{name}.pyx"
@@ -206,7 +247,7 @@ def main(argv=None) -> int:
         return 2
     (out / "build.json").write_text(json.dumps(
         {"name": model.name, "source": source, "extension": ext.name, "seconds": times,
-         "pid": os.getpid()}, indent=1))
+         "pid": os.getpid(), "sources": user_sources()}, indent=1))
     return 0
 
 

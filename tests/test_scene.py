@@ -253,8 +253,8 @@ def test_only_a_regular_scene_file_is_read(what, tmp_path):
         assert p.returncode == 2 and p.stdout == "", (cmd, p.stderr)
         lines = p.stderr.strip().splitlines()
         assert len(lines) == 1 and f"scene file {path}" in lines[0], lines
-        assert {"device": "not a regular file", "fifo": "not a regular file",
-                "folder": "a folder", "huge": "too large"}[what] in lines[0]
+        assert {"device": "is a device", "fifo": "is a named pipe",
+                "folder": "is a folder", "huge": "too large"}[what] in lines[0]
 
 
 @pytest.mark.parametrize("name", ["h_m", "R_b"])

@@ -1,4 +1,5 @@
-"""Errors users see: bad input is named, failed runs say where they failed."""
+"""Errors users see: bad input is named, failed runs say where they failed; and the checks of
+the paths users give (folders to write in, files to read) that name them."""
 
 
 class CamdynInputError(ValueError):
@@ -46,9 +47,47 @@ def out_folder(out, create: bool = True):
             raise CamdynInputError(f"argument --out: cannot create the folder {path}: "
                                    f"{probe} is {why}")
         return path
+    return writable_folder(path, argument="argument --out")
+
+
+def writable_folder(path, what: str = "folder", hint: str = "", argument: str = ""):
+    """The folder ``path``, made where missing, that this process may write in; else a
+    CamdynInputError naming the ``argument`` it came from and ``what`` it is, followed by
+    ``hint`` (what to do)."""
+    import os
+    from pathlib import Path
+
+    path = Path(path)
+    lead = f"{argument}: " if argument else ""
     try:
         path.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise CamdynInputError(f"argument --out: cannot create the folder {path}: "
-                               f"{exc.strerror or exc}") from None
+        why = "a file is in its place" if isinstance(exc, FileExistsError) else \
+            exc.strerror or str(exc)
+        raise CamdynInputError(f"{lead}cannot create the {what} {path}: {why}{hint}") from None
+    if not os.access(path, os.W_OK | os.X_OK):
+        raise CamdynInputError(f"{lead}cannot write in the {what} {path}: not writable{hint}")
     return path
+
+
+def on_disk(path) -> str | None:
+    """What ``path`` is on disk, from os.stat alone: "file" (a regular one), "folder", "named
+    pipe", "device" or "socket"; None where nothing is (or a file lies on the way).  Nothing
+    is opened: a reader of a named pipe blocks until a writer comes, one of /dev/zero never
+    reaches the end."""
+    import os
+    import stat
+
+    try:
+        mode = os.stat(path).st_mode
+    except (OSError, ValueError):      # missing, below a file, a NUL in the name
+        return None
+    if stat.S_ISREG(mode):
+        return "file"
+    if stat.S_ISDIR(mode):
+        return "folder"
+    if stat.S_ISFIFO(mode):
+        return "named pipe"
+    if stat.S_ISSOCK(mode):
+        return "socket"
+    return "device"

@@ -74,6 +74,4 @@ def is_compiled(options) -> bool:
         return True
     from . import ondemand
 
-    text = json.dumps(asdict(options), sort_keys=True)
-    entry = ondemand.cache_root() / f"{options.name}-{ondemand.key('dynacam', text.encode())}"
-    return (entry / "build.json").is_file()
+    return ondemand.has_variant(asdict(options), options.name)

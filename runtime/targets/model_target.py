@@ -10,6 +10,7 @@ runs in compiled chunks that hold no GIL (runtime/engine/finder.pyx).
 from __future__ import annotations
 
 import math
+import os
 import time
 from dataclasses import dataclass, replace
 from functools import cached_property
@@ -18,7 +19,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core import methods as _methods
-from ..core.errors import CamdynInputError, SimulationError
+from ..core.errors import CamdynInputError, SimulationError, on_disk
 from ..core.compiled import available, load
 from ..core.simulator import Simulator
 from ..engine import finder, driver
@@ -61,13 +62,39 @@ def scan_density(method) -> tuple[int, int]:
     return math.ceil(SAMPLES / k), 1
 
 
+def model_file(name: str, scenes: bool = False) -> Path | None:
+    """The model file ``name`` names, checked on disk without opening it (runtime/core/errors.py
+    on_disk); None where ``name`` is no path on disk and does not end in .py (a built-in
+    model's name, or with ``scenes`` a scene file (.toml) or a built-in scene's).  Refused in
+    one line naming the path: a missing .py file, a folder, named pipe, device or socket, a
+    file that is not .py (nor, with ``scenes``, .toml), a file this process may not read."""
+    what = on_disk(name)
+    allowed = "a model file (.py) or a scene file (.toml)" if scenes else "a model file (.py)"
+    if what is None:
+        if name.endswith(".py"):
+            raise CamdynInputError(f"{name}: no such model file")
+        return None
+    if what != "file":
+        if name.replace("-", "_") in available() and not name.endswith(".py"):
+            return None      # a folder that happens to bear a built-in model's name
+        raise CamdynInputError(f"{name} is a {what}, not {allowed}")
+    path = Path(name)
+    if scenes and path.suffix == ".toml":
+        return None
+    if path.suffix != ".py":
+        raise CamdynInputError(f"{name}: neither a model file (.py) nor a scene file (.toml)"
+                               if scenes else f"{name}: not a model file (a .py file defining "
+                               "build())")
+    if not os.access(path, os.R_OK):
+        raise CamdynInputError(f"{name}: cannot read the model file (permission denied)")
+    return path
+
+
 def model_ref(name: str) -> str:
     """A built-in model's name (one-dof and one_dof both work) or a model file's absolute path
     (a Dask worker may run elsewhere); a CamdynInputError for anything else."""
-    if name.endswith(".py") or Path(name).is_file():
-        path = Path(name)
-        if not path.is_file():
-            raise CamdynInputError(f"{name}: no such model file")
+    path = model_file(name)
+    if path is not None:
         return str(path.resolve())
     if name.replace("-", "_") in available():
         return name.replace("-", "_")

@@ -7,15 +7,13 @@ mechanism is adding its target class to SCENE_TARGETS.
 """
 from __future__ import annotations
 
-from pathlib import Path
-
 from ..core.errors import CamdynInputError
 from ..core.compiled import available
 from . import scene_files
 from .beam_scene import BeamTarget
 from .camshaft1_study import StudyTarget
 from .dynacam_scene import DynacamTarget
-from .model_target import ModelTarget, StateTarget, load_ref, model_ref
+from .model_target import ModelTarget, StateTarget, load_ref, model_file, model_ref
 
 SCENE_TARGETS = {cls.scene_kind: cls for cls in (DynacamTarget, StudyTarget, BeamTarget)}
 """Scene kind -> the target class that runs it (its ``parse`` checks the scene file's tables,
@@ -34,9 +32,10 @@ def load_scene(name: str) -> tuple[str, object]:
 
 
 def is_model(name: str) -> bool:
-    """Whether ``name`` names a model (a model file, or a built-in model) rather than a scene."""
-    return name.endswith(".py") or Path(name).is_file() and not name.endswith(".toml") \
-        or name.replace("-", "_") in available()
+    """Whether ``name`` names a model (a model file, or a built-in model) rather than a scene;
+    a path that is neither a readable model file nor a scene file is refused here, naming it
+    (model_target.model_file)."""
+    return model_file(name, scenes=True) is not None or name.replace("-", "_") in available()
 
 
 def scene(name: str, *, label: str = ""):

@@ -30,13 +30,12 @@ declared range is refused with a message that names it.  `camdyn run SCENE` runs
 from __future__ import annotations
 
 import math
-import stat
 import tomllib
 from dataclasses import dataclass, field, fields
 from importlib import resources
 from pathlib import Path
 
-from ..core.errors import CamdynInputError
+from ..core.errors import CamdynInputError, on_disk
 from ..core.methods import DEFAULT_RTOL
 
 _TOP = {"kind", "title", "reference", "note", "law", "theta", "options", "parameters", "run", "modes",
@@ -331,19 +330,12 @@ def read(path) -> tuple[dict, str]:
     path = Path(path)
     if not path.suffix and not path.exists():
         path = builtin(str(path))
-    try:
-        info = path.stat()
-    except FileNotFoundError:
-        raise CamdynInputError(f"scene file {path} not found") from None
-    except OSError as exc:      # no permission on a folder above it, a name too long
-        raise CamdynInputError(f"scene file {path}: {exc.strerror}") from None
-    if not stat.S_ISREG(info.st_mode):
-        what = "a folder" if stat.S_ISDIR(info.st_mode) else "not a regular file"
-        raise CamdynInputError(f"scene file {path}: {what}; give a TOML scene file or a "
-                               "built-in scene name (camdyn scenes lists them)")
-    if info.st_size > MAX_SCENE_BYTES:
-        raise CamdynInputError(f"scene file {path}: {info.st_size} bytes is too large for a "
-                               f"scene (at most {MAX_SCENE_BYTES} bytes)")
+    what = on_disk(path)
+    if what not in (None, "file"):    # never opened: a named pipe or /dev/zero would not end
+        raise CamdynInputError(f"scene file {path} is a {what}, not a scene file (.toml)")
+    if what == "file" and path.stat().st_size > MAX_SCENE_BYTES:
+        raise CamdynInputError(f"scene file {path}: {path.stat().st_size} bytes is too large "
+                               f"for a scene (at most {MAX_SCENE_BYTES} bytes)")
     try:
         return tomllib.loads(path.read_text()), str(path)
     except FileNotFoundError:
