@@ -3,8 +3,9 @@ from __future__ import annotations
 
 import sys
 
-from ..core.errors import CamdynInputError, SimulationError, out_folder
-from .common import add_estimate_option, fail, law_names, method_names, run_failed
+from ..core.errors import CamdynInputError, SimulationError
+from ..core.outdir import out_folder
+from .common import add_estimate_option, add_out_option, fail, law_names, method_names, run_failed
 
 
 def add(sub):
@@ -23,8 +24,8 @@ def add(sub):
                     help="threads, >= 1 (default: every core; not with --dask)")
     sw.add_argument("--dask", default=None, metavar="ADDRESS",
                     help="run on the Dask scheduler at ADDRESS (tcp://host:8786) instead")
-    sw.add_argument("--out", default="out/sweep", help="folder for the table and charts "
-                                                       "(default out/sweep)")
+    add_out_option(sw, default="out/sweep", help="folder for the table and charts "
+                                                  "(default out/sweep)")
     sw.add_argument("--t-end", type=float, default=None,
                     help="end of each run of a model, in its time unit (T = t/t_m for the "
                          "thesis models), at least one period tau past the rise (default 3)")

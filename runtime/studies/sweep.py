@@ -23,7 +23,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.errors import CamdynInputError, out_folder
+from ..core.errors import CamdynInputError, OutFolderError
+from ..core.outdir import out_folder, writing
 from ..measure.contract import chart_note
 from ..targets.grid import default_jobs, run_chunk, run_grid
 
@@ -169,9 +170,8 @@ class SweepResult:
                 f"figures: {', '.join(figs)}{est}{warned}")
 
     def to_csv(self, path) -> Path:
-        path = Path(path)
         names = self.names
-        with open(path, "w") as fh:
+        with writing(path) as path, open(path, "w") as fh:
             fh.write(",".join(names) + "\n")
             for i in range(len(self)):
                 fh.write(",".join(_cell(self.columns[k][i]) for k in names) + "\n")
@@ -183,9 +183,9 @@ class SweepResult:
             import pyarrow.parquet as pq
         except ImportError:
             raise CamdynInputError("Parquet needs pyarrow: pip install pyarrow") from None
-        path = Path(path)
-        pq.write_table(pa.table({k: (self.columns[k].astype(str) if k == "warnings"
-                                     else self.columns[k]) for k in self.names}), path)
+        with writing(path) as path:
+            pq.write_table(pa.table({k: (self.columns[k].astype(str) if k == "warnings"
+                                         else self.columns[k]) for k in self.names}), path)
         return path
 
     def charts(self, out_dir) -> list[Path]:
@@ -198,8 +198,7 @@ class SweepResult:
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
 
-        out_dir = Path(out_dir)
-        out_dir.mkdir(parents=True, exist_ok=True)
+        out_dir = out_folder(out_dir)
         names = list(self.axes)
         shape = tuple(len(v) for v in self.axes.values())
         multi = [k for k, n in enumerate(shape) if n > 1]
@@ -249,8 +248,8 @@ class SweepResult:
                      + ("; shaded: ± the estimate" if err is not None
                         and np.any(np.isfinite(err)) else ""), fontsize=7)
             fig.tight_layout(rect=(0, 0.07, 1, 1))
-            path = out_dir / f"{fig_name}.png"
-            fig.savefig(path, dpi=110)
+            with writing(out_dir / f"{fig_name}.png") as path:
+                fig.savefig(path, dpi=110)
             plt.close(fig)
             written.append(path)
         return written
@@ -261,7 +260,9 @@ class SweepResult:
         files = [self.to_csv(out_dir / "sweep.csv")]
         try:
             files.append(self.to_parquet(out_dir / "sweep.parquet"))
-        except CamdynInputError:
+        except OutFolderError:
+            raise
+        except CamdynInputError:          # no pyarrow: the CSV is the table
             pass
         return files + self.charts(out_dir)
 

@@ -10,7 +10,8 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from camdyn.runtime.core.errors import CamdynInputError, out_folder
+from camdyn.runtime.core.errors import CamdynInputError, OutFolderError
+from camdyn.runtime.core.outdir import out_folder
 from camdyn.thesis.checks import suite
 from camdyn.thesis.registry import FIGURES
 
@@ -73,12 +74,15 @@ def checks_by_key(figures: list[Figure]) -> dict:
 
 def build_one(fig: Figure, out_dir, quick: bool, by_key: dict) -> Built:
     """Draw one figure and evaluate its claims; a builder that fails is reported in
-    Built.error (the index shows it), not raised, so the other figures are still built."""
+    Built.error (the index shows it), not raised, so the other figures are still built; but
+    an --out that cannot take its pictures ends the build."""
     b = Built(fig)
     t0 = time.perf_counter()
     if fig.build is not None:
         try:
             b.pngs = [str(p) for p in fig.build(Path(out_dir), quick)]
+        except OutFolderError:
+            raise
         except Exception as exc:
             b.error = f"{type(exc).__name__}: {exc}"
     b.claims = [evaluate(cl, by_key) for cl in fig.claims]

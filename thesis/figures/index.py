@@ -10,6 +10,8 @@ from pathlib import Path
 from jinja2 import Environment
 from markupsafe import Markup, escape
 
+from camdyn.runtime.core.outdir import write_text
+
 from .figure import GROUPS
 
 TEMPLATE = """<!doctype html>
@@ -79,6 +81,4 @@ def write(built: list, out_dir, seconds: float, quick: bool) -> str:
         n_claims=len(claims), n_passed=sum(c.passed for c in claims),
         n_failed=sum(not c.passed for c in claims), n_wide=sum(c.wide for c in claims),
         seconds=f"{seconds:.0f}", quick=quick)
-    path = out_dir / "index.html"
-    path.write_text(html)
-    return str(path)
+    return str(write_text(out_dir / "index.html", html))
