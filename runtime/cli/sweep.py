@@ -44,13 +44,17 @@ def add(sub):
                          "<figure>_error from the grid run again one notch tighter (rtol/10, "
                          "half the step), plus the scan's sampling error")
     add_estimate_option(sw)
+    sw.add_argument("--resume", action="store_true",
+                    help="continue the table a stopped sweep of the same target, grid and "
+                         "settings left in --out: its rows are kept, the others run (the "
+                         "table is written as the grid runs)")
     sw.add_argument("--quiet", action="store_true", help="no progress bar")
     return sw
 
 
 def run(args) -> int:
-    """The headline figures over a grid of parameters (runtime/studies/sweep.py): CSV, Parquet with
-    pyarrow, a chart per figure."""
+    """The headline figures over a grid of parameters (runtime/studies/sweep.py): CSV (written
+    as the grid runs; --resume continues it), Parquet with pyarrow, a chart per figure."""
     from ..studies import sweep as sw
 
     try:
@@ -59,8 +63,7 @@ def run(args) -> int:
         res = sw.sweep(args.target, grid, jobs=args.jobs, dask=args.dask,
                        progress=not args.quiet, t_end=args.t_end, method=args.method,
                        rtol=args.rtol, law=args.law, step=args.step,
-                       estimate=not args.no_error_estimate)
-        files = res.write(args.out)
+                       estimate=not args.no_error_estimate, out=args.out, resume=args.resume)
     except CamdynInputError as exc:
         return fail("camdyn sweep", str(exc))
     except SimulationError as exc:
@@ -72,6 +75,6 @@ def run(args) -> int:
         print(f"camdyn sweep: warning: {res.warned} of {len(res)} points warned (the warnings "
               f"column of the table); the first: {first}", file=sys.stderr)
     print(res.summary())
-    for path in files:
+    for path in res.files:
         print(f"  {path}")
     return 0
