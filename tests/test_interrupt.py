@@ -1,6 +1,7 @@
 """Ctrl-C and SIGTERM (runtime/core/signals.py, the command line's main): one line saying what
 was kept, status 130 or 143, no traceback, no file half written; a sweep keeps its finished
-rows and --resume ends with the table an uninterrupted sweep writes, to the last bit."""
+rows and --resume ends with the table an uninterrupted sweep writes, to the last bit; an
+interrupted `camdyn figures` leaves an index of what it drew."""
 import os
 import signal
 import subprocess
@@ -130,6 +131,35 @@ def test_resume_refuses_a_table_of_another_sweep_or_one_edited(tmp_path, capsys,
     assert (out / "sweep.csv").read_text() == table + "0.5,1,2\n"
 
 
+def test_an_interrupted_figure_build_leaves_an_index_of_what_it_drew(tmp_path, capsys,
+                                                                     monkeypatch):
+    """Ctrl-C while the second of two figures is drawn: exit 130, one line, and index.html
+    lists the first figure with its picture and says it holds 1 of the 2 chosen."""
+    from camdyn.thesis.figures import build
+
+    one = build.build_one
+    calls = []
+
+    def second_interrupted(fig, *args):
+        calls.append(fig.id)
+        if len(calls) == 2:
+            os.kill(os.getpid(), signal.SIGINT)
+        return one(fig, *args)
+
+    monkeypatch.setattr(build, "build_one", second_interrupted)
+    out = tmp_path / "figures"
+    assert main(["figures", "--only", "3.4,8.6", "--quiet", "--out", str(out)]) == 130
+    assert calls == ["3.4", "8.6"]
+    assert capsys.readouterr().err.strip() == (f"camdyn figures: interrupted; 1 of 2 figures "
+                                               f"drawn, listed in {out / 'index.html'}")
+    page = (out / "index.html").read_text()
+    assert 'id="fig3_4"' in page and "fig8_6" not in page, page[:2000]
+    assert "This page lists 1 of the 2 figures chosen" in " ".join(page.split())
+    assert page.rstrip().endswith("</html>")
+    pics = [p for p in os.listdir(out) if p.endswith(".png")]
+    assert pics and all(f'src="{p}"' in page for p in pics)
+
+
 # -- from outside: real signals to a running command ----------------------------------------------
 
 def _start(argv):
@@ -172,3 +202,20 @@ def test_a_sweep_killed_from_outside_resumes_to_the_same_table(tmp_path, capsys,
     assert main(_sweep(out, "--resume")) == 0
     assert f"({kept} kept from the table, {600 - kept} run now)" in capsys.readouterr().out
     _same_tables(out, clean)
+
+
+@pytest.mark.slow
+def test_a_figure_build_killed_from_outside_leaves_its_index(tmp_path):
+    """`camdyn figures` as a process, SIGTERM while the second figure (the paper's fig. 5,
+    several seconds of runs) is drawn: status 143, one line, index.html listing fig. 3.4."""
+    out = tmp_path / "figures"
+    proc = _start(["figures", "--only", "3.4,paper 5", "--quiet", "--out", str(out)])
+    index = out / "index.html"
+    _wait_for(proc, lambda: index.exists() and 'id="fig3_4"' in index.read_text())
+    proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=120)
+    assert proc.returncode == 143, err
+    assert err.strip() == f"camdyn figures: interrupted; 1 of 2 figures drawn, listed in {index}"
+    page = index.read_text()
+    assert "This page lists 1 of the 2 figures chosen" in " ".join(page.split())
+    assert page.rstrip().endswith("</html>")
