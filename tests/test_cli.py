@@ -245,7 +245,7 @@ def test_closed_stdout_stops_without_a_traceback(tmp_path, argv):
 ])
 def test_out_below_a_file_is_refused_before_the_runs(tmp_path, capsys, argv):
     """An --out folder that cannot be made (below a file) is one line naming --out from
-    runtime/errors.out_folder, the one place every command makes its folder, before any run
+    runtime/core/outdir.out_folder, the one place every command makes its folder, before any run
     (camdyn sweep reported it after its runs)."""
     from camdyn.runtime.cli import main
 

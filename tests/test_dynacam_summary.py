@@ -168,11 +168,15 @@ def figures(tmp_path_factory):
 def test_plot_writes_one_png_per_diagram_of_the_variant(figures):
     """radial_ideal_rigidgear_bilateral (rigid gear, bilateral roller, constant speed) has the diagrams X'', B'', the
     shaft torque and the fictitious speed variation (figs 7.11, 7.12), no gap or motor one:
-    exactly those four files, named <scene stem>_<key>.png in the output folder, PNG each."""
+    exactly those four files, named <scene stem>_<key>.png in the output folder, PNG each,
+    beside the folder's record of what camdyn wrote there (runtime/core/outdir.py)."""
+    from camdyn.runtime.core.outdir import RECORD, entry
+
     out, written, _, _ = figures
     want = {out / f"one_dof_{key}.png" for key in ("Xdd", "Bdd", "torque", "speed_var")}
     assert {Path(p) for p in written} == want
-    assert set(out.iterdir()) == want
+    assert set(out.iterdir()) == want | {out / RECORD}
+    assert all(entry(p) is not None for p in want)
     for p in want:
         assert p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 

@@ -40,6 +40,7 @@ from scipy.optimize import minimize_scalar
 from ..core.errors import CamdynInputError
 from ..measure.contract import chart_note
 from ..core.laws import choose
+from ..core.outdir import out_folder, writing
 from .motion import RDFD, failing_spans
 
 TWO_PI = 2 * math.pi
@@ -353,7 +354,7 @@ class CamProfile:
         path = Path(path)
         tab = self.table
         cols = list(tab)
-        with path.open("w", newline="") as fh:
+        with writing(path), path.open("w", newline="") as fh:
             w = csv.writer(fh)
             w.writerow(cols)
             for row in zip(*(tab[c] for c in cols)):
@@ -388,7 +389,8 @@ class CamProfile:
             n = len(tab[x])
             line.lwpoints.set(np.column_stack([tab[x] * 1e3, tab[y] * 1e3, np.zeros((n, 3))]))
         msp.add_circle((0.0, 0.0), self.base_radius * 1e3, dxfattribs={"layer": "BASE_CIRCLE"})
-        doc.saveas(path)
+        with writing(path):
+            doc.saveas(path)
         return path
 
     def write_png(self, path) -> Path:
@@ -454,13 +456,13 @@ class CamProfile:
             [c.message for c in self.failures]) + " (the estimates: what the sampling leaves)",
             fontsize=7)
         fig.tight_layout(rect=(0, 0.04, 1, 1))
-        fig.savefig(path, dpi=110)
+        with writing(path):
+            fig.savefig(path, dpi=110)
         plt.close(fig)
         return path
 
     def write_all(self, out_dir, stem: str = "cam") -> dict:
-        out = Path(out_dir)
-        out.mkdir(parents=True, exist_ok=True)
+        out = out_folder(out_dir)
         return {"csv": str(self.write_csv(out / f"{stem}.csv")),
                 "dxf": str(self.write_dxf(out / f"{stem}.dxf")),
                 "png": str(self.write_png(out / f"{stem}.png"))}

@@ -16,7 +16,10 @@ run(args) (parse, call the library, print).  Nothing imports the command line.
     camdyn figures [--out DIR] [--only IDS]  every thesis/paper figure the models determine + index
     camdyn design --stroke H ...            design by the thesis's rules (secs 8.3, 8.5, App. 7)
 
-Bad arguments end in one line on stderr naming the argument, and status 2.
+Bad arguments end in one line on stderr naming the argument, and status 2.  Every command
+that writes files takes --out and --overwrite and writes through runtime/core/outdir.py (it
+never replaces a file camdyn did not write there); Ctrl-C and SIGTERM end any command in one
+line saying what it kept, with status 130 and 143 (README "Where commands write").
 """
 from __future__ import annotations
 
@@ -25,7 +28,9 @@ import os
 import sys
 from pathlib import Path
 
-from .common import Parser, fail
+from ..core import outdir, signals
+from ..core.errors import CamdynInputError
+from .common import Parser, fail, run_failed
 
 COMMANDS = ("derive", "residual", "check", "laws", "design", "run", "scenes", "integrate", "simulate",
             "beam_follower", "stability", "precision", "profile", "figures", "sweep")
@@ -43,18 +48,32 @@ def build_parser() -> Parser:
 
 def main(argv=None) -> int:
     args = build_parser().parse_args(argv)
+    prog = f"camdyn {args.command}" if getattr(args, "command", None) else "camdyn"
     out = getattr(args, "out", None)
     # every --out names a folder: a file in its place is refused here, in one line, rather
     # than by a FileExistsError deep inside a command after its runs
     if out is not None and Path(out).exists() and not Path(out).is_dir():
-        return fail(f"camdyn {args.command}" if getattr(args, "command", None) else "camdyn",
-                    f"argument --out: {out} is a file; --out names a folder")
-    try:
-        rc = args.func(args)
-        sys.stdout.flush()           # here, so that a closed pipe is caught below
-        return rc
-    except BrokenPipeError:
-        # the reader of stdout left (`camdyn ... | head`): stop quietly, not with a traceback,
-        # and keep the interpreter's final flush from raising it again
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return 1
+        return fail(prog, f"argument --out: {out} is a file; --out names a folder")
+    with signals.handled(), outdir.session(getattr(args, "overwrite", False)) as written:
+        try:
+            rc = args.func(args)
+            sys.stdout.flush()           # here, so that a closed pipe is caught below
+            return rc
+        except BrokenPipeError:
+            # the reader of stdout left (`camdyn ... | head`): stop quietly, not with a
+            # traceback, and keep the interpreter's final flush from raising it again
+            os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+            return 1
+        except KeyboardInterrupt as exc:
+            # Ctrl-C or SIGTERM, wherever the command was: one line with what it kept (every
+            # file it wrote is whole, runtime/core/signals.py), the shell's status for it
+            print(f"{prog}: interrupted; {written.kept()}", file=sys.stderr)
+            return exc.status if isinstance(exc, signals.Interrupted) else 130
+        except CamdynInputError as exc:
+            # an --out refused while a command writes, past its own handling of bad input
+            return fail(prog, str(exc))
+        except OSError as exc:
+            # a file a library wrote on its own, or one camdyn read, failed: named, one line
+            where = f": {exc.filename}" if exc.filename else ""
+            return run_failed(prog, f"{exc.strerror or exc}{where}"
+                                    + (f" (--out {out})" if out else ""))

@@ -5,8 +5,10 @@ import argparse
 import json
 import time
 
-from ..core.errors import CamdynInputError, SimulationError, out_folder
-from .common import add_estimate_option, fail, report_health, run_failed, say_on_stderr
+from ..core.errors import CamdynInputError, SimulationError
+from ..core.outdir import out_folder
+from .common import (add_estimate_option, add_out_option, fail, report_health, run_failed,
+                     say_on_stderr)
 
 FLAGS = {"omega": "--omega", "modes": "--modes", "rod_radius": "--rod-radius",
                "distance": "--distance", "base_radius": "--base-radius", "rise": "--rise",
@@ -77,7 +79,7 @@ def add(sub):
                         f"{dflt['rtol']:g}; the error estimate runs again at rtol/10)")
     b.add_argument("--json", action="store_true", help="one JSON object on stdout")
     add_estimate_option(b)
-    b.add_argument("--out", default=None, metavar="DIR",
+    add_out_option(b, default=None, metavar="DIR",
                    help="also write the paper's figs 4-9 (tip deflection against cam angle, one "
                         "parameter varied; 18 runs) as PNG into DIR")
     return b
@@ -94,8 +96,8 @@ def run(args) -> int:
     try:
         target = BeamTarget.of(beam.Case(**{k: v for k, v in given.items() if v is not None}))
         planned = target.figure_runs() if args.out else []     # refused before anything runs
-        if args.out:
-            out_folder(args.out)
+        if args.out:                   # a picture of the user's is refused before the runs
+            out_folder(args.out, files=target.figure_files())
         # the main run's line only without --json; the 18 figure runs report in any case
         a = answer(target, estimate=not args.no_error_estimate,
                    progress=None if args.json else say)

@@ -88,6 +88,16 @@ def say_on_stderr(quiet: bool = False):
     return lambda msg: print(msg, file=sys.stderr, flush=True)
 
 
+def add_out_option(parser, **kwargs) -> None:
+    """--out (``kwargs`` as add_argument's) and --overwrite: every command that writes files
+    takes both, and writes them through runtime/core/outdir.py."""
+    parser.add_argument("--out", **kwargs)
+    parser.add_argument("--overwrite", action="store_true",
+                        help="replace files in --out that camdyn did not write there, or that "
+                             "were changed since it wrote them (refused otherwise, naming the "
+                             "file; camdyn's own files are replaced anyway)")
+
+
 def add_estimate_option(parser) -> None:
     parser.add_argument("--no-error-estimate", action="store_true",
                         help="skip the second, one notch tighter run that estimates each "

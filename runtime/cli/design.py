@@ -5,8 +5,9 @@ from __future__ import annotations
 import json
 import sys
 
-from ..core.errors import SimulationError, out_folder
-from .common import fail, law_names as law_names_, run_failed
+from ..core.errors import SimulationError
+from ..core.outdir import out_folder
+from .common import add_out_option, fail, law_names as law_names_, run_failed
 from .residual import name_argument
 
 PROG = "camdyn design"
@@ -61,9 +62,9 @@ def add(sub):
       help="worm gear lead angle and friction angle (rad): eta_g by (6.72)")
     a("--no-check", action="store_true", help="skip the check run")
     a("--json", action="store_true", help="one JSON object on stdout")
-    a("--out", default=None, help="folder for design.json and design.png (the envelope u0 over "
-                                   "tau at the design's Fa, the largest Fa and Fa = 0, with the "
-                                   "requirement)")
+    add_out_option(ds, default=None, help="folder for design.json and design.png (the envelope "
+                                          "u0 over tau at the design's Fa, the largest Fa and "
+                                          "Fa = 0, with the requirement)")
     a("--quiet", action="store_true", help="no progress lines")
     return ds
 
@@ -73,7 +74,7 @@ def run(args) -> int:
 
     say = (lambda msg: print(f"{PROG}: {msg}", file=sys.stderr, flush=True))
     try:
-        out_folder(args.out)
+        out_folder(args.out, files=method.FILES)       # the user's own: refused before the runs
         motor = motor_sizing.settings(
             motor_rpm=args.motor_rpm, motor_tm=args.motor_tm, slip_limit=args.slip_limit,
             rated_slip=args.rated_slip, motor_tel=args.motor_tel,

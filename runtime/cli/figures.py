@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from ..core.errors import CamdynInputError
-from .common import fail
+from .common import add_out_option, fail
 
 PROG = "camdyn figures"
 
@@ -15,7 +15,7 @@ def add(sub):
                     "the design charts into --out, and write index.html showing each picture "
                     "beside its number, caption and the printed statements it reproduces, "
                     "computed now. Exit 1 if a figure fails or a statement is not reproduced.")
-    f.add_argument("--out", default="out/figures", metavar="DIR",
+    add_out_option(f, default="out/figures", metavar="DIR",
                    help="folder for the PNG files and index.html (default out/figures)")
     f.add_argument("--only", default=None, metavar="IDS",
                    help="comma-separated figure ids (3.3,4.11a,paper 5; 4.11 = 4.11a-c; "

@@ -5,8 +5,8 @@ import json
 
 from ..core.errors import CamdynInputError, SimulationError
 from ..measure.contract import plus_minus
-from .common import (add_estimate_option, assignments, fail, law_names, method_names,
-                     report_health, run_failed, say_on_stderr)
+from .common import (add_estimate_option, add_out_option, assignments, fail, law_names,
+                     method_names, report_health, run_failed, say_on_stderr)
 
 
 def add(sub):
@@ -37,7 +37,7 @@ def add(sub):
                     help="with --return-law: its shape parameter (default: the law's own)")
     ig.add_argument("--json", action="store_true", help="one JSON object on stdout")
     add_estimate_option(ig)
-    ig.add_argument("--out", default=None, help="folder for <model>.csv and <model>.png")
+    add_out_option(ig, default=None, help="folder for <model>.csv and <model>.png")
     return ig
 
 
@@ -79,7 +79,7 @@ def run(args) -> int:
                           rtol=args.rtol, step=args.step, t_end=args.t_end, law=law,
                           theta=theta, initial=initial)
         if args.out:
-            from ..core.errors import out_folder
+            from ..core.outdir import out_folder
 
             out_folder(args.out, create=False)       # checked before the run
         a = answer(t, estimate=not args.no_error_estimate)

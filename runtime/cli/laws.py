@@ -8,7 +8,7 @@ import sys
 
 from ..core.errors import SimulationError
 from ..measure.contract import note
-from .common import fail, law_names, run_failed
+from .common import add_out_option, fail, law_names, run_failed
 from .residual import name_argument
 
 PROG = "camdyn laws"
@@ -32,8 +32,8 @@ def add(sub):
                     help="with --stroke: base circle radius in m, 1e-6 <= r_b < 1000")
     lw.add_argument("--roller-radius", type=float, default=None, metavar="M",
                     help="with --stroke: roller radius in m, 1e-6 <= r_r < 1000")
-    lw.add_argument("--out", default=None, help="folder for laws_selection.png/.csv "
-                    "(laws_sweep.png/.csv with --sweep)")
+    add_out_option(lw, default=None, help="folder for laws_selection.png/.csv "
+                                          "(laws_sweep.png/.csv with --sweep)")
     lw.add_argument("--sweep", default=None, metavar="SCENE",
                     help="a DYNACAM scene (camdyn scenes): run it over a grid of the shape "
                          "parameter of --law and chart U0'' and the largest fictitious angular-"

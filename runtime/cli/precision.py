@@ -5,8 +5,9 @@ import json
 import sys
 from pathlib import Path
 
-from ..core.errors import CamdynInputError, SimulationError, out_folder
-from .common import assignments, fail, method_names, run_failed
+from ..core.errors import CamdynInputError, SimulationError
+from ..core.outdir import out_folder
+from .common import add_out_option, assignments, fail, method_names, run_failed
 
 
 def add(sub):
@@ -23,7 +24,7 @@ def add(sub):
     pr.add_argument("--peers", nargs="+", default=None, metavar="PEER",
                     help="SciPy peers: RK45 DOP853 Radau BDF LSODA odeint (default: all)")
     pr.add_argument("--no-peers", action="store_true", help="camdyn's methods only")
-    pr.add_argument("--out", default="out", help="folder for the chart, CSV and JSON (default out/)")
+    add_out_option(pr, default="out", help="folder for the chart, CSV and JSON (default out/)")
     pr.add_argument("--json", action="store_true", help="one JSON object on stdout")
     pr.add_argument("--quick", action="store_true", help="every other rung of the ladders")
     return pr

@@ -3,11 +3,11 @@ from __future__ import annotations
 
 import json
 import sys
-from pathlib import Path
 
-from ..core.errors import CamdynInputError, out_folder
+from ..core.errors import CamdynInputError
+from ..core.outdir import out_folder, write_text
 from ..measure.contract import plus_minus
-from .common import fail, law_names
+from .common import add_out_option, fail, law_names
 
 
 def add(sub):
@@ -48,7 +48,7 @@ def add(sub):
                    help="pressure-angle limit of the check, 0 < DEG < 90 (default 30)")
     p.add_argument("--points-per-degree", type=int, default=10, metavar="N",
                    help="samples per degree of cam angle, 1 to 1000 (default 10)")
-    p.add_argument("--out", default="out/cam", metavar="DIR",
+    add_out_option(p, default="out/cam", metavar="DIR",
                    help="folder for cam.csv, cam.dxf, cam.png, cam.json (default out/cam)")
     p.add_argument("--json", action="store_true", help="one JSON object on stdout")
     return p
@@ -72,14 +72,14 @@ def run(args) -> int:
                          groove=args.groove, points_per_degree=args.points_per_degree,
                          max_pressure_angle_deg=args.max_pressure_angle)
         out = cam.summary()
-        out_folder(args.out)
+        folder = out_folder(args.out, files=[f"cam.{x}" for x in ("csv", "dxf", "png", "json")])
+        out["files"] = cam.write_all(folder)
+        out["files"]["json"] = str(folder / "cam.json")
+        write_text(folder / "cam.json", json.dumps(out, indent=1))
     except CamdynInputError as exc:
         return fail(prog, str(exc))
-    out["files"] = cam.write_all(args.out)
     for c in cam.failures:
         print(f"{prog}: warning: {c.message}", file=sys.stderr)
-    out["files"]["json"] = str(Path(args.out) / "cam.json")
-    Path(out["files"]["json"]).write_text(json.dumps(out, indent=1))
     if args.json:
         print(json.dumps(out, indent=1))
         return 0

@@ -3,9 +3,10 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ..core.errors import CamdynInputError, SimulationError, out_folder
-from .common import (add_estimate_option, fail, method_names, report_health, run_failed,
-                     say_on_stderr)
+from ..core.errors import CamdynInputError, SimulationError
+from ..core.outdir import out_folder
+from .common import (add_estimate_option, add_out_option, fail, method_names, report_health,
+                     run_failed, say_on_stderr)
 
 
 def add(sub):
@@ -15,7 +16,7 @@ def add(sub):
     m.add_argument("scene", nargs="?", default=None,
                    help="scene TOML or a built-in scene name (camdyn scenes); default: the "
                         "embedded CAMSHAFT-1 study")
-    m.add_argument("--out", default="out", help="folder for report and charts (default out/)")
+    add_out_option(m, default="out", help="folder for report and charts (default out/)")
     m.add_argument("--method", default=None, choices=adaptive,
                    help="integration method instead of the scene's [run] method; rodas4 is the "
                         "stiff solver")

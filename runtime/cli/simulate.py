@@ -3,8 +3,10 @@ from __future__ import annotations
 
 import json
 
-from ..core.errors import CamdynInputError, SimulationError, out_folder
-from .common import add_estimate_option, fail, fmt, method_names, report_health, run_failed
+from ..core.errors import CamdynInputError, SimulationError
+from ..core.outdir import out_folder
+from .common import (add_estimate_option, add_out_option, fail, fmt, method_names,
+                     report_health, run_failed)
 from .common import say_on_stderr
 
 
@@ -15,7 +17,7 @@ def add(sub):
                                    "indexing_squeeze, spring_loaded, fig8_1a, fig8_1b")
     sm.add_argument("--json", action="store_true", help="one JSON object on stdout")
     add_estimate_option(sm)
-    sm.add_argument("--out", default=None, help="folder for the diagrams (PNG)")
+    add_out_option(sm, default=None, help="folder for the diagrams (PNG)")
     sm.add_argument("--method", default=None, choices=adaptive,
                     help="integration method instead of the scene's (dp54 unless it sets "
                          "run.method); rodas4 is the stiff solver")

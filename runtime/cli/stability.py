@@ -4,8 +4,9 @@ from __future__ import annotations
 import json
 import sys
 
-from ..core.errors import CamdynInputError, SimulationError, out_folder
-from .common import assignments, fail, law_names, method_names, run_failed
+from ..core.errors import CamdynInputError, SimulationError
+from ..core.outdir import out_folder
+from .common import add_out_option, assignments, fail, law_names, method_names, run_failed
 
 
 def add(sub):
@@ -36,7 +37,7 @@ def add(sub):
     st.add_argument("--law", default="cycloidal", choices=law_names())
     st.add_argument("--run-refused", action="store_true",
                     help="run refused steps anyway and show what they do (stability check off)")
-    st.add_argument("--out", default="out", help="folder for PNG, CSV, JSON (default out/)")
+    add_out_option(st, default="out", help="folder for PNG, CSV, JSON (default out/)")
     st.add_argument("--json", action="store_true", help="the summary as JSON on stdout")
     st.add_argument("--quiet", action="store_true", help="no progress lines")
     return st

@@ -3,8 +3,9 @@ from __future__ import annotations
 
 import sys
 
-from ..core.errors import CamdynInputError, SimulationError, out_folder
-from .common import add_estimate_option, fail, law_names, method_names, run_failed
+from ..core.errors import CamdynInputError, SimulationError
+from ..core.outdir import out_folder
+from .common import add_estimate_option, add_out_option, fail, law_names, method_names, run_failed
 
 
 def add(sub):
@@ -23,8 +24,8 @@ def add(sub):
                     help="threads, >= 1 (default: every core; not with --dask)")
     sw.add_argument("--dask", default=None, metavar="ADDRESS",
                     help="run on the Dask scheduler at ADDRESS (tcp://host:8786) instead")
-    sw.add_argument("--out", default="out/sweep", help="folder for the table and charts "
-                                                       "(default out/sweep)")
+    add_out_option(sw, default="out/sweep", help="folder for the table and charts "
+                                                  "(default out/sweep)")
     sw.add_argument("--t-end", type=float, default=None,
                     help="end of each run of a model, in its time unit (T = t/t_m for the "
                          "thesis models), at least one period tau past the rise (default 3)")
@@ -43,13 +44,17 @@ def add(sub):
                          "<figure>_error from the grid run again one notch tighter (rtol/10, "
                          "half the step), plus the scan's sampling error")
     add_estimate_option(sw)
+    sw.add_argument("--resume", action="store_true",
+                    help="continue the table a stopped sweep of the same target, grid and "
+                         "settings left in --out: its rows are kept, the others run (the "
+                         "table is written as the grid runs)")
     sw.add_argument("--quiet", action="store_true", help="no progress bar")
     return sw
 
 
 def run(args) -> int:
-    """The headline figures over a grid of parameters (runtime/studies/sweep.py): CSV, Parquet with
-    pyarrow, a chart per figure."""
+    """The headline figures over a grid of parameters (runtime/studies/sweep.py): CSV (written
+    as the grid runs; --resume continues it), Parquet with pyarrow, a chart per figure."""
     from ..studies import sweep as sw
 
     try:
@@ -58,8 +63,7 @@ def run(args) -> int:
         res = sw.sweep(args.target, grid, jobs=args.jobs, dask=args.dask,
                        progress=not args.quiet, t_end=args.t_end, method=args.method,
                        rtol=args.rtol, law=args.law, step=args.step,
-                       estimate=not args.no_error_estimate)
-        files = res.write(args.out)
+                       estimate=not args.no_error_estimate, out=args.out, resume=args.resume)
     except CamdynInputError as exc:
         return fail("camdyn sweep", str(exc))
     except SimulationError as exc:
@@ -71,6 +75,6 @@ def run(args) -> int:
         print(f"camdyn sweep: warning: {res.warned} of {len(res)} points warned (the warnings "
               f"column of the table); the first: {first}", file=sys.stderr)
     print(res.summary())
-    for path in files:
+    for path in res.files:
         print(f"  {path}")
     return 0

@@ -27,27 +27,10 @@ class UnstableStep(SimulationError):
         self.estimate = estimate
 
 
-def out_folder(out, create: bool = True):
-    """The folder an --out names, made (``create``) or only checked: one that cannot be made
-    (below a file, not writable) is a CamdynInputError naming --out.  Commands check before
-    their runs, so that a bad --out is refused first and a refused input leaves no folder,
-    and make it when they write.  None stays None."""
-    import os
-    from pathlib import Path
-
-    if out is None:
-        return None
-    path = Path(out)
-    if not create:
-        probe = path
-        while not probe.exists() and probe != probe.parent:
-            probe = probe.parent
-        if not probe.is_dir() or not os.access(probe, os.W_OK | os.X_OK):
-            why = "not a folder" if not probe.is_dir() else "not writable"
-            raise CamdynInputError(f"argument --out: cannot create the folder {path}: "
-                                   f"{probe} is {why}")
-        return path
-    return writable_folder(path, argument="argument --out")
+class OutFolderError(CamdynInputError):
+    """The --out folder cannot take a command's files: it cannot be made or written, or a
+    file there is not camdyn's to replace (runtime/core/outdir.py).  Whatever else a command
+    tolerates from a part of its work, this ends it."""
 
 
 def writable_folder(path, what: str = "folder", hint: str = "", argument: str = ""):

@@ -32,13 +32,13 @@ import math
 import statistics
 import time
 from dataclasses import asdict, dataclass, field
-from pathlib import Path
 
 import numpy as np
 
 from . import peers as _peers
 from ..core.errors import CamdynInputError, SimulationError
 from ..core.methods import METHODS
+from ..core.outdir import write_text, writing
 from ..targets.problem import Problem
 
 RTOL_LADDER = tuple(10.0 ** -k for k in range(3, 11))
@@ -114,14 +114,14 @@ class Study:
         return seen
 
     def write_json(self, path) -> str:
-        Path(path).write_text(json.dumps(finite(self.as_dict()), indent=1))
+        write_text(path, json.dumps(finite(self.as_dict()), indent=1))
         return str(path)
 
     def write_csv(self, path) -> str:
         figs = list(self.reference["figures"]) + ["final_state"]
         cols = ["method", "family", "setting_name", "setting", "status", "error", "cpu_seconds",
                 "n_steps", "n_rhs", "n_jac", "repeats"] + [f"error_{k}" for k in figs] + ["message"]
-        with open(path, "w", newline="") as fh:
+        with writing(path), open(path, "w", newline="") as fh:
             w = csv.writer(fh)
             w.writerow(cols)
             for r in self.rows:
@@ -168,7 +168,8 @@ class Study:
         fig.subplots_adjust(left=0.09, right=0.78, bottom=0.1 + 0.022 * len(notes))
         if notes:
             fig.text(0.01, 0.01, "\n".join(notes), fontsize=6.5, va="bottom", family="monospace")
-        fig.savefig(path, dpi=110)
+        with writing(path):
+            fig.savefig(path, dpi=110)
         plt.close(fig)
         return str(path)
 

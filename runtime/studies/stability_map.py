@@ -42,13 +42,13 @@ import json
 import math
 import time
 from dataclasses import asdict, dataclass, field
-from pathlib import Path
 
 import numpy as np
 
 from ..core import stability as _stability
 from ..core.errors import CamdynInputError, SimulationError, UnstableStep
 from ..core.methods import METHODS
+from ..core.outdir import write_text, writing
 from ..core.compiled import CompiledModel
 from ..core.simulator import Simulator
 from ..measure.contract import answer, fit_window
@@ -119,14 +119,14 @@ class StabilityMap:
 
     def write_csv(self, path) -> str:
         rows = self.rows()
-        with open(path, "w", newline="") as fh:
+        with writing(path), open(path, "w", newline="") as fh:
             w = csv.DictWriter(fh, fieldnames=list(rows[0]))
             w.writeheader()
             w.writerows(rows)
         return str(path)
 
     def write_json(self, path) -> str:
-        Path(path).write_text(json.dumps(self.as_dict(), indent=1))
+        write_text(path, json.dumps(self.as_dict(), indent=1))
         return str(path)
 
     def plot(self, path) -> str:
@@ -179,7 +179,8 @@ class StabilityMap:
                              f"{self.threshold:g} (relative, against {self.reference_run}"
                              f"{ref_note}){warned}", fontsize=7)
         fig.tight_layout(rect=(0, 0.03, 1, 0.93))
-        fig.savefig(path, dpi=110)
+        with writing(path):
+            fig.savefig(path, dpi=110)
         plt.close(fig)
         return str(path)
 

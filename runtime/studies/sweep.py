@@ -3,7 +3,10 @@
 ``sweep(target, {"Fa": [...], "tau": [...]})`` runs every combination of the grid's values (the
 first axis slowest) and returns a :class:`SweepResult`: a column per axis, per figure and its
 error estimate (``<figure>_error``), the runs' ``warnings`` and their steps, written as CSV
-(and Parquet with pyarrow) with a chart per figure.  The target is whatever
+(and Parquet with pyarrow) with a chart per figure.  Given a folder, it writes the CSV as the
+grid runs, every chunk's rows as soon as both passes of the chunk (the runs and their tighter
+twins) are in, so that a sweep stopped midway keeps whole rows with their estimates and
+warnings, and ``resume`` runs only the points the table lacks.  The target is whatever
 runtime/targets/resolve.py makes of the name: a model or a model file (the residual-vibration
 figures, fig. 4.11), the CAMSHAFT-1 study, a DYNACAM scene (its summary's figures; the grid's
 names are its [parameters]) or the beam follower (the tip's largest deflection; the names are
@@ -15,17 +18,23 @@ scheduler's address) the chunks go to a Dask cluster instead; every worker must 
 """
 from __future__ import annotations
 
+import csv
+import hashlib
 import math
+import os
 import sys
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from itertools import product
 from pathlib import Path
 
 import numpy as np
 
-from ..core.errors import CamdynInputError, out_folder
+from ..core.errors import CamdynInputError, OutFolderError
+from ..core.outdir import Growing, entry, note, out_folder, writing
+from ..core.signals import held
 from ..measure.contract import chart_note
-from ..targets.grid import default_jobs, run_chunk, run_grid
+from ..targets.grid import default_jobs, plan_grid, run_chunk
 
 __all__ = ["parse_axis", "parse_grid", "sweep", "SweepResult", "default_jobs"]
 
@@ -118,12 +127,6 @@ def _points(axes: dict) -> np.ndarray:
 
 # -- the result -------------------------------------------------------------------------------
 
-
-
-
-
-# -- the result -------------------------------------------------------------------------------
-
 @dataclass
 class SweepResult:
     """A sweep's table: ``columns[name]`` for every axis, figure and statistic, one row per
@@ -137,6 +140,7 @@ class SweepResult:
     where: str = "local"         # "local, K threads" or "dask <address>"
     stats: tuple = ("warnings", "n_steps")
     meta: dict = field(default_factory=dict)
+    files: list = field(default_factory=list)      # what sweep(..., out=) wrote
 
     def __len__(self) -> int:
         return len(next(iter(self.columns.values())))
@@ -165,16 +169,15 @@ class SweepResult:
                   if self.warned else "; no warnings")
         est = "" if self.meta.get("estimated", True) else "; no error estimates"
         figs = [f for f in self.figures if not f.endswith("_error")]
-        return (f"{len(self)} runs of {self.target} in {self.seconds:.2f} s ({self.where}); "
+        kept = self.meta.get("kept", 0)
+        runs = (f"{len(self)} runs" if not kept else
+                f"{len(self)} points ({kept} kept from the table, {len(self) - kept} run now)")
+        return (f"{runs} of {self.target} in {self.seconds:.2f} s ({self.where}); "
                 f"figures: {', '.join(figs)}{est}{warned}")
 
     def to_csv(self, path) -> Path:
-        path = Path(path)
-        names = self.names
-        with open(path, "w") as fh:
-            fh.write(",".join(names) + "\n")
-            for i in range(len(self)):
-                fh.write(",".join(_cell(self.columns[k][i]) for k in names) + "\n")
+        with writing(path) as path:
+            path.write_text(_head(self.names) + _lines(self.columns, self.names))
         return path
 
     def to_parquet(self, path) -> Path:
@@ -183,9 +186,9 @@ class SweepResult:
             import pyarrow.parquet as pq
         except ImportError:
             raise CamdynInputError("Parquet needs pyarrow: pip install pyarrow") from None
-        path = Path(path)
-        pq.write_table(pa.table({k: (self.columns[k].astype(str) if k == "warnings"
-                                     else self.columns[k]) for k in self.names}), path)
+        with writing(path) as path:
+            pq.write_table(pa.table({k: (self.columns[k].astype(str) if k == "warnings"
+                                         else self.columns[k]) for k in self.names}), path)
         return path
 
     def charts(self, out_dir) -> list[Path]:
@@ -198,8 +201,7 @@ class SweepResult:
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
 
-        out_dir = Path(out_dir)
-        out_dir.mkdir(parents=True, exist_ok=True)
+        out_dir = out_folder(out_dir)
         names = list(self.axes)
         shape = tuple(len(v) for v in self.axes.values())
         multi = [k for k, n in enumerate(shape) if n > 1]
@@ -249,8 +251,8 @@ class SweepResult:
                      + ("; shaded: ± the estimate" if err is not None
                         and np.any(np.isfinite(err)) else ""), fontsize=7)
             fig.tight_layout(rect=(0, 0.07, 1, 1))
-            path = out_dir / f"{fig_name}.png"
-            fig.savefig(path, dpi=110)
+            with writing(chart_file(out_dir, fig_name)) as path:
+                fig.savefig(path, dpi=110)
             plt.close(fig)
             written.append(path)
         return written
@@ -258,21 +260,41 @@ class SweepResult:
     def write(self, out_dir) -> list[Path]:
         """sweep.csv, sweep.parquet (with pyarrow) and the charts into ``out_dir``."""
         out_dir = out_folder(out_dir)
-        files = [self.to_csv(out_dir / "sweep.csv")]
+        return [self.to_csv(out_dir / TABLE)] + self._beside(out_dir)
+
+    def _beside(self, out_dir) -> list[Path]:
+        """What goes beside the table: sweep.parquet (with pyarrow) and the charts."""
+        files = []
         try:
             files.append(self.to_parquet(out_dir / "sweep.parquet"))
-        except CamdynInputError:
+        except OutFolderError:
+            raise
+        except CamdynInputError:          # no pyarrow: the CSV is the table
             pass
         return files + self.charts(out_dir)
 
 
 def _cell(v) -> str:
+    """A table cell that reads back to the last bit: 17 digits, a whole number as such,
+    empty for NaN and for no warnings."""
     if isinstance(v, str):
         return '"' + v.replace('"', '""') + '"' if v else ""
     v = float(v)
     if math.isnan(v):
         return ""
-    return f"{v:.17g}" if v != int(v) or abs(v) >= 1e15 else str(int(v))
+    if math.isinf(v) or v != int(v) or abs(v) >= 1e15:
+        return f"{v:.17g}"
+    return str(int(v)) if v or math.copysign(1.0, v) > 0 else "-0"
+
+
+def _head(names) -> str:
+    return ",".join(names) + "\n"
+
+
+def _lines(columns: dict, names) -> str:
+    """The table's rows of ``columns`` as CSV text."""
+    n = len(columns[names[0]])
+    return "".join(",".join(_cell(columns[k][i]) for k in names) + "\n" for i in range(n))
 
 
 def _item(v):
@@ -288,17 +310,25 @@ MODEL_RTOL = 1e-9
 def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: bool = True,
           t_end: float | None = None, method: str | None = None, rtol: float | None = None,
           law: str | None = None, step: float | None = None, chunk: int | None = None,
-          estimate: bool = True) -> SweepResult:
+          estimate: bool = True, out=None, resume: bool = False) -> SweepResult:
     """Run ``target`` (a name, or a target of runtime/targets) at every point of ``grid``
     ({name: values}); ``jobs`` threads (default: every core), or the Dask cluster ``dask``;
     a progress bar on stderr.  Every figure comes with its error estimate (the grid again
     one notch tighter: twice the time) unless ``estimate`` is False, and every point with
-    its run's warnings (runtime/measure/contract.py)."""
+    its run's warnings (runtime/measure/contract.py).
+
+    With ``out`` (a folder) the table is written there as the grid runs: sweep.csv, each
+    chunk's rows appended once both its passes are in, then sweep.parquet and the charts
+    (``.files``).  ``resume`` continues the table a stopped sweep of the same target, grid
+    and settings left there: its rows are kept, the others run, and the table ends as an
+    uninterrupted sweep's, to the last bit."""
     from ..targets.resolve import is_model, resolve
 
     if dask is not None and jobs is not None:
         raise CamdynInputError("--jobs and --dask: give one (threads here, or the Dask "
                                "cluster's workers)")
+    if resume and out is None:
+        raise CamdynInputError("--resume continues the table in --out: give the folder")
     if isinstance(target, str):
         if rtol is None and (method or "dp54") in ("dp54", "rodas4") and is_model(target):
             rtol = MODEL_RTOL
@@ -306,16 +336,110 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
     else:
         tgt = target
     axes = _axes(grid)
-    pts = _points(axes)
-    bar = _bar(len(pts) * (2 if estimate else 1), progress, tgt.name)
-    try:
-        mapper = _Dask(dask) if dask is not None else None
-        run = run_grid(tgt, tuple(axes), pts, estimate=estimate, jobs=jobs if dask is None else 1,
-                       chunk=chunk, bar=bar, mapper=mapper)
-    finally:
-        bar.close()
-    return SweepResult(tgt.name, axes, run.figures, run.columns, run.seconds, run.where,
-                       meta={"target": run.target, "tight": run.tight, "estimated": estimate})
+    plan = plan_grid(tgt, tuple(axes), _points(axes), estimate=estimate,
+                     jobs=jobs if dask is None else 1, chunk=chunk)
+    with _on_dask(dask) as mapper:
+        table = None if out is None else _Table(plan, out, resume)
+        kept = 0 if table is None else table.kept
+        bar = _bar((len(plan.points) - kept) * (2 if estimate else 1), progress, tgt.name)
+        try:
+            run = plan.run(kept, bar=bar, mapper=mapper,
+                           each=None if table is None else table.add)
+        finally:
+            bar.close()
+            if table is not None:
+                table.close()
+    columns = run.columns
+    if kept:
+        columns = {k: np.concatenate([table.rows[k], v]) for k, v in columns.items()}
+    res = SweepResult(tgt.name, axes, run.figures, columns, run.seconds, run.where,
+                      meta={"target": run.target, "tight": run.tight, "estimated": estimate,
+                            "kept": kept})
+    if table is not None:
+        res.files = [table.path] + res._beside(table.path.parent)
+    return res
+
+
+TABLE = "sweep.csv"
+"""The sweep's table in its folder."""
+
+
+def chart_file(out_dir, figure: str) -> Path:
+    """Where the chart of ``figure`` goes."""
+    return Path(out_dir) / f"{figure}.png"
+
+
+class _Table:
+    """sweep.csv written as the grid runs: the head, then every chunk's rows in the grid's
+    order (runtime/core/outdir.py Growing: each chunk whole, flushed and recorded as
+    camdyn's, under a key of the sweep's target, settings and grid, which --resume must
+    find again); and what it holds so far, for the line a stopped sweep ends with."""
+
+    def __init__(self, plan, out, resume: bool):
+        charts = [chart_file("", f).name for f in plan.figures if not f.endswith("_error")]
+        folder = out_folder(out, files=["sweep.parquet", *charts])    # before the runs
+        self.path = folder / TABLE
+        self.names = [*plan.names, *plan.figures, "warnings", "n_steps"]
+        self.total = len(plan.points)
+        key = _key(plan)
+        self.rows = None
+        if resume and os.path.lexists(self.path):
+            self.rows = _kept(self.path, self.names, key, plan)
+        self.kept = 0 if self.rows is None else len(self.rows[self.names[0]])
+        with held():
+            self.file = Growing(self.path, "" if self.rows is not None else _head(self.names),
+                                append=self.rows is not None, about=key)
+            self._note()
+
+    def add(self, columns: dict) -> None:
+        with held():            # the rows and the line saying how many: both, or neither
+            self.file.add(_lines(columns, self.names))
+            self.kept += len(columns[self.names[0]])
+            self._note()
+
+    def _note(self) -> None:
+        note(f"{self.kept} of {self.total} points kept in {self.path}"
+             + (" (--resume continues)" if self.kept < self.total else ""))
+
+    def close(self) -> None:
+        self.file.close()
+
+
+def _key(plan) -> str:
+    """The sweep a table belongs to: its target as fitted to the grid (model or scene,
+    method, tolerance or step, law, the runs' end), the tighter twin (or none), the axes and
+    every point."""
+    h = hashlib.sha256(repr((plan.target, plan.tight, plan.names)).encode())
+    h.update(np.ascontiguousarray(plan.points).tobytes())
+    return f"sweep {h.hexdigest()}"
+
+
+def _kept(path: Path, names: list, key: str, plan) -> dict:
+    """The columns of the rows a stopped sweep left in ``path``, for --resume: only from a
+    table camdyn wrote for this very sweep and nobody changed since."""
+    found = entry(path)
+    if found is None:
+        raise CamdynInputError(f"argument --resume: {path} was not written by camdyn, or was "
+                               "changed since; drop --resume to start afresh (--overwrite "
+                               "replaces it)")
+    other = CamdynInputError(f"argument --resume: {path} is the table of another sweep "
+                             "(target, grid, method, tolerance, t_end or error estimate); give "
+                             "the command that wrote it, or drop --resume to start afresh")
+    if found.get("about") != key:
+        raise other
+    with open(path, newline="") as fh:
+        rows = list(csv.reader(fh))
+    body = rows[1:]
+    if not rows or rows[0] != names or len(body) > len(plan.points) \
+            or any(len(r) != len(names) for r in body):
+        raise other
+    cols = {k: (np.array([r[j] for r in body], dtype=object) if k == "warnings" else
+                np.array([float(r[j]) if r[j] else math.nan for r in body]))
+            for j, k in enumerate(names)}
+    done = np.column_stack([cols[k] for k in plan.names]) if body else plan.points[:0]
+    if not np.array_equal(done, plan.points[:len(body)]):
+        raise other
+    return cols
 
 
 class _NoBar:
@@ -335,19 +459,13 @@ def _bar(total: int, progress: bool, label: str):
                 mininterval=0.2)
 
 
-class _Dask:
-    """Run the chunks on a Dask cluster (runtime/targets/grid.py's mapper)."""
-
-    def __init__(self, dask):
-        self.dask = dask
-        self.where = "dask"
-
-    def __call__(self, todo, names, bar) -> list:
-        out, self.where = _on_dask(self.dask, todo, names, bar)
-        return out
-
-
-def _on_dask(dask, todo, names, bar) -> tuple[list, str]:
+@contextmanager
+def _on_dask(dask):
+    """The chunks' mapper on the Dask cluster ``dask`` (a Client, a cluster, or a
+    scheduler's address), connected before anything is written; None without one."""
+    if dask is None:
+        yield None
+        return
     try:
         from distributed import Client
     except ImportError:
@@ -365,14 +483,30 @@ def _on_dask(dask, todo, names, bar) -> tuple[list, str]:
         client = Client(dask)
         own = True
     try:
-        futures = client.map(run_chunk, [t for t, _ in todo], [names] * len(todo),
-                             [p for _, p in todo], pure=False)
-        out = []
-        for fut, (_, piece) in zip(futures, todo):
-            out.append(fut.result())
-            bar.update(len(piece))
-        where = f"dask {client.scheduler.address}"
+        yield _Dask(client)
     finally:
         if own:
             client.close()
-    return out, where
+
+
+class _Dask:
+    """Run the chunks on a Dask cluster (runtime/targets/grid.py's mapper), their results
+    yielded in order; stopped early, the chunks not gathered yet are cancelled."""
+
+    def __init__(self, client):
+        self.client = client
+        self.where = f"dask {client.scheduler.address}"
+
+    def __call__(self, todo, names, bar):
+        futures = self.client.map(run_chunk, [t for t, _ in todo], [names] * len(todo),
+                                  [p for _, p in todo], pure=False)
+        finished = False
+        try:
+            for fut, (_, piece) in zip(futures, todo):
+                out = fut.result()
+                bar.update(len(piece))
+                yield out
+            finished = True
+        finally:
+            if not finished:
+                self.client.cancel(futures)

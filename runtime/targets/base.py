@@ -292,9 +292,10 @@ class Target:
         ``out_dir``; returns report.json's record with ``lines``, the text to print."""
         import json
 
-        from ..core.errors import out_folder
+        from ..core.outdir import claim, out_folder, write_text
         from ..measure.contract import answer
 
+        claim(out_dir / "report.json")          # the user's own report: refused before the run
         a = answer(self, estimate=estimate, progress=progress)
         out = a.as_dict()
         out_folder(out_dir)
@@ -303,6 +304,6 @@ class Target:
             out["figures"] = files
         record = {"kind": self.kind, "scene": self.name, "title": self.title, **out}
         path = out_dir / "report.json"
-        path.write_text(json.dumps(record, indent=1))
+        write_text(path, json.dumps(record, indent=1))
         record["lines"] = self.table(out) + [f"report: {path}"]
         return record

@@ -170,6 +170,11 @@ class BeamTarget(Target):
                        read=lambda run: {"max_abs_tip_deflection": beam.tip_max(run)},
                        kind=self.kind, law=case.law, y0=beam.initial_state(case, model))
 
+    @staticmethod
+    def figure_files() -> list:
+        """The names of the paper's figures :meth:`paper_figures` writes."""
+        return [f"{name}.png" for name in beam.FIGURES]
+
     def paper_figures(self, out_dir, progress=None, estimate: bool = True) -> list:
         """PNG files of the paper's figs 4-9 in ``out_dir``: the tip deflection v_E against the
         cam angle Omega t (deg), one field of this case varied per figure (beam.FIGURES).
@@ -181,12 +186,13 @@ class BeamTarget(Target):
         import matplotlib.pyplot as plt
         import numpy as np
 
-        from ..core.errors import out_folder
+        from ..core.outdir import out_folder, writing
         from ..measure.contract import answer, chart_note, plus_minus
 
-        out = out_folder(out_dir)
+        out = out_folder(out_dir, files=self.figure_files())
         written = []
-        for name, (field, values, label) in beam.FIGURES.items():
+        for (name, (field, values, label)), file in zip(beam.FIGURES.items(),
+                                                         self.figure_files()):
             fig, ax = plt.subplots(figsize=(8, 4.4))
             tips, errors, warnings = [], [], []
             for v in values:
@@ -209,8 +215,9 @@ class BeamTarget(Target):
             fig.text(0.01, 0.01, chart_note({"max |v_E|": (tips, errors)}, warnings),
                      fontsize=7)
             fig.tight_layout(rect=(0, 0.06, 1, 1))
-            path = out / f"{name}.png"
-            fig.savefig(path, dpi=110)
+            path = out / file
+            with writing(path):
+                fig.savefig(path, dpi=110)
             plt.close(fig)
             written.append(str(path))
         return written

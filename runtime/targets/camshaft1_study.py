@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.outdir import out_folder, writing, write_text
 from ..measure import references
 from ..measure.contract import answer, chart_note, quotient
 from ..measure.envelope import envelope, envelope_error, tau_grid
@@ -38,6 +39,10 @@ def load_scene(path: str | None = None) -> dict:
     data, where = scene_files.read("default" if path is None else path)
     scene_files.expect_kind(data, where, scene_files.STUDY)
     return scene_files.check_study(data, where)
+
+
+FILES = ("report.md", "report.json", "response.png", "graphs.png", "envelopes.csv")
+"""What the study writes into its folder."""
 
 
 @dataclass(frozen=True)
@@ -87,7 +92,7 @@ class StudyTarget(ModelTarget):
         import matplotlib.pyplot as plt
 
         say = progress or (lambda msg: None)
-        out_dir.mkdir(parents=True, exist_ok=True)
+        out_dir = out_folder(out_dir, files=FILES)     # a file of the user's: refused now
         t_start = time.perf_counter()
         scene = self.scene
         resp, graphs = scene["study"]["response"], scene["study"]["graphs"]
@@ -124,7 +129,8 @@ class StudyTarget(ModelTarget):
             {k: ([d[k] for d in resp_rows], [d[f"{k}_error"] for d in resp_rows])
              for k in RESIDUAL_FIGURES[:3]}, warnings), fontsize=7)
         fig.tight_layout(rect=(0, 0.05, 1, 1))
-        fig.savefig(out_dir / "response.png", dpi=120)
+        with writing(out_dir / "response.png") as path:
+            fig.savefig(path, dpi=120)
         plt.close(fig)
 
         # fig. 4.11: graphs against tau, uniform in 1/tau so that every tuning dip of (3.5) is
@@ -182,7 +188,8 @@ class StudyTarget(ModelTarget):
             {k: (cols[k], cols[f"{k}_error"]) for k in keys}, cols["warnings"],
             points=len(pts)), fontsize=7)
         fig.tight_layout(rect=(0, 0.06, 1, 1))
-        fig.savefig(out_dir / "graphs.png", dpi=120)
+        with writing(out_dir / "graphs.png") as path:
+            fig.savefig(path, dpi=120)
         plt.close(fig)
 
         summary["graphs"] = {"tau": taus.tolist(), "rows": {str(Fa): v for Fa, v in rows.items()}}
@@ -191,7 +198,7 @@ class StudyTarget(ModelTarget):
                                               "maxima": e.value.tolist()}
                                           for k, e in env.items()}
                                 for Fa, env in envelopes.items()}
-        with open(out_dir / "envelopes.csv", "w") as fh:
+        with writing(out_dir / "envelopes.csv") as path, open(path, "w") as fh:
             fh.write("Fa,tau,U0,U0_error,U0_envelope,U0_envelope_error,U0dd,U0dd_error,"
                      "U0dd_envelope,U0dd_envelope_error,warnings\n")
             for j, (Fa, vals) in enumerate(rows.items()):
@@ -219,12 +226,10 @@ class StudyTarget(ModelTarget):
         summary["U0_ratio_Fa2_Fa0_error"] = ratio_error
         summary["warnings"] = warnings
         summary["elapsed_seconds"] = time.perf_counter() - t_start
-        (out_dir / "report.json").write_text(json.dumps(summary, indent=1, default=_json))
-        (out_dir / "report.md").write_text(self._markdown(summary))
+        write_text(out_dir / "report.json", json.dumps(summary, indent=1, default=_json))
+        write_text(out_dir / "report.md", self._markdown(summary))
         say(f"done in {summary['elapsed_seconds']:.1f} s")
-        summary["files"] = [str(out_dir / f) for f in ("report.md", "report.json",
-                                                       "response.png", "graphs.png",
-                                                       "envelopes.csv")]
+        summary["files"] = [str(out_dir / f) for f in FILES]
         return summary
 
     def _markdown(self, summary) -> str:

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.errors import out_folder
+from ..core.outdir import out_folder, writing
 from ..measure.contract import chart_note
 from .dynacam import nominal_T
 from .scene_files import DynacamScene
@@ -26,10 +26,11 @@ NOTED = {"Xdd": ("Xdd_min_rise", "Xdd_max_rise", "U0dd", "U0"),
 """The headline figures each diagram shows, noted with their estimates beneath it."""
 
 
-def plot(scene: DynacamScene, res, summary: dict, out_dir) -> list:
+def plot(scene: DynacamScene, res, summary: dict, out_dir, keys=None) -> list:
     """The thesis's diagrams (figs 7.11, 7.12, 7.15, 7.16) as PNG files in ``out_dir``, each
     with a footnote: the figures it shows with their estimates (``summary`` is the answer,
-    ``<figure>_error`` beside each figure) and the run's warnings."""
+    ``<figure>_error`` beside each figure) and the run's warnings; only those of ``keys``
+    (of DIAGRAMS) if given."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -40,6 +41,8 @@ def plot(scene: DynacamScene, res, summary: dict, out_dir) -> list:
     names = res.output_names
     written = []
     for key, ylabel, title in DIAGRAMS:
+        if keys is not None and key not in keys:
+            continue
         if key == "gaps":
             series = [(n, res[n]) for n in ("gear_gap", "roller_gap") if n in names]
         else:
@@ -71,7 +74,8 @@ def plot(scene: DynacamScene, res, summary: dict, out_dir) -> list:
         fig.text(0.01, 0.01, chart_note(shown, summary.get("warnings", [])), fontsize=7)
         fig.tight_layout(rect=(0, 0.06 if len(series) == 1 else 0.035, 1, 1))
         path = out_dir / f"{Path(scene.path).stem}_{key}.png"
-        fig.savefig(path, dpi=110)
+        with writing(path):
+            fig.savefig(path, dpi=110)
         plt.close(fig)
         written.append(str(path))
     return written

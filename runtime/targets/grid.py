@@ -5,7 +5,9 @@ A chunk is ``target.run_points(names, points)``: a model's chunk with an adaptiv
 in compiled code holding no GIL (runtime/engine/finder.pyx), so threads run chunks side by
 side on as many cores (threads rather than processes: no pickling, no start-up, one copy of
 the model); a scene's chunk runs point by point, its threads overlapping only in the compiled
-integration.  With the error estimate, every point runs again one notch tighter.
+integration.  With the error estimate, every point runs again one notch tighter; the two
+passes of a chunk go out side by side, so that its rows are whole as soon as both are in, and
+the rows come back in the grid's order (a sweep writes its table as they come).
 """
 from __future__ import annotations
 
@@ -20,6 +22,7 @@ from ..core.errors import CamdynInputError
 from ..measure.contract import grid_columns
 from .base import Batch
 
+
 def default_jobs() -> int:
     """All cores this process may use."""
     try:
@@ -33,34 +36,31 @@ def run_chunk(target, names: tuple, points: np.ndarray) -> Batch:
     return target.run_points(names, points)
 
 
-def _concat(batches: list) -> Batch:
-    return Batch(np.concatenate([b.figures for b in batches]),
-                 np.concatenate([b.sampling for b in batches]),
-                 [w for b in batches for w in b.warnings],
-                 np.concatenate([b.steps for b in batches]))
-
-
 class _Threads:
-    """Run chunks on ``jobs`` threads, in order, a progress bar updated as they finish."""
+    """Run chunks on ``jobs`` threads, their results yielded in order, a progress bar updated
+    as they finish.  Stopped early (Ctrl-C, a run that failed), the chunks not yet started
+    are dropped and those running finish."""
 
     def __init__(self, jobs: int):
         self.jobs = jobs
         self.where = f"local, {jobs} thread{'s' if jobs > 1 else ''}"
 
-    def __call__(self, todo, names, bar) -> list:
+    def __call__(self, todo, names, bar):
         if self.jobs == 1 or len(todo) == 1:
-            out = []
             for tgt, piece in todo:
-                out.append(run_chunk(tgt, names, piece))
+                out = run_chunk(tgt, names, piece)
                 bar.update(len(piece))
-            return out
-        with ThreadPoolExecutor(max_workers=self.jobs) as pool:
+                yield out
+            return
+        pool = ThreadPoolExecutor(max_workers=self.jobs)
+        try:
             futures = [pool.submit(run_chunk, tgt, names, piece) for tgt, piece in todo]
-            out = []
             for fut, (_, piece) in zip(futures, todo):
-                out.append(fut.result())
+                out = fut.result()
                 bar.update(len(piece))
-        return out
+                yield out
+        finally:
+            pool.shutdown(wait=True, cancel_futures=True)
 
 
 class NoBar:
@@ -91,12 +91,79 @@ class GridRun:
         return int(sum(1 for w in self.columns["warnings"] if w))
 
 
-def run_grid(target, names: tuple, points: np.ndarray, *, estimate: bool = True,
-             jobs: int | None = None, chunk: int | None = None, bar=None,
-             mapper=None) -> GridRun:
-    """Run ``target`` at every row of ``points`` (columns ``names``) and apply the answer
-    contract: the figures, their error estimates (NaN without ``estimate``) and warnings.
-    ``mapper(todo, names, bar) -> [Batch]`` runs the chunks (default: ``jobs`` threads)."""
+@dataclass
+class GridPlan:
+    """A grid checked and ready to run: the target fitted to every point (a run long enough
+    for the dwell every point needs, so that a part of the grid runs exactly as in the whole),
+    its twin one notch tighter (None without the estimate), the chunks' size and threads."""
+
+    target: object
+    tight: object
+    names: tuple
+    points: np.ndarray
+    size: int
+    jobs: int
+
+    @property
+    def figures(self) -> tuple:
+        """Every figure and its ``<figure>_error`` column, in the table's order."""
+        return tuple(k for k in self._no_rows() if k not in self.names
+                     and k not in ("warnings", "n_steps"))
+
+    def _no_rows(self) -> dict:
+        empty = np.empty((0, len(self.target.figure_names())))
+        none = Batch(empty, empty, [], np.empty(0))
+        return self.columns(self.points[:0], none, none if self.tight is not None else None)
+
+    def columns(self, points: np.ndarray, base: Batch, tight: Batch | None) -> dict:
+        """The table's columns for ``points`` from their runs (the answer contract row by
+        row, runtime/measure/contract.py grid_columns)."""
+        columns = {k: points[:, i].copy() for i, k in enumerate(self.names)}
+        errors = grid_columns(self.target, base, tight)
+        for k, f in enumerate(self.target.figure_names()):
+            columns[f] = base.figures[:, k]
+            if f"{f}_error" in errors:
+                columns[f"{f}_error"] = errors[f"{f}_error"]
+        columns["warnings"] = errors["warnings"]
+        columns["n_steps"] = np.asarray(base.steps, dtype=float)
+        return columns
+
+    def run(self, start: int = 0, *, bar=None, mapper=None, each=None) -> GridRun:
+        """Run the points from ``start`` on; both passes of a chunk (the runs and their
+        tighter twins) go out together, and ``each(columns)`` gets every chunk's rows in the
+        grid's order as soon as they are in (a sweep writes its table so)."""
+        rest = self.points[start:]
+        pieces = [rest[i:i + self.size] for i in range(0, len(rest), self.size)]
+        twins = [self.target] if self.tight is None else [self.target, self.tight]
+        todo = [(t, p) for p in pieces for t in twins]
+        mapper = mapper or _Threads(self.jobs)
+        started = time.perf_counter()
+        results = iter(mapper(todo, tuple(self.names), bar or NoBar()))
+        parts = []
+        try:
+            for piece in pieces:
+                base = next(results)
+                tight = next(results) if self.tight is not None else None
+                parts.append(self.columns(piece, base, tight))
+                if each is not None:
+                    each(parts[-1])
+        finally:
+            close = getattr(results, "close", None)
+            if close is not None:        # stopped early: the mapper drops what is not run
+                close()
+        seconds = time.perf_counter() - started
+        if not parts:
+            parts = [self._no_rows()]
+        columns = {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
+        return GridRun(self.target, self.tight, tuple(self.names), self.figures, columns,
+                       seconds, getattr(mapper, "where", "local"))
+
+
+def plan_grid(target, names: tuple, points: np.ndarray, *, estimate: bool = True,
+              jobs: int | None = None, chunk: int | None = None) -> GridPlan:
+    """Check a grid before any run (names, ranges, the window every point needs) and plan
+    it: ``target`` at every row of ``points`` (columns ``names``), in chunks of ``chunk``
+    points (default: the target's) on ``jobs`` threads (default: every core)."""
     points = np.atleast_2d(np.asarray(points, dtype=float))
     target = target.fit_points(tuple(names), points)
     jobs = default_jobs() if jobs is None else jobs
@@ -111,25 +178,15 @@ def run_grid(target, names: tuple, points: np.ndarray, *, estimate: bool = True,
         if tight is None:
             raise CamdynInputError(f"rtol={target.method().rtol:g} is the tightest there is: no "
                                    "error estimate (give a larger rtol)")
-    pieces = [points[i:i + size] for i in range(0, len(points), size)]
-    todo = [(t, p) for t in ([target] if tight is None else [target, tight]) for p in pieces]
-    mapper = mapper or _Threads(jobs)
-    bar = bar or NoBar()
-    start = time.perf_counter()
-    results = mapper(todo, tuple(names), bar)
-    seconds = time.perf_counter() - start
-    base = _concat(results[:len(pieces)])
-    tight_batch = _concat(results[len(pieces):]) if tight is not None else None
-    columns = {k: points[:, i].copy() for i, k in enumerate(names)}
-    order = []
-    errors = grid_columns(target, base, tight_batch)
-    for k, f in enumerate(target.figure_names()):
-        columns[f] = base.figures[:, k]
-        order.append(f)
-        if f"{f}_error" in errors:
-            columns[f"{f}_error"] = errors[f"{f}_error"]
-            order.append(f"{f}_error")
-    columns["warnings"] = errors["warnings"]
-    columns["n_steps"] = base.steps
-    return GridRun(target, tight, tuple(names), tuple(order), columns, seconds,
-                   getattr(mapper, "where", "local"))
+    return GridPlan(target, tight, tuple(names), points, size, jobs)
+
+
+def run_grid(target, names: tuple, points: np.ndarray, *, estimate: bool = True,
+             jobs: int | None = None, chunk: int | None = None, bar=None,
+             mapper=None) -> GridRun:
+    """Run ``target`` at every row of ``points`` (columns ``names``) and apply the answer
+    contract: the figures, their error estimates (NaN without ``estimate``) and warnings.
+    ``mapper(todo, names, bar)`` runs the chunks and yields their batches in order (default:
+    ``jobs`` threads)."""
+    return plan_grid(target, names, points, estimate=estimate, jobs=jobs,
+                     chunk=chunk).run(bar=bar, mapper=mapper)

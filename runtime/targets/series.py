@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.errors import out_folder
+from ..core.outdir import out_folder, writing
 from ..measure.contract import chart_note
 
 
@@ -32,7 +32,7 @@ def write_series(answer, out_dir) -> list:
                else np.full(T.shape, np.nan)) for n in names}
     csv = out / f"{m.name}.csv"
     header = [tname] + [x for n in names for x in (n, f"{n}_error")]
-    with open(csv, "w") as fh:
+    with writing(csv), open(csv, "w") as fh:
         fh.write(",".join(header) + "\n")
         for i in range(T.size):
             cells = [repr(float(T[i]))]
@@ -55,6 +55,7 @@ def write_series(answer, out_dir) -> list:
              fontsize=6.5, wrap=True)
     fig.tight_layout(rect=(0, 0.6 / (1.8 * len(names) + 1.0), 1, 1))
     png = out / f"{m.name}.png"
-    fig.savefig(png, dpi=110)
+    with writing(png):
+        fig.savefig(png, dpi=110)
     plt.close(fig)
     return [str(csv), str(png)]

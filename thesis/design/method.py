@@ -26,6 +26,7 @@ import numpy as np
 
 from camdyn.runtime.core import laws
 from camdyn.runtime.core.errors import CamdynInputError, SimulationError
+from camdyn.runtime.core.outdir import write_text, writing
 from camdyn.runtime.measure.contract import chart_note
 from camdyn.thesis.theory import examples as ex
 
@@ -156,16 +157,18 @@ def design(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None,
     return out
 
 
+FILES = ("design.json", "design.png")
+"""What a design writes into its folder: the answer and the chart."""
+
+
 def chart_file(out) -> Path:
     """Where the chart of a design goes in the folder ``out``."""
-    return Path(out) / "design.png"
+    return Path(out) / FILES[1]
 
 
 def write(result: dict, out) -> Path:
     """design.json in the folder ``out``: the answer as `camdyn design --json` prints it."""
-    path = Path(out) / "design.json"
-    path.write_text(json.dumps(result, indent=1, default=float))
-    return path
+    return write_text(Path(out) / FILES[0], json.dumps(result, indent=1, default=float))
 
 
 def chart_window(tau: float, tau_max: float | None) -> tuple[float, float]:
@@ -225,9 +228,8 @@ def chart(d: dict, graphs: Graphs, M: Machine, path) -> str:
         shown["largest tau"] = (lt["tau_max"], lt.get("tau_max_error"))
     fig.text(0.01, 0.01, chart_note(shown, d.get("warnings", [])), fontsize=7)
     fig.tight_layout(rect=(0, 0.06, 1, 1))
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=110)
+    with writing(path) as path:
+        fig.savefig(path, dpi=110)
     plt.close(fig)
     return str(path)
 

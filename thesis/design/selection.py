@@ -24,11 +24,11 @@ from __future__ import annotations
 import csv
 import math
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import numpy as np
 
-from camdyn.runtime.core.errors import CamdynInputError, SimulationError, out_folder
+from camdyn.runtime.core.errors import CamdynInputError, SimulationError
+from camdyn.runtime.core.outdir import out_folder, writing
 from camdyn.runtime.measure.contract import chart_note
 from camdyn.runtime.measure.envelope import envelope, envelope_error, tau_grid
 from camdyn.runtime.targets.grid import run_grid
@@ -211,7 +211,8 @@ def chart(rows: list[dict], path) -> str:
                                             for w in r.get("warnings", ())])
              + "; the other columns: App. 2's closed forms", fontsize=7)
     fig.tight_layout(rect=(0, 0.05, 1, 1))
-    fig.savefig(path, dpi=110)
+    with writing(path):
+        fig.savefig(path, dpi=110)
     plt.close(fig)
     return str(path)
 
@@ -253,12 +254,16 @@ def write_csv(rows: list[dict], columns, path) -> str:
     """One row per law: every column, ``<column>_error`` beside those a run gives, and the
     law's warnings."""
     keys = [x for k, _ in columns for x in ((k, f"{k}_error") if k in ESTIMATED else (k,))]
-    with open(path, "w", newline="") as fh:
+    with writing(path), open(path, "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(["law"] + keys + ["warnings"])
         for r in rows:
             w.writerow([r["law"]] + [r.get(k) for k in keys] + ["; ".join(r.get("warnings", ()))])
     return str(path)
+
+
+FILES = ("laws_selection.csv", "laws_selection.png")
+"""What a selection writes into its folder."""
 
 
 def select(tau, Fa=None, theta=None, stroke=None, base_radius=None, roller_radius=None,
@@ -268,7 +273,7 @@ def select(tau, Fa=None, theta=None, stroke=None, base_radius=None, roller_radiu
     given; with ``out``, laws_selection.csv and laws_selection.png there."""
     if tau is None:
         raise CamdynInputError("argument --tau: required with --fa (0 < tau < 0.99)")
-    out_folder(out)
+    out_folder(out, files=FILES)
     geo = (stroke, base_radius, roller_radius)
     if any(g is not None for g in geo) and not all(g is not None for g in geo):
         raise CamdynInputError("arguments --stroke, --base-radius, --roller-radius: give all "
@@ -280,8 +285,6 @@ def select(tau, Fa=None, theta=None, stroke=None, base_radius=None, roller_radiu
     cols = [(k, t) for k, t in COLUMNS if any(r.get(k) is not None for r in rows)]
     result = Selection(tau, Fa, rows, cols)
     if out:
-        folder = Path(out)
-        folder.mkdir(parents=True, exist_ok=True)
-        result.files = [write_csv(rows, cols, folder / "laws_selection.csv"),
-                        chart(rows, folder / "laws_selection.png")]
+        folder = out_folder(out)
+        result.files = [write_csv(rows, cols, folder / FILES[0]), chart(rows, folder / FILES[1])]
     return result

@@ -24,7 +24,8 @@ import numpy as np
 
 from camdyn.generated import camlaws
 from camdyn.runtime.core import laws
-from camdyn.runtime.core.errors import CamdynInputError, out_folder
+from camdyn.runtime.core.errors import CamdynInputError
+from camdyn.runtime.core.outdir import out_folder, writing
 from camdyn.runtime.measure.contract import answer, chart_note
 from camdyn.runtime.targets import scene_files
 from camdyn.runtime.targets.dynacam_scene import DynacamTarget
@@ -93,9 +94,7 @@ def best(rows: list[dict], figure: str = "U0dd") -> dict:
 
 
 def write_csv(rows: list[dict], path) -> Path:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    with path.open("w", newline="") as fh:
+    with writing(path) as path, path.open("w", newline="") as fh:
         w = csv.DictWriter(fh, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
@@ -131,9 +130,8 @@ def write_png(rows: list[dict], name: str, title: str, path, own=None) -> Path:
          for f in ("U0dd", "speed_variation_max")},
         [r.get("warnings", "") for r in rows], points=len(rows)), fontsize=7)
     fig.tight_layout(rect=(0, 0.06, 1, 1))
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=110)
+    with writing(path) as path:
+        fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
 
@@ -181,6 +179,10 @@ def parse_values(law: str, text: str) -> list:
     return values
 
 
+FILES = ("laws_sweep.csv", "laws_sweep.png")
+"""What a shape sweep writes into its folder."""
+
+
 def sweep_scene(scene: str, law: str | None = None, values: str | None = None,
                 n: int | None = None, errors: bool = True, out=None, progress=None) -> Sweep:
     """`camdyn laws --sweep SCENE`: the built-in or TOML scene ``scene`` run over ``values``
@@ -188,7 +190,7 @@ def sweep_scene(scene: str, law: str | None = None, values: str | None = None,
     (default the modified sine); with ``out``, laws_sweep.csv and laws_sweep.png there."""
     law = law or "modified-sine"
     sc = scene_files.load(scene)
-    out_folder(out)
+    out_folder(out, files=FILES)
     grid_values = None if values is None else parse_values(law, values)
     rows = sweep(sc, law, grid_values, 9 if n is None else n, errors=errors, progress=progress)
     name = shape_parameter(law)["name"]
@@ -196,7 +198,7 @@ def sweep_scene(scene: str, law: str | None = None, values: str | None = None,
     if out:
         folder = Path(out)
         own = sc.theta if sc.law == law else None
-        result.files = [str(write_csv(rows, folder / "laws_sweep.csv")),
+        result.files = [str(write_csv(rows, folder / FILES[0])),
                         str(write_png(rows, name, f"{sc.title}: {law}, {name} swept",
-                                      folder / "laws_sweep.png", own))]
+                                      folder / FILES[1], own))]
     return result

@@ -10,7 +10,9 @@ import time
 from dataclasses import dataclass
 from pathlib import Path
 
-from camdyn.runtime.core.errors import CamdynInputError, out_folder
+from camdyn.runtime.core.errors import CamdynInputError, OutFolderError
+from camdyn.runtime.core.outdir import note, out_folder
+from camdyn.runtime.core.signals import held
 from camdyn.thesis.checks import suite
 from camdyn.thesis.registry import FIGURES
 
@@ -73,12 +75,15 @@ def checks_by_key(figures: list[Figure]) -> dict:
 
 def build_one(fig: Figure, out_dir, quick: bool, by_key: dict) -> Built:
     """Draw one figure and evaluate its claims; a builder that fails is reported in
-    Built.error (the index shows it), not raised, so the other figures are still built."""
+    Built.error (the index shows it), not raised, so the other figures are still built; but
+    an --out that cannot take its pictures ends the build."""
     b = Built(fig)
     t0 = time.perf_counter()
     if fig.build is not None:
         try:
             b.pngs = [str(p) for p in fig.build(Path(out_dir), quick)]
+        except OutFolderError:
+            raise
         except Exception as exc:
             b.error = f"{type(exc).__name__}: {exc}"
     b.claims = [evaluate(cl, by_key) for cl in fig.claims]
@@ -112,18 +117,27 @@ class Drawing:
 
 def make(only, out, quick: bool = False, progress: bool = True) -> Drawing:
     """`camdyn figures`: the figures whose ids are in ``only`` (None: all; see :func:`select`)
-    drawn into the folder ``out`` with the index page beside them; ``progress``: a bar on
-    stderr."""
+    drawn into the folder ``out`` with the index page beside them, written again after each
+    figure, so that a build stopped midway leaves the index of what it drew; ``progress``: a
+    bar on stderr."""
     from tqdm import tqdm
 
     todo = select(registry(), only)
+    by_key = checks_by_key(todo)
     out = out_folder(out)
     t0 = time.perf_counter()
-    by_key = checks_by_key(todo)
     built = []
+
+    def page() -> str:
+        with held():            # the index and the line saying what it lists: both, or neither
+            path = index.write(built, out, time.perf_counter() - t0, quick, len(todo))
+            note(f"{len(built)} of {len(todo)} figures drawn, listed in {path}")
+        return path
+
+    last = page()
     with tqdm(todo, file=sys.stderr, unit="fig", desc="figures", disable=not progress) as bar:
         for fig in bar:
             bar.set_postfix_str(fig.id)
             built.append(build_one(fig, out, quick, by_key))
-    seconds = time.perf_counter() - t0
-    return Drawing(built, seconds, index.write(built, out, seconds, quick))
+            last = page()
+    return Drawing(built, time.perf_counter() - t0, last)

@@ -3,14 +3,13 @@
 from __future__ import annotations
 
 import json
-import shutil
 from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
 
 from .figure import Claim, Figure, Trend
-from .plotting import plt, save
+from .plotting import copy, plt, save
 
 QUICK_GRAPHS = {"n_tau": 48, "Fa": [0.0, 0.5, 2.0]}
 """--quick: a coarser tau grid (3 points per tuning dip) and three Fa of the six."""
@@ -35,9 +34,7 @@ def study(out_dir: str, quick: bool) -> dict:
 
 def _fig4_10(out_dir, quick):
     data = study(str(out_dir), quick)
-    path = Path(out_dir) / "fig4_10.png"
-    shutil.copyfile(Path(data["folder"]) / "response.png", path)
-    return [str(path)]
+    return [copy(Path(data["folder"]) / "response.png", Path(out_dir) / "fig4_10.png")]
 
 
 def _graphs(data):

@@ -8,7 +8,6 @@ the command's own function (as the ones here do), or, until it exists, ``build=N
 ``not_reproduced`` saying what is missing."""
 from __future__ import annotations
 
-import shutil
 from functools import lru_cache
 from pathlib import Path
 
@@ -18,15 +17,14 @@ from camdyn.thesis.runcache import cached_runs
 
 from ..checks.check import Check
 from .figure import Claim, Figure
+from .plotting import copy
 
 
 def _envelopes(out_dir, quick):
     from .ch4 import study
 
     data = study(str(out_dir), quick)
-    path = Path(out_dir) / "envelopes.png"
-    shutil.copyfile(Path(data["folder"]) / "graphs.png", path)
-    return [str(path)]
+    return [copy(Path(data["folder"]) / "graphs.png", Path(out_dir) / "envelopes.png")]
 
 
 def _laws(out_dir, quick):
@@ -105,7 +103,7 @@ def _design_result(out_dir=None) -> dict:
     from ..design import method as ds
 
     if "result" not in _DESIGN or out_dir is not None:
-        chart = None if out_dir is None else Path(out_dir) / "design.png"
+        chart = None if out_dir is None else ds.chart_file(out_dir)
         _DESIGN["result"] = ds.design(**_INDEXING, check=False, chart_path=chart)
     return _DESIGN["result"]
 
@@ -140,9 +138,7 @@ def _sweep(out_dir, quick):
     keep = []
     for p in paths:                       # the index shows U0 and the least deceleration
         if p.stem in ("U0", "Xdd_min_rise"):
-            dst = Path(out_dir) / f"sweep_{p.stem}.png"
-            shutil.copyfile(p, dst)
-            keep.append(str(dst))
+            keep.append(copy(p, Path(out_dir) / f"sweep_{p.stem}.png"))
     return keep
 
 

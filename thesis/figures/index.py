@@ -10,6 +10,8 @@ from pathlib import Path
 from jinja2 import Environment
 from markupsafe import Markup, escape
 
+from camdyn.runtime.core.outdir import write_text
+
 from .figure import GROUPS
 
 TEMPLATE = """<!doctype html>
@@ -31,7 +33,9 @@ td, th { border: 1px solid #ddd; padding: 2px 6px; text-align: left; vertical-al
 <p>{{ n_built }} figures drawn, {{ n_missing }} not reproduced; {{ n_claims }} statements
 computed now against the printed values: {{ n_passed }} reproduced{% if n_failed %},
 <span class="FAIL">{{ n_failed }} not</span>{% endif %}. Built in {{ seconds }} s{% if quick %}
-(<b>--quick</b>: coarser grids){% endif %}. "errata": the printed value is a misprint and the
+(<b>--quick</b>: coarser grids){% endif %}.{% if chosen > n_listed %}
+<b>This page lists {{ n_listed }} of the {{ chosen }} figures chosen: it was written before
+the others were drawn (the build was stopped, or is still running).</b>{% endif %} "errata": the printed value is a misprint and the
 value the thesis's own formulas give is reproduced (see <code>camdyn check</code>).</p>
 <p>Every computed value carries its error estimate, "value ± e": e = |v - v'|, v' the same
 value computed again with every run one notch tighter (rtol/10, or half the step and
@@ -64,8 +68,9 @@ def _code(text: str) -> Markup:
     return Markup(re.sub(r"`([^`]+)`", r"<code>\1</code>", str(escape(text))))
 
 
-def write(built: list, out_dir, seconds: float, quick: bool) -> str:
-    """Write out_dir/index.html for ``built`` (figures.build's list); returns its path."""
+def write(built: list, out_dir, seconds: float, quick: bool, chosen: int | None = None) -> str:
+    """Write out_dir/index.html for ``built`` (figures.build's list, the first of ``chosen``
+    figures while a build is under way); returns its path."""
     out_dir = Path(out_dir)
     for b in built:
         b.pics = [os.path.relpath(p, out_dir) for p in b.pngs]
@@ -78,7 +83,6 @@ def write(built: list, out_dir, seconds: float, quick: bool) -> str:
         n_missing=sum(not b.pngs for b in built),
         n_claims=len(claims), n_passed=sum(c.passed for c in claims),
         n_failed=sum(not c.passed for c in claims), n_wide=sum(c.wide for c in claims),
-        seconds=f"{seconds:.0f}", quick=quick)
-    path = out_dir / "index.html"
-    path.write_text(html)
-    return str(path)
+        seconds=f"{seconds:.0f}", quick=quick, n_listed=len(built),
+        chosen=len(built) if chosen is None else chosen)
+    return str(write_text(out_dir / "index.html", html))

@@ -3,6 +3,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from camdyn.runtime.core.outdir import writing
+
 
 def plt():
     import matplotlib
@@ -15,11 +17,19 @@ def plt():
 
 def save(fig, out_dir, name: str) -> str:
     """Write ``fig`` as out_dir/name.png (110 dpi) and close it; returns the path."""
-    path = Path(out_dir) / f"{name}.png"
-    path.parent.mkdir(parents=True, exist_ok=True)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    with writing(Path(out_dir) / f"{name}.png") as path:
+        fig.savefig(path, dpi=110)
     plt().close(fig)
+    return str(path)
+
+
+def copy(src, dst) -> str:
+    """A picture another command drew (the study's charts) copied to ``dst``; its path."""
+    import shutil
+
+    with writing(dst) as path:
+        shutil.copyfile(src, path)
     return str(path)
 
 
@@ -31,14 +41,9 @@ def dwell_shade(ax) -> None:
 
 def dynacam_diagrams(sc, summary, res, folder, keys) -> list:
     """DYNACAM's diagrams ``keys`` (of runtime.dynacam.DIAGRAMS) of a run, drawn by
-    runtime.dynacam.plot into ``folder``; the diagrams not asked for are removed."""
-    import os
-
+    runtime.dynacam.plot into ``folder``, in the order of ``keys``."""
     from camdyn.runtime.targets import dynacam_diagrams as dynacam
 
-    written = dynacam.plot(sc, res, summary, Path(folder))
+    written = dynacam.plot(sc, res, summary, Path(folder), keys)
     stem = Path(sc.path).stem        # dynacam.plot names them <scene>_<key>.png
-    keep = [p for k in keys for p in written if Path(p).stem == f"{stem}_{k}"]
-    for p in set(written) - set(keep):
-        os.remove(p)
-    return keep
+    return [p for k in keys for p in written if Path(p).stem == f"{stem}_{k}"]
