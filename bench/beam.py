@@ -132,7 +132,7 @@ def main(argv=None) -> int:
                     help="a miniature run in seconds, written to a temporary folder")
     args = ap.parse_args(argv)
     sys.path.insert(0, str(HERE))
-    from where import report_folder, scratch_folder
+    from where import report_folder, scratch_folder, write_report
 
     if args.quick:
         repeat, modes, rtols, ref_rtol = 1, (2,), (1e-5, 1e-7), 1e-9
@@ -143,7 +143,7 @@ def main(argv=None) -> int:
     print(text)
     with report_folder(args.quick) as folder:
         chart(rows, scratch_folder(args.quick, folder) / "beam_error_vs_time.png")
-        (folder / REPORT).write_text(text)
+        write_report(folder / REPORT, text)
         print(f"wrote {folder / REPORT}", file=sys.stderr)
     return 0
 

@@ -88,6 +88,7 @@ def main(argv=None) -> int:
 
 
 def measure(args, report: Path) -> int:
+    from where import write_report
 
     models = args.models
     if args.all:
@@ -121,7 +122,7 @@ def measure(args, report: Path) -> int:
                   f"{len(digests[model])}")
             rows.append(f"| {model} | {min(ts):.1f} | {statistics.median(ts):.1f} | {max(ts):.1f} | "
                         f"{len(ts)} | {len(digests[model])} |")
-    report.write_text("\n".join([
+    write_report(report, "\n".join([
         "# Derivation time under different hash seeds (`python bench/derive_seeds.py`)",
         "", f"Seeds: {', '.join(map(str, seeds))}; CPU seconds of one derivation in a fresh process.",
         "", "| model | CPU s min | median | max | runs | distinct texts |",

@@ -73,6 +73,8 @@ def main(argv=None) -> int:
 
 
 def measure(args, report: Path) -> int:
+    from where import write_report
+
     py = sys.executable
     rows = []
 
@@ -108,7 +110,7 @@ def measure(args, report: Path) -> int:
     lines += ["", "Without the derivation keys every check derived every model (83 s on two cores); "
               "the spread of derivation times over hash seeds is in "
               "[BENCHMARKS-derive-seeds.md](BENCHMARKS-derive-seeds.md) (`bench/derive_seeds.py`)."]
-    report.write_text("\n".join(lines) + "\n")
+    write_report(report, "\n".join(lines) + "\n")
     print(f"wrote {report}", file=sys.stderr)
     missed = [what for what, med, *_ in rows if "full" not in what and med >= GOAL]
     if missed:   # reported, not fatal: the benches after this one should still run

@@ -54,6 +54,8 @@ def main(argv=None) -> int:
 
 
 def measure(args, report: Path) -> int:
+    from where import write_report
+
     names = json.loads(subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", "scenes",
                                        "--json"], capture_output=True, text=True,
                                       check=True).stdout)
@@ -84,7 +86,7 @@ def measure(args, report: Path) -> int:
     for r in rows:
         lines.append(f"| {r['name']} | {r['kind']} | {r['import_ms']:.1f} | {r['load_ms']:.1f} | "
                      f"{r['load_max_ms']:.1f} | {'yes' if r['sympy'] else 'no'} |")
-    report.write_text("\n".join(lines) + "\n")
+    write_report(report, "\n".join(lines) + "\n")
     print(f"wrote {report}", file=sys.stderr)
     slow = [r["name"] for r in rows if r["load_ms"] >= 50 or r["sympy"]]
     if slow:

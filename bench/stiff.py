@@ -46,7 +46,6 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import numpy as np
 
 HERE = Path(__file__).parent.resolve()
-ROOT = HERE.parent
 sys.path.insert(0, str(HERE))
 
 from report import machine_info  # noqa: E402
@@ -360,7 +359,7 @@ def main(argv=None) -> int:
                     help="a miniature run in seconds, written to a temporary folder")
     ap.add_argument("--no-beam", action="store_true", help="leave the beam follower out")
     args = ap.parse_args(argv)
-    from where import report_folder
+    from where import report_folder, write_report
 
     start = time.time()
     results = (quick_run if args.quick else full_run)(not args.no_beam)
@@ -372,7 +371,7 @@ def main(argv=None) -> int:
         charts.mkdir(parents=True, exist_ok=True)
         for res in results:
             chart(res, charts / f"stiff_{res.key}.png")
-        (folder / REPORT).write_text(markdown(results, machine_info(ROOT), wall) + "\n")
+        write_report(folder / REPORT, markdown(results, machine_info(), wall) + "\n")
         print(f"wrote {folder / REPORT} and {len(results)} charts in {charts}")
     return 0
 

@@ -40,7 +40,6 @@ os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 import numpy as np
 
 HERE = Path(__file__).parent.resolve()
-ROOT = HERE.parent
 sys.path.insert(0, str(HERE))
 
 from report import machine_info  # noqa: E402
@@ -182,10 +181,10 @@ def main(argv=None) -> int:
     text = markdown(med, times, old, dask_start, cores, same, repeat, wall, fa, n_tau)
     if args.quick:
         print(text)
-    from where import report_folder
+    from where import report_folder, write_report
 
     with report_folder(args.quick) as folder:
-        (folder / REPORT).write_text(text)
+        write_report(folder / REPORT, text)
         print(f"wrote {folder / REPORT}")
     print(f"sweep of the {'miniature' if args.quick else 'fig. 4.11'} grid: one core {med['one']:.3f} s "
           f"({med['one'] / med['bare']:.2f} x the bare integrations, {med['bare']:.3f} s); "
@@ -218,7 +217,7 @@ def markdown(med, times, old, dask_start, cores, same, repeat, wall, fa=FA, n_ta
              f"{', '.join(f'{f:g}' for f in fa)} x {n_tau} tau from 0.06 to 0.7 (uniform in "
              f"1/tau) = {n} runs, U0, U0'', X''min in the rise and its T each.", "",
              "## Machine", ""]
-    lines += [f"- {k}: {v}" for k, v in machine_info(ROOT).items()]
+    lines += [f"- {k}: {v}" for k, v in machine_info().items()]
     lines += [f"- benchmark wall time: {wall:.0f} s", ""]
     one = med["one"]
     verdict = "MET" if one < GOAL else "NOT MET"

@@ -1,7 +1,8 @@
 """Failure is reported, never returned as a number.
 
 Fixed-step methods (RK4, the thesis scheme "koster") refuse a step beyond their stability
-boundary and warn near it (camdyn.runtime.core.stability); DP54 reports where Hairer's stiffness
+boundary and warn near it: the compiled loop checks h |lambda| as it goes (runtime/engine/loops.pxi,
+the boundaries in camdyn.runtime.core.stability); DP54 reports where Hairer's stiffness
 test fired (stiff_from_T).  References:
 
 * RK4's stability function R(z) = 1 + z + z^2/2 + z^3/6 + z^4/24 and its region: Hairer &
@@ -22,7 +23,7 @@ import numpy as np
 import pytest
 
 from camdyn.runtime.core import stability
-from camdyn.runtime.core.errors import SimulationError
+from camdyn.runtime.core.errors import SimulationError, UnstableStep
 from camdyn.runtime.core.simulator import Simulator, simulate
 
 OMEGA = 2 * math.pi / 0.05   # one-DOF model at tau = 0.05: X'' = (2 pi/tau)^2 (H - X)
@@ -110,14 +111,128 @@ def test_rk4_refused_beyond_the_imaginary_axis_limit_accepted_below():
         assert len(res.warnings) == 1 and "near its stability limit" in res.warnings[0]
 
 
-def test_the_check_samples_the_run_not_only_its_start():
-    """CAMSHAFT-1 (Fa = 2) starting mid-rise, where the frozen system is slow (rho ~ 42), with
-    a step stable there and unstable in the dwell (rho = 2 pi/tau = 125.7): refused after
-    the run, at a time in the dwell."""
-    with pytest.raises(SimulationError, match=r"at T = (1\.|2\.|3)") as exc:
-        simulate("camshaft1", {"tau": 0.05, "Fa": 2.0}, 3.0, "rk4", step=0.03, t0=0.5,
-                 y0=[0.5, 1.9])
-    assert "rho = 125.6" in str(exc.value)
+def _first_crossing(res, h: float, t0: float, t1: float, n: int = 20001) -> tuple:
+    """The two grid points between which h rho first exceeds RK4's boundary along a reference
+    run, rho the largest |lambda| of the generated Jacobian (driver.eval_jacobian, NumPy's
+    eigenvalues) on a fine grid; the eigenvalues there are imaginary (an undamped oscillator),
+    so the boundary is 2 sqrt(2)."""
+    from camdyn.runtime.engine import driver
+
+    ts = np.linspace(t0, t1, n)
+    s = res.sample(ts)
+    Y = np.column_stack([s[k] for k in res.state_names])
+    rho = np.empty(n)
+    for j, (t, y) in enumerate(zip(ts, Y)):
+        ev = np.linalg.eigvals(driver.eval_jacobian(res.model.capsule, res.p, res.law_codes,
+                                                    res.law_pars, float(t), y))
+        assert np.all(np.abs(ev.real) <= 1e-9 * np.abs(ev))
+        rho[j] = np.abs(ev).max()
+    k = int(np.argmax(h * rho > stability.RK4_IMAG))
+    assert k > 0, "no crossing on the grid"
+    return float(ts[k - 1]), float(ts[k])
+
+
+@pytest.mark.parametrize("h", [0.03, 0.025, 0.02])
+def test_an_instability_that_starts_midway_is_caught_where_it_starts(h):
+    """CAMSHAFT-1 (Fa = 2) starting mid-rise, where its stiffness c = c_c/(1 + Fa H'^2) is least
+    (rho = 42): the step is stable there, and h rho crosses RK4's boundary as H' falls towards the
+    dwell (rho = 2 pi/tau = 125.7).  The loop stops at the first step whose start lies past the
+    crossing found independently (eigenvalues of the generated Jacobian along a DP54 run), with
+    rho there; h = 0.02 never crosses and runs (with its warning)."""
+    p, y0 = {"tau": 0.05, "Fa": 2.0}, [0.5, 1.9]
+    steps = 0.5 / math.ceil(0.5 / h * (1 - 1e-12))      # the equal steps of [0.5, 1]
+    if h * OMEGA <= stability.RK4_IMAG:
+        res = simulate("camshaft1", p, 3.0, "rk4", step=h, t0=0.5, y0=y0)
+        assert res.stability.stable and res.stability.rho == pytest.approx(OMEGA, rel=1e-9)
+        return
+    ref = simulate("camshaft1", p, 1.0, "dp54", rtol=1e-10, t0=0.5, y0=y0)
+    lo, hi = _first_crossing(ref, h, 0.5, 1.0)
+    with pytest.raises(UnstableStep) as exc:
+        simulate("camshaft1", p, 3.0, "rk4", step=h, t0=0.5, y0=y0)
+    e = exc.value.estimate
+    assert lo <= e.T < hi + steps                            # the first step start past it
+    assert e.h_rho > stability.RK4_IMAG and not e.stable
+    assert e.rho == pytest.approx(OMEGA / math.sqrt(1 + 2 * (1 - math.cos(2 * math.pi * e.T)) ** 2),
+                                  rel=1e-9)                  # 2 pi/tau/sqrt(1 + Fa H'^2) there
+    assert f"at T = {e.T:.6g}" in str(exc.value) and f"h*rho = {e.h_rho:.4g}" in str(exc.value)
+
+
+def test_a_contact_that_closes_midway_is_caught_when_it_closes():
+    """The roller (sec. 9.2.1) flying free in the groove of a dwell, roller and follower moving
+    together at V = 0.01 (no force acts): it reaches the upper wall at T = 1 + (S/2)/V = 1.05,
+    where the contact spring kappa c switches on.  h = 0.001 is stable in free flight (the
+    linkage with the free roller, omega sqrt(1 + 1/mu) = 192, h rho = 0.19) and beyond the
+    boundary in contact: the run stops at the event with rho the contact mode's frequency from
+    det(K - w^2 M) = 0, M = diag(1, mu), K = omega^2 [[1, -1], [-1, kappa + 1]] (the model's
+    docstring), a four-state Jacobian (the loop's power iteration, not a closed form)."""
+    tau, mu, kappa, S, V = 0.15, 0.05, 1000.0, 0.001, 0.01
+    w = 2 * math.pi / tau
+    K = w ** 2 * np.array([[1.0, -1.0], [-1.0, kappa + 1.0]])
+    fast = math.sqrt(np.linalg.eigvals(np.linalg.solve(np.diag([1.0, mu]), K)).real.max())
+    p = {"tau": tau, "mu": mu, "kappa": kappa, "S": S}
+    y0 = [1 + S / 2, 1 + S / 2, V, V]
+    free = simulate("roller", p, 1.04, "rk4", step=1e-3, t0=1.0, y0=y0, modes={"contact": "free"})
+    assert free.stability.rho == pytest.approx(w * math.sqrt(1 + 1 / mu), rel=1e-9)
+    with pytest.raises(UnstableStep) as exc:
+        simulate("roller", p, 1.5, "rk4", step=1e-3, t0=1.0, y0=y0, modes={"contact": "free"})
+    e = exc.value.estimate
+    assert e.T == pytest.approx(1 + S / 2 / V, abs=1e-9)
+    assert e.rho == pytest.approx(fast, rel=1e-6)                   # 5926.8
+    assert e.h_rho == pytest.approx(1e-3 * fast, rel=1e-6)
+
+
+@pytest.mark.parametrize("model,params,t", [("chain3", {"tau": 0.1}, 0.0),
+                                            ("camshaft2", {}, 0.0),
+                                            ("camshaft2", {}, 0.5)])
+def test_more_states_the_check_refuses_and_accepts_at_the_boundary(model, params, t):
+    """Models of more than two states: the loop estimates the dominant eigenvalues by a power
+    iteration on the Krylov plane {q, J q}; the step 1.01 x boundary/rho (rho from NumPy's
+    eigenvalues of the generated Jacobian at the start) is refused there and 0.99 x accepted
+    over a step, with rho to 1e-7."""
+    from camdyn.runtime.engine import driver
+    from camdyn.runtime.core.compiled import load
+
+    m = load(model)
+    sim = Simulator(model, 3.0, "dp54")
+    y = sim.initial_state(m.parameter_vector(params))
+    if t:
+        y = simulate(model, params, t, "dp54", rtol=1e-10).y[-1]
+    ev = np.linalg.eigvals(driver.eval_jacobian(m.capsule, m.parameter_vector(params),
+                                                sim.law_codes, sim.law_pars, t,
+                                                np.ascontiguousarray(y)))
+    rho = np.abs(ev).max()
+    assert np.abs(ev.real).max() <= 1e-9 * rho                      # undamped: 2 sqrt(2)
+    h = 1.01 * stability.RK4_IMAG / rho
+    with pytest.raises(UnstableStep) as exc:
+        simulate(model, params, t + 3 * h, "rk4", step=h, t0=t, y0=y)
+    assert exc.value.estimate.T == t and exc.value.estimate.rho == pytest.approx(rho, rel=1e-7)
+    res = simulate(model, params, t + 0.99 / 1.01 * h, "rk4", step=0.99 / 1.01 * h, t0=t, y0=y)
+    assert res.stability.stable and res.stability.rho == pytest.approx(rho, rel=1e-7)
+
+
+@pytest.mark.parametrize("model,params,y0,t0", [
+    ("motor1", {}, [0.0], 0.2),                        # lambda = -100: the negative real axis
+    ("one_dof", {"tau": 0.05, "q": 0.5}, [1.0, 0.0], 1.0),  # a damped pair, 120 deg
+])
+def test_the_loop_reads_the_boundary_in_the_eigenvalue_direction(model, params, y0, t0):
+    """The compiled check's boundary follows the direction of lambda as ray_boundary does (the
+    first exit of |R| > 1 along the ray): refused just beyond it, accepted just inside."""
+    from camdyn.runtime.engine import driver
+    from camdyn.runtime.core.compiled import load
+
+    m = load(model)
+    sim = Simulator(model, t0 + 1.0, "dp54", t0=t0, y0=y0)
+    ev = np.linalg.eigvals(driver.eval_jacobian(m.capsule, m.parameter_vector(params),
+                                                sim.law_codes, sim.law_pars, t0,
+                                                np.array(y0, dtype=float)))
+    lam = ev[np.argmax(np.abs(ev))]
+    b = stability.ray_boundary(stability.rk4_R, math.atan2(abs(lam.imag), -abs(lam.real)))
+    for factor, stable in ((1.002, False), (0.998, True)):
+        h = factor * b / abs(lam)
+        run = Simulator(model, t0 + 5 * h, "rk4", step=h, t0=t0, y0=y0, check_stability=False)
+        e = run.run(params).stability
+        assert e.stable is stable and e.boundary == pytest.approx(b, rel=2e-5)
+        assert e.rho == pytest.approx(abs(lam), rel=1e-9)
 
 
 def test_koster_refused_beyond_its_boundary():

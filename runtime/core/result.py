@@ -6,6 +6,7 @@ from functools import cached_property
 import numpy as np
 
 from ..engine import driver
+from . import stability as _stability
 from .errors import CamdynInputError
 
 
@@ -26,10 +27,16 @@ class Result:
         self.law_codes, self.law_pars = sim.law_codes, sim.law_pars
         self.p = p
         self._out = out
-        # fixed-step methods: the stability estimate (camdyn.runtime.core.stability.Estimate) and
-        # the warnings of a step near the boundary, set by Simulator.run
-        self.stability = None
+        # the warnings of a step near the stability boundary, set by Simulator.run
         self.warnings: list[str] = []
+
+    @cached_property
+    def stability(self):
+        """Fixed-step methods: the stability check the compiled loop made as it ran
+        (camdyn.runtime.core.stability.Estimate, at the largest h |lambda|/b it saw); else None."""
+        if self.method.adaptive:
+            return None
+        return _stability.from_loop(self.method.name, self.method.step, self._out)
 
     @property
     def stiff_from_T(self) -> float | None:

@@ -112,9 +112,9 @@ class Simulator:
     check_stability
             True (the default): a fixed step beyond the method's stability boundary is
             refused (UnstableStep).  False runs it anyway, for the stability map
-            (runtime/studies/stability_map.py), which must see what the step does: the estimate is
-            still computed and kept in ``result.stability``, a run that becomes non-finite
-            still raises SimulationError.
+            (runtime/studies/stability_map.py), which must see what the step does: the loop
+            still checks and the largest h |lambda| it saw is in ``result.stability``; a run
+            that becomes non-finite still raises SimulationError.
     consistent
             True (the default): a constrained model starts on its constraints, its dependent
             coordinates and rates recovered from the independent ones, with a note when that
@@ -175,9 +175,12 @@ class Simulator:
         # what the compiled loops take, kept for the batch entry (batch_inputs)
         self.atol, self.first_step, self.h_max, self.loop_rtol = atol, h, h_max, rtol
         self.max_events = int(max_events)
+        stab = (driver.CHECK_OFF if method.adaptive else
+                driver.CHECK_STOP if check_stability else driver.CHECK_ESTIMATE)
         self.integrator = driver.Integrator(
             m.capsule, method.code, self.law_codes, self.law_pars, y_init, t0, h, h_max, rtol, atol,
-            max_steps, np.array(self.modes0, dtype=np.intc), int(max_events))
+            max_steps, np.array(self.modes0, dtype=np.intc), int(max_events), stab,
+            None if method.adaptive else _stability.loop_boundary(method.name))
         self._stops: dict = {}
         self._cap = 256
 
@@ -236,11 +239,11 @@ class Simulator:
         """One run with these parameter values (defaults for the ones not given).
 
         A failed run raises SimulationError; so does a fixed-step run whose step lies beyond
-        the method's stability boundary, checked before the run at its start and after it at
-        a sample of recorded points (camdyn.runtime.core.stability; UnstableStep, unless the
-        simulator was made with check_stability=False).  A step near the boundary
-        leaves a warning in ``result.warnings``; DP54 records where Hairer's stiffness test
-        fired in ``result.stiff_from_T``.
+        the method's stability boundary, which the compiled loop checks as it goes and stops
+        at, where h |lambda| first exceeds the boundary (camdyn.runtime.core.stability;
+        UnstableStep, unless the simulator was made with check_stability=False).  A step near
+        the boundary leaves a warning in ``result.warnings``, from the largest h |lambda| the
+        loop saw; DP54 records where Hairer's stiffness test fired in ``result.stiff_from_T``.
         """
         m = self.model
         p = m.parameter_vector(params)
@@ -251,28 +254,11 @@ class Simulator:
         if self.consistent and hasattr(m.module, "consistent_state"):
             y0, note = self._consistent(p, self._y_init if y0 is None else y0)
             notes += [note] if note else []
-        fixed = not self.method.adaptive
-        est = None
-        if fixed:
-            y_start = self._y_init if y0 is None else y0
-            est = self._stability(p, [self.t0], [y_start])
-            if self.check_stability and est is not None and not est.stable:
-                raise UnstableStep(_stability.refusal(m.name, tname, est), est)
         out = self.integrator.run(p, stops, cap or self._cap, y0)
-        if fixed:
-            # during the run: the frozen Jacobian changes with the cam position and the modes
-            rows = out.rows[:out.n]
-            idx = _stability.sample_indices(rows[:, 0], out.n)
-            idx = idx[np.all(np.isfinite(rows[idx]), axis=1)]
-            if idx.size:
-                ns = len(m.state_names)
-                during = self._stability(p, rows[idx, 0], rows[idx, 1:1 + ns], out.modes[idx])
-                if during is not None and (est is None or during.largest_stable_step
-                                           < est.largest_stable_step):
-                    est = during
-            if self.check_stability and est is not None and not est.stable:
-                raise UnstableStep(_stability.refusal(m.name, tname, est), est)
         if out.status != 0:
+            if out.status == driver.UNSTABLE:
+                est = _stability.from_loop(self.method.name, self.method.step, out)
+                raise UnstableStep(_stability.refusal(m.name, tname, est), est)
             # the integrator's words say what it saw; the model's state says why
             fault = diagnosis.explain(m, p, self.law_codes, self.law_pars, out)
             if fault is not None and fault.at_start:     # the input, not the run
@@ -284,12 +270,13 @@ class Simulator:
             self._cap = max(256, out.n + out.n // 4)
         res = Result(self, p, out)
         res.warnings += notes
-        res.stability = est
-        if est is not None and est.near:
-            res.warnings.append(_stability.warning(tname, est))
-        elif est is not None and not est.stable:   # run anyway (check_stability=False)
-            res.warnings.append("run with the stability check off: "
-                                + _stability.refusal(m.name, tname, est))
+        if not self.method.adaptive and _stability.near(self.method.name, self.method.step, out):
+            est = res.stability
+            if est.stable:
+                res.warnings.append(_stability.warning(tname, est))
+            else:   # run anyway (check_stability=False)
+                res.warnings.append("run with the stability check off: "
+                                    + _stability.refusal(m.name, tname, est))
         return res
 
     def _consistent(self, p, y):
@@ -316,13 +303,6 @@ class Simulator:
                     f"|Phi'| = {phid:.3g}): {', '.join(names)} recovered from the independent "
                     "coordinates (" + ", ".join(f"{n} = {v:.6g}" for n, v
                                                 in zip(m.state_names, yc) if n in names) + ")")
-
-    def _stability(self, p, times, states, modes=None):
-        """The stability estimate of this fixed-step method at the points given."""
-        ev = _stability.spectra(self.model, p, self.law_codes, self.law_pars, times, states,
-                                modes, None if modes is not None else
-                                np.array(self.modes0, dtype=np.intc))
-        return _stability.assess(self.method.name, self.method.step, np.asarray(times, float), ev)
 
 
 @lru_cache(maxsize=32)

@@ -2,12 +2,30 @@
 
 A fixed-step run (RK4, the thesis scheme "koster") is stable when h lambda lies inside the
 method's region of absolute stability for every eigenvalue lambda of the Jacobian df/dy of the
-first-order right-hand side, frozen along the run.  The Jacobian is estimated by central
-differences of the compiled rhs (``driver.eval_jacobian_fd``; no generated Jacobian is used),
-its eigenvalues by the small dense eigenproblem (n_states <= ~40), at the start of the run
-(before it: a step beyond the boundary there is refused at once) and at a sample of recorded
-points after it (every breakpoint interval's start and ``SAMPLES`` points spread over the
-record); the most restrictive one counts.
+first-order right-hand side, frozen along the run.  The compiled loop checks it as it goes
+(runtime/engine/loops.pxi, ``_stab_check``): at the start of a step, from the model's generated
+Jacobian, the limiting eigenvalue (closed form for two states, else the dominant pair of a
+power iteration on the Krylov plane {q, J q}, kept warm from check to check) against the
+boundary in its direction (``loop_boundary``, this module's table); at every interval's start,
+after every event, and in between every 16 steps at most, sooner as h |lambda| nears the
+boundary.  A step beyond it stops the run there (driver status UNSTABLE): the refusal names
+that time, h |lambda|, |lambda| and the largest stable step.  A run to the end records the
+largest h |lambda|/boundary it saw and where, from which the warning near the boundary is
+worded (``from_loop``); nothing is evaluated in Python before or after the run.
+
+Why the Jacobian and not the stages.  Hairer's stiffness test reads |k_s - k_(s-1)| /
+|y_s - y_(s-1)| off two stages at the same time (DP54 does, for its note): free, but a Rayleigh
+quotient along whatever direction the stages differ in.  Along DP54 runs at the RK4 stages
+(k3 - k2 against h/2 (k2 - k1)) it measured 0.008 to 60 times the spectral radius in the
+Euclidean norm, and 0.008 to 5.2 times with DP54's frequency weighting (exact only for one
+undamped degree of freedom; 0.30 of it, median, on the chain of sec. 3.7), and it cannot tell
+the imaginary axis (2.828) from the real one (2.785): it could neither refuse the steps this
+check refuses nor name where.  The generated Jacobian costs one evaluation a check: on
+CAMSHAFT-1 (bench/run.py's problem, h = 1/150 to 1/356) about 230 instructions a check, half
+of them the Jacobian's cam-law evaluation, 5 % of the compiled loop's instructions at a check
+every 16 steps (valgrind); CPU time of the compiled loop 1 % to 5 % over the same loop without
+it.  The check it replaces, central-difference Jacobians and NumPy's eigenvalues at 48 or more
+recorded points after the run, cost about 1 ms a call, 25 to 110 times the loop.
 
 Boundaries, |h lambda| along the direction of lambda (the eigenvalue reflected into the left
 half-plane: a mode that grows physically is judged by its magnitude, not refused for growing):
@@ -38,6 +56,10 @@ h rho = 0.063 for the one-DOF model; its "stable for dT <= 0.1 tau" (sec. 4.4.2)
 h rho = 0.63, a 4.9 % phase error per period with koster.
 
 Largest stable step reported: SAFETY (0.9) times boundary/|lambda| of the limiting eigenvalue.
+
+``spectra`` and ``assess`` estimate the same from recorded points in Python, for the studies
+that draw the theory line of a stability map (runtime/studies/stability_map.py,
+stability_boundary.py).
 """
 from __future__ import annotations
 
@@ -57,7 +79,8 @@ WARN_PER_PERIOD = 0.01      # per-period error of the fastest mode that earns a 
 WARN_RK4 = 0.6622           # h rho where RK4's per-period error reaches 1 %
 WARN_KOSTER = 0.2778        # same for the thesis scheme
 SAFETY = 0.9                # largest stable step = SAFETY * boundary / |lambda|
-SAMPLES = 48                # recorded points checked after a run, besides the interval starts
+SAMPLES = 48                # recorded points a study's step limit reads (stability_map.step_limit)
+BOUNDARY_POINTS = 1025      # RK4's boundary tabulated over the direction of lambda
 
 
 def rk4_R(z):
@@ -76,48 +99,63 @@ def per_period_error(method: str, x: float) -> float:
     if method == "rk4":
         r = complex(rk4_R(1j * x))
     else:
-        ev = np.linalg.eigvals(koster_amplification(x))
-        r = complex(ev[np.argmax(ev.imag)])
+        # koster_amplification(x) = [[a, b], [c, a]]: eigenvalues a +- sqrt(b c)
+        (a, b), (c, _) = koster_amplification(x)
+        r = complex(a, math.sqrt(max(-b * c, 0.0)))
     n = 2 * math.pi / x
     amp = abs(r) ** n
     phase = (math.atan2(r.imag, r.real) - x) * n
     return abs(amp * complex(math.cos(phase), math.sin(phase)) - 1.0)
 
 
-def ray_boundary(R, phi: float, r_max: float = 6.0, n: int = 6000) -> float:
-    """First r > 0 where |R(r e^(i phi))| exceeds 1 (bisection after a scan)."""
-    d = complex(math.cos(phi), math.sin(phi))
+def ray_boundaries(R, phis, r_max: float = 6.0, n: int = 6000) -> np.ndarray:
+    """First r > 0 where |R(r e^(i phi))| exceeds 1, for each phi (bisection after a scan)."""
+    d = np.exp(1j * np.atleast_1d(np.asarray(phis, dtype=float)))[:, None]
     r = np.linspace(r_max / n, r_max, n)
-    out = np.abs(R(r * d)) > 1.0 + 1e-12
-    if not out.any():
-        return r_max
-    k = int(np.argmax(out))
-    lo, hi = (r[k - 1] if k else 0.0), r[k]
+    out = np.abs(R(r[None, :] * d)) > 1.0 + 1e-12
+    k = np.argmax(out, axis=1)
+    lo = np.where(k > 0, r[np.maximum(k - 1, 0)], 0.0)
+    hi = r[k]
     for _ in range(60):
         mid = 0.5 * (lo + hi)
-        if abs(R(mid * d)) > 1.0 + 1e-12:
-            hi = mid
-        else:
-            lo = mid
-    return lo
+        bad = np.abs(R(mid * d[:, 0])) > 1.0 + 1e-12
+        hi = np.where(bad, mid, hi)
+        lo = np.where(bad, lo, mid)
+    return np.where(out.any(axis=1), lo, r_max)
+
+
+def ray_boundary(R, phi: float, r_max: float = 6.0, n: int = 6000) -> float:
+    """First r > 0 where |R(r e^(i phi))| exceeds 1 (bisection after a scan)."""
+    return float(ray_boundaries(R, [phi], r_max, n)[0])
 
 
 @lru_cache(maxsize=None)
-def _rk4_table() -> tuple[np.ndarray, np.ndarray]:
-    phi = np.linspace(math.pi / 2, math.pi, 361)
-    b = np.array([ray_boundary(rk4_R, p) for p in phi])
+def _rk4_table() -> np.ndarray:
+    """RK4's boundary at u = |Re lambda|/|lambda| = k/(N - 1): the table the compiled check
+    interpolates linearly (within 4e-6 of ray_boundary in every direction)."""
+    u = np.linspace(0.0, 1.0, BOUNDARY_POINTS)
+    b = ray_boundaries(rk4_R, math.pi / 2 + np.arcsin(u))
     b[0], b[-1] = RK4_IMAG, RK4_REAL
-    return phi, b
+    return b
+
+
+def loop_boundary(method: str) -> np.ndarray:
+    """The boundary the compiled check takes (run.stab_bound): RK4's table over the direction,
+    or the thesis scheme's one value."""
+    if method == "koster":
+        return np.array([KOSTER_BOUNDARY])
+    return _rk4_table()
 
 
 def boundary(method: str, eigs: np.ndarray) -> np.ndarray:
-    """The method's boundary |h lambda| along the direction of each eigenvalue."""
+    """The method's boundary |h lambda| along the direction of each eigenvalue (reflected into
+    the left half-plane), as the compiled check reads it."""
     eigs = np.asarray(eigs, dtype=complex)
     if method == "koster":
         return np.full(eigs.shape, KOSTER_BOUNDARY)
-    phi = np.arctan2(np.abs(eigs.imag), -np.abs(eigs.real))   # reflected into the left half-plane
-    tab_phi, tab_b = _rk4_table()
-    return np.interp(phi, tab_phi, tab_b)
+    mag = np.abs(eigs)
+    u = np.divide(np.abs(eigs.real), mag, out=np.zeros(mag.shape), where=mag > 0)
+    return np.interp(u, np.linspace(0.0, 1.0, BOUNDARY_POINTS), _rk4_table())
 
 
 def warn_level(method: str) -> float:
@@ -191,14 +229,36 @@ def assess(method: str, h: float, times, spectra_list) -> Estimate | None:
             best = (float(hs[k]), float(T), float(mag[k]), float(b[k]))
     if t_any is None:
         return None
-    if best is None:   # a Jacobian without dynamics: no limit
-        return Estimate(method, h, 0.0, t_any, 0.0, math.inf, math.inf, math.inf, 0.0, True)
-    h_stable, T, lam, b = best
+    if best is None:
+        return estimate(method, h, 0.0, t_any, math.inf)
+    _, T, lam, b = best
+    return estimate(method, h, lam, T, b)
+
+
+def estimate(method: str, h: float, lam: float, T: float, b: float) -> Estimate:
+    """The estimate of a step h whose limiting eigenvalue has |lambda| = lam at T, boundary b
+    in its direction (lam = 0: a Jacobian without dynamics, no limit)."""
+    if lam <= 0:
+        return Estimate(method, h, 0.0, T, 0.0, math.inf, math.inf, math.inf, 0.0, True)
     x = h * lam
     err = per_period_error(method, x) if x < SQRT8 else math.inf
     return Estimate(method=method, h=h, rho=lam, T=T, h_rho=x, boundary=b,
-                    largest_stable_step=SAFETY * h_stable, accurate_step=warn_level(method) / lam,
-                    per_period_error=err, stable=h <= h_stable)
+                    largest_stable_step=SAFETY * b / lam, accurate_step=warn_level(method) / lam,
+                    per_period_error=err, stable=x <= b)
+
+
+def from_loop(method: str, h: float, out) -> Estimate | None:
+    """The estimate the compiled check recorded (driver.RunRecord: where h |lambda|/b was
+    largest, that |lambda| and b); None when it checked no step."""
+    if not out.n_checks or not out.stab_ratio >= 0:
+        return None
+    return estimate(method, h, float(out.stab_rho), float(out.stab_t), float(out.stab_b))
+
+
+def near(method: str, h: float, out) -> bool:
+    """Whether the run's step was near the boundary (the warning) or beyond it, without
+    building the estimate: the common case, far inside, costs two comparisons."""
+    return out.n_checks > 0 and (out.stab_ratio > 1.0 or h * out.stab_rho > warn_level(method))
 
 
 def sample_indices(t: np.ndarray, n: int, samples: int = SAMPLES) -> np.ndarray:

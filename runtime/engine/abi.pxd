@@ -12,7 +12,7 @@
 # a module at run time.
 
 cdef enum:
-    CAMDYN_ABI = 5
+    CAMDYN_ABI = 6
 
 # method codes
 cdef enum:
@@ -31,6 +31,7 @@ cdef enum:
     STATUS_NO_CONVERGENCE = 5
     STATUS_BAD_MODEL = 6
     STATUS_EVENT_STORM = 7
+    STATUS_UNSTABLE = 8     # a fixed step beyond the method's stability boundary (stab_mode 2)
 
 cdef struct Ctx:
     const double* p        # parameters, in manifest order
@@ -76,6 +77,18 @@ cdef struct Run:
     double t_fail
     double err_old
     double t_stiff         # DP54: where Hairer's stiffness test (DOPRI5) first fired; NaN if never
+    # the fixed-step stability check (RK4, the thesis scheme; loops.pxi, _stab_check): h |lambda|
+    # of the model's Jacobian against the method's boundary b in lambda's direction (ABI 6)
+    int stab_mode          # 0 no check; 1 estimate only (the stability map's runs); 2 estimate
+                           # and stop with STATUS_UNSTABLE where h |lambda|/b first exceeds 1
+    const double* stab_bound  # b at |Re lambda|/|lambda| = k/(n_stab_bound - 1), k = 0, 1, ...
+    int n_stab_bound       # (one value: the same boundary in every direction)
+    double* stab_work      # n_states + 2 doubles the check keeps between intervals, or NULL
+    double stab_ratio      # largest h |lambda|/b seen (-1 before the first check), ...
+    double stab_t          # ... where, ...
+    double stab_rho        # ... |lambda| of the limiting eigenvalue there ...
+    double stab_b          # ... and b in its direction
+    long n_checks          # Jacobians checked
 
 ctypedef void (*prep_fn)(Ctx* ctx) noexcept nogil
 ctypedef void (*rhs_fn)(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil

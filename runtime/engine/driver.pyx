@@ -30,12 +30,15 @@ KOSTER = METHOD_KOSTER
 RODAS = METHOD_RODAS
 
 RunRecord = namedtuple("RunRecord", "status rows modes n n_steps n_rejected n_rhs t_fail seconds "
-                                    "n_events t_stiff")
+                                    "n_events t_stiff stab_ratio stab_t stab_rho stab_b n_checks")
 RunRecord.__doc__ = """What Integrator.run returns: the status (STATUS_TEXT), the record (``rows``:
 t, states and slopes at every recorded point; ``modes`` in force from each point on; ``n`` of
 them filled), step and right-hand-side counts, where a failed run stopped (``t_fail``), the
 wall time of the compiled loops, the number of events and, for DP54, the time where Hairer's
-stiffness test first fired (``t_stiff``, NaN if it never did)."""
+stiffness test first fired (``t_stiff``, NaN if it never did); for a fixed-step run with the
+stability check (``stab_mode``), the largest h |lambda|/b it saw (``stab_ratio``, -1 without a
+check; beyond 1 the step is unstable), where (``stab_t``), that eigenvalue's |lambda|
+(``stab_rho``), the boundary b in its direction (``stab_b``), and the Jacobians checked."""
 
 STATUS_TEXT = {
     STATUS_OK: "ok",
@@ -47,7 +50,10 @@ STATUS_TEXT = {
                             "use a smaller step"),
     STATUS_BAD_MODEL: "the model is not purely second order, which the thesis scheme requires",
     STATUS_EVENT_STORM: "more events than max_events (chattering contact or friction?)",
+    STATUS_UNSTABLE: "the step is beyond the method's stability boundary; use a smaller step",
 }
+UNSTABLE = STATUS_UNSTABLE
+CHECK_OFF, CHECK_ESTIMATE, CHECK_STOP = 0, 1, 2
 
 
 cdef ModelC* model_pointer(object capsule) except NULL:
@@ -87,13 +93,15 @@ cdef class Integrator:
     cdef int method
     cdef double t0, h, h_max, rtol
     cdef long max_steps, max_events
-    cdef double[::1] y0, atol, law_par
+    cdef double[::1] y0, atol, law_par, stab_bound
     cdef int[::1] law, modes0
+    cdef int stab_mode
     cdef readonly int width, n_states
 
     def __init__(self, object capsule, int method, int[::1] law, double[::1] law_par,
                  double[::1] y0, double t0, double h, double h_max, double rtol,
-                 double[::1] atol, long max_steps, int[::1] modes0=None, long max_events=1000000):
+                 double[::1] atol, long max_steps, int[::1] modes0=None, long max_events=1000000,
+                 int stab_mode=0, double[::1] stab_bound=None):
         self.m = model_pointer(capsule)
         self.capsule = capsule
         cdef int ns = self.m.n_states, ne = self.m.n_modes - self.m.n_instances
@@ -109,6 +117,12 @@ cdef class Integrator:
         self.max_steps, self.max_events = max_steps, max_events
         self.y0, self.atol, self.law, self.law_par = y0.copy(), atol.copy(), law.copy(), law_par.copy()
         self.modes0 = np.array(modes0, dtype=np.intc)
+        if stab_mode and (method == METHOD_DP54 or method == METHOD_RODAS):
+            raise ValueError("the stability check is the fixed-step methods' (rk4, koster)")
+        if stab_mode and (stab_bound is None or stab_bound.shape[0] < 1):
+            raise ValueError("the stability check needs the method's boundary (stab_bound)")
+        self.stab_mode = stab_mode
+        self.stab_bound = stab_bound.copy() if stab_mode else np.ones(1)
         self.n_states = ns
         self.width = 1 + (3 if method == METHOD_DP54 else 2) * ns
 
@@ -123,8 +137,9 @@ cdef class Integrator:
         modes = np.empty((cap, nm), dtype=np.intc)
         cdef double[:, ::1] rv = rows
         cdef int[:, ::1] mv = modes
-        # small scratch: the state, the parameter constants, the cam cache; the modes
-        cdef double* scratch = <double*> PyMem_Malloc((ns + m.n_const + m.n_cache + 1) * sizeof(double))
+        # small scratch: the state, the parameter constants, the cam cache, the stability
+        # check's vector; the modes
+        cdef double* scratch = <double*> PyMem_Malloc((2 * ns + m.n_const + m.n_cache + 3) * sizeof(double))
         cdef int* mode = <int*> PyMem_Malloc((nm + 1) * sizeof(int))
         if scratch == NULL or mode == NULL:
             PyMem_Free(scratch)
@@ -173,6 +188,15 @@ cdef class Integrator:
         run.t_fail = self.t0
         run.err_old = 1e-4
         run.t_stiff = NAN
+        run.stab_mode = self.stab_mode
+        run.stab_bound = &self.stab_bound[0]
+        run.n_stab_bound = self.stab_bound.shape[0]
+        run.stab_work = scratch + ns + m.n_const + m.n_cache + 1
+        run.stab_ratio = -1.0
+        run.stab_t = NAN
+        run.stab_rho = NAN
+        run.stab_b = NAN
+        run.n_checks = 0
         cdef int status
         cdef timespec c0, c1
         with nogil:
@@ -196,7 +220,8 @@ cdef class Integrator:
                 free(run.rec.rows)
                 free(run.rec.mode)
         return RunRecord(status, rows, modes, n, run.n_steps, run.n_rejected, run.n_rhs,
-                         run.t_fail, seconds, run.n_events, run.t_stiff)
+                         run.t_fail, seconds, run.n_events, run.t_stiff, run.stab_ratio, run.stab_t,
+                         run.stab_rho, run.stab_b, run.n_checks)
 
 
 # -- evaluation helpers (vectorized, compiled) ------------------------------------

@@ -710,6 +710,12 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
             run.t_fail = t0
             run.err_old = 1e-4
             run.t_stiff = NAN
+            run.stab_mode = 0      # adaptive methods only (checked above)
+            run.stab_bound = NULL
+            run.n_stab_bound = 0
+            run.stab_work = NULL
+            run.stab_ratio = -1.0
+            run.n_checks = 0
             status = m.run(&run)
             # keep the (possibly grown) buffers for the next run
             rows = run.rec.rows

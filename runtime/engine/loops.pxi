@@ -22,7 +22,7 @@
 # Hairer's continuous-extension form: r4 = 0 is the cubic Hermite interpolant
 # (RK4, thesis scheme); DP54 stores its fourth-order r4 per step in `extra`.
 
-from libc.math cimport fabs, fmax, fmin, isfinite, isnan, pow, sqrt
+from libc.math cimport NAN, cos, fabs, fmax, fmin, isfinite, isnan, pow, sin, sqrt
 from libc.stdlib cimport free, malloc
 from libc.string cimport memcpy, memset
 
@@ -229,13 +229,259 @@ cdef int _koster_newton_matrix(Ctx* ctx, double t, const double* ym, const doubl
     return calls
 
 
+# -- the fixed-step stability check (RK4, the thesis scheme) ----------------------------
+#
+# A fixed step is stable while h lambda lies inside the method's region of absolute stability
+# for every eigenvalue lambda of the Jacobian df/dy, frozen along the run (the boundaries and
+# the warning's criterion: runtime/core/stability.py).  The loop checks it at the start of a
+# step, from the model's generated Jacobian (``jacobian(t, y, J, NULL, ctx)``, the ABI's; the
+# constrained models difference rhs() in it):
+#
+# * _NS = 1, 2: the eigenvalues in closed form;
+# * _NS > 2: the dominant eigenvalues from a power iteration whose vector q is kept from
+#   check to check (run.stab_work): the Ritz values of the Krylov plane {q, J q} (two-step
+#   Arnoldi), iterated until the plane is invariant to STAB_TOL (the residual of J p, p the
+#   plane's second basis vector, against the 2 x 2 projection).  A plane, not a vector: the
+#   fastest mode of a mechanism is a complex pair (+-i omega), on which a plain power
+#   iteration never settles, and so is a pair of equal frequencies (a shaft's bending in y
+#   and z), whose four-dimensional eigenspace every plane {q, J q} in it spans invariantly.
+#   Warm-started, one or two products J x a check.  The velocities are scaled by the last
+#   |lambda| (D^-1 J D, D = diag(1, sigma, 1) on q, q', first-order states), which makes the
+#   mechanical Jacobian [[0, I], [A, B]] nearly normal, so that Ritz values of a nearly
+#   invariant plane are nearly eigenvalues.  The limit is taken from that pair: another
+#   eigenvalue limits instead only if its |lambda| is within the boundary's spread (2.62 to
+#   2.96 for RK4, 12 %) of the largest and in a less favourable direction.
+#
+# Where.  At the start of every interval and after every event (the modes, and with them the
+# Jacobian, change there), and in between every `period` steps: at most STAB_PERIOD (a
+# symbolic Jacobian) or STAB_PERIOD _NS (a differenced one, 4 _NS rhs calls), and at least
+# STAB_PER_INTERVAL times an interval (a cam segment: the stiffness a cam drives changes on
+# its scale), shortened as h|lambda|/b approaches 1: from the growth since the last check
+# (after a jump: over the next step) the steps left to the boundary are extrapolated and the
+# next check comes after half of them.  So a stiffness that grows with the cam's motion is
+# caught within a step of where h |lambda| crosses the boundary, and a run far inside it pays
+# for a check every 16 steps (measured in the docstring of runtime/core/stability.py).  A
+# stiffness that grows with the state alone (a contact's penetration) is caught within
+# `period` steps.
+cdef extern from *:
+    """
+    #define STAB_PERIOD 16
+    #define STAB_PER_INTERVAL 8
+    #define STAB_MAXIT 100
+    #define STAB_TOL 1e-6
+    """
+    const long STAB_PERIOD
+    const long STAB_PER_INTERVAL
+    const int STAB_MAXIT
+    const double STAB_TOL
+
+
+cdef inline double _stab_bound(const Run* run, double re, double mag) noexcept nogil:
+    """The boundary |h lambda| in the direction of lambda, reflected into the left half-plane
+    (a mode that grows physically is judged by its magnitude): run.stab_bound interpolated at
+    u = |Re lambda|/|lambda|."""
+    cdef int n = run.n_stab_bound, k
+    cdef double u
+    if n <= 1 or mag == 0.0:
+        return run.stab_bound[0]
+    u = fabs(re) / mag * (n - 1)
+    if not u < n - 1:        # the real axis, or NaN (a Jacobian blowing up)
+        return run.stab_bound[n - 1]
+    k = <int> u
+    return run.stab_bound[k] + (u - k) * (run.stab_bound[k + 1] - run.stab_bound[k])
+
+
+cdef inline double _stab_limit(const Run* run, double mag, double re, double* rho,
+                               double* bnd) noexcept nogil:
+    """run.h |lambda|/b of one eigenvalue (|lambda| = mag, real part re); rho and bnd take
+    |lambda| and b when it limits more than what they hold (rho < 0: nothing yet)."""
+    cdef double b = _stab_bound(run, re, mag), r = run.h * mag / b
+    if rho[0] < 0.0 or r > run.h * rho[0] / bnd[0]:
+        rho[0] = mag
+        bnd[0] = b
+    return r
+
+
+cdef inline double _stab_pair(const Run* run, double a, double b, double c, double d, double* rho,
+                       double* bnd) noexcept nogil:
+    """The limiting eigenvalue of [[a, b], [c, d]]: its run.h |lambda|/b, |lambda| into rho and
+    b into bnd."""
+    cdef double m = 0.5 * (a + d), det = a * d - b * c, disc = m * m - det, s, l1
+    rho[0] = -1.0
+    if disc < 0.0:           # a complex pair m +- i sqrt(-disc): |lambda|^2 = det
+        s = sqrt(det)
+        return _stab_limit(run, s, m, rho, bnd)
+    s = sqrt(disc)
+    l1 = m + s if m >= 0.0 else m - s      # the larger root without cancellation
+    _stab_limit(run, fabs(l1), l1, rho, bnd)
+    l1 = det / l1 if l1 != 0.0 else 0.0
+    _stab_limit(run, fabs(l1), l1, rho, bnd)
+    return run.h * rho[0] / bnd[0]
+
+
+cdef inline double _stab_start(int i) noexcept nogil:
+    """A fixed, generic start vector (no structural zeros)."""
+    return 1.0 + 0.5 * sin(1.3 * i + 0.7)
+
+
+cdef inline void _stab_matvec(const double* J, const double* d, const double* x,
+                              double* z) noexcept nogil:
+    """z = D^-1 J D x, D = diag(d)."""
+    cdef int i, j
+    cdef double s
+    for i in range(_NS):
+        s = 0.0
+        for j in range(_NS):
+            s += J[i * _NS + j] * d[j] * x[j]
+        z[i] = s / d[i]
+
+
+cdef double _stab_krylov(const Run* run, const double* J, double* work, bint fresh,
+                         double* rho, double* bnd) noexcept nogil:
+    """_NS > 2: the dominant eigenvalues of J from the Krylov plane {q, J q} of a power
+    iteration whose vector q (work[0:_NS]) is kept from check to check; see the block comment
+    above."""
+    cdef double* q = work
+    cdef double w[_NS]
+    cdef double p[_NS]
+    cdef double v[_NS]
+    cdef double d[_NS]
+    cdef double sigma = work[_NS + 1], scale, a, beta, qv, pv, nw, res, hn, s
+    cdef int i, j, it
+    if not sigma > 0.0:
+        # no |lambda| measured yet: the size of A = dq''/dq (its largest row sum)
+        sigma = 0.0
+        for i in range(_NQ):
+            s = 0.0
+            for j in range(_NQ):
+                s += fabs(J[(_NQ + i) * _NS + j])
+            sigma = fmax(sigma, s)
+        sigma = sqrt(sigma) if sigma > 0.0 else 1.0
+    # q in the coordinates of the new scaling, and a trace of the generic vector added: a mode
+    # that q lost (decayed under the power iteration, or absent from the last modes' dominant
+    # pair) can come back when the Jacobian changes
+    scale = work[_NS] / sigma if work[_NS] > 0.0 else 1.0
+    work[_NS] = sigma
+    s = 0.0
+    for i in range(_NS):
+        if _NQ <= i < 2 * _NQ:
+            q[i] *= scale
+        s = fmax(s, fabs(q[i]))
+    for i in range(_NS):
+        q[i] += (1e-3 if fresh else 1e-8) * s * _stab_start(i) if s > 0.0 else _stab_start(i)
+        d[i] = sigma if _NQ <= i < 2 * _NQ else 1.0
+    s = 0.0
+    for i in range(_NS):
+        s += q[i] * q[i]
+    s = 1.0 / sqrt(s)
+    for i in range(_NS):
+        q[i] *= s
+    _stab_matvec(J, d, q, w)
+    for it in range(STAB_MAXIT):
+        # the plane {q, J q}: J q = a q + beta p exactly, J p = qv q + pv p + the residual
+        a = 0.0
+        for i in range(_NS):
+            a += q[i] * w[i]
+        beta = 0.0
+        nw = 0.0
+        for i in range(_NS):
+            p[i] = w[i] - a * q[i]
+            beta += p[i] * p[i]
+            nw += w[i] * w[i]
+        beta = sqrt(beta)
+        if not nw > 0.0:
+            rho[0] = 0.0
+            bnd[0] = run.stab_bound[0]
+            return 0.0
+        if beta <= 1e-12 * sqrt(nw):
+            # q is an eigenvector: a real eigenvalue a
+            rho[0] = -1.0
+            return _stab_limit(run, fabs(a), a, rho, bnd)
+        for i in range(_NS):
+            p[i] /= beta
+        _stab_matvec(J, d, p, v)
+        qv = 0.0
+        pv = 0.0
+        for i in range(_NS):
+            qv += q[i] * v[i]
+            pv += p[i] * v[i]
+        res = 0.0
+        for i in range(_NS):
+            s = v[i] - qv * q[i] - pv * p[i]
+            res += s * s
+        hn = a * a + beta * beta + qv * qv + pv * pv
+        if res <= STAB_TOL * STAB_TOL * hn or it == STAB_MAXIT - 1:
+            break
+        # the power iteration's next vector J q, and J (J q) = a J q + beta J p without a product
+        nw = 1.0 / sqrt(nw)
+        for i in range(_NS):
+            q[i] = w[i] * nw
+            w[i] = (a * w[i] + beta * v[i]) * nw
+    s = _stab_pair(run, a, qv, beta, pv, rho, bnd)
+    if rho[0] > 0.0:
+        work[_NS + 1] = rho[0]
+    return s
+
+
+cdef inline double _stab_check(Run* run, Ctx* ctx, double t, const double* y, double* J,
+                               bint fresh, double* rho, double* bnd) noexcept nogil:
+    """run.h |lambda|/b of the limiting eigenvalue of df/dy at (t, y) (NaN where the Jacobian
+    is not finite); |lambda| into rho, b into bnd.  ``fresh``: the first check since the
+    Jacobian may have jumped (an interval's start, an event)."""
+    cdef double local[_NS + 2]
+    cdef double* work = run.stab_work
+    cdef double r
+    cdef int i
+    jacobian(t, y, J, NULL, ctx)
+    run.n_checks += 1
+    rho[0] = -1.0
+    # a non-finite Jacobian gives NaN below (its comparisons are all false)
+    if _NS == 1:
+        return _stab_limit(run, fabs(J[0]), J[0], rho, bnd)
+    if _NS == 2:
+        return _stab_pair(run, J[0], J[1], J[2], J[3], rho, bnd)
+    if not _finite(_NS * _NS, J):
+        return NAN      # and the kept vector stays clean
+    if work == NULL or run.n_checks == 1:
+        if work == NULL:
+            work = local
+        for i in range(_NS):
+            work[i] = _stab_start(i)
+        work[_NS] = 0.0
+        work[_NS + 1] = 0.0
+        fresh = True
+    return _stab_krylov(run, J, work, fresh, rho, bnd)
+
+
+cdef inline long _stab_period_max(long nstep) noexcept nogil:
+    """The most steps between two checks in an interval of nstep steps."""
+    cdef long p = STAB_PERIOD if _JAC_SYMBOLIC else STAB_PERIOD * _NS
+    if nstep < p * STAB_PER_INTERVAL:
+        p = nstep // STAB_PER_INTERVAL
+    return p if p > 1 else 1
+
+
+cdef inline long _stab_period(double r, double r_last, long since, long period_max) noexcept nogil:
+    """Steps to the next check: period_max, or half the steps to the boundary extrapolated
+    from the growth of h |lambda|/b since the last check (r_last, ``since`` steps ago)."""
+    cdef double grow, p
+    if r >= 1.0 or not (r_last >= 0.0 and since > 0 and r > r_last):
+        return period_max
+    grow = (r - r_last) / since
+    p = 0.5 * (1.0 - r) / grow
+    if p >= period_max:
+        return period_max
+    return <long> p if p >= 1.0 else 1
+
+
 cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
     """RK4 or the thesis scheme over [a, b] in equal steps no longer than run.h.
 
     State and stages live in local arrays of compile-time size (_NS, _NQ from
     the including model) and the context is a local copy, so that the compiler
     can keep them in registers.  After an event the rest of the interval is cut
-    into equal steps again.
+    into equal steps again.  With run.stab_mode the stability check runs at the start of a
+    step (see the block comment above _stab_check).
     """
     cdef Ctx local_ctx = run.ctx[0]
     cdef Ctx* ctx = &local_ctx
@@ -257,12 +503,24 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
     cdef int piv[_NQ1]
     cdef int calls
     cdef bint newton
-    cdef double* Jm = NULL     # koster's Newton: df/dy and the Newton matrix, allocated on first use
-    cdef double* Wm = NULL
+    cdef double* Jm = NULL     # df/dy (the check, koster's Newton) and koster's Newton matrix,
+    cdef double* Wm = NULL     # allocated on first use
+    # the stability check: the step (k) it comes at next (-1: never), the step it came at
+    # last, the most steps between, its last ratio
+    cdef bint fresh = True
+    cdef long k_check = 0 if run.stab_mode != 0 else -1, k_last = 0
+    cdef long period_max = _stab_period_max(nstep)
+    cdef double ratio, ratio_last = -1.0, s_rho, s_bnd
+    if k_check == 0:
+        Jm = <double*> malloc((_NS * _NS + _NQ * _NQ) * sizeof(double))
+        if Jm == NULL:
+            return STATUS_NO_MEMORY
+        Wm = Jm + _NS * _NS
     memcpy(y, run.y, sizeof(y))
     rhs(t, y, k1, ctx)
     n_rhs += 1
     if _rec_point(run, t, y, k1) != 0:
+        free(Jm)
         return STATUS_NO_MEMORY
     if _NE > 0:
         events(t, y, g0, ctx)
@@ -270,6 +528,25 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
         if n_steps >= max_steps:
             status = STATUS_MAX_STEPS
             break
+        if k == k_check:
+            ratio = _stab_check(run, ctx, t, y, Jm, fresh, &s_rho, &s_bnd)
+            if ratio == ratio:      # not NaN (a state blowing up is NOT_FINITE's to report)
+                if ratio > run.stab_ratio:
+                    run.stab_ratio = ratio
+                    run.stab_t = t
+                    run.stab_rho = s_rho
+                    run.stab_b = s_bnd
+                if ratio > 1.0 and run.stab_mode == 2:
+                    status = STATUS_UNSTABLE
+                    break
+                # after a jump, the next step's check measures the growth to extrapolate
+                k_check = k + (1 if fresh else
+                               _stab_period(ratio, ratio_last, k - k_last, period_max))
+                ratio_last = ratio
+            else:
+                k_check = k + period_max
+            k_last = k
+            fresh = False
         # the new time is computed once, so that the last stage and the slope at the new
         # point see the very same t (the model caches cam-law values by argument)
         tn = a + (k + 1) * h if k + 1 < nstep else b
@@ -377,6 +654,10 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
                 local_ctx = run.ctx[0]
                 a = t   # equal steps again over the rest of the interval
                 k = 0
+                if k_check >= 0:    # new modes: check the new Jacobian before the next step
+                    k_check = 0
+                    k_last = 0
+                    fresh = True
                 nstep = fixed_steps(a, b, run.h) if b > a else 0
                 if nstep:
                     h = (b - a) / nstep
