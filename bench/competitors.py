@@ -67,20 +67,24 @@ def _camdyn_kwargs(method: str, x: float) -> dict:
     return {"step": x} if method == "rk4" else {"rtol": x}
 
 
-def camdyn_simulate(method: str) -> Competitor:
-    """The public call, simulate(...), as a user makes it (Python overhead included)."""
+def camdyn_simulate(method: str, exact: bool = True) -> Competitor:
+    """The public call, simulate(...), as a user makes it (Python overhead included); with
+    ``exact`` False every step integrated, the dwell too (the like-for-like comparison with
+    the yardstick, which integrates it)."""
 
     def runner(x):
         kw = _camdyn_kwargs(method, x)
-        return lambda: simulate(MODEL, PARAMS, T_END, method, **kw)
+        return lambda: simulate(MODEL, PARAMS, T_END, method, exact_segments=exact, **kw)
 
     def info(x):
         r = runner(x)()
         return (*state_at_break(r.t, r.y), int(r.stats["n_rhs"]))
 
     grid = rk4_grid() if method == "rk4" else rtol_grid()
-    return Competitor(f"camdyn-{method}", f"camdyn {method.upper()} simulate()",
-                      "h" if method == "rk4" else "rtol", grid, runner, info, "camdyn")
+    key, label = f"camdyn-{method}", f"camdyn {method.upper()} simulate()"
+    if not exact:
+        key, label = key + "-steps", label + ", dwell integrated"
+    return Competitor(key, label, "h" if method == "rk4" else "rtol", grid, runner, info, "camdyn")
 
 
 def model_arguments() -> tuple:
@@ -91,11 +95,11 @@ def model_arguments() -> tuple:
             np.array([law.par], dtype=float))
 
 
-def bare_arguments(method: str, x: float) -> tuple:
+def bare_arguments(method: str, x: float, exact: bool = True) -> tuple:
     """What simulate() hands the compiled loops, prepared once beforehand:
     (the prepared Integrator, p, stops, cap)."""
     kw = _camdyn_kwargs(method, x)
-    sim = Simulator(MODEL, T_END, method, **kw)
+    sim = Simulator(MODEL, T_END, method, exact_segments=exact, **kw)
     p = sim.model.parameter_vector(PARAMS)
     stops = sim.stops(p)
     if method == "rk4":
@@ -106,11 +110,12 @@ def bare_arguments(method: str, x: float) -> tuple:
     return sim.integrator, p, stops, cap
 
 
-def camdyn_bare(method: str) -> Competitor:
-    """The compiled loops alone (Integrator.run), everything prepared."""
+def camdyn_bare(method: str, exact: bool = True) -> Competitor:
+    """The compiled loops alone (Integrator.run), everything prepared; ``exact`` as in
+    camdyn_simulate."""
 
     def runner(x):
-        integ, p, stops, cap = bare_arguments(method, x)
+        integ, p, stops, cap = bare_arguments(method, x, exact)
         return lambda: integ.run(p, stops, cap)
 
     def info(x):
@@ -197,7 +202,9 @@ THIN_GRIDS = {"h": (1 / 20, 1 / 200, 1 / 2000), "rtol": (1e-4, 1e-7, 1e-10)}
 def sweep_groups(thin: bool = False) -> list[list[Competitor]]:
     """The competitors in groups timed side by side; each group shares its grid (with
     ``thin``, three settings of it)."""
-    groups = [[camdyn_simulate("rk4"), camdyn_bare("rk4"), yardstick_rk4()],
+    # RK4's bare loop runs the yardstick's steps, the dwell integrated: like for like
+    groups = [[camdyn_simulate("rk4"), camdyn_simulate("rk4", exact=False),
+               camdyn_bare("rk4", exact=False), yardstick_rk4()],
               [camdyn_simulate("dp54"), camdyn_bare("dp54")],
               [scipy_ivp("DOP853")], [scipy_ivp("RK45")], [scipy_odeint()]]
     if thin:

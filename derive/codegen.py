@@ -77,6 +77,32 @@ def _rhs_expressions(m: Model, eq: Equations, plain: Plain):
     return list(M) + list(f) + rates, False
 
 
+def _linear_in_dwell(m: Model, checked: list, cam_syms: list, events: list,
+                     n_mass: int) -> bool:
+    """Whether the right-hand side is linear and time invariant, y' = A y + c with A and c
+    constant, while every cam input sits in a dwell (every one of them: a model without cam
+    inputs, always): its expressions there (the cam's derivatives zero, its value a
+    constant) are affine in the states and free of time, and nothing switches (no force
+    element modes, no events).  ``n_mass``: the leading expressions that are the entries of
+    a mass matrix solved at run time (it must be constant there).  The loops then step over
+    such an interval exactly (runtime/engine/loops.pxi, _loop_exact): the free vibration
+    after a rise, whose amplitude is the residual vibration of thesis sec. 4.4."""
+    if m.modes or events:
+        return False
+    states = set(_state_symbols(m))
+    dwell = {s: 0 for syms in cam_syms for s in syms[1:]}
+    for k, e in enumerate(checked):
+        e = sp.sympify(e).xreplace(dwell)
+        if m.time in e.free_symbols or e.has(sp.Piecewise):
+            return False
+        if k < n_mass and e.free_symbols & states:
+            return False
+        for y in states & e.free_symbols:
+            if e.diff(y).free_symbols & states:
+                return False
+    return True
+
+
 def _state_symbols(m: Model) -> list:
     """Plain symbols of the states in their order y = [q, q', z]."""
     return ([sp.Symbol(c.name, real=True) for c in m.coordinates]
@@ -359,6 +385,7 @@ def model_context(eq: Equations) -> dict:
     used |= printer.used
     used = math_imports(used)
     manifest = _model_manifest(m, eq, instances, events, jac_time is not None)
+    lti = _linear_in_dwell(m, checked, cam_syms, events, 0 if diagonal else n * n)
 
     initial = ([c.initial for c in m.coordinates] + [c.initial_rate for c in m.coordinates]
                + [z.initial for z in m.first_order])
@@ -384,6 +411,7 @@ def model_context(eq: Equations) -> dict:
         "diagonal": diagonal,
         "mass_checks": mass_checks,
         "specialise": specialise,
+        "lti": lti,
         "variants": rhs_variants,
         "temporaries": [name for v in rhs_variants for name, _ in v["lines"]],
         "consts": [k.name for k, _ in consts.items],

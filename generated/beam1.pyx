@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4154e79fa2fe389475e3bf90d7db6a9c98183e42943d4757bdf9e2ff51544db1
-# Text hash: sha256:f8799fa19844d0c911a16056e8efd81d11aa50b336a5186f0569cc67f95eaa7f
+# Derivation key: sha256:e2e98bd668bfd9af932695d65d9c21acb6ef5d65f0d16a9f2c34230386420707
+# Text hash: sha256:187894a5651d2ae6ada4fc11a78d826c4f731e7524356217d98bc515bf2a0e8b
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:bfb311a2dc642912ccf96df03b945a685fb049d1c1bb63babea364e48a9d993c
@@ -1084,6 +1084,12 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
 
 cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
     rhs(t, _y, _dy, ctx)
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """A constrained model's loops never step over an interval exactly: its right-hand side
+    is the solution of the constrained system, with a projection or stabilization."""
+    return False
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:64c17429f9d8ac931eb431eaab43a0c1a17cc9fea2fe08bff4e7711efe6161d2
-# Text hash: sha256:5118f4db583939ed4e720a72bb4b921e19ddbc4f734e817104ed014f36eafbf1
+# Derivation key: sha256:d6563670c920492a20612496305fab0a21bb0739f727c64577d8c646d638ed03
+# Text hash: sha256:ceeb75ccb63ab0c0c5fb35ec58ee4ed56ef8e6078dadfe2fcc232b689154a64d
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
 # Source hash: sha256:921486bdc725aa760722bfb26290d6704b3ad8c2d314f01890c68f465878e573
@@ -1380,6 +1380,12 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
 
 cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
     rhs(t, _y, _dy, ctx)
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """A constrained model's loops never step over an interval exactly: its right-hand side
+    is the solution of the constrained system, with a projection or stabilization."""
+    return False
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e53248ab38ca38c85a99cd98dd28b3e991c4e9074b7107533a5d0572e4b6f887
-# Text hash: sha256:66e066f8aced9ec0b4bc449cdf977346dbf5396512f484d7955f01c6f9ac0563
+# Derivation key: sha256:74ca4b847b652f3f477354a01fce003c11e8eebd5ac1fb16af67b181828c4db1
+# Text hash: sha256:15aadb5abf34369dfff2441509e12db8a978d6ae03dc0e813a9eb17220dcc779
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:1d8106cbb4c080dc1d4baa1e57662f2dae7c6b7184e85535a26798dca84a5c31
@@ -1925,6 +1925,12 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
 
 cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
     rhs(t, _y, _dy, ctx)
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """A constrained model's loops never step over an interval exactly: its right-hand side
+    is the solution of the constrained system, with a projection or stabilization."""
+    return False
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:510fc2a8c5568d8d2ee32feda37c87ee9b488d7576b6510a37c5c180c8672b78
-# Text hash: sha256:455260dbe6131eaf189d04de412682a2a43aacfdaf1f54abe8729b119278a654
+# Derivation key: sha256:96a3bc9190513560c7c04ddd1ed3ed95d92494ae3114df919ec01ec1f01a720e
+# Text hash: sha256:b5ff5c6aeb0b780364b08157c82dc945c70f0480ec08d57555c63bb5b64d0b77
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:005fc6dd88930eeb16af7091c0a74ba4fe7f9c436ef794c0f2976a8de40a1269
@@ -2631,6 +2631,12 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
 
 cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
     rhs(t, _y, _dy, ctx)
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """A constrained model's loops never step over an interval exactly: its right-hand side
+    is the solution of the constrained system, with a projection or stabilization."""
+    return False
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined

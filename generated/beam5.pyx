@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6f55e2ec389254e65ad53ea105611e7f40ae49afc1e53414e29add22dba9cd64
-# Text hash: sha256:70d112f04a3cf387a6c0fc1057ac5e8d1cdd6466a48386529c3ffd69348774fb
+# Derivation key: sha256:b4ce6ed97a9d87645064bc07d834ebea29b0c939dc5233417a74a4079b4ccb40
+# Text hash: sha256:077fec1d68c1ce5b971396a6cb9184b3a34af8a88dd414bfb5c6c4335f1f0429
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:a91861c5ef9ef871d0972bdd6fadc95fb8bd8aa9c22b166a68b2e22724f00536
@@ -3455,6 +3455,12 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
 
 cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
     rhs(t, _y, _dy, ctx)
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """A constrained model's loops never step over an interval exactly: its right-hand side
+    is the solution of the constrained system, with a projection or stabilization."""
+    return False
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined

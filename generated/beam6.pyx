@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6862eb1fa8902c8bdae2139ec2fc4689b5a7ffb302351d498582a869f6f7bcd9
-# Text hash: sha256:4d85aa36be7d41ba45fd81a35a086ad68bfbcfd40017f8b3faf8cf923bee9199
+# Derivation key: sha256:97ec208141b8db6d0337a6832b63d036dcc63fc8e9a4218f265418f35901384a
+# Text hash: sha256:f471843226fee79b5d3da6fa04d4b5a4e4799fb0cafa0d76051511df9fc7572f
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:9d4ce2ed01f1ecad9d62194db1151f10c3655da69963e1cb0de52220801b3e5b
@@ -4463,6 +4463,12 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
 
 cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
     rhs(t, _y, _dy, ctx)
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """A constrained model's loops never step over an interval exactly: its right-hand side
+    is the solution of the constrained system, with a projection or stabilization."""
+    return False
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined

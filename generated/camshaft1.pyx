@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c5108a446b1e3380e98c63705a47434b94ece0b1820792246fd441046038ec23
-# Text hash: sha256:0c8f4c0ab7827c69f71cbde97ea41f6325a564c9c4e58a24f3d38290f65a681c
+# Derivation key: sha256:72e277d29ca434cd804e80f791eb1b5093b357558134e1b4706656dae26bb5d4
+# Text hash: sha256:2a7b933a87ff73616fe6a5bf7451f0877803eb000cac83708ad12bf376316947
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233
@@ -175,6 +175,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): every cam input in a dwell."""
+    return camlaw_dwell(ctx.law[0], ctx.mode[0])
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c29d911f81ef91f5497e98a6bdab09f0bf74234a6b9a9f2308419a098045ca60
-# Text hash: sha256:9a41c304532d510cd94e0af56fc9bf2c0da72815ab1b7bb581345aaeb6cd69a4
+# Derivation key: sha256:d6e838f49f6bd0cb29cf12ada3edb990040264152eeac65645743e2695d90cf6
+# Text hash: sha256:d889f8a1767f3012ee1dea0ec6aada31528302546232337702e3b1af3e5d4e0e
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a
@@ -224,6 +224,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): never."""
+    return False
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e857efa475fabc80a361e91b107aa644cad7ea9853b0868769fdec3ac01df0b5
-# Text hash: sha256:33fc42b4895a20008e41a9e8a6ee3d185b458a7f480361d14725cfb9b89ae4c2
+# Derivation key: sha256:35220cc70261115fe7356de32669c24ef157c655e5b13427f373ca98bfd72989
+# Text hash: sha256:9106f6f949a65cf71dedc3521721a37d17373b39460839f7e8945e6c7e4f9046
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f
@@ -263,6 +263,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): every cam input in a dwell."""
+    return camlaw_dwell(ctx.law[0], ctx.mode[0])
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

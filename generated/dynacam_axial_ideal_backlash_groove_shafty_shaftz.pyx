@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6adf50ff3d1dd36a48d19892cc78ac85f4f6e8050ccea35a83b36e4573c0ad8d
-# Text hash: sha256:a6caf00925ccb02011b7a3e992cd55ce8ad76743891082b9e1f0b599d532ff17
+# Derivation key: sha256:552f52d8f8b4e3ca2a66c7bfc360ad9ca6d911e18777f31b41e80033ee0e8cec
+# Text hash: sha256:9425227f8a5ccaf7f237966f072b0ec63472cfdf7da1cba7822fc58c4b940d49
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc
@@ -692,6 +692,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): never."""
+    return False
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

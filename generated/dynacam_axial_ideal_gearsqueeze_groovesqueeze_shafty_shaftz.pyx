@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f64e496f55ad2235d9e1ba715f4f0b9c0b56e1d4753a34b918e11b6044fc96a7
-# Text hash: sha256:39ff9265f26ba7472da4838bd564780f82b06417e598641ced5fcdc315017ee0
+# Derivation key: sha256:42287dba413f7346237176137530bdea337077e9c0119e150ae00d0d8b7ef55d
+# Text hash: sha256:7284a0cb30a0d70142c5ef079574b5fd41f674f6f04d9281e62e2cc222765eba
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:244320aa74994aa9e669e9639536961ba92c6b1c23be07561292a0c9dea13c5c
@@ -2033,6 +2033,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): never."""
+    return False
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

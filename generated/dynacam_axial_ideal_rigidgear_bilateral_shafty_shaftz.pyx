@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d8718adeca9be78b9fa9e7f6d9784caaf3dc22888f819a6813c16d618cc38ae8
-# Text hash: sha256:4c3b55d928716104f698dbf0d7f4dc973d353fa1cb66ded3de4b3cae1657815d
+# Derivation key: sha256:47a2752ef86dd978a54d4810d56c95246023b6559ba0dd32bfb1e93599585a50
+# Text hash: sha256:41dcb1e4b472442a04bc0829ad270f780c750cb79340b4592a67f24d385f6691
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e
@@ -1004,6 +1004,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): never."""
+    return False
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:715c8ca7e15b744fa94b29b21ee614587ccf6a9fe5c8849bac3d91ebee88ab25
-# Text hash: sha256:d1ae1112a38134a4bb15055433818c3e693bf2e310b5035898da6bfde837887f
+# Derivation key: sha256:b6931bb6a07ca3a64ec76d009d5ab035b0c1021b836818c56f053c44601dbcdc
+# Text hash: sha256:ef69ec3f9ea7c9e25695d4d4813cde6112c70d47c8e4e0d90f73b468ec3bf263
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:747e34dbea18a7d307dc7101158b4419fb0642de73f52917507a7d1b1d7004c3
@@ -482,6 +482,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): never."""
+    return False
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ae5ca4d53149c55f3cc1ff849857f7e17c14d35799edf09409e24ba0ee4137e7
-# Text hash: sha256:cecac3ad6cb4d9e5144737e93e6b20b082ec61ae2026fd3ca1b965db3d95b88b
+# Derivation key: sha256:1cc3414b5ed84e0e27a6ee2132639499aa44e321932a25a00ade7762d04242e7
+# Text hash: sha256:722654ce49933e287a3771fa786aa85f3fa6a6749c11f5df130d939c206176a3
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:478faccf329f7294d2cd47f536ad5f78fa53fe5d590d1d87b6cb5079502bd98d
@@ -1581,6 +1581,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): never."""
+    return False
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:debfc425d03bdd76d784b9bbb128b05e1608d686dcace32b4dae1d2eaddb2011
-# Text hash: sha256:d2a327f02d5357f9b5972c789d6c6479bddeedd46f930c535cdac2f928c76e30
+# Derivation key: sha256:6245a34af5b9a9c3b4df7b492a4eb144fba6599416b6b6f7fcc1ae781471032e
+# Text hash: sha256:8ace43b488986187a0ae880e02757f35a62ed8b85ea5efa0f177aa10b984491d
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7df6f3da3414231df3e2e1f7adc385d77f7cfc0e35b975f115056fce8cb53bba
@@ -988,6 +988,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): never."""
+    return False
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:df26e4848fe6c6e7d0ca35c8d46eec5450a59805a119fdf7eabae908f86b7f66
-# Text hash: sha256:aaa1497910037a06e7e940401e9676b947be44fc4ae35c5e1f5acb62241b0264
+# Derivation key: sha256:c138064f28c41f38d711a5fdee897aafe282066e9a97e859b38a38f660eb54fa
+# Text hash: sha256:222a46240c6a9e0c3f19249572a6c98aeedaa06680fec5a83e9609cb5eb92962
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1
@@ -784,6 +784,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): never."""
+    return False
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:cb9d05395b32e5ef45d397d4d833f90367021d2882c5f3d55d076d51958e92fd
-# Text hash: sha256:1d209e95f1505326225bba084838f0b956d5027b261b8cd769818485b4a8b184
+# Derivation key: sha256:5ce6b669197e6afa91d73a509f53e0cc125cf9e373d300c1fb8e56239ba50f5d
+# Text hash: sha256:7a1c0d712b6e06eb7446396a1c32fc12366c5a2253d1ef62b0c8151ada3e99d6
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:775dc74d7dd69da69bafb1940d40799b0a663f4cd304542cf146150dfdb0178d
@@ -914,6 +914,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): never."""
+    return False
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:189e2210c88e29a91e1770cb6c8fd37adb0ac26c63f5e255a2805c12bbb77803
-# Text hash: sha256:3b1475e6bd541529936939dc821c1eebe94b5bc26c9bfeeb40b6b0c3e39c2cdf
+# Derivation key: sha256:3c88de54d48079a0e20cd7bc94a3f8c5e96e26c5782dbec24944b076738f73c6
+# Text hash: sha256:29a7395e57f367540c7657ce38820ac4cec8ad157a29b2605f7544407989a525
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68
@@ -169,6 +169,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): every cam input in a dwell."""
+    return camlaw_dwell(ctx.law[0], ctx.mode[0])
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6f59112c32361cfa658305d7a1c2076e1e6065f486508989c0326d92e28d1201
-# Text hash: sha256:0e57b2c916c2335aab36184c4ea02eb3c6357faddf71ba7843d2180fb5f0aa19
+# Derivation key: sha256:b4ae192fe293a31653e264bd3c83371bf63560157a4978d8f70ee40fb7fdab42
+# Text hash: sha256:9f665b3a2810dbe6072b5e071aa49fe10c64b3bc09147dcc4e07a70941c924cb
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71
@@ -192,6 +192,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): every cam input in a dwell."""
+    return camlaw_dwell(ctx.law[0], ctx.mode[0])
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

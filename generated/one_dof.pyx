@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0b989aeb2a46c15e3b79ad3d01c01d97fde20040e50eceb71f270ad19fa7d974
-# Text hash: sha256:d203985d75975b71fdb6e340c432194a2021075212a52608ae8c1b237df54a6b
+# Derivation key: sha256:d0d485863fea84bb63904070c4879e45ad25c92a69fc69e71ca25391335bc939
+# Text hash: sha256:781f75680aeb41feb9f4c399a2926b8bcc103d3b42afcba9a73769aa7b8476b6
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073
@@ -176,6 +176,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): every cam input in a dwell."""
+    return camlaw_dwell(ctx.law[0], ctx.mode[0])
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

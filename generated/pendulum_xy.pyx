@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:62e04885429af3e90130be37bb2b009bc0930710c6dc39f455bb3ab44c118d3e
-# Text hash: sha256:918b0a4051f385f8a205ccec3b36887a7151dc7b8a749fea3d9f3234cb2fe0b6
+# Derivation key: sha256:17517b96b35168fe4401d76aa889a90014d7626a620f3ec7182e2672b6cde1d9
+# Text hash: sha256:cde693843f340791fff1c11bf38c82df65c19118073bdd41e5656796e6b193e0
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:e017c1589554bffedb179ec1f3fe3f8fdb43bb82d0bdd5e3f88df9f352e7786a
@@ -343,6 +343,12 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
 
 cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
     rhs(t, _y, _dy, ctx)
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """A constrained model's loops never step over an interval exactly: its right-hand side
+    is the solution of the constrained system, with a projection or stabilization."""
+    return False
 
 
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ae980c2683a214a0d966a5531b21b5469c75528d18d3a349cb41ba46f2ac72f2
-# Text hash: sha256:e836e77eebca92bfa93503189ae2a8a32f3eca7c2c4cd078f30644ca52c63d9e
+# Derivation key: sha256:8795e498c18c25f028a2f1f927ca0f1ec3572fd62d17e0526d21231c9f3a3afe
+# Text hash: sha256:8d6573b98991584c27ad7bd26c6ae188b9a5c87b8b19a34c61b3b1b8d4329dc3
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27
@@ -394,6 +394,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): never."""
+    return False
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c56df463449375b9ac144a1c7a978ddcb52f573961f83eb15ac4e557bccb3a55
-# Text hash: sha256:8579e611f6e888aeff3f35d725b30277558ac3d929285416e2ac42161b6e3cbf
+# Derivation key: sha256:85e7938e2c6c929474f38361bebf177cf343d9b577f8114e95e8f826a9eead2e
+# Text hash: sha256:acbf3b99d657637416e631b49ac8f14b46437c3f0810109d6efb7d1453119450
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360
@@ -279,6 +279,12 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
     if camlaw_dwell(ctx.law[0], ctx.mode[0]):
         ctx.variant |= 1
+
+
+cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
+    """Whether y' = A y + c with A and c constant in the segments now in force, so that the
+    loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): every cam input in a dwell."""
+    return camlaw_dwell(ctx.law[0], ctx.mode[0])
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:

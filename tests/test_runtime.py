@@ -81,7 +81,9 @@ def test_result_access_and_outputs():
         res["nope"]
     with pytest.raises(CamdynInputError, match="must lie in"):
         res.sample([4.0])
-    assert res.stats["n_steps"] == 300 and res.stats["n_rhs"] == 4 * 300 + 2
+    # RK4 over the rise (100 steps, 4 calls each and one at its start), the dwell stepped over
+    # exactly (200 steps, one call for the interval)
+    assert res.stats["n_steps"] == 300 and res.stats["n_rhs"] == 4 * 100 + 1 + 1
 
 
 def test_rhs_cost_is_measurable():

@@ -120,13 +120,25 @@ class Simulator:
             coordinates and rates recovered from the independent ones, with a note when that
             moved them.  False starts from the state as given, off the constraints, to study
             how the formulation pulls it back (Baumgarte's terms, tests/test_pendulum_xy.py).
+    exact_segments
+            Where the model is linear and time invariant (every cam input in a dwell, no
+            contact or friction: the free vibration after a rise of one-DOF, CAMSHAFT-1, the
+            chain), step over the interval with its exact propagator e^(A h) instead of the
+            method (runtime/engine/loops.pxi, _loop_exact), recorded at the method's step
+            (RK4) or as densely as the dense output needs at rtol (DP54, RODAS4).  Default:
+            True for RK4, whose dwell then costs a matrix-vector product a step and carries
+            no error; False for DP54 and RODAS4 (their figures are read off a record whose
+            density their own step control sets) and for the thesis scheme, which is run as
+            the thesis ran it; False with check_stability=False too, whose runs are made to
+            see what the method's step does, the dwell included (the stability map).
     """
 
     def __init__(self, model, t_end: float = 3.0, method="dp54", *, rtol: float | None = None,
                  atol: float | None = None, step: float | None = None, law="cycloidal",
                  theta: float | None = None, y0=None, t0: float = 0.0, max_steps: int = 5_000_000,
                  modes: dict | None = None, max_events: int = 1_000_000,
-                 check_stability: bool = True, consistent: bool = True):
+                 check_stability: bool = True, consistent: bool = True,
+                 exact_segments: bool | None = None):
         m = model if isinstance(model, CompiledModel) else load(model)
         if isinstance(method, str):
             method = _methods.make(method, rtol=rtol, atol=atol, step=step)
@@ -147,6 +159,7 @@ class Simulator:
             raise CamdynInputError(f"check_stability must be True or False, got {check_stability!r}")
         self.check_stability = check_stability
         self.consistent = bool(consistent)
+        self._project = self.consistent and hasattr(m.module, "consistent_state")
         self.laws, self.law_codes, self.law_pars = law_choices(m, law, theta)
         n = len(m.state_names)
         # a default initial state that depends on the parameters is worked out per run
@@ -177,10 +190,15 @@ class Simulator:
         self.max_events = int(max_events)
         stab = (driver.CHECK_OFF if method.adaptive else
                 driver.CHECK_STOP if check_stability else driver.CHECK_ESTIMATE)
+        if exact_segments is None:
+            exact_segments = method.name == "rk4" and check_stability
+        elif not isinstance(exact_segments, bool):
+            raise CamdynInputError(f"exact_segments must be True or False, got {exact_segments!r}")
+        self.exact_segments = exact_segments
         self.integrator = driver.Integrator(
             m.capsule, method.code, self.law_codes, self.law_pars, y_init, t0, h, h_max, rtol, atol,
             max_steps, np.array(self.modes0, dtype=np.intc), int(max_events), stab,
-            None if method.adaptive else _stability.loop_boundary(method.name))
+            None if method.adaptive else _stability.loop_boundary(method.name), exact_segments)
         self._stops: dict = {}
         self._cap = 256
 
@@ -251,7 +269,7 @@ class Simulator:
         y0 = None if self._y0_given else m.initial_state(p)
         tname = m.manifest["time"]["name"]
         notes = []
-        if self.consistent and hasattr(m.module, "consistent_state"):
+        if self._project:
             y0, note = self._consistent(p, self._y_init if y0 is None else y0)
             notes += [note] if note else []
         out = self.integrator.run(p, stops, cap or self._cap, y0)
@@ -307,17 +325,18 @@ class Simulator:
 
 @lru_cache(maxsize=32)
 def _prepared(model, t_end, method, rtol, atol, step, law, theta, y0, t0, max_steps, modes,
-              notches) -> Simulator:
+              exact_segments, notches) -> Simulator:
     return Simulator(model, t_end, method, rtol=rtol, atol=atol, step=step,
                      law=dict(law) if isinstance(law, tuple) else law,
                      theta=theta, y0=y0, t0=t0, max_steps=max_steps,
-                     modes=dict(modes) if modes else None)
+                     modes=dict(modes) if modes else None, exact_segments=exact_segments)
 
 
 def simulate(model, params: dict | None = None, t_end: float = 3.0, method="dp54", *,
              rtol: float | None = None, atol: float | None = None, step: float | None = None,
              law="cycloidal", theta: float | None = None, y0=None, t0: float = 0.0,
-             max_steps: int = 5_000_000, modes: dict | None = None) -> Result:
+             max_steps: int = 5_000_000, modes: dict | None = None,
+             exact_segments: bool | None = None) -> Result:
     """Integrate ``model`` from t0 to t_end with ``params`` (see :class:`Simulator`).
 
     The prepared Simulator is kept for the next call with the same settings.
@@ -327,8 +346,9 @@ def simulate(model, params: dict | None = None, t_end: float = 3.0, method="dp54
     key_modes = tuple(sorted(modes.items())) if modes else None
     try:
         sim = _prepared(model, t_end, method, rtol, atol, step, key_law, theta, key_y0, t0,
-                        max_steps, key_modes, _methods.notches())
+                        max_steps, key_modes, exact_segments, _methods.notches())
     except TypeError:  # unhashable settings: prepare without the cache
         sim = Simulator(model, t_end, method, rtol=rtol, atol=atol, step=step, law=law,
-                        theta=theta, y0=y0, t0=t0, max_steps=max_steps, modes=modes)
+                        theta=theta, y0=y0, t0=t0, max_steps=max_steps, modes=modes,
+                        exact_segments=exact_segments)
     return sim.run(params)

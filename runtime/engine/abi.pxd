@@ -12,7 +12,7 @@
 # a module at run time.
 
 cdef enum:
-    CAMDYN_ABI = 6
+    CAMDYN_ABI = 7
 
 # method codes
 cdef enum:
@@ -89,6 +89,8 @@ cdef struct Run:
     double stab_rho        # ... |lambda| of the limiting eigenvalue there ...
     double stab_b          # ... and b in its direction
     long n_checks          # Jacobians checked
+    bint exact             # step over an interval exactly where the model is linear and time
+                           # invariant there (loops.pxi, _loop_exact; ABI 7)
 
 ctypedef void (*prep_fn)(Ctx* ctx) noexcept nogil
 ctypedef void (*rhs_fn)(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil

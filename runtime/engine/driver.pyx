@@ -96,12 +96,13 @@ cdef class Integrator:
     cdef double[::1] y0, atol, law_par, stab_bound
     cdef int[::1] law, modes0
     cdef int stab_mode
+    cdef bint exact
     cdef readonly int width, n_states
 
     def __init__(self, object capsule, int method, int[::1] law, double[::1] law_par,
                  double[::1] y0, double t0, double h, double h_max, double rtol,
                  double[::1] atol, long max_steps, int[::1] modes0=None, long max_events=1000000,
-                 int stab_mode=0, double[::1] stab_bound=None):
+                 int stab_mode=0, double[::1] stab_bound=None, bint exact=False):
         self.m = model_pointer(capsule)
         self.capsule = capsule
         cdef int ns = self.m.n_states, ne = self.m.n_modes - self.m.n_instances
@@ -122,6 +123,7 @@ cdef class Integrator:
         if stab_mode and (stab_bound is None or stab_bound.shape[0] < 1):
             raise ValueError("the stability check needs the method's boundary (stab_bound)")
         self.stab_mode = stab_mode
+        self.exact = exact
         self.stab_bound = stab_bound.copy() if stab_mode else np.ones(1)
         self.n_states = ns
         self.width = 1 + (3 if method == METHOD_DP54 else 2) * ns
@@ -197,6 +199,7 @@ cdef class Integrator:
         run.stab_rho = NAN
         run.stab_b = NAN
         run.n_checks = 0
+        run.exact = self.exact
         cdef int status
         cdef timespec c0, c1
         with nogil:

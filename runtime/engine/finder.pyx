@@ -624,14 +624,16 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
                    int i_error, int i_acc, double rise_end, int i_rise, int per_step, int n_cand,
                    double[:, ::1] figures, long[:, ::1] stats, double[::1] seconds,
                    Py_ssize_t start, Py_ssize_t stop, Py_ssize_t cap=4096, int stride=1,
-                   bint figures_too=True):
+                   bint figures_too=True, bint exact=False):
     """Run parameter sets start..stop-1 (rows of P, initial states Y0, stop times) and write
     the FIGURE_COLUMNS of each into ``figures`` and the STAT_COLUMNS into ``stats``; seconds[j]:
     wall time of run j with its figures.  i_error, i_acc: the error and acceleration outputs
     (index among states then outputs); i_rise: the state whose crossing of rise_end ends the
     rise, or -1 (the rise ends at time rise_end).  With per_step 1 the scan samples every
     ``stride``-th recorded point (its peaks are refined between the samples around them).
-    ``figures_too`` False: integrate only (bench/sweep.py splits the cost with it).
+    ``figures_too`` False: integrate only (bench/sweep.py splits the cost with it).  ``exact``:
+    intervals where the model is linear and time invariant are stepped over exactly
+    (runtime/engine/loops.pxi, _loop_exact), as Simulator(exact_segments=True) does.
     No GIL is held while it runs.
 
     A run that fails leaves its status (runtime/driver.STATUS_TEXT) and NaN figures; a run
@@ -716,6 +718,7 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
             run.stab_work = NULL
             run.stab_ratio = -1.0
             run.n_checks = 0
+            run.exact = exact
             status = m.run(&run)
             # keep the (possibly grown) buffers for the next run
             rows = run.rec.rows

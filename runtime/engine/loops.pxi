@@ -254,23 +254,26 @@ cdef int _koster_newton_matrix(Ctx* ctx, double t, const double* ym, const doubl
 #
 # Where.  At the start of every interval and after every event (the modes, and with them the
 # Jacobian, change there), and in between every `period` steps: at most STAB_PERIOD (a
-# symbolic Jacobian) or STAB_PERIOD _NS (a differenced one, 4 _NS rhs calls), and at least
+# symbolic Jacobian) or STAB_PERIOD _NS (a differenced one, 4 _NS rhs calls), STAB_FAR times
+# that while h |lambda|/b < 1/STAB_FAR (the stiffness must grow that much first), and at least
 # STAB_PER_INTERVAL times an interval (a cam segment: the stiffness a cam drives changes on
 # its scale), shortened as h|lambda|/b approaches 1: from the growth since the last check
 # (after a jump: over the next step) the steps left to the boundary are extrapolated and the
 # next check comes after half of them.  So a stiffness that grows with the cam's motion is
 # caught within a step of where h |lambda| crosses the boundary, and a run far inside it pays
-# for a check every 16 steps (measured in the docstring of runtime/core/stability.py).  A
+# for a check every 64 steps (measured in the docstring of runtime/core/stability.py).  A
 # stiffness that grows with the state alone (a contact's penetration) is caught within
 # `period` steps.
 cdef extern from *:
     """
     #define STAB_PERIOD 16
+    #define STAB_FAR 4
     #define STAB_PER_INTERVAL 8
     #define STAB_MAXIT 100
     #define STAB_TOL 1e-6
     """
     const long STAB_PERIOD
+    const long STAB_FAR
     const long STAB_PER_INTERVAL
     const int STAB_MAXIT
     const double STAB_TOL
@@ -423,7 +426,7 @@ cdef double _stab_krylov(const Run* run, const double* J, double* work, bint fre
     return s
 
 
-cdef inline double _stab_check(Run* run, Ctx* ctx, double t, const double* y, double* J,
+cdef double _stab_check(Run* run, Ctx* ctx, double t, const double* y, double* J,
                                bint fresh, double* rho, double* bnd) noexcept nogil:
     """run.h |lambda|/b of the limiting eigenvalue of df/dy at (t, y) (NaN where the Jacobian
     is not finite); |lambda| into rho, b into bnd.  ``fresh``: the first check since the
@@ -453,9 +456,23 @@ cdef inline double _stab_check(Run* run, Ctx* ctx, double t, const double* y, do
     return _stab_krylov(run, J, work, fresh, rho, bnd)
 
 
-cdef inline long _stab_period_max(long nstep) noexcept nogil:
-    """The most steps between two checks in an interval of nstep steps."""
+# The loop calls the check through a pointer set when the module is imported: the compiler
+# cannot inline it then.  Inlined, its code sat in the stepping loop and cost RK4 about 15 %
+# per step even with the check off (registers spilled around it), against an indirect call
+# every STAB_PERIOD steps.
+ctypedef double (*_stab_check_fn)(Run* run, Ctx* ctx, double t, const double* y, double* J,
+                                  bint fresh, double* rho, double* bnd) noexcept nogil
+cdef _stab_check_fn _stab_check_call = _stab_check
+
+
+cdef inline long _stab_period_max(long nstep, double r) noexcept nogil:
+    """The most steps between two checks in an interval of nstep steps, the last check having
+    found h |lambda|/b = r: STAB_PERIOD (a differenced Jacobian: times _NS), STAB_FAR times
+    that while r < 1/STAB_FAR (|lambda| must then grow STAB_FAR-fold before a step is
+    unstable), and at most an STAB_PER_INTERVAL-th of the interval."""
     cdef long p = STAB_PERIOD if _JAC_SYMBOLIC else STAB_PERIOD * _NS
+    if r * STAB_FAR < 1.0:
+        p *= STAB_FAR
     if nstep < p * STAB_PER_INTERVAL:
         p = nstep // STAB_PER_INTERVAL
     return p if p > 1 else 1
@@ -509,8 +526,11 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
     # last, the most steps between, its last ratio
     cdef bint fresh = True
     cdef long k_check = 0 if run.stab_mode != 0 else -1, k_last = 0
-    cdef long period_max = _stab_period_max(nstep)
     cdef double ratio, ratio_last = -1.0, s_rho, s_bnd
+    # copies the check is handed: were the addresses of y and of the context to reach a call
+    # the compiler cannot see into, they could no longer live in registers through the steps
+    cdef double y_chk[_NS]
+    cdef Ctx ctx_chk
     if k_check == 0:
         Jm = <double*> malloc((_NS * _NS + _NQ * _NQ) * sizeof(double))
         if Jm == NULL:
@@ -529,7 +549,9 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
             status = STATUS_MAX_STEPS
             break
         if k == k_check:
-            ratio = _stab_check(run, ctx, t, y, Jm, fresh, &s_rho, &s_bnd)
+            memcpy(y_chk, y, sizeof(y))
+            ctx_chk = local_ctx
+            ratio = _stab_check_call(run, &ctx_chk, t, y_chk, Jm, fresh, &s_rho, &s_bnd)
             if ratio == ratio:      # not NaN (a state blowing up is NOT_FINITE's to report)
                 if ratio > run.stab_ratio:
                     run.stab_ratio = ratio
@@ -541,10 +563,11 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
                     break
                 # after a jump, the next step's check measures the growth to extrapolate
                 k_check = k + (1 if fresh else
-                               _stab_period(ratio, ratio_last, k - k_last, period_max))
+                               _stab_period(ratio, ratio_last, k - k_last,
+                                            _stab_period_max(nstep, ratio)))
                 ratio_last = ratio
             else:
-                k_check = k + period_max
+                k_check = k + _stab_period_max(nstep, 1.0)
             k_last = k
             fresh = False
         # the new time is computed once, so that the last stage and the slope at the new
@@ -846,7 +869,7 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
         if n_steps + n_rej >= max_steps:
             status = STATUS_MAX_STEPS
             break
-        if h < 16.0 * 2.220446049250313e-16 * fmax(fabs(t), fabs(b)):
+        if h < 16.0 * 2.220446049250313e-16 * fabs(t):   # where t + h no longer moves t
             status = STATUS_STEP_UNDERFLOW
             break
         last = t + 1.01 * h >= b
@@ -1186,7 +1209,7 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
         if n_steps + n_rej >= max_steps:
             status = STATUS_MAX_STEPS
             break
-        if h < 16.0 * 2.220446049250313e-16 * fmax(fabs(t), fabs(b)):
+        if h < 16.0 * 2.220446049250313e-16 * fabs(t):   # where t + h no longer moves t
             status = STATUS_STEP_UNDERFLOW
             break
         last = t + 1.01 * h >= b
@@ -1309,6 +1332,209 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
     return status
 
 
+# -- exact steps over a linear, time-invariant interval -----------------------------------
+#
+# Where the model is linear and time invariant, y' = A y + c with A and c constant (every cam
+# input in a dwell, nothing that switches: derive/codegen.py, _linear_in_dwell, decides it from
+# the symbolic right-hand side, _lti_now at run time), the solution is known in closed form,
+#
+#     y(t + h) = Phi y(t) + Gam,   Phi = e^(A h),   Gam = int_0^h e^(A s) ds c,
+#
+# both read off the exponential of the augmented matrix h [[A, c], [0, 0]] (Van Loan's
+# block form), computed once an interval by scaling and squaring a Taylor series.  The
+# interval is then recorded at equal steps, each two matrix-vector products, exact to
+# rounding whatever the step: no discretisation error, no stability limit, no stages.  The
+# steps are those RK4 would take (the recorded grid the user asked for), or, for the
+# adaptive methods, as long as the dense output between the points allows at rtol: on a mode
+# of frequency w, the cubic Hermite interpolant (RODAS4) errs by (h w)^4/384 of the
+# amplitude, DP54's quartic one by about (h w)^5/10^4.
+
+cdef void _matmul(int m, const double* A, const double* B, double* C) noexcept nogil:
+    cdef int i, j, k
+    cdef double s
+    for i in range(m):
+        for j in range(m):
+            s = 0.0
+            for k in range(m):
+                s += A[i * m + k] * B[k * m + j]
+            C[i * m + j] = s
+
+
+cdef int _expm_affine(const double* A, const double* c, double h, double* Phi,
+                      double* Gam) noexcept nogil:
+    """Phi = e^(A h) and Gam = int_0^h e^(A s) ds c from e^Z, Z = h [[A, c], [0, 0]]; -1 when
+    out of memory or not finite."""
+    cdef int m = _NS + 1, i, j, k, squarings = 0
+    cdef double norm = 0.0, col, term, total
+    cdef double* Z = <double*> malloc(4 * m * m * sizeof(double))
+    cdef double* T
+    cdef double* S
+    cdef double* W
+    if Z == NULL:
+        return -1
+    T, S, W = Z + m * m, Z + 2 * m * m, Z + 3 * m * m
+    memset(Z, 0, m * m * sizeof(double))
+    for i in range(_NS):
+        for j in range(_NS):
+            Z[i * m + j] = h * A[i * _NS + j]
+        Z[i * m + _NS] = h * c[i]
+    for j in range(m):
+        col = 0.0
+        for i in range(m):
+            col += fabs(Z[i * m + j])
+        norm = fmax(norm, col)
+    if not isfinite(norm):
+        free(Z)
+        return -1
+    # scaled to norm <= 1/2, the Taylor series' terms fall below rounding within 20
+    while norm > 0.5:
+        norm *= 0.5
+        squarings += 1
+    term = pow(0.5, squarings)
+    for i in range(m * m):
+        Z[i] *= term
+    memset(S, 0, m * m * sizeof(double))
+    for i in range(m):
+        S[i * m + i] = 1.0
+    memcpy(T, S, m * m * sizeof(double))
+    for k in range(1, 30):
+        _matmul(m, T, Z, W)
+        term = 0.0
+        total = 0.0
+        for i in range(m * m):
+            T[i] = W[i] / k
+            S[i] += T[i]
+            term = fmax(term, fabs(T[i]))
+            total = fmax(total, fabs(S[i]))
+        if term <= 1e-18 * total:
+            break
+    for k in range(squarings):
+        _matmul(m, S, S, W)
+        memcpy(S, W, m * m * sizeof(double))
+    for i in range(_NS):
+        for j in range(_NS):
+            Phi[i * _NS + j] = S[i * m + j]
+        Gam[i] = S[i * m + _NS]
+    free(Z)
+    return 0
+
+
+cdef double _lti_rate(const double* A) noexcept nogil:
+    """An upper bound of |lambda| for every eigenvalue of A: Gershgorin's on D^-1 A D, D = 1 on
+    q and z, sigma on q' (sigma^2 the largest row sum of |dq''/dq|), which for a mechanism's
+    [[0, I], [-K, -C]] comes within a small factor of its largest frequency."""
+    cdef int i, j
+    cdef double sigma = 0.0, row, bound = 0.0, d_i, d_j
+    for i in range(_NQ):
+        row = 0.0
+        for j in range(_NQ):
+            row += fabs(A[(_NQ + i) * _NS + j])
+        sigma = fmax(sigma, row)
+    sigma = sqrt(sigma) if sigma > 0.0 else 1.0
+    for i in range(_NS):
+        d_i = sigma if _NQ <= i < 2 * _NQ else 1.0
+        row = 0.0
+        for j in range(_NS):
+            d_j = sigma if _NQ <= j < 2 * _NQ else 1.0
+            row += fabs(A[i * _NS + j]) * d_j / d_i
+        bound = fmax(bound, row)
+    return bound
+
+
+cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
+    """[a, b] in exact steps, the model being linear and time invariant there (see above).
+
+    DP54's rows carry the quartic term r4 of the dense output (the header): here the one that
+    makes the interpolant pass through the exact state at mid-step, y(h/2) = Phi_h/2 y + Gam_h/2
+    (the step is made as two half steps), so that its error falls to about (h w)^5/10^4 and
+    the points can be five times sparser than cubic Hermite's."""
+    cdef Ctx* ctx = run.ctx
+    cdef Record* r = &run.rec
+    cdef double t = a, h, rate
+    cdef double y[_NS]
+    cdef double ym[_NS]
+    cdef double yn[_NS]
+    cdef double f[_NS]
+    cdef double fn[_NS]
+    cdef double c[_NS]
+    cdef double Gam[_NS]
+    cdef double* A = <double*> malloc(2 * _NS * _NS * sizeof(double))
+    cdef double* Phi
+    cdef double* row
+    cdef double r1, r2, r3
+    cdef long k, nstep, done = 0
+    cdef int i, j, status = STATUS_OK
+    if A == NULL:
+        return STATUS_NO_MEMORY
+    Phi = A + _NS * _NS
+    memcpy(y, run.y, sizeof(y))
+    rhs(t, y, f, ctx)
+    jacobian(t, y, A, NULL, ctx)
+    run.n_rhs += 1
+    for i in range(_NS):
+        c[i] = f[i]
+        for j in range(_NS):
+            c[i] -= A[i * _NS + j] * y[j]
+    if run.method == METHOD_DP54 or run.method == METHOD_RODAS:
+        rate = _lti_rate(A)
+        h = pow((1e4 if r.with_extra else 384.0) * fmax(run.rtol, 1e-14),
+                0.2 if r.with_extra else 0.25)
+        h = h / rate if rate > 0.0 else b - a
+        if run.h_max > 0.0:
+            h = fmin(h, run.h_max)
+    else:
+        h = run.h
+    nstep = fixed_steps(a, b, h) if h < b - a else 1
+    if run.n_steps + nstep > run.max_steps:
+        run.t_fail = t
+        free(A)
+        return STATUS_MAX_STEPS
+    h = (b - a) / nstep
+    # the half step's propagator: a step is two of them, the middle one for DP54's r4
+    if _expm_affine(A, c, 0.5 * h, Phi, Gam) != 0 or not _finite(_NS, f):
+        run.t_fail = t
+        free(A)
+        return STATUS_NOT_FINITE
+    if _rec_point(run, t, y, f) != 0:
+        free(A)
+        return STATUS_NO_MEMORY
+    for k in range(nstep):
+        for i in range(_NS):
+            ym[i] = Gam[i]
+            for j in range(_NS):
+                ym[i] += Phi[i * _NS + j] * y[j]
+        for i in range(_NS):
+            yn[i] = Gam[i]
+            for j in range(_NS):
+                yn[i] += Phi[i * _NS + j] * ym[j]
+        for i in range(_NS):
+            fn[i] = c[i]
+            for j in range(_NS):
+                fn[i] += A[i * _NS + j] * yn[j]
+        t = a + (k + 1) * h if k + 1 < nstep else b
+        if not _finite(_NS, yn):
+            run.t_fail = t
+            status = STATUS_NOT_FINITE
+            break
+        if r.with_extra:     # r4 of the step from the last recorded point
+            row = r.rows + (r.n - 1) * r.width + 1 + 2 * _NS
+            for i in range(_NS):
+                r1 = yn[i] - y[i]
+                r2 = h * f[i] - r1
+                r3 = r1 - h * fn[i] - r2
+                row[i] = 16.0 * (ym[i] - y[i] - 0.5 * r1 - 0.25 * r2 - 0.125 * r3)
+        memcpy(y, yn, sizeof(y))
+        memcpy(f, fn, sizeof(f))
+        if _rec_point(run, t, y, f) != 0:
+            status = STATUS_NO_MEMORY
+            break
+        done += 1
+    run.n_steps += done
+    memcpy(run.y, y, sizeof(y))
+    free(A)
+    return status
+
+
 cdef int run_loops(Run* run) noexcept nogil:
     """Integrate from run.t0 through every stop; the record and statistics go into run."""
     cdef int k, status = STATUS_OK
@@ -1324,7 +1550,9 @@ cdef int run_loops(Run* run) noexcept nogil:
         # segments are decided inside the interval: a stop computed as (b_k - b)/a may round
         # to a hair before the breakpoint, where its start would still see the old segment
         update_modes(0.5 * (a + b), run.y, run.ctx)
-        if run.method == METHOD_DP54:
+        if run.exact and _lti_now(run.ctx):
+            status = _loop_exact(run, a, b)
+        elif run.method == METHOD_DP54:
             status = _loop_dp54(run, a, b)
         elif run.method == METHOD_RODAS:
             status = _loop_rodas(run, a, b)

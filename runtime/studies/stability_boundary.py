@@ -105,7 +105,8 @@ def growth(model, method: str, params: dict | None, h: float, t0: float, y0,
     runs = []
     for y in (ya, yb):
         sim = Simulator(m, t_end, method, step=h, t0=t0, y0=y, law=law,
-                        max_steps=2 * n_steps + 10, check_stability=False)
+                        max_steps=2 * n_steps + 10, check_stability=False,
+                        exact_segments=False)     # the method's own growth, the dwell too
         try:
             runs.append(sim.run(params).y)
         except SimulationError:

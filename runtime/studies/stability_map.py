@@ -341,10 +341,12 @@ def classify_cell(model, method: str, setting: float, params: dict, ref: Referen
     kw = {"step": setting} if fixed else {"rtol": setting}
     refused = False
     try:
-        out = _outcome(m, Simulator(m, ref.t_end, method, law=law, **kw), params, ref, threshold)
+        out = _outcome(m, Simulator(m, ref.t_end, method, law=law, exact_segments=False, **kw),
+                       params, ref, threshold)
     except UnstableStep:
         refused = True
-        out = _outcome(m, Simulator(m, ref.t_end, method, law=law, check_stability=False, **kw),
+        out = _outcome(m, Simulator(m, ref.t_end, method, law=law, check_stability=False,
+                                    exact_segments=False, **kw),
                        params, ref, threshold)
     status = "refused" if refused and check_stability else out[0]
     return Cell(method, float(param), float(setting), status, out[0], refused, *out[1:])

@@ -432,7 +432,8 @@ class ModelTarget(Target):
             model.capsule, b.method, b.law_codes, b.law_pars, b.P, b.Y0, b.stops, b.n_stops,
             b.t0, b.first_step, b.h_max, b.rtol, b.atol, b.max_steps, b.modes0, b.max_events,
             index[spec["error"]], index[spec["acceleration"]], float(spec["rise_end"]), i_rise,
-            per_step, CANDIDATES, figures, stats, secs, 0, n, 4096, stride)
+            per_step, CANDIDATES, figures, stats, secs, 0, n, 4096, stride,
+            exact=sim.exact_segments)
         bad = np.flatnonzero(stats[:, 0] != 0)
         if bad.size:
             j = int(bad[0])

@@ -1,0 +1,113 @@
+"""Exact steps over the dwell (runtime/engine/loops.pxi, _loop_exact).
+
+Where every cam input sits in a dwell and the model is linear and time invariant there
+(derive/codegen.py, _linear_in_dwell), the loops step with the interval's propagator
+e^(A h) instead of the method.  Checked against the closed-form free vibration of the one-DOF
+model (thesis (3.3) with the damping of (6.47)), against the same dwell integrated by DP54 at
+rtol 1e-13, and for what must not change: models that are not linear there, the thesis scheme,
+the stability map's runs, and the dense output's accuracy at rtol.
+"""
+import math
+
+import numpy as np
+import pytest
+
+from camdyn.runtime.core.simulator import Simulator
+
+DWELL = (1.0, 3.0)       # after the rise (T = 1) to the end of the run
+
+
+def _free_vibration(tau, q, x0, v0, s):
+    """X(1 + s), X'(1 + s) of X'' + 2 q w X' + w^2 (X - 1) = 0, w = 2 pi/tau: the dwell of
+    thesis (3.3) with the damping of (6.47), in closed form."""
+    w = 2 * math.pi / tau
+    wd = w * math.sqrt(1 - q * q)
+    c, d = x0 - 1.0, (v0 + q * w * (x0 - 1.0)) / wd
+    e = np.exp(-q * w * s)
+    x = 1.0 + e * (c * np.cos(wd * s) + d * np.sin(wd * s))
+    v = e * (-q * w * (c * np.cos(wd * s) + d * np.sin(wd * s))
+             + wd * (-c * np.sin(wd * s) + d * np.cos(wd * s)))
+    return x, v
+
+
+@pytest.mark.parametrize("method, kw", [("dp54", {"rtol": 1e-8}), ("rk4", {"step": 0.02}),
+                                        ("rodas4", {"rtol": 1e-5})])
+@pytest.mark.parametrize("q", [0.0, 0.1])
+def test_the_dwell_of_one_dof_is_its_closed_form(method, kw, q):
+    """Every recorded point of the dwell equals the closed-form solution to 1e-12, whatever
+    the method and its setting (one right-hand-side call for the whole interval)."""
+    tau, y0 = 0.15, [1.02, -0.3]
+    res = Simulator("one_dof", DWELL[1], method, t0=DWELL[0], y0=y0, exact_segments=True,
+                    **kw).run({"tau": tau, "q": q})
+    x, v = _free_vibration(tau, q, *y0, res.t - DWELL[0])
+    assert np.abs(res["X"] - x).max() < 1e-12
+    assert np.abs(res["Xd"] - v).max() < 1e-12 * 2 * math.pi / tau
+    assert res.stats["n_rhs"] == 1
+
+
+@pytest.mark.parametrize("model, params", [("camshaft1", {"tau": 0.15, "Fa": 2.0}),
+                                           ("one_dof", {"tau": 0.1, "q": 0.05}),
+                                           ("chain3", {})])
+@pytest.mark.parametrize("method, kw", [("dp54", {"rtol": 1e-10}), ("rk4", {"step": 0.01}),
+                                        ("rodas4", {"rtol": 1e-6})])
+def test_the_dwell_equals_its_integration(model, params, method, kw):
+    """From the state at the end of a rise, the exact dwell ends where DP54 at rtol 1e-13
+    (exact steps off) ends, to 1e-11 of the stroke in the positions and of the stroke times
+    the highest frequency (below 100 here) in the rates; DP54's dense output between the exact points stays
+    within its rtol (its quartic term passes through the exact mid-step state)."""
+    rise = Simulator(model, DWELL[0], "dp54", rtol=1e-12).run(params)
+    y1 = rise.y[-1]
+    exact = Simulator(model, DWELL[1], method, t0=DWELL[0], y0=y1, exact_segments=True,
+                      **kw).run(params)
+    ref = Simulator(model, DWELL[1], "dp54", rtol=1e-13, t0=DWELL[0], y0=y1,
+                    exact_segments=False).run(params)
+    n = len(exact.model.state_names) // 2
+    err = np.abs(exact.y[-1] - ref.y[-1])
+    assert err[:n].max() <= 1e-11 and err[n:].max() <= 1e-11 * 100
+    scale = np.abs(ref.y).max(axis=0)
+    assert exact.stats["n_rhs"] == 1 and ref.stats["n_rhs"] > 1000
+    if method == "dp54":
+        T = np.linspace(*DWELL, 3001)
+        a, b = exact.sample(T), ref.sample(T)
+        for name in exact.model.state_names:
+            assert np.abs(a[name] - b[name]).max() <= 2 * kw["rtol"] * scale.max(), name
+
+
+def test_a_whole_run_keeps_its_residual():
+    """CAMSHAFT-1 (4.15) at tau 0.15, Fa 2: U0 from the run with the exact dwell equals the one
+    integrated throughout, to the rise's own error (DP54 at rtol 1e-11 both)."""
+    from camdyn.runtime.measure.residual import residual
+
+    params = {"tau": 0.15, "Fa": 2.0}
+    a = residual(Simulator("camshaft1", 3.0, "dp54", rtol=1e-11, exact_segments=True).run(params))
+    b = residual(Simulator("camshaft1", 3.0, "dp54", rtol=1e-11,
+                           exact_segments=False).run(params))
+    assert abs(a.U0 - b.U0) < 1e-9
+    assert abs(a.U0dd - b.U0dd) < 1e-6 * abs(b.U0dd)
+
+
+@pytest.mark.parametrize("model, params", [("camshaft2", {}), ("roller", {})])
+def test_models_not_linear_in_the_dwell_are_integrated(model, params):
+    """A cam turned by a state (CAMSHAFT-2) or a contact that can open (the roller): the
+    switch is off, the run the same bit for bit as with exact steps off."""
+    a = Simulator(model, 2.0, "dp54", rtol=1e-8, exact_segments=True).run(params)
+    b = Simulator(model, 2.0, "dp54", rtol=1e-8, exact_segments=False).run(params)
+    assert np.array_equal(a.y, b.y) and a.stats["n_rhs"] == b.stats["n_rhs"]
+
+
+def test_the_thesis_scheme_and_the_stability_map_integrate_the_dwell():
+    """The thesis scheme is run as the thesis ran it, and the stability map must see what an
+    unstable RK4 step does in the dwell: neither steps over it."""
+    assert not Simulator("one_dof", 3.0, "koster", step=0.01).exact_segments
+    assert Simulator("one_dof", 3.0, "rk4", step=0.01).exact_segments
+    assert not Simulator("one_dof", 3.0, "dp54").exact_segments
+    off = Simulator("one_dof", 3.0, "rk4", step=0.05, check_stability=False,
+                    exact_segments=False).run({"tau": 0.1})
+    assert abs(off.y[-1, 0]) > 1e3       # h w = 3.1 > 2.83: RK4 blows up in the dwell
+
+
+def test_exact_segments_must_be_a_bool():
+    from camdyn.runtime.core.errors import CamdynInputError
+
+    with pytest.raises(CamdynInputError, match="exact_segments must be True or False"):
+        Simulator("one_dof", 3.0, "dp54", exact_segments="yes")
