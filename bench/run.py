@@ -4,7 +4,9 @@ tau = 0.15, Fa = 2, cycloidal rise, T in [0, 3], split at the breakpoint T = 1.
 Measures in one run: the cost of one right-hand-side call; the median time per
 simulation of camdyn's RK4 and DP54 (public simulate() and the bare compiled
 loop) with the error of U0; a hand-written compiled RK4 loop (the yardstick,
-bench/yardstick.pyx) on the same steps; solve_ivp (DOP853, RK45) and odeint
+bench/yardstick.pyx) on the same steps, against camdyn's RK4 integrating them
+all (exact_segments=False) and as a user calls it (the dwell, linear and time
+invariant, stepped over exactly); solve_ivp (DOP853, RK45) and odeint
 on a NumPy right-hand side; the speed ratios at matched error.
 
 Prints the tables, writes bench/results/BENCHMARKS-camshaft1.md and the chart

@@ -7,8 +7,8 @@ first-order right-hand side, frozen along the run.  The compiled loop checks it 
 Jacobian, the limiting eigenvalue (closed form for two states, else the dominant pair of a
 power iteration on the Krylov plane {q, J q}, kept warm from check to check) against the
 boundary in its direction (``loop_boundary``, this module's table); at every interval's start,
-after every event, and in between every 16 steps at most, sooner as h |lambda| nears the
-boundary.  A step beyond it stops the run there (driver status UNSTABLE): the refusal names
+after every event, and in between every 16 steps at most (64 while h |lambda| is under a
+quarter of the boundary), sooner as h |lambda| nears it.  A step beyond it stops the run there (driver status UNSTABLE): the refusal names
 that time, h |lambda|, |lambda| and the largest stable step.  A run to the end records the
 largest h |lambda|/boundary it saw and where, from which the warning near the boundary is
 worded (``from_loop``); nothing is evaluated in Python before or after the run.
@@ -23,8 +23,10 @@ the imaginary axis (2.828) from the real one (2.785): it could neither refuse th
 check refuses nor name where.  The generated Jacobian costs one evaluation a check: on
 CAMSHAFT-1 (bench/run.py's problem, h = 1/150 to 1/356) about 230 instructions a check, half
 of them the Jacobian's cam-law evaluation, 5 % of the compiled loop's instructions at a check
-every 16 steps (valgrind); CPU time of the compiled loop 1 % to 5 % over the same loop without
-it.  The check it replaces, central-difference Jacobians and NumPy's eigenvalues at 48 or more
+every 16 steps (valgrind).  It is called through a pointer, with copies of the state and the
+context: inlined, its code cost the stepping loop about 15 % even with the check off (the
+state spilled out of registers around it); now the loop with the check is within the timing
+noise of the loop without it (bench/run.py, BENCHMARKS-camshaft1.md).  The check it replaces, central-difference Jacobians and NumPy's eigenvalues at 48 or more
 recorded points after the run, cost about 1 ms a call, 25 to 110 times the loop.
 
 Boundaries, |h lambda| along the direction of lambda (the eigenvalue reflected into the left
