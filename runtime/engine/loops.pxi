@@ -1342,7 +1342,7 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
 #
 # both read off the exponential of the augmented matrix h [[A, c], [0, 0]] (Van Loan's
 # block form), computed once an interval by scaling and squaring a Taylor series.  The
-# interval is then recorded at equal steps, each two matrix-vector products, exact to
+# interval is then recorded at equal steps, each one matrix-vector product, exact to
 # rounding whatever the step: no discretisation error, no stability limit, no stages.  The
 # steps are those RK4 would take (the recorded grid the user asked for), or, for the
 # adaptive methods, as long as the dense output between the points allows at rtol: on a mode
@@ -1445,8 +1445,8 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
     """[a, b] in exact steps, the model being linear and time invariant there (see above).
 
     DP54's rows carry the quartic term r4 of the dense output (the header): here the one that
-    makes the interpolant pass through the exact state at mid-step, y(h/2) = Phi_h/2 y + Gam_h/2
-    (the step is made as two half steps), so that its error falls to about (h w)^5/10^4 and
+    makes the interpolant pass through the exact state at mid-step, y(h/2) = Phi_h/2 y + Gam_h/2,
+    so that its error falls to about (h w)^5/10^4 and
     the points can be five times sparser than cubic Hermite's."""
     cdef Ctx* ctx = run.ctx
     cdef Record* r = &run.rec
@@ -1458,8 +1458,10 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
     cdef double fn[_NS]
     cdef double c[_NS]
     cdef double Gam[_NS]
-    cdef double* A = <double*> malloc(2 * _NS * _NS * sizeof(double))
+    cdef double Gh[_NS]
+    cdef double* A = <double*> malloc(3 * _NS * _NS * sizeof(double))
     cdef double* Phi
+    cdef double* Ph
     cdef double* row
     cdef double r1, r2, r3
     cdef long k, nstep, done = 0
@@ -1467,6 +1469,7 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
     if A == NULL:
         return STATUS_NO_MEMORY
     Phi = A + _NS * _NS
+    Ph = A + 2 * _NS * _NS
     memcpy(y, run.y, sizeof(y))
     rhs(t, y, f, ctx)
     jacobian(t, y, A, NULL, ctx)
@@ -1490,23 +1493,25 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
         free(A)
         return STATUS_MAX_STEPS
     h = (b - a) / nstep
-    # the half step's propagator: a step is two of them, the middle one for DP54's r4
-    if _expm_affine(A, c, 0.5 * h, Phi, Gam) != 0 or not _finite(_NS, f):
+    # the half step's propagator (DP54's mid-step state), squared into the step's: one
+    # matrix-vector product carries the state from point to point
+    if _expm_affine(A, c, 0.5 * h, Ph, Gh) != 0 or not _finite(_NS, f):
         run.t_fail = t
         free(A)
         return STATUS_NOT_FINITE
+    _matmul(_NS, Ph, Ph, Phi)
+    for i in range(_NS):
+        Gam[i] = Gh[i]
+        for j in range(_NS):
+            Gam[i] += Ph[i * _NS + j] * Gh[j]
     if _rec_point(run, t, y, f) != 0:
         free(A)
         return STATUS_NO_MEMORY
     for k in range(nstep):
         for i in range(_NS):
-            ym[i] = Gam[i]
-            for j in range(_NS):
-                ym[i] += Phi[i * _NS + j] * y[j]
-        for i in range(_NS):
             yn[i] = Gam[i]
             for j in range(_NS):
-                yn[i] += Phi[i * _NS + j] * ym[j]
+                yn[i] += Phi[i * _NS + j] * y[j]
         for i in range(_NS):
             fn[i] = c[i]
             for j in range(_NS):
@@ -1519,6 +1524,9 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
         if r.with_extra:     # r4 of the step from the last recorded point
             row = r.rows + (r.n - 1) * r.width + 1 + 2 * _NS
             for i in range(_NS):
+                ym[i] = Gh[i]
+                for j in range(_NS):
+                    ym[i] += Ph[i * _NS + j] * y[j]
                 r1 = yn[i] - y[i]
                 r2 = h * f[i] - r1
                 r3 = r1 - h * fn[i] - r2
