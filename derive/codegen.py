@@ -91,16 +91,40 @@ def _linear_in_dwell(m: Model, checked: list, cam_syms: list, events: list,
         return False
     states = set(_state_symbols(m))
     dwell = {s: 0 for syms in cam_syms for s in syms[1:]}
+    seen: dict = {}
     for k, e in enumerate(checked):
         e = sp.sympify(e).xreplace(dwell)
-        if m.time in e.free_symbols or e.has(sp.Piecewise):
+        if m.time in e.free_symbols:
             return False
-        if k < n_mass and e.free_symbols & states:
+        if _state_degree(e, states, seen) > (0 if k < n_mass else 1):
             return False
-        for y in states & e.free_symbols:
-            if e.diff(y).free_symbols & states:
-                return False
     return True
+
+
+def _state_degree(e, states: set, seen: dict) -> int:
+    """The degree of ``e`` in the ``states``: 0 free of them, 1 affine, 2 anything else (a
+    product of two, a power, a function of one, a Piecewise on one); read off the expression
+    tree once (``seen`` keeps its subtrees), not by differentiation, which takes minutes on the
+    largest DYNACAM models.  Conservative: x**2 - x**2 counts as 2."""
+    hit = seen.get(e)
+    if hit is not None:
+        return hit
+    if e.is_Symbol:
+        d = 1 if e in states else 0
+    elif e.is_Number or not e.args:
+        d = 0
+    elif e.is_Add:
+        d = max(_state_degree(a, states, seen) for a in e.args)
+    elif e.is_Mul:
+        d = min(2, sum(_state_degree(a, states, seen) for a in e.args))
+    elif e.is_Pow:
+        base, ex = (_state_degree(a, states, seen) for a in e.args)
+        d = 0 if base == ex == 0 else (
+            base if ex == 0 and e.exp.is_Integer and e.exp == 1 else 2)
+    else:       # a function, a Piecewise, ...: linear only when free of the states
+        d = 0 if all(_state_degree(a, states, seen) == 0 for a in e.args) else 2
+    seen[e] = d
+    return d
 
 
 def _state_symbols(m: Model) -> list:

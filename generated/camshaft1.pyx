@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:72e277d29ca434cd804e80f791eb1b5093b357558134e1b4706656dae26bb5d4
-# Text hash: sha256:2a7b933a87ff73616fe6a5bf7451f0877803eb000cac83708ad12bf376316947
+# Derivation key: sha256:ca404574c2880af63b2cd540077473915606d5dd8fea327cabdb9d5218927b14
+# Text hash: sha256:bcca36ef02bf2d4bb2cdd9dd9b1ca36ca991c52f0ecd9d17dab8bb0c53f7efc4
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d6e838f49f6bd0cb29cf12ada3edb990040264152eeac65645743e2695d90cf6
-# Text hash: sha256:d889f8a1767f3012ee1dea0ec6aada31528302546232337702e3b1af3e5d4e0e
+# Derivation key: sha256:f9c9420edaf70ea0d21bafaf8a72ca14b31d410b20878f0269f8042e88be5ec4
+# Text hash: sha256:b0e3a63ff4e91bd2bc8993c20714d7c0b40877a5615312931aaf656502a5f1f7
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a

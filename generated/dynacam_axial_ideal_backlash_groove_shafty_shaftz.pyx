@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:552f52d8f8b4e3ca2a66c7bfc360ad9ca6d911e18777f31b41e80033ee0e8cec
-# Text hash: sha256:9425227f8a5ccaf7f237966f072b0ec63472cfdf7da1cba7822fc58c4b940d49
+# Derivation key: sha256:9cf04f819ad3c1a7a6ca851e2627ceabd315cd3dcb1799dcdca7abe97254f911
+# Text hash: sha256:f6ebd389986629f6eb8d929f5d213814ad5170df717626cbf522aafc0aaa089e
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b6931bb6a07ca3a64ec76d009d5ab035b0c1021b836818c56f053c44601dbcdc
-# Text hash: sha256:ef69ec3f9ea7c9e25695d4d4813cde6112c70d47c8e4e0d90f73b468ec3bf263
+# Derivation key: sha256:17a84831dfcc3f00f502090bb97a3eb3ecf2c82ad39e5c46e4ab6533dabf9ac6
+# Text hash: sha256:178f50e6092c153febc0565dafe8ddb0cf3f12260a560724b44c187a9d7557d8
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:747e34dbea18a7d307dc7101158b4419fb0642de73f52917507a7d1b1d7004c3

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c138064f28c41f38d711a5fdee897aafe282066e9a97e859b38a38f660eb54fa
-# Text hash: sha256:222a46240c6a9e0c3f19249572a6c98aeedaa06680fec5a83e9609cb5eb92962
+# Derivation key: sha256:043dbebcb868a8d0c5eadb2b9876818ec756862b3eb42ff23b6b45ed664d2256
+# Text hash: sha256:655eab06739841a79fe3966b84bc0602d609efabf715df8f26a3729fffdcd53b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1

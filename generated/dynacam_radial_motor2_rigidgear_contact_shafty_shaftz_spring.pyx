@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:5ce6b669197e6afa91d73a509f53e0cc125cf9e373d300c1fb8e56239ba50f5d
-# Text hash: sha256:7a1c0d712b6e06eb7446396a1c32fc12366c5a2253d1ef62b0c8151ada3e99d6
+# Derivation key: sha256:b41644673b1e8b54d1099ab36130ffc8053c484e2c6e51570dcb5a4582628b10
+# Text hash: sha256:ef31e824abbaf8f73c02fa8f8bb1bb0251e223cdde008d49e6774f8260d00a45
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:775dc74d7dd69da69bafb1940d40799b0a663f4cd304542cf146150dfdb0178d

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:3c88de54d48079a0e20cd7bc94a3f8c5e96e26c5782dbec24944b076738f73c6
-# Text hash: sha256:29a7395e57f367540c7657ce38820ac4cec8ad157a29b2605f7544407989a525
+# Derivation key: sha256:6d014b5412abe1b0ee9e554fd76d5b1a74e66022657aa674c3b0610d0dee6a39
+# Text hash: sha256:0240e01c287891073c2f616b473c6dda0fe2544d043815591a8d0ebbe76497f7
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b4ae192fe293a31653e264bd3c83371bf63560157a4978d8f70ee40fb7fdab42
-# Text hash: sha256:9f665b3a2810dbe6072b5e071aa49fe10c64b3bc09147dcc4e07a70941c924cb
+# Derivation key: sha256:efea6e81fb8d166c5578bef83155a932a5c1182d9cc74beeb4bd33979c38038c
+# Text hash: sha256:fff17a65d0981bbf947b2a07a94e4f50618716e814aa85f85cf7fc02ef139248
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71

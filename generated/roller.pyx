@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8795e498c18c25f028a2f1f927ca0f1ec3572fd62d17e0526d21231c9f3a3afe
-# Text hash: sha256:8d6573b98991584c27ad7bd26c6ae188b9a5c87b8b19a34c61b3b1b8d4329dc3
+# Derivation key: sha256:03f0b421eba38cef03d7aef9609ff0516c182d5fb15fa5dba71718788100fc3e
+# Text hash: sha256:83b33ae3e5b086b6191000a6073dc215528128f894d75a59bcb0a0f5154826e1
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:85e7938e2c6c929474f38361bebf177cf343d9b577f8114e95e8f826a9eead2e
-# Text hash: sha256:acbf3b99d657637416e631b49ac8f14b46437c3f0810109d6efb7d1453119450
+# Derivation key: sha256:ea30336c4a47919a353e13f9b1730eee0f6be345b975597348ff66b7e4bde241
+# Text hash: sha256:9dab69fbca2327df613bfbaa9178fb8f6b452668f50852b6879be4c60b99f4d2
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360
