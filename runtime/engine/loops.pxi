@@ -339,6 +339,19 @@ cdef inline void _stab_matvec(const double* J, const double* d, const double* x,
         z[i] = s / d[i]
 
 
+cdef inline double _velocity_scale(const double* J) noexcept nogil:
+    """sqrt of the largest row sum of |A|, A = dq''/dq (the block of J): a mechanism's
+    frequencies in the units of J, which scales q' to the size of q; 1 where A vanishes."""
+    cdef int i, j
+    cdef double sigma = 0.0, row
+    for i in range(_NQ):
+        row = 0.0
+        for j in range(_NQ):
+            row += fabs(J[(_NQ + i) * _NS + j])
+        sigma = fmax(sigma, row)
+    return sqrt(sigma) if sigma > 0.0 else 1.0
+
+
 cdef double _stab_krylov(const Run* run, const double* J, double* work, bint fresh,
                          double* rho, double* bnd) noexcept nogil:
     """_NS > 2: the dominant eigenvalues of J from the Krylov plane {q, J q} of a power
@@ -352,14 +365,8 @@ cdef double _stab_krylov(const Run* run, const double* J, double* work, bint fre
     cdef double sigma = work[_NS + 1], scale, a, beta, qv, pv, nw, res, hn, s
     cdef int i, j, it
     if not sigma > 0.0:
-        # no |lambda| measured yet: the size of A = dq''/dq (its largest row sum)
-        sigma = 0.0
-        for i in range(_NQ):
-            s = 0.0
-            for j in range(_NQ):
-                s += fabs(J[(_NQ + i) * _NS + j])
-            sigma = fmax(sigma, s)
-        sigma = sqrt(sigma) if sigma > 0.0 else 1.0
+        # no |lambda| measured yet: the size of A = dq''/dq
+        sigma = _velocity_scale(J)
     # q in the coordinates of the new scaling, and a trace of the generic vector added: a mode
     # that q lost (decayed under the power iteration, or absent from the last modes' dominant
     # pair) can come back when the Jacobian changes
@@ -1360,6 +1367,18 @@ cdef void _matmul(int m, const double* A, const double* B, double* C) noexcept n
             C[i * m + j] = s
 
 
+cdef inline void _affine(const double* M, const double* x, const double* v,
+                         double* out) noexcept nogil:
+    """out = M x + v (M _NS x _NS, row-major)."""
+    cdef int i, j
+    cdef double s
+    for i in range(_NS):
+        s = v[i]
+        for j in range(_NS):
+            s += M[i * _NS + j] * x[j]
+        out[i] = s
+
+
 cdef int _expm_affine(const double* A, const double* c, double h, double* Phi,
                       double* Gam) noexcept nogil:
     """Phi = e^(A h) and Gam = int_0^h e^(A s) ds c from e^Z, Z = h [[A, c], [0, 0]]; -1 when
@@ -1424,13 +1443,7 @@ cdef double _lti_rate(const double* A) noexcept nogil:
     q and z, sigma on q' (sigma^2 the largest row sum of |dq''/dq|), which for a mechanism's
     [[0, I], [-K, -C]] comes within a small factor of its largest frequency."""
     cdef int i, j
-    cdef double sigma = 0.0, row, bound = 0.0, d_i, d_j
-    for i in range(_NQ):
-        row = 0.0
-        for j in range(_NQ):
-            row += fabs(A[(_NQ + i) * _NS + j])
-        sigma = fmax(sigma, row)
-    sigma = sqrt(sigma) if sigma > 0.0 else 1.0
+    cdef double sigma = _velocity_scale(A), row, bound = 0.0, d_i, d_j
     for i in range(_NS):
         d_i = sigma if _NQ <= i < 2 * _NQ else 1.0
         row = 0.0
@@ -1500,22 +1513,13 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
         free(A)
         return STATUS_NOT_FINITE
     _matmul(_NS, Ph, Ph, Phi)
-    for i in range(_NS):
-        Gam[i] = Gh[i]
-        for j in range(_NS):
-            Gam[i] += Ph[i * _NS + j] * Gh[j]
+    _affine(Ph, Gh, Gh, Gam)
     if _rec_point(run, t, y, f) != 0:
         free(A)
         return STATUS_NO_MEMORY
     for k in range(nstep):
-        for i in range(_NS):
-            yn[i] = Gam[i]
-            for j in range(_NS):
-                yn[i] += Phi[i * _NS + j] * y[j]
-        for i in range(_NS):
-            fn[i] = c[i]
-            for j in range(_NS):
-                fn[i] += A[i * _NS + j] * yn[j]
+        _affine(Phi, y, Gam, yn)
+        _affine(A, yn, c, fn)
         t = a + (k + 1) * h if k + 1 < nstep else b
         if not _finite(_NS, yn):
             run.t_fail = t
@@ -1523,10 +1527,8 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
             break
         if r.with_extra:     # r4 of the step from the last recorded point
             row = r.rows + (r.n - 1) * r.width + 1 + 2 * _NS
+            _affine(Ph, y, Gh, ym)
             for i in range(_NS):
-                ym[i] = Gh[i]
-                for j in range(_NS):
-                    ym[i] += Ph[i * _NS + j] * y[j]
                 r1 = yn[i] - y[i]
                 r2 = h * f[i] - r1
                 r3 = r1 - h * fn[i] - r2
