@@ -21,7 +21,7 @@ from .emit import (Plain, doc_lines, manifest_common, math_imports, number, opti
                    with_source_hash)
 from .lagrange import Equations, derive
 from .model import CamFunction, Model
-from .optimize import ConstantTable, dwell_variants
+from .optimize import ConstantTable, dwell_variants, dwell_zeros
 from .printer import CythonPrinter, cse_block
 
 
@@ -90,7 +90,7 @@ def _linear_in_dwell(m: Model, checked: list, cam_syms: list, events: list,
     if m.modes or events:
         return False
     states = set(_state_symbols(m))
-    dwell = {s: 0 for syms in cam_syms for s in syms[1:]}
+    dwell = dwell_zeros(cam_syms, 2 ** len(cam_syms) - 1)
     seen: dict = {}
     for k, e in enumerate(checked):
         e = sp.sympify(e).xreplace(dwell)

@@ -84,9 +84,12 @@ def dwell_variants(exprs, cam_symbols: list) -> list:
     """
     out = []
     for v in range(2 ** len(cam_symbols)):
-        zero = {}
-        for i, syms in enumerate(cam_symbols):
-            if v >> i & 1:
-                zero.update({s: 0 for s in syms[1:]})
+        zero = dwell_zeros(cam_symbols, v)
         out.append([sp.sympify(e).xreplace(zero) if zero else sp.sympify(e) for e in exprs])
     return out
+
+
+def dwell_zeros(cam_symbols: list, v: int) -> dict:
+    """The substitution of variant ``v`` (see :func:`dwell_variants`): the derivatives of
+    every cam instance i with bit i of v set are zero."""
+    return {s: 0 for i, syms in enumerate(cam_symbols) if v >> i & 1 for s in syms[1:]}

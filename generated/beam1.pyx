@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e2e98bd668bfd9af932695d65d9c21acb6ef5d65f0d16a9f2c34230386420707
-# Text hash: sha256:187894a5651d2ae6ada4fc11a78d826c4f731e7524356217d98bc515bf2a0e8b
+# Derivation key: sha256:06618b1094d30ec1b5dad11b3656ad22e25ace484b3dc849ec7abecf9a32a8f3
+# Text hash: sha256:f59ce12ecb82633b46a316699cebb1f79ceae810634e45a66049d50a6eff1e12
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:bfb311a2dc642912ccf96df03b945a685fb049d1c1bb63babea364e48a9d993c

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d6563670c920492a20612496305fab0a21bb0739f727c64577d8c646d638ed03
-# Text hash: sha256:ceeb75ccb63ab0c0c5fb35ec58ee4ed56ef8e6078dadfe2fcc232b689154a64d
+# Derivation key: sha256:9eda42c36c87bd05d88cd4ddd12164a3d3db416e51a1eb34a3f23014279bc410
+# Text hash: sha256:9db07bddafa5ee14bacee98aac6fa40a9890a384c65794d07a95e1dcf7231069
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
 # Source hash: sha256:921486bdc725aa760722bfb26290d6704b3ad8c2d314f01890c68f465878e573

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:96a3bc9190513560c7c04ddd1ed3ed95d92494ae3114df919ec01ec1f01a720e
-# Text hash: sha256:b5ff5c6aeb0b780364b08157c82dc945c70f0480ec08d57555c63bb5b64d0b77
+# Derivation key: sha256:810b10e2acb1ed5c403621f445340cabc407d5607551d42dbb5e2c20b7ba02e8
+# Text hash: sha256:f7dbf26ef67fc2dca94415da9f63b3a727695d3e1a5e11aa3b05d5dc8377da94
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:005fc6dd88930eeb16af7091c0a74ba4fe7f9c436ef794c0f2976a8de40a1269

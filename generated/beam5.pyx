@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b4ce6ed97a9d87645064bc07d834ebea29b0c939dc5233417a74a4079b4ccb40
-# Text hash: sha256:077fec1d68c1ce5b971396a6cb9184b3a34af8a88dd414bfb5c6c4335f1f0429
+# Derivation key: sha256:8ac279875d3e7f958f65d6874fabf638f1d5fdc011de8d90e1b0bff48f71fafd
+# Text hash: sha256:c321255270da001e36a32775f2f3e3e4ea7d2ebe26c0dac8b73772b11b321439
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:a91861c5ef9ef871d0972bdd6fadc95fb8bd8aa9c22b166a68b2e22724f00536

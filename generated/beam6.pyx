@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:97ec208141b8db6d0337a6832b63d036dcc63fc8e9a4218f265418f35901384a
-# Text hash: sha256:f471843226fee79b5d3da6fa04d4b5a4e4799fb0cafa0d76051511df9fc7572f
+# Derivation key: sha256:dbfa9df04a7908ef579b96c8b2b4f6c80ee3aef8bb29d19988a3a2736f8d7aa4
+# Text hash: sha256:cb61c674bcf851ddd9594235971d1010efe1de4e04e7b881cbe7f60561e662db
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:9d4ce2ed01f1ecad9d62194db1151f10c3655da69963e1cb0de52220801b3e5b

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0cd6cc66eb63162d3b84f3120827330e6c3634a85178b8cecedc23ba1a733a61
-# Text hash: sha256:17ea6c5035304b213af1535d8cb49dd3e0713d8bf86519c12c01106788f2b42a
+# Derivation key: sha256:6f0ce5bedde8398de00f314df37cbf1223173273a3d692123bea07da16757fd4
+# Text hash: sha256:58cd57c10a04747ec2a0e51522f40d7e1f197ca497bc6496403544f3add28772
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:9cf04f819ad3c1a7a6ca851e2627ceabd315cd3dcb1799dcdca7abe97254f911
-# Text hash: sha256:f6ebd389986629f6eb8d929f5d213814ad5170df717626cbf522aafc0aaa089e
+# Derivation key: sha256:af364af0a2933d5bd913b24c9ad9f7fc5e5eab15ac5c9bcb539d576daaa613c4
+# Text hash: sha256:52c8d0b36b9678af684680275cdbcf4b4076487e2c59ac1ccda1698585dcd8da
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:235a036cb678a8e0762c2f0ce886ff95bb1908ae1cd4729870771aabac0b83fd
-# Text hash: sha256:bc5b1a39c75c9ac285cc4975926412c2e9b64391d7acf146d67dad0ebaa6552d
+# Derivation key: sha256:66d26ad8504bcf0f8e60436a042bc0ecd6466b9d6b7a24ab7c68a76da1bf0374
+# Text hash: sha256:461f50022c896d4e275a915f87a200e63b881e3cbe46ab753a6bfa6a26d3d76b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e

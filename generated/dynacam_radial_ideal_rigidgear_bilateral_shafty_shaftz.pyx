@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7b18792e9d8477e08f556451f1e0b99c861e55d71a1bca9763c5452d6ef8d07a
-# Text hash: sha256:8e05ef46dd93e13c628fa634d0153803286b59d0e50cf5346ede9732895c39cd
+# Derivation key: sha256:4e0de4d762cae525547bf7bff04dbd1d7091832c875b5ebabe0936538d7df4b6
+# Text hash: sha256:4bd87ab2fc38fc0af4282271f85b4ae5be77d70368c4d1c1d23ae31f7fae60be
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:478faccf329f7294d2cd47f536ad5f78fa53fe5d590d1d87b6cb5079502bd98d

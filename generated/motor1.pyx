@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6d014b5412abe1b0ee9e554fd76d5b1a74e66022657aa674c3b0610d0dee6a39
-# Text hash: sha256:0240e01c287891073c2f616b473c6dda0fe2544d043815591a8d0ebbe76497f7
+# Derivation key: sha256:41f9c7d7fcad5849c0ba7c9efb7322e4ee0a80db7a90a667020af358f9efdace
+# Text hash: sha256:e84589ff57318d21f8dd7c749ab5d85e779a60f5bcd8e81c4c2f3284b4efba60
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:efea6e81fb8d166c5578bef83155a932a5c1182d9cc74beeb4bd33979c38038c
-# Text hash: sha256:fff17a65d0981bbf947b2a07a94e4f50618716e814aa85f85cf7fc02ef139248
+# Derivation key: sha256:0809cfa53ca313bca428e882566f4c100b3383315fbbc76fb3e5c647cce8cba1
+# Text hash: sha256:d02076d26c0e1886b314c2be5bfb03992d280d4393f0776a7945a89b8206019e
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71

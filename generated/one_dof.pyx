@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:98b4aff9d9b809e785b9fe6cc599e2ac8607d1db9400456758aea3ec56f7c65c
-# Text hash: sha256:fd7498fafe27da22120935b09d0a3125bc2c6a993f671b5236ae28258a4e9648
+# Derivation key: sha256:8797b9a8fe662f8c1f8ef253842649b2613eeaad077495763698377eeae8a811
+# Text hash: sha256:9627a47b03c78f2f5f1db0c1e7bd4ad56ab0d38cc13053d8fd55d2b6fb58d698
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:17517b96b35168fe4401d76aa889a90014d7626a620f3ec7182e2672b6cde1d9
-# Text hash: sha256:cde693843f340791fff1c11bf38c82df65c19118073bdd41e5656796e6b193e0
+# Derivation key: sha256:36cf408153cc5616d4fb99c697647e35fb1b5e1439bb6c25cc1522f3275a7dfc
+# Text hash: sha256:05e9d970a7d431b0b7bf19a24149bd93d0122c99ff410d6d96d32949c2a69a50
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:e017c1589554bffedb179ec1f3fe3f8fdb43bb82d0bdd5e3f88df9f352e7786a

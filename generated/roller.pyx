@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:03f0b421eba38cef03d7aef9609ff0516c182d5fb15fa5dba71718788100fc3e
-# Text hash: sha256:83b33ae3e5b086b6191000a6073dc215528128f894d75a59bcb0a0f5154826e1
+# Derivation key: sha256:27b0cfbf1eb27f3ac3dcce06462dca0ae8552b52e26df03ee3eadf8ec36de6e7
+# Text hash: sha256:17a02469bceb45b194dafd8e318eacd1eed7e76ee99f1b726dcef93ab8e1c28a
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ea30336c4a47919a353e13f9b1730eee0f6be345b975597348ff66b7e4bde241
-# Text hash: sha256:9dab69fbca2327df613bfbaa9178fb8f6b452668f50852b6879be4c60b99f4d2
+# Derivation key: sha256:e02658720d7bfba1f89c89876c44b79bac2857e25aa3d73f5c6ef22c12b90170
+# Text hash: sha256:d77679fea1577e5f62963ad574716256bee4798d3bd24ec4db0f54ac9dd993c7
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360
