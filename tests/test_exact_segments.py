@@ -31,7 +31,7 @@ def _free_vibration(tau, q, x0, v0, s):
 
 
 @pytest.mark.parametrize("method, kw", [("dp54", {"rtol": 1e-8}), ("rk4", {"step": 0.02}),
-                                        ("rodas4", {"rtol": 1e-5})])
+                                        ("rodas4", {"rtol": 1e-5}), ("dop853", {"rtol": 1e-8})])
 @pytest.mark.parametrize("q", [0.0, 0.1])
 def test_the_dwell_of_one_dof_is_its_closed_form(method, kw, q):
     """Every recorded point of the dwell equals the closed-form solution to 1e-12, whatever
@@ -49,12 +49,13 @@ def test_the_dwell_of_one_dof_is_its_closed_form(method, kw, q):
                                            ("one_dof", {"tau": 0.1, "q": 0.05}),
                                            ("chain3", {})])
 @pytest.mark.parametrize("method, kw", [("dp54", {"rtol": 1e-10}), ("rk4", {"step": 0.01}),
-                                        ("rodas4", {"rtol": 1e-6})])
+                                        ("rodas4", {"rtol": 1e-6}), ("dop853", {"rtol": 1e-10})])
 def test_the_dwell_equals_its_integration(model, params, method, kw):
     """From the state at the end of a rise, the exact dwell ends where DP54 at rtol 1e-13
     (exact steps off) ends, to 1e-11 of the stroke in the positions and of the stroke times
-    the highest frequency (below 100 here) in the rates; DP54's dense output between the exact points stays
-    within its rtol (its quartic term passes through the exact mid-step state)."""
+    the highest frequency (below 100 here) in the rates; the dense output of DP54 and DOP853
+    between the exact points stays within their rtol (their extras pass through the exact
+    state at interior nodes), with DOP853's points several times sparser."""
     rise = Simulator(model, DWELL[0], "dp54", rtol=1e-12).run(params)
     y1 = rise.y[-1]
     exact = Simulator(model, DWELL[1], method, t0=DWELL[0], y0=y1, exact_segments=True,
@@ -66,11 +67,15 @@ def test_the_dwell_equals_its_integration(model, params, method, kw):
     assert err[:n].max() <= 1e-11 and err[n:].max() <= 1e-11 * 100
     scale = np.abs(ref.y).max(axis=0)
     assert exact.stats["n_rhs"] == 1 and ref.stats["n_rhs"] > 1000
-    if method == "dp54":
+    if method in ("dp54", "dop853"):
         T = np.linspace(*DWELL, 3001)
         a, b = exact.sample(T), ref.sample(T)
         for name in exact.model.state_names:
             assert np.abs(a[name] - b[name]).max() <= 2 * kw["rtol"] * scale.max(), name
+    if method == "dop853":
+        dp54 = Simulator(model, DWELL[1], "dp54", t0=DWELL[0], y0=y1, exact_segments=True,
+                         **kw).run(params)
+        assert len(exact.t) * 4 < len(dp54.t)
 
 
 def test_a_whole_run_keeps_its_residual():

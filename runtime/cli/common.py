@@ -71,7 +71,7 @@ def method_names() -> tuple[list, list]:
     try:
         from ..core import methods
     except (ImportError, AttributeError):
-        return ["dp54", "koster", "rk4", "rodas4"], ["dp54", "rodas4"]
+        return ["dop853", "dp54", "koster", "rk4", "rodas4"], ["dp54", "dop853", "rodas4"]
     return sorted(methods.METHODS), list(methods.ADAPTIVE)
 
 

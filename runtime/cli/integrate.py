@@ -23,7 +23,7 @@ def add(sub):
                     help="end time, in the model's time unit")
     ig.add_argument("--method", default="dp54", choices=all_methods)
     ig.add_argument("--rtol", type=float, default=None,
-                    help="dp54/rodas4 tolerance (default 1e-8)")
+                    help="dp54/dop853/rodas4 tolerance (default 1e-8)")
     ig.add_argument("--step", type=float, default=None, help="rk4/koster step")
     ig.add_argument("--law", default="cycloidal", choices=law_names(), help="cam law of the inputs")
     ig.add_argument("--theta", type=float, default=None, help="shape parameter of the law")

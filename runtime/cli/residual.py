@@ -34,7 +34,7 @@ def add(sub):
     r.add_argument("--theta", type=float, default=None, help="shape parameter of the modified sine")
     r.add_argument("--method", default="dp54", choices=all_methods)
     r.add_argument("--rtol", type=float, default=None,
-                   help="dp54/rodas4 tolerance (default 1e-10)")
+                   help="dp54/dop853/rodas4 tolerance (default 1e-10)")
     r.add_argument("--step", type=float, default=None,
                    help="rk4/koster step in T (default: 1/100 of the shortest period of the "
                         "dwell's modes: tau/100 (sec. 4.4.2), for CAMSHAFT-2 also its flywheel "

@@ -27,7 +27,7 @@ def add(sub):
     st.add_argument("--steps", metavar="START:STOP:N[:log] | a,b,c",
                     help="fixed steps (default: 10 on a log grid around the theory's boundary)")
     st.add_argument("--rtols", metavar="START:STOP:N[:log] | a,b,c",
-                    help="tolerances of dp54/rodas4 (default 1e-3 .. 1e-10, 8)")
+                    help="tolerances of dp54/dop853/rodas4 (default 1e-3 .. 1e-10, 8)")
     st.add_argument("--threshold", type=float, default=1e-3,
                     help="relative error of the headline figure above which a run is "
                          "inaccurate (default 1e-3)")

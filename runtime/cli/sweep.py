@@ -32,11 +32,11 @@ def add(sub):
     sw.add_argument("--method", choices=all_methods, default=None,
                     help="integration method (default: the scene's, dp54 for a model)")
     sw.add_argument("--rtol", type=float, default=None,
-                    help="relative tolerance of dp54/rodas4, 1e-14 <= rtol < 1 (default: the "
+                    help="relative tolerance of dp54/dop853/rodas4, 1e-14 <= rtol < 1 (default: the "
                          "scene's, 1e-9 for a model)")
     sw.add_argument("--step", type=float, default=None,
                     help="step of a fixed-step method (rk4, koster; required there), in the "
-                         "model's time unit; not with dp54/rodas4")
+                         "model's time unit; not with dp54/dop853/rodas4")
     sw.add_argument("--law", choices=names, default=None,
                     help="cam law of a model (default: the scene's, cycloidal)")
     sw.add_argument("--error-estimate", action="store_true",

@@ -73,8 +73,9 @@ def _derive_digest() -> str:
 
 @lru_cache(maxsize=1)
 def _headers_digest() -> str:
-    """Hash of the runtime's Cython headers (abi.pxd with CAMDYN_ABI, linalg.pxd, loops.pxi),
-    compiled into every model: a cached build from another ABI is never loaded."""
+    """Hash of the runtime's Cython headers (every .pxd and .pxi of runtime/engine: the ABI,
+    the loops, the dense output, the tableaus), compiled into every model: a cached build
+    from other headers is never loaded."""
     spec = importlib.util.find_spec("camdyn.runtime.engine")
     h = hashlib.sha256()
     for root in spec.submodule_search_locations:

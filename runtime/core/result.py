@@ -57,9 +57,10 @@ class Result:
         return self._out.rows[:self._out.n]
 
     @property
-    def has_extra(self) -> bool:
-        """Whether the rows carry DP54's extra dense-output term."""
-        return bool(self._extra.shape[0])
+    def n_extra(self) -> int:
+        """Dense-output terms beyond the cubic Hermite interpolant in each row: 0, 1 (DP54) or 4
+        (DOP853) (camdyn/runtime/engine/dense.pxd)."""
+        return self._extra.shape[1] // len(self.state_names) if self._extra.shape[0] else 0
 
     @cached_property
     def mode(self) -> np.ndarray:

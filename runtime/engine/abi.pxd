@@ -12,7 +12,7 @@
 # a module at run time.
 
 cdef enum:
-    CAMDYN_ABI = 7
+    CAMDYN_ABI = 8
 
 # method codes
 cdef enum:
@@ -20,6 +20,7 @@ cdef enum:
     METHOD_DP54 = 1
     METHOD_KOSTER = 2
     METHOD_RODAS = 3       # RODAS4, linearly implicit (stiff problems)
+    METHOD_DOP853 = 4      # Dormand-Prince 8(5,3), explicit, high order
 
 # run status codes
 cdef enum:
@@ -44,14 +45,16 @@ cdef struct Ctx:
                            # in a dwell H holds the dwell value (n_cache doubles)
 
 cdef struct Record:
-    # one row per recorded point: [t, y (ns), f (ns), extra (ns, DP54 only)]; f is
-    # the slope there (left limit at the end of an interval), `extra` DP54's
-    # fourth-order dense-output term of the step that starts at the point.
+    # one row per recorded point: [t, y (ns), f (ns), extra (n_extra x ns)]; f is
+    # the slope there (left limit at the end of an interval), `extra` the higher
+    # dense-output terms of the step that starts at the point (dense.pxd): none for
+    # the cubic Hermite interpolant (RK4, the thesis scheme, RODAS4), one for DP54's
+    # quartic, four for DOP853's degree-7 extension (ABI 8).
     # `mode` holds the modes in force from the point on.
     Py_ssize_t n
     Py_ssize_t cap
-    int width              # doubles per row
-    bint with_extra
+    int width              # doubles per row: 1 + (2 + n_extra) ns
+    int n_extra
     bint owned             # buffers were (re)allocated by the loop: the driver frees them
     double* rows
     int* mode
@@ -64,7 +67,7 @@ cdef struct Run:
     int n_stops
     double t0
     double* y              # state, in and out
-    double h               # fixed step; DP54: first step (0 = automatic), then the last one
+    double h               # fixed step; adaptive: first step (0 = automatic), then the last one
     double h_max
     double rtol
     const double* atol
@@ -76,7 +79,7 @@ cdef struct Run:
     long max_events
     double t_fail
     double err_old
-    double t_stiff         # DP54: where Hairer's stiffness test (DOPRI5) first fired; NaN if never
+    double t_stiff         # DP54, DOP853: where Hairer's stiffness test first fired; NaN if never
     # the fixed-step stability check (RK4, the thesis scheme; loops.pxi, _stab_check): h |lambda|
     # of the model's Jacobian against the method's boundary b in lambda's direction (ABI 6)
     int stab_mode          # 0 no check; 1 estimate only (the stability map's runs); 2 estimate
@@ -127,6 +130,15 @@ cdef struct ModelC:
                            # and df/dt into ft unless NULL where the manifest's
                            # "time_derivative" is "symbolic" (ABI 5)
     run_fn run             # the integration loops (loops.pxi) with this model's rhs inlined
+
+
+cdef inline int extra_terms(int method) noexcept nogil:
+    """Dense-output terms beyond the cubic Hermite interpolant a method records per step."""
+    return 1 if method == METHOD_DP54 else 4 if method == METHOD_DOP853 else 0
+
+
+cdef inline bint adaptive_method(int method) noexcept nogil:
+    return method == METHOD_DP54 or method == METHOD_RODAS or method == METHOD_DOP853
 
 
 cdef inline long fixed_steps(double a, double b, double h) noexcept nogil:

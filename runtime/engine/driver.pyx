@@ -23,19 +23,22 @@ from collections import namedtuple
 import numpy as np
 
 from camdyn.runtime.engine.abi cimport *
+from camdyn.runtime.engine.dense cimport dense_component
+from camdyn.runtime.engine.dop853 cimport D8_A, D8_C, D8_D, D8_E3, D8_E5
 
 RK4 = METHOD_RK4
 DP54 = METHOD_DP54
 KOSTER = METHOD_KOSTER
 RODAS = METHOD_RODAS
+DOP853 = METHOD_DOP853
 
 RunRecord = namedtuple("RunRecord", "status rows modes n n_steps n_rejected n_rhs t_fail seconds "
                                     "n_events t_stiff stab_ratio stab_t stab_rho stab_b n_checks")
 RunRecord.__doc__ = """What Integrator.run returns: the status (STATUS_TEXT), the record (``rows``:
 t, states and slopes at every recorded point; ``modes`` in force from each point on; ``n`` of
 them filled), step and right-hand-side counts, where a failed run stopped (``t_fail``), the
-wall time of the compiled loops, the number of events and, for DP54, the time where Hairer's
-stiffness test first fired (``t_stiff``, NaN if it never did); for a fixed-step run with the
+wall time of the compiled loops, the number of events and, for DP54 and DOP853, the time where
+Hairer's stiffness test first fired (``t_stiff``, NaN if it never did); for a fixed-step run with the
 stability check (``stab_mode``), the largest h |lambda|/b it saw (``stab_ratio``, -1 without a
 check; beyond 1 the step is unstable), where (``stab_t``), that eigenvalue's |lambda|
 (``stab_rho``), the boundary b in its direction (``stab_b``), and the Jacobians checked."""
@@ -118,7 +121,7 @@ cdef class Integrator:
         self.max_steps, self.max_events = max_steps, max_events
         self.y0, self.atol, self.law, self.law_par = y0.copy(), atol.copy(), law.copy(), law_par.copy()
         self.modes0 = np.array(modes0, dtype=np.intc)
-        if stab_mode and (method == METHOD_DP54 or method == METHOD_RODAS):
+        if stab_mode and adaptive_method(method):
             raise ValueError("the stability check is the fixed-step methods' (rk4, koster)")
         if stab_mode and (stab_bound is None or stab_bound.shape[0] < 1):
             raise ValueError("the stability check needs the method's boundary (stab_bound)")
@@ -126,7 +129,7 @@ cdef class Integrator:
         self.exact = exact
         self.stab_bound = stab_bound.copy() if stab_mode else np.ones(1)
         self.n_states = ns
-        self.width = 1 + (3 if method == METHOD_DP54 else 2) * ns
+        self.width = 1 + (2 + extra_terms(method)) * ns
 
     def run(self, double[::1] p, double[::1] stops, Py_ssize_t cap, y0=None):
         cdef ModelC* m = self.m
@@ -168,7 +171,7 @@ cdef class Integrator:
         run.rec.n = 0
         run.rec.cap = cap
         run.rec.width = self.width
-        run.rec.with_extra = self.method == METHOD_DP54
+        run.rec.n_extra = extra_terms(self.method)
         run.rec.owned = False
         run.rec.rows = &rv[0, 0]
         run.rec.mode = &mv[0, 0] if nm else NULL
@@ -227,6 +230,26 @@ cdef class Integrator:
                          run.stab_rho, run.stab_b, run.n_checks)
 
 
+def dop853_tableau():
+    """The tableau the DOP853 loop runs (dop853.pxd) as arrays: c (16), A (16 x 16: stages 1-12,
+    row 12 the new point's weights b, rows 13-15 the dense-output stages), e5 and e3 (13, the
+    error estimators' weights), d (4 x 16, the dense-output extras)."""
+    cdef int i, j
+    c, A, d = np.empty(16), np.empty((16, 16)), np.empty((4, 16))
+    e5, e3 = np.empty(13), np.empty(13)
+    for i in range(16):
+        c[i] = D8_C[i]
+        for j in range(16):
+            A[i, j] = D8_A[i][j]
+    for i in range(4):
+        for j in range(16):
+            d[i, j] = D8_D[i][j]
+    for j in range(13):
+        e5[j] = D8_E5[j]
+        e3[j] = D8_E3[j]
+    return {"c": c, "A": A, "e5": e5, "e3": e3, "d": d}
+
+
 # -- evaluation helpers (vectorized, compiled) ------------------------------------
 
 def dense_eval(const double[:] t, const double[:, :] y, const double[:, :] f,
@@ -234,17 +257,18 @@ def dense_eval(const double[:] t, const double[:, :] y, const double[:, :] f,
     """States at the times tq from a record; returns (Y, index of the step used).
 
     A query on a stop time takes the step that ends there (left limit) unless it
-    is the first time of the record.  ``extra`` is DP54's per-step term, or an
-    empty array for the Hermite interpolant.
+    is the first time of the record.  ``extra``: the rows' dense-output extras (n x
+    n_extra ns, dense.pxd), or an empty array for the cubic Hermite interpolant.
     """
     cdef Py_ssize_t n = t.shape[0], nq = tq.shape[0], ns = y.shape[1]
     Y = np.empty((nq, ns))
     idx = np.empty(nq, dtype=np.intp)
     cdef double[:, ::1] Yv = Y
     cdef Py_ssize_t[::1] iv = idx
-    cdef Py_ssize_t j, lo, hi, mid, i, c
-    cdef double s, s1, h, r1, r2, r3, r4
-    cdef bint with_extra = extra.shape[0] == n
+    cdef Py_ssize_t j, lo, hi, mid, i, c, x
+    cdef int nx = extra.shape[1] // ns if extra.shape[0] == n and ns else 0
+    cdef double[::1] e = np.empty(max(nx, 1))
+    cdef double s, h
     if n == 0:
         raise ValueError("empty record")
     for j in range(nq):
@@ -268,13 +292,11 @@ def dense_eval(const double[:] t, const double[:, :] y, const double[:, :] f,
             continue
         h = t[i + 1] - t[i]
         s = (tq[j] - t[i]) / h
-        s1 = 1.0 - s
         for c in range(ns):
-            r1 = y[i + 1, c] - y[i, c]
-            r2 = h * f[i, c] - r1
-            r3 = r1 - h * f[i + 1, c] - r2
-            r4 = extra[i, c] if with_extra else 0.0
-            Yv[j, c] = y[i, c] + s * (r1 + s1 * (r2 + s * (r3 + s1 * r4)))
+            for x in range(nx):
+                e[x] = extra[i, x * ns + c]
+            Yv[j, c] = dense_component(s, h, y[i, c], y[i + 1, c], f[i, c], f[i + 1, c], &e[0],
+                                       nx, 1)
     return Y, idx
 
 

@@ -38,6 +38,7 @@ from posix.time cimport CLOCK_MONOTONIC, clock_gettime, timespec
 import numpy as np
 
 from camdyn.runtime.engine.abi cimport *
+from camdyn.runtime.engine.dense cimport dense_component
 
 cdef enum:
     MAX_CAND = 16
@@ -59,7 +60,7 @@ cdef struct Rec:
     int ns
     int nm
     int width
-    bint extra
+    int nx             # dense-output extras per row (dense.pxd)
     double* y          # ns scratch doubles
     double* out        # n_outputs scratch doubles
 
@@ -93,12 +94,12 @@ cdef Py_ssize_t _step_of(Rec* r, double tq) noexcept nogil:
 
 
 cdef double _value_in(Rec* r, double tq, Py_ssize_t i, int which) noexcept nogil:
-    """State (which < ns) or output (which - ns) at tq through step i's dense output (DP54's
-    quartic with its extra term, else the cubic Hermite), outputs in the step's modes."""
+    """State (which < ns) or output (which - ns) at tq through step i's dense output
+    (dense.pxd), outputs in the step's modes."""
     cdef const double* a = r.rows + i * r.width
     cdef const double* b
     cdef int ns = r.ns, c
-    cdef double h, s, s1, r1, r2, r3, r4
+    cdef double h, s
     if i + 1 >= r.n or _t(r, i + 1) <= a[0]:
         for c in range(ns):
             r.y[c] = a[1 + c]
@@ -106,13 +107,9 @@ cdef double _value_in(Rec* r, double tq, Py_ssize_t i, int which) noexcept nogil
         b = a + r.width
         h = b[0] - a[0]
         s = (tq - a[0]) / h
-        s1 = 1.0 - s
         for c in range(ns):
-            r1 = b[1 + c] - a[1 + c]
-            r2 = h * a[1 + ns + c] - r1
-            r3 = r1 - h * b[1 + ns + c] - r2
-            r4 = a[1 + 2 * ns + c] if r.extra else 0.0
-            r.y[c] = a[1 + c] + s * (r1 + s1 * (r2 + s * (r3 + s1 * r4)))
+            r.y[c] = dense_component(s, h, a[1 + c], b[1 + c], a[1 + ns + c], b[1 + ns + c],
+                                     a + 1 + 2 * ns + c, r.nx, ns)
     if which < ns:
         return r.y[which]
     if r.nm:
@@ -551,7 +548,7 @@ cdef class _View:
     cdef const int[:, ::1] modes
 
     def __init__(self, object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows,
-                 modes, int ns, bint extra):
+                 modes, int ns, int nx):
         cdef ModelC* m = _model(capsule)
         self.keep = capsule
         self.rows = np.ascontiguousarray(rows, dtype=float)
@@ -581,20 +578,20 @@ cdef class _View:
         self.r.ns = ns
         self.r.nm = nm
         self.r.width = self.rows.shape[1]
-        self.r.extra = extra
+        self.r.nx = nx
         self.r.y = &self.y[0]
         self.r.out = &self.out[0]
 
 
 def extreme(object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows, modes,
-            int ns, bint extra, int which, double a, double b, bint absolute, bint minimum,
+            int ns, int nx, int which, double a, double b, bint absolute, bint minimum,
             int per_step=12, int n_cand=1):
     """(value, time, sampling error) of the extreme of state/output ``which`` (outputs after
     the ns states) on [a, b] of a recorded run (rows as Result keeps them); see the module
     doc and _extreme."""
     if per_step < 1:
         raise ValueError("per_step must be at least 1")
-    cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, extra)
+    cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, nx)
     cdef double value = NAN, at = NAN, sampling = 0.0
     cdef int kind = (3 if minimum else 0) if absolute else (2 if minimum else 1)
     if v.r.n == 0:
@@ -605,9 +602,9 @@ def extreme(object capsule, double[::1] p, int[::1] law, double[::1] law_par, ro
 
 
 def crossing(object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows, modes,
-             int ns, bint extra, int which, double level):
+             int ns, int nx, int which, double level):
     """First time state ``which`` reaches ``level`` (NaN if never)."""
-    cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, extra)
+    cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, nx)
     cdef int ok
     cdef double t
     with nogil:
@@ -647,13 +644,13 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
         raise ValueError(f"figures must have {len(FIGURE_COLUMNS)} columns (FIGURE_COLUMNS)")
     if modes0.shape[0] != nm - ncam:
         raise ValueError("one initial mode per force element expected")
-    if method != METHOD_DP54 and method != METHOD_RODAS:
-        raise ValueError("the compiled sweep takes the adaptive methods (dp54, rodas4)")
+    if not adaptive_method(method):
+        raise ValueError("the compiled sweep takes the adaptive methods (dp54, dop853, rodas4)")
     if per_step < 1 or not (0 < n_cand <= MAX_CAND) or stride < 1:
         raise ValueError(f"per_step >= 1, stride >= 1 and 1 <= n_cand <= {MAX_CAND}")
     if per_step > 1:
         stride = 1
-    width = 1 + (3 if method == METHOD_DP54 else 2) * ns
+    width = 1 + (2 + extra_terms(method)) * ns
     if cap < 64:
         cap = 64
     cdef double* rows = <double*> malloc(cap * width * sizeof(double))
@@ -690,7 +687,7 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
             run.rec.n = 0
             run.rec.cap = cap
             run.rec.width = width
-            run.rec.with_extra = method == METHOD_DP54
+            run.rec.n_extra = extra_terms(method)
             run.rec.owned = True       # ours (malloc): the loops may grow and free it
             run.rec.rows = rows
             run.rec.mode = rmode
@@ -740,7 +737,7 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
                 rec.ns = ns
                 rec.nm = nm
                 rec.width = width
-                rec.extra = method == METHOD_DP54
+                rec.nx = extra_terms(method)
                 rec.y = scratch + ns + m.n_const + m.n_cache
                 rec.out = rec.y + ns
                 t_end = rows[(rec.n - 1) * width]

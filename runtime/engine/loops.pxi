@@ -1,5 +1,5 @@
-# The integration loops of camdyn: classical RK4, Dormand-Prince 5(4) and the
-# thesis's CAMSHAFT-1 scheme (4.23)-(4.31), written once here.
+# The integration loops of camdyn: classical RK4, Dormand-Prince 5(4) and 8(5,3), RODAS4,
+# and the thesis's CAMSHAFT-1 scheme (4.23)-(4.31), written once here.
 #
 # Every generated model module includes this file after defining its inline
 # `rhs`, `update_modes` and `prepare` (see camdyn/derive/templates/model.pyx.j2),
@@ -13,19 +13,17 @@
 # twice at a stop: as the left limit (old modes and slope) and as the right
 # limit (new modes, new slope).
 #
-# Dense output.  Every point stores its slope f; on the step from point i to
-# i + 1 (length h) the state is
-#
-#     y(t_i + s h) = y_i + s (r1 + (1 - s) (r2 + s (r3 + (1 - s) r4)))
-#     r1 = y_i+1 - y_i,  r2 = h f_i - r1,  r3 = r1 - h f_i+1 - r2,
-#
-# Hairer's continuous-extension form: r4 = 0 is the cubic Hermite interpolant
-# (RK4, thesis scheme); DP54 stores its fourth-order r4 per step in `extra`.
+# Dense output.  Every point stores its slope f and the step starting there its
+# extras, the terms of Hairer's continuous extension beyond the cubic Hermite
+# interpolant (dense.pxd): none for RK4, the thesis scheme and RODAS4, DP54's
+# fourth-order term, DOP853's four terms of its seventh-order extension.
 
 from libc.math cimport NAN, cos, fabs, fmax, fmin, isfinite, isnan, pow, sin, sqrt
 from libc.stdlib cimport free, malloc
 from libc.string cimport memcpy, memset
 
+from camdyn.runtime.engine.dense cimport dense_component, fit_extras, fit_matrix
+from camdyn.runtime.engine.dop853 cimport D8_A, D8_C, D8_D, D8_E3, D8_E5
 from camdyn.runtime.engine.linalg cimport lu_factor, lu_solve
 
 
@@ -63,8 +61,8 @@ cdef inline int _rec_point(Run* run, double t, const double* y, const double* f)
     row[0] = t
     memcpy(row + 1, y, _NS * sizeof(double))
     memcpy(row + 1 + _NS, f, _NS * sizeof(double))
-    if r.with_extra:
-        memset(row + 1 + 2 * _NS, 0, _NS * sizeof(double))
+    if r.n_extra:
+        memset(row + 1 + 2 * _NS, 0, r.n_extra * _NS * sizeof(double))
     if _NM:
         memcpy(&r.mode[n * _NM], run.ctx.mode, _NM * sizeof(int))
     r.n = n + 1
@@ -86,19 +84,38 @@ cdef inline bint _crossed(int direction, double g) noexcept nogil:
 
 
 cdef inline void _dense(double s, double h, const double* y0, const double* y1, const double* f0,
-                        const double* f1, const double* r4, double* out) noexcept nogil:
-    """The step's continuous extension at s in [0, 1] (see the header); r4 may be NULL."""
+                        const double* f1, const double* ex, int nx, double* out) noexcept nogil:
+    """The step's continuous extension at s in [0, 1] (dense.pxd); ex: its nx extras, or NULL."""
     cdef int i
-    cdef double r1, r2, r3, s1 = 1.0 - s
+    if ex == NULL:
+        nx = 0
     for i in range(_NS):
-        r1 = y1[i] - y0[i]
-        r2 = h * f0[i] - r1
-        r3 = r1 - h * f1[i] - r2
-        out[i] = y0[i] + s * (r1 + s1 * (r2 + s * (r3 + (s1 * r4[i] if r4 != NULL else 0.0))))
+        out[i] = dense_component(s, h, y0[i], y1[i], f0[i], f1[i], ex + i if nx else NULL, nx,
+                                 _NS)
+
+
+cdef int _cut_extras(double s_cut, double h, const double* y0, const double* y1,
+                     const double* f0, const double* f1, double* ex, int nx, const double* yc,
+                     const double* fc) noexcept nogil:
+    """The extras of the step cut at s_cut (state yc, slope fc there) that keep the whole
+    step's extension on [0, s_cut]: fitted to it at the interior nodes (dense.pxd)."""
+    cdef double vals[8 * _NS]
+    cdef double W[64]
+    cdef double tmp[_NS]
+    cdef int j
+    if ex == NULL or nx <= 0:
+        return 0
+    if fit_matrix(nx, W) != 0:
+        return -1
+    for j in range(nx):
+        _dense(s_cut * (j + 1.0) / (nx + 1.0), h, y0, y1, f0, f1, ex, nx, tmp)
+        memcpy(vals + j * _NS, tmp, sizeof(tmp))
+    fit_extras(nx, _NS, W, s_cut * h, y0, yc, f0, fc, vals, ex)
+    return 0
 
 
 cdef double _locate(Ctx* ctx, int k, double t, double h, const double* y0, const double* y1,
-                    const double* f0, const double* f1, const double* r4, double ga,
+                    const double* f0, const double* f1, const double* ex, int nx, double ga,
                     double gb) noexcept nogil:
     """Step fraction where event k crosses (Illinois method on the continuous extension):
     an iterate where g is exactly zero, else the bracket's end on the crossed side."""
@@ -110,7 +127,7 @@ cdef double _locate(Ctx* ctx, int k, double t, double h, const double* y0, const
         s = (a * gb - b * ga) / (gb - ga)
         if not (a < s < b):
             s = 0.5 * (a + b)
-        _dense(s, h, y0, y1, f0, f1, r4, ys)
+        _dense(s, h, y0, y1, f0, f1, ex, nx, ys)
         events(t + s * h, ys, gtmp, ctx)
         gs = gtmp[k]
         if gs == 0.0:
@@ -134,8 +151,8 @@ cdef double _locate(Ctx* ctx, int k, double t, double h, const double* y0, const
 
 
 cdef int _event_in_step(Run* run, double t, double h, const double* y0, const double* y1,
-                        const double* f0, const double* f1, const double* r4, double* g0,
-                        double* g1, double* s_hit) noexcept nogil:
+                        const double* f0, const double* f1, const double* ex, int nx,
+                        double* g0, double* g1, double* s_hit) noexcept nogil:
     """The event that crosses first within the step, or -1; its step fraction in s_hit."""
     cdef int k, hit = -1
     cdef double s
@@ -143,7 +160,7 @@ cdef int _event_in_step(Run* run, double t, double h, const double* y0, const do
     events(t + h, y1, g1, run.ctx)
     for k in range(_NE):
         if not _crossed(_EDIR[k], g0[k]) and _crossed(_EDIR[k], g1[k]):
-            s = _locate(run.ctx, k, t, h, y0, y1, f0, f1, r4, g0[k], g1[k])
+            s = _locate(run.ctx, k, t, h, y0, y1, f0, f1, ex, nx, g0[k], g1[k])
             if s < s_hit[0]:
                 s_hit[0] = s
                 hit = k
@@ -668,10 +685,10 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
         n_rhs += 1
         n_steps += 1
         if _NE > 0:
-            ev = _event_in_step(run, t, tn - t, y, yn, k1, fn, NULL, g0, g1, &s_hit)
+            ev = _event_in_step(run, t, tn - t, y, yn, k1, fn, NULL, 0, g0, g1, &s_hit)
             if ev >= 0:
                 # cut the step at the crossing: state from the step's cubic Hermite extension
-                _dense(s_hit, tn - t, y, yn, k1, fn, NULL, k2)
+                _dense(s_hit, tn - t, y, yn, k1, fn, NULL, 0, k2)
                 tn = t + s_hit * (tn - t)
                 memcpy(y, k2, sizeof(y))
                 rhs(tn, y, k1, ctx)
@@ -807,8 +824,9 @@ cdef inline double _rms(const double* v, const double* y0, const double* y1,
 
 
 cdef double _dp_first_step(Run* run, double t, const double* y, const double* f0,
-                           double span) noexcept nogil:
-    """Starting step from the sizes of y, y' and y'' (Hairer, Norsett & Wanner, II.4)."""
+                           double span, double order) noexcept nogil:
+    """Starting step from the sizes of y, y' and y'' for a method of the given order (Hairer,
+    Norsett & Wanner, II.4)."""
     cdef int i
     cdef double y1[_NS]
     cdef double f1[_NS]
@@ -827,8 +845,64 @@ cdef double _dp_first_step(Run* run, double t, const double* y, const double* f0
     if fmax(d1, d2) <= 1e-15:
         h1 = fmax(1e-6, h0 * 1e-3)
     else:
-        h1 = pow(0.01 / fmax(d1, d2), 0.2)
+        h1 = pow(0.01 / fmax(d1, d2), 1.0 / order)
     return fmin(fmin(100.0 * h0, h1), span)
+
+
+cdef double _stiff_ratio(const double* yn, const double* ys, const double* fn,
+                         const double* fs) noexcept nogil:
+    """|lambda| of the Jacobian along yn - ys, from two slopes at the same time: Hairer's
+    stiffness test (DOPRI5, DOP853; Hairer & Wanner, Solving ODEs II, sec. IV.2), 0 when
+    yn = ys.
+    The norm: DOPRI5's Euclidean one reads |K x|/|x| = omega^2, not omega, for a difference
+    along the positions of an undamped oscillator (J = [[0, 1], [-K, 0]] is far from normal
+    when omega >> 1) and flags the one-DOF model at rtol 1e-6.  Here the positions are weighted
+    by the frequency estimate omega2 = |w_q'|/|v_q| (v = yn - ys, w = fn - fs, w_q = v_q'
+    exactly), which makes the ratio omega for both an undamped and an overdamped mode;
+    first-order states count plainly."""
+    cdef int i
+    cdef double st_a = 0.0    # |v_q|^2
+    cdef double st_b = 0.0    # |v_q'|^2 (+ first-order states)
+    cdef double st_c = 0.0    # |w_q'|^2 (+ first-order states)
+    cdef double st_wq = 0.0   # |w_q|^2
+    cdef double d, e, num, den
+    for i in range(_NS):
+        d = yn[i] - ys[i]
+        e = fn[i] - fs[i]
+        if i < _NQ:
+            st_a += d * d
+            st_wq += e * e
+        else:
+            st_b += d * d
+            st_c += e * e
+    if st_a > 0.0:
+        d = sqrt(st_c / st_a) if _NQ > 0 else 1.0
+        num = d * st_wq + st_c
+        den = d * st_a + st_b
+    else:
+        num = st_wq + st_c
+        den = st_a + st_b
+    return sqrt(num / den) if den > 0.0 else 0.0
+
+
+cdef int _cut_at_event(Run* run, Ctx* ctx, int hit, double s_hit, double* t, double h,
+                       double* y, const double* yn, double* f0, const double* f1, double* ex,
+                       int nx, double* g0, long* n_rhs) noexcept nogil:
+    """Cut the step at the crossing s_hit, keeping its extension on the shortened part (the
+    record's row of the step start holds ex), then apply the event: t, y and f0 become the
+    right limit there."""
+    cdef double yc[_NS]
+    cdef double fc[_NS]
+    cdef double tc = t[0] + s_hit * h
+    _dense(s_hit, h, y, yn, f0, f1, ex, nx, yc)
+    rhs(tc, yc, fc, ctx)
+    n_rhs[0] += 1
+    if _cut_extras(s_hit, h, y, yn, f0, f1, ex, nx, yc, fc) != 0:
+        return STATUS_BAD_MODEL
+    t[0] = tc
+    memcpy(y, yc, sizeof(yc))
+    memcpy(f0, fc, sizeof(fc))
+    return _apply_event(run, hit, tc, y, f0, g0)
 
 
 cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
@@ -859,7 +933,6 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
     # Hairer's stiffness test (DOPRI5, Hairer & Wanner, Solving ODEs II, sec. IV.2): counters
     # of detections (iasti) and of non-stiff steps since the last one (nonsti), per interval
     cdef int iasti = 0, nonsti = 0
-    cdef double st_num, st_den, st_a, st_b, st_c, st_wq, d, e
     memcpy(y, run.y, sizeof(y))
     # slopes jump at a breakpoint: every interval starts afresh
     rhs(t, y, k1, ctx)
@@ -869,7 +942,7 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
     if _NE > 0:
         events(t, y, g0, ctx)
     if run.h <= 0.0:
-        run.h = _dp_first_step(run, t, y, k1, fmin(b - a, run.h_max))
+        run.h = _dp_first_step(run, t, y, k1, fmin(b - a, run.h_max), 5.0)
     h = fmin(run.h, run.h_max)
     run.err_old = 1e-4
     while t < b:
@@ -931,39 +1004,13 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
                              + DP_D6 * k6[i] + DP_D7 * k7[i])
             n_steps += 1
             # stiffness test (Hairer's DOPRI5): stages 6 and 7 sit at the same time t + h
-            # (FSAL), so w = k7 - k6 ~ J v with v = yn - ys, and h |w|/|v| estimates h times
-            # the spectral radius of the Jacobian there; beyond 3.25 (near the boundary of
-            # DP5's stability region, 3.31 on the negative real axis) the step is limited by
+            # (FSAL), so h |k7 - k6|/|yn - ys| estimates h times the spectral radius of the
+            # Jacobian there (_stiff_ratio); beyond 3.25 (near the boundary of DP5's
+            # stability region, 3.31 on the negative real axis) the step is limited by
             # stability, not accuracy.  Fired at the 15th detection, counted back to zero
             # after 6 non-stiff steps (DOPRI5's IASTI, NONSTI); only the first time is
             # recorded, the run goes on.
-            # The norm: DOPRI5's Euclidean one reads |K x|/|x| = omega^2, not omega, for a
-            # difference along the positions of an undamped oscillator (J = [[0, 1], [-K, 0]]
-            # is far from normal when omega >> 1) and flags the one-DOF model at rtol 1e-6.
-            # Here the positions are weighted by the frequency estimate
-            # omega2 = |w_q'|/|v_q| (w_q = v_q' exactly), which makes the ratio omega for
-            # both an undamped and an overdamped mode; first-order states count plainly.
-            st_a = 0.0    # |v_q|^2
-            st_b = 0.0    # |v_q'|^2 (+ first-order states)
-            st_c = 0.0    # |w_q'|^2 (+ first-order states)
-            st_wq = 0.0   # |w_q|^2
-            for i in range(_NS):
-                d = yn[i] - ys[i]
-                e = k7[i] - k6[i]
-                if i < _NQ:
-                    st_a += d * d
-                    st_wq += e * e
-                else:
-                    st_b += d * d
-                    st_c += e * e
-            if st_a > 0.0:
-                d = sqrt(st_c / st_a) if _NQ > 0 else 1.0
-                st_num = d * st_wq + st_c
-                st_den = d * st_a + st_b
-            else:
-                st_num = st_wq + st_c
-                st_den = st_a + st_b
-            if st_den > 0.0 and h * sqrt(st_num / st_den) > 3.25:
+            if h * _stiff_ratio(yn, ys, k7, k6) > 3.25:
                 nonsti = 0
                 iasti += 1
                 if iasti == 15 and isnan(run.t_stiff):
@@ -973,18 +1020,10 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
                 if nonsti == 6:
                     iasti = 0
             if _NE > 0:
-                hit = _event_in_step(run, t, h, y, yn, k1, k7, r4, g0, g1, &s_hit)
+                hit = _event_in_step(run, t, h, y, yn, k1, k7, r4, 1, g0, g1, &s_hit)
                 if hit >= 0:
-                    # cut the step at the crossing: state from the fourth-order extension; the
-                    # record keeps the cubic Hermite part of it over the shortened step
-                    _dense(s_hit, h, y, yn, k1, k7, r4, ys)
-                    for i in range(_NS):
-                        r4[i] = 0.0
-                    t = t + s_hit * h
-                    memcpy(y, ys, sizeof(y))
-                    rhs(t, y, k1, ctx)
-                    n_rhs += 1
-                    status = _apply_event(run, hit, t, y, k1, g0)
+                    status = _cut_at_event(run, ctx, hit, s_hit, &t, h, y, yn, k1, k7, r4, 1,
+                                           g0, &n_rhs)
                     if status != STATUS_OK:
                         break
                     # the event refreshed run.ctx (the rhs variant of the new cam segments)
@@ -1004,6 +1043,188 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
             rejected = False
         else:
             h *= fmax(0.2, 0.9 * pow(err, -0.2))
+            n_rej += 1
+            rejected = True
+    memcpy(run.y, y, sizeof(y))
+    run.n_steps = n_steps
+    run.n_rejected = n_rej
+    run.n_rhs += n_rhs
+    if status != STATUS_OK:
+        run.t_fail = t
+    return status
+
+
+# -- DOP853: Dormand-Prince 8(5,3) (Hairer, Norsett & Wanner I, sec. II.10) ---------------
+#
+# The explicit Runge-Kutta pair of order 8 of Hairer, Norsett & Wanner, Solving ODEs I,
+# sec. II.10, as in their code DOP853: 12 stages, the last at t + h, and the slope at the new
+# point (FSAL, stage 13, the next step's first).  Its error estimate combines an embedded
+# fifth-order and a third-order one, err = e5^2/sqrt(e5^2 + 0.01 e3^2) (norms of the scaled
+# differences), which keeps the fifth-order estimate from being too optimistic on large steps.
+# Dense output of order 7 from three more stages per accepted step (c = 0.1, 0.2, 7/9): four
+# extras in the record (dense.pxd).  Stiffness test as DOP853's: stage 12 and the new slope
+# sit at the same time, and h |lambda| beyond 6.1 (near the boundary of its stability region
+# on the negative real axis) counts as a stiff step.  The tableau: dop853.pxd.
+
+cdef inline void _d8_sum(const double* w, int n, double h, const double* K, const double* base,
+                         double* out) noexcept nogil:
+    """out = base + h sum_j<n w_j K_j (base NULL: 0)."""
+    cdef int i, j
+    cdef double acc
+    for i in range(_NS):
+        acc = 0.0
+        for j in range(n):
+            acc += w[j] * K[j * _NS + i]
+        out[i] = (base[i] if base != NULL else 0.0) + h * acc
+
+
+cdef inline void _d8_arg(int st, double h, const double* K, const double* y,
+                         double* out) noexcept nogil:
+    """The argument of stage st, y + h sum_j a_st,j K_j, with st a constant in every branch so
+    that the compiler unrolls the sum and drops the tableau's zeros."""
+    if st == 1:
+        _d8_sum(D8_A[1], 1, h, K, y, out)
+    elif st == 2:
+        _d8_sum(D8_A[2], 2, h, K, y, out)
+    elif st == 3:
+        _d8_sum(D8_A[3], 3, h, K, y, out)
+    elif st == 4:
+        _d8_sum(D8_A[4], 4, h, K, y, out)
+    elif st == 5:
+        _d8_sum(D8_A[5], 5, h, K, y, out)
+    elif st == 6:
+        _d8_sum(D8_A[6], 6, h, K, y, out)
+    elif st == 7:
+        _d8_sum(D8_A[7], 7, h, K, y, out)
+    elif st == 8:
+        _d8_sum(D8_A[8], 8, h, K, y, out)
+    elif st == 9:
+        _d8_sum(D8_A[9], 9, h, K, y, out)
+    elif st == 10:
+        _d8_sum(D8_A[10], 10, h, K, y, out)
+    elif st == 11:
+        _d8_sum(D8_A[11], 11, h, K, y, out)
+    elif st == 13:
+        _d8_sum(D8_A[13], 13, h, K, y, out)
+    elif st == 14:
+        _d8_sum(D8_A[14], 14, h, K, y, out)
+    elif st == 15:
+        _d8_sum(D8_A[15], 15, h, K, y, out)
+
+
+cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
+    """Dormand-Prince 8(5,3) over [a, b] (see above): DOP853's error estimate, step control
+    with exponent 1/8 and factors in [1/3, 6], dense output of order 7, events, stiffness test."""
+    cdef Ctx local_ctx = run.ctx[0]
+    cdef Ctx* ctx = &local_ctx
+    cdef int i, st, status = STATUS_OK
+    cdef double y[_NS]
+    cdef double yn[_NS]
+    cdef double ys[_NS]
+    cdef double y12[_NS]          # stage 12's argument (at t + h), for the stiffness test
+    cdef double K[16 * _NS]       # the stages' slopes; K[12] the new point's
+    cdef double w5[_NS]
+    cdef double w3[_NS]
+    cdef double* ex
+    cdef double g0[_NE1]
+    cdef double g1[_NE1]
+    cdef int hit
+    cdef double s_hit
+    cdef double t = a, h, err, err5, err3, sc, fac, rtol = run.rtol
+    cdef const double* atol = run.atol
+    cdef long n_steps = run.n_steps, n_rej = run.n_rejected, n_rhs = 0, max_steps = run.max_steps
+    cdef bint last, rejected = False
+    cdef int iasti = 0, nonsti = 0
+    memcpy(y, run.y, sizeof(y))
+    rhs(t, y, K, ctx)
+    n_rhs += 1
+    if _rec_point(run, t, y, K) != 0:
+        return STATUS_NO_MEMORY
+    if _NE > 0:
+        events(t, y, g0, ctx)
+    if run.h <= 0.0:
+        run.h = _dp_first_step(run, t, y, K, fmin(b - a, run.h_max), 8.0)
+    h = fmin(run.h, run.h_max)
+    while t < b:
+        if n_steps + n_rej >= max_steps:
+            status = STATUS_MAX_STEPS
+            break
+        if h < 16.0 * 2.220446049250313e-16 * fabs(t):   # where t + h no longer moves t
+            status = STATUS_STEP_UNDERFLOW
+            break
+        last = t + 1.01 * h >= b
+        if last:
+            h = b - t
+        for st in range(1, 12):
+            _d8_arg(st, h, K, y, ys)
+            rhs(t + D8_C[st] * h, ys, K + st * _NS, ctx)
+        memcpy(y12, ys, sizeof(ys))
+        _d8_sum(D8_A[12], 12, h, K, y, yn)
+        rhs(t + h, yn, K + 12 * _NS, ctx)
+        n_rhs += 12
+        _d8_sum(D8_E5, 12, h, K, NULL, w5)
+        _d8_sum(D8_E3, 12, h, K, NULL, w3)
+        err5 = 0.0
+        err3 = 0.0
+        for i in range(_NS):
+            sc = atol[i] + rtol * _absmax(y[i], yn[i])
+            err5 += (w5[i] / sc) * (w5[i] / sc)
+            err3 += (w3[i] / sc) * (w3[i] / sc)
+        err = err5 / sqrt(_NS * (err5 + 0.01 * err3)) if err5 > 0.0 else 0.0
+        if not isfinite(err):
+            if not _finite(_NS, y):
+                status = STATUS_NOT_FINITE
+                break
+            h *= 0.2
+            n_rej += 1
+            rejected = True
+            continue
+        if err <= 1.0:
+            fac = 6.0 if err == 0.0 else fmin(6.0, fmax(1.0 / 3.0, 0.9 * pow(err, -0.125)))
+            if rejected:
+                fac = fmin(fac, 1.0)
+            n_steps += 1
+            if h * _stiff_ratio(yn, y12, K + 12 * _NS, K + 11 * _NS) > 6.1:
+                nonsti = 0
+                iasti += 1
+                if iasti == 15 and isnan(run.t_stiff):
+                    run.t_stiff = t
+            else:
+                nonsti += 1
+                if nonsti == 6:
+                    iasti = 0
+            # the dense output's three stages and its four extras, in the row of the step start
+            for st in range(13, 16):
+                _d8_arg(st, h, K, y, ys)
+                rhs(t + D8_C[st] * h, ys, K + st * _NS, ctx)
+            n_rhs += 3
+            ex = run.rec.rows + (run.rec.n - 1) * run.rec.width + 1 + 2 * _NS
+            for st in range(4):
+                _d8_sum(D8_D[st], 16, h, K, NULL, ex + st * _NS)
+            if _NE > 0:
+                hit = _event_in_step(run, t, h, y, yn, K, K + 12 * _NS, ex, 4, g0, g1, &s_hit)
+                if hit >= 0:
+                    status = _cut_at_event(run, ctx, hit, s_hit, &t, h, y, yn, K, K + 12 * _NS,
+                                           ex, 4, g0, &n_rhs)
+                    if status != STATUS_OK:
+                        break
+                    # the event refreshed run.ctx (the rhs variant of the new cam segments)
+                    local_ctx = run.ctx[0]
+                    rejected = False
+                    continue
+                memcpy(g0, g1, sizeof(g0))
+            t = b if last else t + h
+            memcpy(y, yn, sizeof(y))
+            memcpy(K, K + 12 * _NS, _NS * sizeof(double))
+            if _rec_point(run, t, y, K) != 0:
+                status = STATUS_NO_MEMORY
+                break
+            if not last:
+                run.h = h
+            h = fmin(h * fac, run.h_max)
+            rejected = False
+        else:
+            h *= fmax(1.0 / 3.0, 0.9 * pow(err, -0.125))
             n_rej += 1
             rejected = True
     memcpy(run.y, y, sizeof(y))
@@ -1210,7 +1431,7 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
     if _NE > 0:
         events(t, y, g0, ctx)
     if run.h <= 0.0:
-        run.h = _dp_first_step(run, t, y, f0, fmin(b - a, run.h_max))
+        run.h = _dp_first_step(run, t, y, f0, fmin(b - a, run.h_max), 5.0)
     h = fmin(run.h, run.h_max)
     while t < b:
         if n_steps + n_rej >= max_steps:
@@ -1297,10 +1518,10 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
             n_steps += 1
             have_jac = False
             if _NE > 0:
-                hit = _event_in_step(run, t, h, y, yn, f0, fn, NULL, g0, g1, &s_hit)
+                hit = _event_in_step(run, t, h, y, yn, f0, fn, NULL, 0, g0, g1, &s_hit)
                 if hit >= 0:
                     # cut the step at the crossing: state from the step's cubic Hermite extension
-                    _dense(s_hit, h, y, yn, f0, fn, NULL, ys)
+                    _dense(s_hit, h, y, yn, f0, fn, NULL, 0, ys)
                     t = t + s_hit * h
                     memcpy(y, ys, sizeof(y))
                     rhs(t, y, f0, ctx)
@@ -1352,9 +1573,13 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
 # interval is then recorded at equal steps, each one matrix-vector product, exact to
 # rounding whatever the step: no discretisation error, no stability limit, no stages.  The
 # steps are those RK4 would take (the recorded grid the user asked for), or, for the
-# adaptive methods, as long as the dense output between the points allows at rtol: on a mode
-# of frequency w, the cubic Hermite interpolant (RODAS4) errs by (h w)^4/384 of the
-# amplitude, DP54's quartic one by about (h w)^5/10^4.
+# adaptive methods, as long as the dense output between the points allows at rtol.  The
+# extras of a step (dense.pxd) are fitted to the exact state at its interior nodes
+# s_j = j/(n_extra + 1), whose propagators are powers of the first one.  On a mode of
+# frequency w the interpolant then errs by (h w)^p/p! times max |s^2 (1 - s)^2 prod (s - s_j)|
+# of the amplitude, p = 4 + n_extra: (h w)^4/384 for the cubic Hermite one (RODAS4), about
+# (h w)^5/1.3e4 for DP54's quartic, (h w)^8/4.7e8 for DOP853's degree 7 (rounded down to
+# 10^4 and 10^8 below).
 
 cdef void _matmul(int m, const double* A, const double* B, double* C) noexcept nogil:
     cdef int i, j, k
@@ -1455,34 +1680,31 @@ cdef double _lti_rate(const double* A) noexcept nogil:
 
 
 cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
-    """[a, b] in exact steps, the model being linear and time invariant there (see above).
-
-    DP54's rows carry the quartic term r4 of the dense output (the header): here the one that
-    makes the interpolant pass through the exact state at mid-step, y(h/2) = Phi_h/2 y + Gam_h/2,
-    so that its error falls to about (h w)^5/10^4 and
-    the points can be five times sparser than cubic Hermite's."""
+    """[a, b] in exact steps, the model being linear and time invariant there (see above)."""
     cdef Ctx* ctx = run.ctx
     cdef Record* r = &run.rec
+    cdef int nx = r.n_extra, i, j, status = STATUS_OK
     cdef double t = a, h, rate
     cdef double y[_NS]
-    cdef double ym[_NS]
     cdef double yn[_NS]
     cdef double f[_NS]
     cdef double fn[_NS]
     cdef double c[_NS]
-    cdef double Gam[_NS]
-    cdef double Gh[_NS]
-    cdef double* A = <double*> malloc(3 * _NS * _NS * sizeof(double))
-    cdef double* Phi
-    cdef double* Ph
+    cdef double vals[8 * _NS]
+    cdef double W[64]
+    # A, then (Phi, Gam) at s_j h for j = 1 .. nx + 1 (the last: the whole step)
+    cdef double* A = <double*> malloc((nx + 2) * (_NS * _NS + _NS) * sizeof(double))
+    cdef double* P
+    cdef double* G
     cdef double* row
-    cdef double r1, r2, r3
     cdef long k, nstep, done = 0
-    cdef int i, j, status = STATUS_OK
     if A == NULL:
         return STATUS_NO_MEMORY
-    Phi = A + _NS * _NS
-    Ph = A + 2 * _NS * _NS
+    if fit_matrix(nx, W) != 0:
+        free(A)
+        return STATUS_BAD_MODEL
+    P = A + _NS * _NS
+    G = P + (nx + 1) * _NS * _NS
     memcpy(y, run.y, sizeof(y))
     rhs(t, y, f, ctx)
     jacobian(t, y, A, NULL, ctx)
@@ -1491,10 +1713,11 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
         c[i] = f[i]
         for j in range(_NS):
             c[i] -= A[i * _NS + j] * y[j]
-    if run.method == METHOD_DP54 or run.method == METHOD_RODAS:
+    if adaptive_method(run.method):
         rate = _lti_rate(A)
-        h = pow((1e4 if r.with_extra else 384.0) * fmax(run.rtol, 1e-14),
-                0.2 if r.with_extra else 0.25)
+        h = (pow(1e8 * fmax(run.rtol, 1e-14), 0.125) if nx == 4 else
+             pow(1e4 * fmax(run.rtol, 1e-14), 0.2) if nx == 1 else
+             pow(384.0 * fmax(run.rtol, 1e-14), 0.25))
         h = h / rate if rate > 0.0 else b - a
         if run.h_max > 0.0:
             h = fmin(h, run.h_max)
@@ -1506,33 +1729,31 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
         free(A)
         return STATUS_MAX_STEPS
     h = (b - a) / nstep
-    # the half step's propagator (DP54's mid-step state), squared into the step's: one
+    # the first node's propagator, its powers to the others and to the step's end: one
     # matrix-vector product carries the state from point to point
-    if _expm_affine(A, c, 0.5 * h, Ph, Gh) != 0 or not _finite(_NS, f):
+    if _expm_affine(A, c, h / (nx + 1), P, G) != 0 or not _finite(_NS, f):
         run.t_fail = t
         free(A)
         return STATUS_NOT_FINITE
-    _matmul(_NS, Ph, Ph, Phi)
-    _affine(Ph, Gh, Gh, Gam)
+    for j in range(1, nx + 1):
+        _matmul(_NS, P, P + (j - 1) * _NS * _NS, P + j * _NS * _NS)
+        _affine(P, G + (j - 1) * _NS, G, G + j * _NS)
     if _rec_point(run, t, y, f) != 0:
         free(A)
         return STATUS_NO_MEMORY
     for k in range(nstep):
-        _affine(Phi, y, Gam, yn)
+        _affine(P + nx * _NS * _NS, y, G + nx * _NS, yn)
         _affine(A, yn, c, fn)
         t = a + (k + 1) * h if k + 1 < nstep else b
         if not _finite(_NS, yn):
             run.t_fail = t
             status = STATUS_NOT_FINITE
             break
-        if r.with_extra:     # r4 of the step from the last recorded point
+        if nx:     # the extras of the step from the last recorded point
+            for j in range(nx):
+                _affine(P + j * _NS * _NS, y, G + j * _NS, vals + j * _NS)
             row = r.rows + (r.n - 1) * r.width + 1 + 2 * _NS
-            _affine(Ph, y, Gh, ym)
-            for i in range(_NS):
-                r1 = yn[i] - y[i]
-                r2 = h * f[i] - r1
-                r3 = r1 - h * fn[i] - r2
-                row[i] = 16.0 * (ym[i] - y[i] - 0.5 * r1 - 0.25 * r2 - 0.125 * r3)
+            fit_extras(nx, _NS, W, h, y, yn, f, fn, vals, row)
         memcpy(y, yn, sizeof(y))
         memcpy(f, fn, sizeof(f))
         if _rec_point(run, t, y, f) != 0:
@@ -1564,6 +1785,8 @@ cdef int run_loops(Run* run) noexcept nogil:
             status = _loop_exact(run, a, b)
         elif run.method == METHOD_DP54:
             status = _loop_dp54(run, a, b)
+        elif run.method == METHOD_DOP853:
+            status = _loop_dop853(run, a, b)
         elif run.method == METHOD_RODAS:
             status = _loop_rodas(run, a, b)
         else:

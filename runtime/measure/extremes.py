@@ -58,7 +58,7 @@ def column(result: Result, name: str) -> int:
 def record(result: Result) -> tuple:
     """The arguments the compiled finder reads a run's record from."""
     return (result.model.capsule, result.p, result.law_codes, result.law_pars, result.record,
-            result.mode, len(result.state_names), result.has_extra)
+            result.mode, len(result.state_names), result.n_extra)
 
 
 def extreme(result, name: str, a: float, b: float, *, absolute: bool, minimum: bool,

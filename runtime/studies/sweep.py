@@ -31,6 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from ..core.errors import CamdynInputError, OutFolderError
+from ..core.methods import ADAPTIVE
 from ..core.outdir import Growing, entry, note, out_folder, writing
 from ..core.signals import held
 from ..measure.contract import chart_note
@@ -330,7 +331,7 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
     if resume and out is None:
         raise CamdynInputError("--resume continues the table in --out: give the folder")
     if isinstance(target, str):
-        if rtol is None and (method or "dp54") in ("dp54", "rodas4") and is_model(target):
+        if rtol is None and (method or "dp54") in ADAPTIVE and is_model(target):
             rtol = MODEL_RTOL
         tgt = resolve(target, t_end=t_end, method=method, rtol=rtol, law=law, step=step)
     else:

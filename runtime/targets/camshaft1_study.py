@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..core.methods import ADAPTIVE
 from ..core.outdir import out_folder, writing, write_text
 from ..measure import references
 from ..measure.contract import answer, chart_note, quotient
@@ -63,7 +64,7 @@ class StudyTarget(ModelTarget):
     @classmethod
     def from_scene(cls, data: dict, label: str = ""):
         resp, run = data["study"]["response"], data["run"]
-        adaptive = run["method"] in ("dp54", "rodas4")
+        adaptive = run["method"] in ADAPTIVE
         t = cls.of("camshaft1", {"tau": resp["tau"], "Fa": max(resp["Fa"])},
                    method=run["method"], rtol=run["rtol"] if adaptive else None,
                    law=data["law"], theta=data.get("theta"), label=label or data["title"])

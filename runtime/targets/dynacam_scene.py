@@ -18,7 +18,7 @@ from functools import cached_property
 import numpy as np
 
 from ..core.errors import CamdynInputError
-from ..core.methods import METHODS
+from ..core.methods import ADAPTIVE, METHODS
 from ..measure.modes import amplitude_bound, slowest_periods
 from . import dynacam, scene_files
 from .base import Figure, Outcome, Parameter, Target, Window
@@ -115,7 +115,7 @@ class DynacamTarget(Target):
         if method is not None:
             if not METHODS[method].adaptive:
                 raise CamdynInputError(f"method {method}: a dynacam scene takes an adaptive "
-                                       "method, dp54 or rodas4")
+                                       f"method, {', '.join(ADAPTIVE)}")
             changes["method"] = method
         if rtol is not None:
             changes["rtol"] = rtol

@@ -133,7 +133,7 @@ class ModelTarget(Target):
 
     ref         a built-in model's name or a model file's absolute path (:func:`model_ref`)
     params      (name, value) pairs given; the others take the manifest's defaults
-    method_name dp54, rodas4 (rtol), rk4, koster (step)
+    method_name dp54, dop853, rodas4 (rtol), rk4, koster (step)
     t_end       the run's end in the model's time; None: DEFAULT_T_END, or longer where a
                 figure's window needs it (``end_given`` says the user chose it)
     law, theta  the cam law of the inputs (a name, a composed full turn, or {family: name})

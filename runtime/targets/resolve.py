@@ -8,6 +8,7 @@ mechanism is adding its target class to SCENE_TARGETS.
 from __future__ import annotations
 
 from ..core.errors import CamdynInputError
+from ..core.methods import ADAPTIVE
 from ..core.compiled import available
 from . import scene_files
 from .beam_scene import BeamTarget
@@ -61,7 +62,7 @@ def resolve(name: str, *, model_class=ModelTarget, progress=None, **settings):
     name = str(name)
     settings = {k: v for k, v in settings.items() if v is not None}
     if settings.get("rtol") is not None and settings.get("method") in ("rk4", "koster"):
-        raise CamdynInputError(f"rtol applies to the adaptive methods dp54 and rodas4; "
+        raise CamdynInputError(f"rtol applies to the adaptive methods {', '.join(ADAPTIVE)}; "
                                f"{settings['method']} takes step")
     if is_model(name):
         return model(name, model_class, progress, **settings)
