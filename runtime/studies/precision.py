@@ -4,7 +4,7 @@ Every method runs over a ladder of settings, each run is scored against a tight 
 the chart shows the error against CPU time, log-log, one line per method, SciPy's integrators
 (:mod:`camdyn.runtime.studies.peers`) on the same generated right-hand side and Jacobian beside camdyn's.
 
-* the ladder: rtol = 1e-3 ... 1e-10 (one per decade) for the adaptive methods (dp54, rodas4 and
+* the ladder: rtol = 1e-3 ... 1e-10 (one per decade) for the adaptive methods (dp54, dop853, rodas4 and
   the peers, atol = 1e-3 rtol times the state scales, camdyn's default); for the fixed-step ones
   (rk4, koster) N, 2N, 4N, ... 128N steps over the run, N the steps DP54 takes at rtol 1e-3.
   ``quick`` takes every other rung.
