@@ -157,3 +157,42 @@ def test_every_recorded_value_is_finite():
     res = simulate("camshaft1", {"tau": 0.06, "Fa": 3.0}, 3.0, "dp54", rtol=1e-6)
     assert np.all(np.isfinite(res.y)) and all(np.all(np.isfinite(v)) for v in res.outputs.values())
     assert math.isfinite(residual(res).U0)
+
+
+def test_a_record_still_referred_to_is_never_refilled():
+    """Integrator.run refills the last run's record only once nothing refers to it (a Result
+    dropped): results kept, or views of them, keep their values while later runs go on."""
+    from camdyn.runtime.core.simulator import Simulator
+    sim = Simulator("camshaft1", 3.0, "rk4", step=1 / 64)
+    first = sim.run({"tau": 0.15, "Fa": 2.0})
+    y_first = first.y.copy()
+    view = sim.run({"tau": 0.2, "Fa": 1.0}).y      # the Result dropped, a view of it kept
+    y_view = view.copy()
+    for tau in (0.1, 0.3):
+        sim.run({"tau": tau})
+    np.testing.assert_array_equal(first.y, y_first)
+    np.testing.assert_array_equal(view, y_view)
+    # a record nobody refers to any more is refilled, not allocated again
+    p = sim.model.parameter_vector({})
+    stops, cap = sim.stops_and_capacity(p)
+    out = sim.integrator.run(p, stops, cap)
+    rows = id(out.rows)
+    del out
+    assert id(sim.integrator.run(p, stops, cap).rows) == rows
+
+
+def test_runs_of_one_simulator_in_threads_keep_their_own_records():
+    """The loops release the GIL: runs of one Simulator in several threads at once must each
+    write their own record (the one kept for reuse is taken out while in use)."""
+    from concurrent.futures import ThreadPoolExecutor
+    from camdyn.runtime.core.simulator import Simulator
+    sim = Simulator("camshaft1", 3.0, "rk4", step=1 / 1000)   # a record small enough to keep
+    taus = [0.1 + 0.01 * k for k in range(8)]
+    serial = {tau: sim.run({"tau": tau}).y.copy() for tau in taus}
+
+    def last_state(tau):
+        return tau, sim.run({"tau": tau}).y[-1].copy()
+
+    with ThreadPoolExecutor(4) as pool:
+        for tau, y in pool.map(last_state, taus * 8):
+            np.testing.assert_array_equal(y, serial[tau][-1])
