@@ -159,6 +159,33 @@ def test_every_recorded_value_is_finite():
     assert math.isfinite(residual(res).U0)
 
 
+@pytest.mark.parametrize("params", [{"tau": 0.15, "Fa": 2.0}, {"tau": 1, "Fa": 0}, {"tau": np.float64(0.2)},
+                                    {"tau": 10.0, "Fa": -0.0}, {}])
+def test_parameter_checks_in_c_agree_with_python(params):
+    """Floats in range are checked in C (driver.ParameterTable); the rest take the Python checks,
+    which place ints and NumPy numbers and name what they refuse.  Either way the same vector."""
+    cm = load("camshaft1")
+    vec = cm.parameter_vector(params)
+    expected = cm._defaults.copy()
+    for name, value in params.items():
+        expected[cm.parameter_names.index(name)] = float(value)
+    assert vec.dtype == float and vec.flags.c_contiguous
+    assert vec.tobytes() == expected.tobytes()
+    fast = cm._param_table.vector(params)
+    assert fast is None or fast.tobytes() == expected.tobytes()
+    assert (fast is not None) == all(type(v) is float for v in params.values())
+
+
+@pytest.mark.parametrize("value, match", [(True, "tau must be a number, got True"),
+                                          (0.0, "tau=0 is out of range"),
+                                          (math.inf, "tau=inf is out of range"),
+                                          (10.000001, "tau=10 is out of range")])
+def test_parameters_refused_in_c_are_named_in_python(value, match):
+    assert load("camshaft1")._param_table.vector({"tau": value}) is None
+    with pytest.raises(CamdynInputError, match=match):
+        simulate("camshaft1", {"tau": value}, 3.0, "rk4", step=0.01)
+
+
 def test_a_record_still_referred_to_is_never_refilled():
     """Integrator.run refills the last run's record only once nothing refers to it (a Result
     dropped): results kept, or views of them, keep their values while later runs go on."""

@@ -13,10 +13,13 @@ tests; they call the model through its function pointers.
 """
 from cpython.buffer cimport (PyBUF_C_CONTIGUOUS, PyBUF_FORMAT, PyBUF_WRITABLE, PyBuffer_Release,
                              PyObject_GetBuffer)
+from cpython.dict cimport PyDict_GetItem, PyDict_Next
+from cpython.float cimport PyFloat_AS_DOUBLE, PyFloat_CheckExact
+from cpython.object cimport PyObject
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
 from cpython.pycapsule cimport PyCapsule_GetPointer, PyCapsule_IsValid
 from cpython.ref cimport Py_REFCNT
-from libc.math cimport NAN, fabs, fmax
+from libc.math cimport NAN, fabs, fmax, isfinite
 from libc.stdlib cimport free
 from libc.string cimport memcpy
 from posix.time cimport CLOCK_MONOTONIC, clock_gettime, timespec
@@ -136,6 +139,57 @@ cdef ModelC* model_pointer(object capsule) except NULL:
         raise RuntimeError(f"generated model built for ABI {m.abi_version}, runtime has {CAMDYN_ABI}; "
                            "rebuild (pip install -e .) after `camdyn derive`")
     return m
+
+
+cdef class ParameterTable:
+    """A model's parameters (names, defaults, ranges) for CompiledModel.parameter_vector's
+    common case, checked in C: every value given an exact float, finite and in its range.
+    The same checks in Python cost about half a microsecond a call, a tenth of a short run."""
+
+    cdef dict index                      # name -> position
+    cdef double[::1] defaults, lo, hi    # lo, hi: -inf, inf where unbounded
+    cdef int[::1] open_lo, open_hi       # 1 where the bound itself is excluded
+
+    def __init__(self, names, defaults, lo, hi, open_lo, open_hi):
+        self.index = {name: k for k, name in enumerate(names)}
+        self.defaults = np.array(defaults, dtype=float)
+        self.lo, self.hi = np.array(lo, dtype=float), np.array(hi, dtype=float)
+        self.open_lo = np.array(open_lo, dtype=np.intc)
+        self.open_hi = np.array(open_hi, dtype=np.intc)
+        if not (len(self.index) == self.defaults.shape[0] == self.lo.shape[0] == self.hi.shape[0]
+                == self.open_lo.shape[0] == self.open_hi.shape[0]):
+            raise ValueError("one name, default and range per parameter expected")
+
+    def vector(self, values):
+        """The parameter vector: the defaults, overridden by ``values`` ({name: float}); None
+        unless values is a dict whose every value is an exact float (not an int, a bool or
+        a NumPy scalar), finite and in its parameter's range, under a parameter's name.  The
+        caller's own checks take what this declines, and say what is wrong."""
+        cdef Py_ssize_t pos = 0, k, n = self.defaults.shape[0]
+        cdef PyObject* key
+        cdef PyObject* value
+        cdef PyObject* entry
+        cdef double x
+        cdef double* v
+        cdef Py_buffer vb
+        if type(values) is not dict:
+            return None
+        vec = _empty(n, _FLOAT)
+        _export(vec, &vb, 1, b'd', True, "parameter vector")
+        v = <double*> vb.buf
+        PyBuffer_Release(&vb)    # vec, which owns the memory, stays referenced here
+        memcpy(v, &self.defaults[0], n * sizeof(double))
+        while PyDict_Next(values, &pos, &key, &value):
+            entry = PyDict_GetItem(self.index, <object> key)
+            if entry == NULL or not PyFloat_CheckExact(<object> value):
+                return None
+            k = <object> entry
+            x = PyFloat_AS_DOUBLE(<object> value)
+            if not (isfinite(x) and (self.lo[k] < x if self.open_lo[k] else self.lo[k] <= x)
+                    and (x < self.hi[k] if self.open_hi[k] else x <= self.hi[k])):
+                return None
+            v[k] = x
+        return vec
 
 
 def fixed_step_points(double t0, double[::1] stops, double h):
