@@ -157,3 +157,69 @@ def test_every_recorded_value_is_finite():
     res = simulate("camshaft1", {"tau": 0.06, "Fa": 3.0}, 3.0, "dp54", rtol=1e-6)
     assert np.all(np.isfinite(res.y)) and all(np.all(np.isfinite(v)) for v in res.outputs.values())
     assert math.isfinite(residual(res).U0)
+
+
+@pytest.mark.parametrize("params", [{"tau": 0.15, "Fa": 2.0}, {"tau": 1, "Fa": 0}, {"tau": np.float64(0.2)},
+                                    {"tau": 10.0, "Fa": -0.0}, {}])
+def test_parameter_checks_in_c_agree_with_python(params):
+    """Floats in range are checked in C (driver.ParameterTable); the rest take the Python checks,
+    which place ints and NumPy numbers and name what they refuse.  Either way the same vector."""
+    cm = load("camshaft1")
+    vec = cm.parameter_vector(params)
+    expected = cm._defaults.copy()
+    for name, value in params.items():
+        expected[cm.parameter_names.index(name)] = float(value)
+    assert vec.dtype == float and vec.flags.c_contiguous
+    assert vec.tobytes() == expected.tobytes()
+    fast = cm._param_table.vector(params)
+    assert fast is None or fast.tobytes() == expected.tobytes()
+    assert (fast is not None) == all(type(v) is float for v in params.values())
+
+
+@pytest.mark.parametrize("value, match", [(True, "tau must be a number, got True"),
+                                          (0.0, "tau=0 is out of range"),
+                                          (math.inf, "tau=inf is out of range"),
+                                          (10.000001, "tau=10 is out of range")])
+def test_parameters_refused_in_c_are_named_in_python(value, match):
+    assert load("camshaft1")._param_table.vector({"tau": value}) is None
+    with pytest.raises(CamdynInputError, match=match):
+        simulate("camshaft1", {"tau": value}, 3.0, "rk4", step=0.01)
+
+
+def test_a_record_still_referred_to_is_never_refilled():
+    """Integrator.run refills the last run's record only once nothing refers to it (a Result
+    dropped): results kept, or views of them, keep their values while later runs go on."""
+    from camdyn.runtime.core.simulator import Simulator
+    sim = Simulator("camshaft1", 3.0, "rk4", step=1 / 64)
+    first = sim.run({"tau": 0.15, "Fa": 2.0})
+    y_first = first.y.copy()
+    view = sim.run({"tau": 0.2, "Fa": 1.0}).y      # the Result dropped, a view of it kept
+    y_view = view.copy()
+    for tau in (0.1, 0.3):
+        sim.run({"tau": tau})
+    np.testing.assert_array_equal(first.y, y_first)
+    np.testing.assert_array_equal(view, y_view)
+    # a record nobody refers to any more is refilled, not allocated again
+    p = sim.model.parameter_vector({})
+    stops, cap = sim.stops_and_capacity(p)
+    out = sim.integrator.run(p, stops, cap)
+    rows = id(out.rows)
+    del out
+    assert id(sim.integrator.run(p, stops, cap).rows) == rows
+
+
+def test_runs_of_one_simulator_in_threads_keep_their_own_records():
+    """The loops release the GIL: runs of one Simulator in several threads at once must each
+    write their own record (the one kept for reuse is taken out while in use)."""
+    from concurrent.futures import ThreadPoolExecutor
+    from camdyn.runtime.core.simulator import Simulator
+    sim = Simulator("camshaft1", 3.0, "rk4", step=1 / 1000)   # a record small enough to keep
+    taus = [0.1 + 0.01 * k for k in range(8)]
+    serial = {tau: sim.run({"tau": tau}).y.copy() for tau in taus}
+
+    def last_state(tau):
+        return tau, sim.run({"tau": tau}).y[-1].copy()
+
+    with ThreadPoolExecutor(4) as pool:
+        for tau, y in pool.map(last_state, taus * 8):
+            np.testing.assert_array_equal(y, serial[tau][-1])

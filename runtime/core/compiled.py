@@ -8,6 +8,7 @@ from functools import cached_property, lru_cache
 
 import numpy as np
 
+from ..engine import driver
 from .errors import CamdynInputError
 
 
@@ -55,8 +56,22 @@ class CompiledModel:
     def _defaults(self) -> np.ndarray:
         return np.array([spec["default"] for spec in self.manifest["parameters"]], dtype=float)
 
+    @cached_property
+    def _param_table(self):
+        """The parameters' defaults and ranges for the checks in C (driver.ParameterTable)."""
+        entries = sorted(self._param_index.values(), key=lambda e: e[0])
+        return driver.ParameterTable(self.parameter_names, self._defaults,
+                                     [e[1] for e in entries], [e[2] for e in entries],
+                                     [e[3] for e in entries], [e[4] for e in entries])
+
     def parameter_vector(self, values: dict | None = None) -> np.ndarray:
         """Parameters in manifest order: defaults, overridden by ``values``, checked."""
+        if values:
+            # the common case (a dict of floats, every one in range) is checked in C; what that
+            # declines comes here, where ints and NumPy numbers are taken and a refusal says why
+            vec = self._param_table.vector(values)
+            if vec is not None:
+                return vec
         vec = self._defaults.copy()
         if not values:
             return vec

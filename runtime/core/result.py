@@ -21,14 +21,33 @@ class Result:
     """
 
     def __init__(self, sim, p, out):
-        self.model = sim.model
-        self.method = sim.method
-        self.laws = sim.laws
-        self.law_codes, self.law_pars = sim.law_codes, sim.law_pars
+        # the model, method and cam laws are read off the Simulator when asked for: one
+        # attribute set here instead of five, in a call whose fixed cost counts (Simulator.run)
+        self._sim = sim
         self.p = p
         self._out = out
         # the warnings of a step near the stability boundary, set by Simulator.run
         self.warnings: list[str] = []
+
+    @property
+    def model(self):
+        return self._sim.model
+
+    @property
+    def method(self):
+        return self._sim.method
+
+    @property
+    def laws(self) -> dict:
+        return self._sim.laws
+
+    @property
+    def law_codes(self) -> np.ndarray:
+        return self._sim.law_codes
+
+    @property
+    def law_pars(self) -> np.ndarray:
+        return self._sim.law_pars
 
     @cached_property
     def stability(self):

@@ -204,6 +204,10 @@ class Simulator:
             None if method.adaptive else _stability.loop_boundary(method.name), exact_segments)
         self._stops: dict = {}
         self._cap = 256
+        # what run() reads on every call, looked up once here
+        self._tname = m.manifest["time"]["name"]
+        self._fixed_step = None if method.adaptive else method.step
+        self._warn_level = None if method.adaptive else _stability.warn_level(method.name)
 
     def initial_state(self, p: np.ndarray) -> np.ndarray:
         """The initial state of a run with parameters p: the one given, else the model's
@@ -246,14 +250,15 @@ class Simulator:
 
     def stops_and_capacity(self, p: np.ndarray):
         """(stop times, record capacity: 0 for adaptive methods) for parameters p, cached."""
-        key = p.tobytes()
-        hit = self._stops.get(key)
-        if hit is None:
-            if len(self._stops) > 256:
-                self._stops.clear()
-            stops = stop_times(self.model, p, self.laws, self.t0, self.t_end)
-            cap = 0 if self.method.adaptive else driver.fixed_step_points(self.t0, stops, self.method.step)
-            hit = self._stops[key] = (stops, cap)
+        hit = self._stops.get(p.tobytes())
+        return self._new_stops(p) if hit is None else hit
+
+    def _new_stops(self, p: np.ndarray):
+        if len(self._stops) > 256:
+            self._stops.clear()
+        stops = stop_times(self.model, p, self.laws, self.t0, self.t_end)
+        cap = 0 if self.method.adaptive else driver.fixed_step_points(self.t0, stops, self.method.step)
+        hit = self._stops[p.tobytes()] = (stops, cap)
         return hit
 
     def run(self, params: dict | None = None) -> Result:
@@ -266,39 +271,51 @@ class Simulator:
         the boundary leaves a warning in ``result.warnings``, from the largest h |lambda| the
         loop saw; DP54 records where Hairer's stiffness test fired in ``result.stiff_from_T``.
         """
+        # the fixed cost of a call is a good part of a short run's (a CAMSHAFT-1 run in RK4
+        # steps takes a few microseconds): what does not depend on params was looked up in
+        # __init__, and the common path makes no call it can do without
         m = self.model
         p = m.parameter_vector(params)
-        stops, cap = self.stops_and_capacity(p)
+        hit = self._stops.get(p.tobytes())
+        stops, cap = self._new_stops(p) if hit is None else hit
         y0 = None if self._y0_given else m.initial_state(p)
-        tname = m.manifest["time"]["name"]
-        notes = []
+        note = None
         if self._project:
             y0, note = self._consistent(p, self._y_init if y0 is None else y0)
-            notes += [note] if note else []
         out = self.integrator.run(p, stops, cap or self._cap, y0)
         if out.status != 0:
-            if out.status == driver.UNSTABLE:
-                est = _stability.from_loop(self.method.name, self.method.step, out)
-                raise UnstableStep(_stability.refusal(m.name, tname, est), est)
-            # the integrator's words say what it saw; the model's state says why
-            fault = diagnosis.explain(m, p, self.law_codes, self.law_pars, out)
-            if fault is not None and fault.at_start:     # the input, not the run
-                raise CamdynInputError(f"{m.name}: {fault.text}")
-            raise SimulationError(f"{m.name} with {self.method.name}: " + (
-                fault.text if fault else
-                f"{driver.STATUS_TEXT[out.status]} at {tname} = {out.t_fail:.6g}"))
+            self._failed(p, out)
         if not cap:
             self._cap = max(256, out.n + out.n // 4)
         res = Result(self, p, out)
-        res.warnings += notes
-        if not self.method.adaptive and _stability.near(self.method.name, self.method.step, out):
+        if note:
+            res.warnings.append(note)
+        # near the boundary (the warning) or beyond it, read off the loop's check without
+        # building the estimate: far inside, the common case, this costs two comparisons
+        h = self._fixed_step
+        if h is not None and out.n_checks > 0 and (out.stab_ratio > 1.0
+                                                   or h * out.stab_rho > self._warn_level):
             est = res.stability
             if est.stable:
-                res.warnings.append(_stability.warning(tname, est))
+                res.warnings.append(_stability.warning(self._tname, est))
             else:   # run anyway (check_stability=False)
                 res.warnings.append("run with the stability check off: "
-                                    + _stability.refusal(m.name, tname, est))
+                                    + _stability.refusal(m.name, self._tname, est))
         return res
+
+    def _failed(self, p, out):
+        """Raise what a run that stopped early (out.status) calls for."""
+        m, tname = self.model, self._tname
+        if out.status == driver.UNSTABLE:
+            est = _stability.from_loop(self.method.name, self.method.step, out)
+            raise UnstableStep(_stability.refusal(m.name, tname, est), est)
+        # the integrator's words say what it saw; the model's state says why
+        fault = diagnosis.explain(m, p, self.law_codes, self.law_pars, out)
+        if fault is not None and fault.at_start:     # the input, not the run
+            raise CamdynInputError(f"{m.name}: {fault.text}")
+        raise SimulationError(f"{m.name} with {self.method.name}: " + (
+            fault.text if fault else
+            f"{driver.STATUS_TEXT[out.status]} at {tname} = {out.t_fail:.6g}"))
 
     def _consistent(self, p, y):
         """A constrained model's initial state on its constraints: the dependent coordinates

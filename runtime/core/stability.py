@@ -257,12 +257,6 @@ def from_loop(method: str, h: float, out) -> Estimate | None:
     return estimate(method, h, float(out.stab_rho), float(out.stab_t), float(out.stab_b))
 
 
-def near(method: str, h: float, out) -> bool:
-    """Whether the run's step was near the boundary (the warning) or beyond it, without
-    building the estimate: the common case, far inside, costs two comparisons."""
-    return out.n_checks > 0 and (out.stab_ratio > 1.0 or h * out.stab_rho > warn_level(method))
-
-
 def sample_indices(t: np.ndarray, n: int, samples: int = SAMPLES) -> np.ndarray:
     """Recorded points to check: the first, each interval's start (right limit at a stop
     recorded twice) and ``samples`` spread evenly over the first n points."""

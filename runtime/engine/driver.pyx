@@ -2,23 +2,27 @@
 """Driver of the compiled integration loops, and compiled evaluation helpers.
 
 The loops themselves (runtime/engine/loops.pxi) are compiled into every generated
-model with its right-hand side inlined; ``integrate`` prepares the buffers and
-calls them through the model's ModelC.run, once, without the GIL.  The record
-is written straight into NumPy arrays sized in advance; only when a run
-outgrows them (adaptive steps) do the loops move to buffers of their own,
-which are copied once at the end.
+model with its right-hand side inlined; ``Integrator.run`` prepares the buffers
+and calls them through the model's ModelC.run, once, without the GIL.  The record
+is written straight into NumPy arrays sized in advance (the last run's again, once
+nothing refers to them any more); only when a run outgrows them (adaptive steps)
+do the loops move to buffers of their own, which are copied once at the end.
 
 The helpers below (outputs, rhs, dense output) serve post-processing and
 tests; they call the model through its function pointers.
 """
-from cpython.pycapsule cimport PyCapsule_GetPointer, PyCapsule_IsValid
+from cpython.buffer cimport (PyBUF_C_CONTIGUOUS, PyBUF_FORMAT, PyBUF_WRITABLE, PyBuffer_Release,
+                             PyObject_GetBuffer)
+from cpython.dict cimport PyDict_GetItem, PyDict_Next
+from cpython.float cimport PyFloat_AS_DOUBLE, PyFloat_CheckExact
+from cpython.object cimport PyObject
 from cpython.mem cimport PyMem_Free, PyMem_Malloc
-from libc.math cimport NAN, fabs, fmax
+from cpython.pycapsule cimport PyCapsule_GetPointer, PyCapsule_IsValid
+from cpython.ref cimport Py_REFCNT
+from libc.math cimport NAN, fabs, fmax, isfinite
 from libc.stdlib cimport free
 from libc.string cimport memcpy
 from posix.time cimport CLOCK_MONOTONIC, clock_gettime, timespec
-
-from collections import namedtuple
 
 import numpy as np
 
@@ -32,16 +36,32 @@ KOSTER = METHOD_KOSTER
 RODAS = METHOD_RODAS
 DOP853 = METHOD_DOP853
 
-RunRecord = namedtuple("RunRecord", "status rows modes n n_steps n_rejected n_rhs t_fail seconds "
-                                    "n_events t_stiff stab_ratio stab_t stab_rho stab_b n_checks")
-RunRecord.__doc__ = """What Integrator.run returns: the status (STATUS_TEXT), the record (``rows``:
-t, states and slopes at every recorded point; ``modes`` in force from each point on; ``n`` of
-them filled), step and right-hand-side counts, where a failed run stopped (``t_fail``), the
-wall time of the compiled loops, the number of events and, for DP54 and DOP853, the time where
-Hairer's stiffness test first fired (``t_stiff``, NaN if it never did); for a fixed-step run with the
-stability check (``stab_mode``), the largest h |lambda|/b it saw (``stab_ratio``, -1 without a
-check; beyond 1 the step is unstable), where (``stab_t``), that eigenvalue's |lambda|
-(``stab_rho``), the boundary b in its direction (``stab_b``), and the Jacobians checked."""
+cdef class RunRecord:
+    """What Integrator.run returns: the status (STATUS_TEXT), the record (``rows``: t, states and
+    slopes at every recorded point; ``modes`` in force from each point on; ``n`` of them
+    filled), step and right-hand-side counts, where a failed run stopped (``t_fail``), the wall
+    time of the compiled loops, the number of events and, for DP54 and DOP853, the time where
+    Hairer's stiffness test first fired (``t_stiff``, NaN if it never did); for a fixed-step run with the
+    stability check (``stab_mode``), the largest h |lambda|/b it saw (``stab_ratio``, -1 without a
+    check; beyond 1 the step is unstable), where (``stab_t``), that eigenvalue's |lambda|
+    (``stab_rho``), the boundary b in its direction (``stab_b``), and the Jacobians checked.
+
+    An extension type rather than a named tuple: it is made once per run, and filling its
+    fields from C costs a fraction of building a tuple of sixteen Python objects."""
+
+    cdef readonly int status
+    cdef readonly object rows, modes
+    cdef readonly Py_ssize_t n
+    cdef readonly long n_steps, n_rejected, n_rhs, n_events, n_checks
+    cdef readonly double t_fail, seconds, t_stiff, stab_ratio, stab_t, stab_rho, stab_b
+
+    def __repr__(self):
+        return (f"RunRecord(status={self.status}, n={self.n}, n_steps={self.n_steps}, "
+                f"n_rejected={self.n_rejected}, n_rhs={self.n_rhs}, t_fail={self.t_fail!r}, "
+                f"seconds={self.seconds!r}, n_events={self.n_events}, t_stiff={self.t_stiff!r}, "
+                f"stab_ratio={self.stab_ratio!r}, stab_t={self.stab_t!r}, "
+                f"stab_rho={self.stab_rho!r}, stab_b={self.stab_b!r}, n_checks={self.n_checks})")
+
 
 STATUS_TEXT = {
     STATUS_OK: "ok",
@@ -58,6 +78,61 @@ STATUS_TEXT = {
 UNSTABLE = STATUS_UNSTABLE
 CHECK_OFF, CHECK_ESTIMATE, CHECK_STOP = 0, 1, 2
 
+# Integrator.run allocates its record with these, called positionally: looking up np.empty
+# and passing dtype by keyword cost a tenth of a microsecond in a call that takes a few
+_empty = np.empty
+_FLOAT = np.dtype(float)
+_INTC = np.dtype(np.intc)
+
+# doubles of scratch (state, constants, cam cache, stability vector, modes) Integrator.run
+# keeps on the stack; a larger model's go on the heap
+cdef enum:
+    SCRATCH_LOCAL = 256
+# the largest record (bytes of rows and modes) an Integrator keeps for its next run: enough
+# for the short runs whose fixed cost it saves, little for the simulators simulate() keeps
+cdef enum:
+    SPARE_BYTES = 262144
+
+
+cdef int _export(object obj, Py_buffer* view, int ndim, char code, bint writable,
+                 str what) except -1:
+    """A C-contiguous buffer of obj, ndim dimensions of the C type ``code`` ('d' double, 'i'
+    int), as a typed memoryview would take it, without the memoryview: making one costs a
+    tenth of a microsecond, and Integrator.run takes four arrays in a call of a few.  The
+    caller releases the view."""
+    PyObject_GetBuffer(obj, view, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT
+                                  | (PyBUF_WRITABLE if writable else 0))
+    cdef const char* fmt = view.format
+    if fmt != NULL and (fmt[0] == b'@' or fmt[0] == b'='):
+        fmt += 1
+    if (view.ndim != ndim or fmt == NULL or fmt[0] != code or fmt[1] != 0 or view.itemsize !=
+            (<Py_ssize_t> sizeof(double) if code == b'd' else <Py_ssize_t> sizeof(int))):
+        PyBuffer_Release(view)
+        raise ValueError(f"{what}: expected a C-contiguous {ndim}-d array of "
+                         f"{'float64' if code == b'd' else 'intc'}")
+    return 0
+
+
+cdef bint _refill(object rows, object modes, Py_buffer* rb, Py_buffer* mb, Py_ssize_t cap,
+                  int width, int nm):
+    """Whether a kept record (rows, modes) takes cap points of this width, its buffers then
+    exported into rb and mb; not when the arrays were changed (shape, type, flags) since."""
+    try:
+        _export(rows, rb, 2, b'd', True, "record")
+    except Exception:
+        return False
+    try:
+        _export(modes, mb, 2, b'i', True, "record modes")
+    except Exception:
+        PyBuffer_Release(rb)
+        return False
+    if rb.shape[0] >= cap and rb.shape[1] == width and mb.shape[0] == rb.shape[0] \
+            and mb.shape[1] == nm:
+        return True
+    PyBuffer_Release(rb)
+    PyBuffer_Release(mb)
+    return False
+
 
 cdef ModelC* model_pointer(object capsule) except NULL:
     if not PyCapsule_IsValid(capsule, b"camdyn.ModelC"):
@@ -67,6 +142,57 @@ cdef ModelC* model_pointer(object capsule) except NULL:
         raise RuntimeError(f"generated model built for ABI {m.abi_version}, runtime has {CAMDYN_ABI}; "
                            "rebuild (pip install -e .) after `camdyn derive`")
     return m
+
+
+cdef class ParameterTable:
+    """A model's parameters (names, defaults, ranges) for CompiledModel.parameter_vector's
+    common case, checked in C: every value given an exact float, finite and in its range.
+    The same checks in Python cost about half a microsecond a call, a tenth of a short run."""
+
+    cdef dict index                      # name -> position
+    cdef double[::1] defaults, lo, hi    # lo, hi: -inf, inf where unbounded
+    cdef int[::1] open_lo, open_hi       # 1 where the bound itself is excluded
+
+    def __init__(self, names, defaults, lo, hi, open_lo, open_hi):
+        self.index = {name: k for k, name in enumerate(names)}
+        self.defaults = np.array(defaults, dtype=float)
+        self.lo, self.hi = np.array(lo, dtype=float), np.array(hi, dtype=float)
+        self.open_lo = np.array(open_lo, dtype=np.intc)
+        self.open_hi = np.array(open_hi, dtype=np.intc)
+        if not (len(self.index) == self.defaults.shape[0] == self.lo.shape[0] == self.hi.shape[0]
+                == self.open_lo.shape[0] == self.open_hi.shape[0]):
+            raise ValueError("one name, default and range per parameter expected")
+
+    def vector(self, values):
+        """The parameter vector: the defaults, overridden by ``values`` ({name: float}); None
+        unless values is a dict whose every value is an exact float (not an int, a bool or
+        a NumPy scalar), finite and in its parameter's range, under a parameter's name.  The
+        caller's own checks take what this declines, and say what is wrong."""
+        cdef Py_ssize_t pos = 0, k, n = self.defaults.shape[0]
+        cdef PyObject* key
+        cdef PyObject* value
+        cdef PyObject* entry
+        cdef double x
+        cdef double* v
+        cdef Py_buffer vb
+        if type(values) is not dict:
+            return None
+        vec = _empty(n, _FLOAT)
+        _export(vec, &vb, 1, b'd', True, "parameter vector")
+        v = <double*> vb.buf
+        PyBuffer_Release(&vb)    # vec, which owns the memory, stays referenced here
+        memcpy(v, &self.defaults[0], n * sizeof(double))
+        while PyDict_Next(values, &pos, &key, &value):
+            entry = PyDict_GetItem(self.index, <object> key)
+            if entry == NULL or not PyFloat_CheckExact(<object> value):
+                return None
+            k = <object> entry
+            x = PyFloat_AS_DOUBLE(<object> value)
+            if not (isfinite(x) and (self.lo[k] < x if self.open_lo[k] else self.lo[k] <= x)
+                    and (x < self.hi[k] if self.open_hi[k] else x <= self.hi[k])):
+                return None
+            v[k] = x
+        return vec
 
 
 def fixed_step_points(double t0, double[::1] stops, double h):
@@ -85,10 +211,9 @@ cdef class Integrator:
 
     ``run(p, stops, cap)`` integrates from t0 through every stop time with the
     parameter vector p; ``cap`` is the number of points to reserve (exact for
-    fixed steps, a guess for DP54).  It returns (status, rows, mode, n, n_steps,
-    n_rejected, n_rhs, t_fail, seconds, n_events): ``rows`` has one row [t, y, f, extra]
-    per recorded point (see abi.pxd), ``mode`` the modes in force from each
-    point, ``seconds`` the wall time of the compiled loops.
+    fixed steps, a guess for DP54).  It returns a RunRecord: ``rows`` has one row
+    [t, y, f, extra] per recorded point (see abi.pxd), ``modes`` the modes in force from
+    each point, ``seconds`` the wall time of the compiled loops.
     """
 
     cdef ModelC* m
@@ -101,6 +226,7 @@ cdef class Integrator:
     cdef int stab_mode
     cdef bint exact
     cdef readonly int width, n_states
+    cdef object spare_rows, spare_modes     # the last run's record, for the next (run)
 
     def __init__(self, object capsule, int method, int[::1] law, double[::1] law_par,
                  double[::1] y0, double t0, double h, double h_max, double rtol,
@@ -131,35 +257,77 @@ cdef class Integrator:
         self.n_states = ns
         self.width = 1 + (2 + extra_terms(method)) * ns
 
-    def run(self, double[::1] p, double[::1] stops, Py_ssize_t cap, y0=None):
-        cdef ModelC* m = self.m
-        cdef int ns = m.n_states, nm = m.n_modes, ncam = m.n_instances, j
-        if p.shape[0] != m.n_params:
-            raise ValueError("parameter vector of the wrong length")
+    def run(self, p, stops, Py_ssize_t cap, y0=None):
+        cdef int nm = self.m.n_modes
+        cdef Py_buffer pb, sb, rb, mb
+        cdef RunRecord out
+        cdef double[::1] y_start = self.y0 if y0 is None else np.ascontiguousarray(y0, dtype=float)
+        if y_start.shape[0] != self.n_states:
+            raise ValueError("initial state of the wrong length")
         if cap < 16:
             cap = 16
-        rows = np.empty((cap, self.width))
-        modes = np.empty((cap, nm), dtype=np.intc)
-        cdef double[:, ::1] rv = rows
-        cdef int[:, ::1] mv = modes
+        # the last run's record, refilled when nothing refers to it any more (its RunRecord,
+        # the Result and every view of its arrays are gone): new arrays and the first export
+        # of their buffers cost about as much as the shortest runs' other bookkeeping
+        # together.  Taken out of self while in use, so that a run in another thread (the
+        # loops release the GIL) cannot take it too
+        rows, modes = self.spare_rows, self.spare_modes
+        self.spare_rows = self.spare_modes = None
+        if not (rows is not None and Py_REFCNT(rows) == 1 and Py_REFCNT(modes) == 1
+                and _refill(rows, modes, &rb, &mb, cap, self.width, nm)):
+            rows = _empty((cap, self.width), _FLOAT)
+            modes = _empty((cap, nm), _INTC)
+            _export(rows, &rb, 2, b'd', True, "record")
+            try:
+                _export(modes, &mb, 2, b'i', True, "record modes")
+            except BaseException:
+                PyBuffer_Release(&rb)
+                raise
+        try:
+            _export(p, &pb, 1, b'd', False, "parameter vector")
+            try:
+                _export(stops, &sb, 1, b'd', False, "stop times")
+                try:
+                    if pb.shape[0] != self.m.n_params:
+                        raise ValueError("parameter vector of the wrong length")
+                    out = self._run(<const double*> pb.buf, <const double*> sb.buf, sb.shape[0],
+                                    &y_start[0], <double*> rb.buf, <int*> mb.buf, rb.shape[0])
+                finally:
+                    PyBuffer_Release(&sb)
+            finally:
+                PyBuffer_Release(&pb)
+            if out.rows is None:
+                out.rows, out.modes = rows, modes
+                if self.spare_rows is None and rb.len + mb.len <= SPARE_BYTES:
+                    self.spare_rows, self.spare_modes = rows, modes
+        finally:
+            PyBuffer_Release(&rb)
+            PyBuffer_Release(&mb)
+        return out
+
+    cdef RunRecord _run(self, const double* p, const double* stops, Py_ssize_t n_stops,
+                        const double* y0, double* rows, int* modes, Py_ssize_t cap):
+        """The compiled loops on the prepared buffers; a RunRecord without rows and modes
+        unless the loops outgrew the ones given (cap points), whose copy it then holds."""
+        cdef ModelC* m = self.m
+        cdef int ns = m.n_states, nm = m.n_modes, ncam = m.n_instances, j
         # small scratch: the state, the parameter constants, the cam cache, the stability
-        # check's vector; the modes
-        cdef double* scratch = <double*> PyMem_Malloc((2 * ns + m.n_const + m.n_cache + 3) * sizeof(double))
-        cdef int* mode = <int*> PyMem_Malloc((nm + 1) * sizeof(int))
-        if scratch == NULL or mode == NULL:
-            PyMem_Free(scratch)
-            PyMem_Free(mode)
-            raise MemoryError()
-        cdef double[::1] y_start = self.y0 if y0 is None else np.ascontiguousarray(y0, dtype=float)
-        if y_start.shape[0] != ns:
-            PyMem_Free(scratch)
-            PyMem_Free(mode)
-            raise ValueError("initial state of the wrong length")
-        memcpy(scratch, &y_start[0], ns * sizeof(double))
+        # check's vector; then the modes.  On the stack where it fits (every generated model
+        # so far): the heap's allocations cost as much as a short run's other bookkeeping
+        cdef Py_ssize_t n_scratch = 2 * ns + m.n_const + m.n_cache + 3
+        cdef Py_ssize_t n_words = n_scratch + (nm + 2) // 2
+        cdef double local_scratch[SCRATCH_LOCAL]
+        cdef double* scratch = local_scratch
+        if n_words > SCRATCH_LOCAL:
+            scratch = <double*> PyMem_Malloc(n_words * sizeof(double))
+            if scratch == NULL:
+                raise MemoryError()
+        cdef int* mode = <int*> (scratch + n_scratch)
+        memcpy(scratch, y0, ns * sizeof(double))
         for j in range(nm - ncam):
             mode[ncam + j] = self.modes0[j]
         cdef Ctx ctx
-        ctx.p = &p[0]
+        ctx.p = p
         ctx.k = scratch + ns
         ctx.cache = scratch + ns + m.n_const
         ctx.law = &self.law[0]
@@ -173,11 +341,11 @@ cdef class Integrator:
         run.rec.width = self.width
         run.rec.n_extra = extra_terms(self.method)
         run.rec.owned = False
-        run.rec.rows = &rv[0, 0]
-        run.rec.mode = &mv[0, 0] if nm else NULL
+        run.rec.rows = rows
+        run.rec.mode = modes if nm else NULL
         run.method = self.method
-        run.stops = &stops[0]
-        run.n_stops = stops.shape[0]
+        run.stops = stops
+        run.n_stops = n_stops
         run.t0 = self.t0
         run.y = scratch
         run.h = self.h
@@ -209,15 +377,17 @@ cdef class Integrator:
             clock_gettime(CLOCK_MONOTONIC, &c0)
             status = m.run(&run)
             clock_gettime(CLOCK_MONOTONIC, &c1)
-        cdef double seconds = (c1.tv_sec - c0.tv_sec) + 1e-9 * (c1.tv_nsec - c0.tv_nsec)
-        PyMem_Free(scratch)
-        PyMem_Free(mode)
+        if scratch != local_scratch:
+            PyMem_Free(scratch)
         cdef Py_ssize_t n = run.rec.n
+        cdef RunRecord out = RunRecord.__new__(RunRecord)
+        cdef double[:, ::1] rv
+        cdef int[:, ::1] mv
         if run.rec.owned:
             try:
-                rows = np.empty((n, self.width))
-                modes = np.empty((n, nm), dtype=np.intc)
-                rv, mv = rows, modes
+                out.rows = _empty((n, self.width), _FLOAT)
+                out.modes = _empty((n, nm), _INTC)
+                rv, mv = out.rows, out.modes
                 if n:
                     memcpy(&rv[0, 0], run.rec.rows, n * self.width * sizeof(double))
                     if nm:
@@ -225,9 +395,21 @@ cdef class Integrator:
             finally:
                 free(run.rec.rows)
                 free(run.rec.mode)
-        return RunRecord(status, rows, modes, n, run.n_steps, run.n_rejected, run.n_rhs,
-                         run.t_fail, seconds, run.n_events, run.t_stiff, run.stab_ratio, run.stab_t,
-                         run.stab_rho, run.stab_b, run.n_checks)
+        out.status = status
+        out.n = n
+        out.n_steps = run.n_steps
+        out.n_rejected = run.n_rejected
+        out.n_rhs = run.n_rhs
+        out.t_fail = run.t_fail
+        out.seconds = (c1.tv_sec - c0.tv_sec) + 1e-9 * (c1.tv_nsec - c0.tv_nsec)
+        out.n_events = run.n_events
+        out.t_stiff = run.t_stiff
+        out.stab_ratio = run.stab_ratio
+        out.stab_t = run.stab_t
+        out.stab_rho = run.stab_rho
+        out.stab_b = run.stab_b
+        out.n_checks = run.n_checks
+        return out
 
 
 def dop853_tableau():
