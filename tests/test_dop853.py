@@ -183,3 +183,27 @@ def test_cli_takes_dop853():
     assert out["method"] == "dop853" and out["warnings"] == []
     assert 0 < out["U0_error"] < 1e-9
     assert abs(out["U0"] - ref["U0"]) <= 10 * out["U0_error"]
+
+
+def test_a_compiled_sweep_scans_dop853s_sparse_record_densely_enough():
+    """DOP853 records about 8 points a period at rtol 1e-9 (DP54 about 87): the compiled
+    sweep's scan samples its steps as densely as DP54's (runtime/targets/model_target.py,
+    scan_density), so that its figures equal those read off each run by the Python path
+    (residual(), 12 samples a step) to 1e-7 of their scale, times included, on fig. 4.11's
+    fastest taus, where every third point alone once missed the deepest trough by 0.1 in T."""
+    from camdyn.runtime.measure.residual import residual
+    from camdyn.runtime.studies import sweep as sw
+    from camdyn.runtime.targets.model_target import ModelTarget
+
+    taus = [0.06, 0.0883394834, 0.1146394856, 0.2]
+    target = ModelTarget.of("camshaft1", t_end=3.0, method="dop853", rtol=1e-9)
+    res = sw.sweep(target, {"Fa": [0.0, 3.0], "tau": taus}, jobs=1, progress=False,
+                   estimate=False)
+    cols = res.columns
+    for j in range(len(cols["tau"])):
+        p = {"Fa": float(cols["Fa"][j]), "tau": float(cols["tau"][j])}
+        f = residual(simulate("camshaft1", p, 3.0, "dop853", rtol=1e-9))
+        for name in ("U0", "U0dd", "Xdd_min_rise"):
+            ref = getattr(f, name)
+            assert abs(cols[name][j] - ref) <= 1e-7 * max(abs(ref), 1.0), (p, name)
+        assert abs(cols["T_at_Xdd_min"][j] - f.T_at_Xdd_min) <= 1e-6, p

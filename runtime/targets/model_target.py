@@ -50,13 +50,21 @@ refines its CANDIDATES best peaks on the dense output, then checks the others
 (runtime/engine/finder.pyx)."""
 
 
+# recorded points per period of the fastest mode that carries amplitude, at least, as
+# (factor, p) of factor rtol^(-1/p): DP54's error per step goes as h^5, and CAMSHAFT-1 at rtol
+# 1e-9 takes 87 steps a period at tau = 0.06 (fig. 4.11's fastest), 1.4 rtol^(-1/5); DOP853's
+# as h^8, and its fewest over tau 0.06-0.15, Fa 0-10, rtol 1e-6-1e-12 (the exact dwell's
+# points included) are 0.47 rtol^(-1/8), 8.4 a period at rtol 1e-9
+POINTS_PER_PERIOD = {"dop853": (0.45, 8.0)}
+
+
 def scan_density(method) -> tuple[int, int]:
-    """(per_step, stride) of a grid's compiled scan.  An adaptive method's steps per period of
-    the fastest mode that carries amplitude grow as rtol^(-1/5) (DP54's error per step goes
-    as h^5): CAMSHAFT-1 at rtol 1e-9 takes 87 a period at tau = 0.06 (fig. 4.11's fastest),
-    1.4 rtol^(-1/5).  The scan keeps about SAMPLES per rtol^(-1/5) steps, i.e. 25 or more a
-    period: every 3rd recorded point at rtol 1e-9, every point at 1e-8, 2 a step at 1e-6."""
-    k = method.rtol ** -0.2
+    """(per_step, stride) of a grid's compiled scan: about 1.4 SAMPLES (28) samples a period
+    of the fastest mode, whatever the method's step density (POINTS_PER_PERIOD; DP54's rule
+    for the others): DP54 every 3rd recorded point at rtol 1e-9, every point at 1e-8, 2 a step
+    at 1e-6; DOP853 4 a step at rtol 1e-9."""
+    factor, p = POINTS_PER_PERIOD.get(method.name, (1.4, 5.0))
+    k = factor * method.rtol ** (-1.0 / p) / 1.4
     if k >= SAMPLES:
         return 1, int(k // SAMPLES)
     return math.ceil(SAMPLES / k), 1
