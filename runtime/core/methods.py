@@ -197,6 +197,13 @@ class DOP853(DP54):
     error estimate; options, error estimates, events and the stiffness note are DP54's.  Below
     rtol of about 1e-7 it needs several times fewer right-hand-side calls than DP54 for the
     same error; at loose tolerances DP54 is the cheaper one.
+
+    Chosen over Verner's pairs because it comes whole: its error estimate, its dense output of
+    matching order and its stiffness test are published and proven together in one code,
+    while an order-9 pair needs 16 stages a step and more for its dense output, and pays off
+    only below rtol of about 1e-12, where rounding in double precision sets the limit anyway.
+    On CAMSHAFT-1 at U0 error 1e-10 it needs a third of DP54's right-hand-side calls
+    integrating the dwell, a seventeenth stepping over it exactly (bench/results).
     """
 
     code = driver.DOP853
