@@ -15,7 +15,8 @@ Cases
 Error measure (the follower's): max |X(T) - X_ref(T)| over 3001 points of [0, 3], X in strokes,
 against DP54 at rtol 1e-12; the beam: |max |v_E| - reference| / reference.
 
-Contestants, on the same generated right-hand side and Jacobian: camdyn dp54, camdyn rodas4,
+Contestants, on the same generated right-hand side and Jacobian: camdyn dp54 (and dop853 on the
+beam follower at N = 6), camdyn rodas4,
 camdyn rodas4 with per-state tolerances (the roller's states R, R' left to the follower's error
 control: state_atol R = 1, R' = 1e3, so that the L-stable method steps over the ringing
 contact mode), and SciPy's Radau, BDF, LSODA (runtime/studies/peers.py: the compiled rhs one point
@@ -306,7 +307,7 @@ def verdict(results: list) -> list[str]:
                        f"(roller, ratio 1000, zeta 0.1)': {state} ({'; '.join(parts)}).")
     b = by.get("beam6")
     if b is not None:
-        for method in ("dp54", "rodas4"):
+        for method in ("dp54", "dop853", "rodas4"):
             pts = [p for p in b.points if p.method == method and p.rtol == 1e-6]
             if pts and pts[0].status == "ok":
                 out.append(f"- Goal 'beam N = 6, rtol 1e-6, one revolution under 0.3 s' with "
@@ -333,6 +334,7 @@ def full_run(with_beam: bool) -> list:
         E = Case().E
         results.append(beam_case("beam6", "beam follower, N = 6, one revolution", {"modes": 6},
                                  [("dp54", 1e-4, 2_000_000), ("dp54", 1e-6, 2_000_000),
+                                  ("dop853", 1e-4, 2_000_000), ("dop853", 1e-6, 2_000_000),
                                   ("rodas4", 1e-4, 2_000_000), ("rodas4", 1e-6, 2_000_000)], 1))
         results.append(beam_case("beam6_E1e6", "beam follower, N = 6, E x 1e6 (rigid limit)",
                                  {"modes": 6, "E": E * 1e6},
