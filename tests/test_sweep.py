@@ -66,9 +66,12 @@ def test_dask_local_cluster_gives_the_same_table(local):
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=False,
                                   dashboard_address=None) as cluster:
         on_dask = sweep.sweep("camshaft1", GRID, dask=cluster, progress=False, chunk=2)
+        # and in the larger tasks a cluster gets by default (sweep.DASK_CHUNK)
+        default = sweep.sweep("camshaft1", GRID, dask=cluster, progress=False)
     assert on_dask.where.startswith("dask")
     for name in local.names:
         assert np.array_equal(on_dask[name], local[name]), name
+        assert np.array_equal(default[name], local[name]), name
 
 
 def test_csv_parquet_and_charts(local, tmp_path):
