@@ -1078,40 +1078,6 @@ cdef inline void _d8_sum(const double* w, int n, double h, const double* K, cons
         out[i] = (base[i] if base != NULL else 0.0) + h * acc
 
 
-cdef inline void _d8_arg(int st, double h, const double* K, const double* y,
-                         double* out) noexcept nogil:
-    """The argument of stage st, y + h sum_j a_st,j K_j, with st a constant in every branch so
-    that the compiler unrolls the sum and drops the tableau's zeros."""
-    if st == 1:
-        _d8_sum(D8_A[1], 1, h, K, y, out)
-    elif st == 2:
-        _d8_sum(D8_A[2], 2, h, K, y, out)
-    elif st == 3:
-        _d8_sum(D8_A[3], 3, h, K, y, out)
-    elif st == 4:
-        _d8_sum(D8_A[4], 4, h, K, y, out)
-    elif st == 5:
-        _d8_sum(D8_A[5], 5, h, K, y, out)
-    elif st == 6:
-        _d8_sum(D8_A[6], 6, h, K, y, out)
-    elif st == 7:
-        _d8_sum(D8_A[7], 7, h, K, y, out)
-    elif st == 8:
-        _d8_sum(D8_A[8], 8, h, K, y, out)
-    elif st == 9:
-        _d8_sum(D8_A[9], 9, h, K, y, out)
-    elif st == 10:
-        _d8_sum(D8_A[10], 10, h, K, y, out)
-    elif st == 11:
-        _d8_sum(D8_A[11], 11, h, K, y, out)
-    elif st == 13:
-        _d8_sum(D8_A[13], 13, h, K, y, out)
-    elif st == 14:
-        _d8_sum(D8_A[14], 14, h, K, y, out)
-    elif st == 15:
-        _d8_sum(D8_A[15], 15, h, K, y, out)
-
-
 cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
     """Dormand-Prince 8(5,3) over [a, b] (see above): DOP853's error estimate, step control
     with exponent 1/8 and factors in [1/3, 6], dense output of order 7, events, stiffness test."""
@@ -1156,7 +1122,7 @@ cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
         if last:
             h = b - t
         for st in range(1, 12):
-            _d8_arg(st, h, K, y, ys)
+            _d8_sum(D8_A[st], st, h, K, y, ys)
             rhs(t + D8_C[st] * h, ys, K + st * _NS, ctx)
         memcpy(y12, ys, sizeof(ys))
         _d8_sum(D8_A[12], 12, h, K, y, yn)
@@ -1195,7 +1161,7 @@ cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
                     iasti = 0
             # the dense output's three stages and its four extras, in the row of the step start
             for st in range(13, 16):
-                _d8_arg(st, h, K, y, ys)
+                _d8_sum(D8_A[st], st, h, K, y, ys)
                 rhs(t + D8_C[st] * h, ys, K + st * _NS, ctx)
             n_rhs += 3
             ex = run.rec.rows + (run.rec.n - 1) * run.rec.width + 1 + 2 * _NS
