@@ -85,17 +85,11 @@ def main(argv=None) -> int:
         table = atlas(laws, grid, jobs=cores)
         times["threads"].append(time.perf_counter() - t0)
         _say(f"repeat {r + 1}/{repeat}: {times['threads'][-1]:.2f} s on {cores} threads")
-    try:
-        from distributed import Client, LocalCluster
-    except ImportError:
-        dask_start, same = float("nan"), None
-        _say("dask.distributed is not installed (pip install 'dask[distributed]'): no Dask row")
-    else:
-        t0 = time.perf_counter()
-        cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
-        client = Client(cluster)
-        dask_start = time.perf_counter() - t0
+    from cluster import start_local_cluster
+
+    client, cluster, dask_start = start_local_cluster(_say)
+    same = None
+    if client is not None:
         atlas(laws[:1], {"Fa": grid["Fa"][:1], "tau": grid["tau"][:8]}, dask=client)
         for r in range(repeat):
             t0 = time.perf_counter()

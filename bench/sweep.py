@@ -99,18 +99,10 @@ def main(argv=None) -> int:
             return list(pool.map(run_chunk, [target] * len(chunks), [("Fa", "tau")] * len(chunks),
                                  chunks))
 
-    try:
-        from distributed import Client, LocalCluster
-    except ImportError:
-        client = cluster = None
-        dask_start = float("nan")
-        _say("dask.distributed is not installed (pip install 'dask[distributed]'): no Dask row")
-    else:
-        t0 = time.perf_counter()
-        cluster = LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
-        client = Client(cluster)
-        dask_start = time.perf_counter() - t0
+    from cluster import start_local_cluster
+
+    client, cluster, dask_start = start_local_cluster(_say)
+    if client is not None:
         sw.sweep(target, grid, dask=client, progress=False, estimate=False)  # warm the workers (imports)
 
     times = {k: [] for k in ("bare", "bare_cpu", "bare_loops", "driver_cpu", "one", "one_cpu",
