@@ -116,3 +116,67 @@ def test_exact_segments_must_be_a_bool():
 
     with pytest.raises(CamdynInputError, match="exact_segments must be True or False"):
         Simulator("one_dof", 3.0, "dp54", exact_segments="yes")
+
+
+def _largest_of(f, span, n=4001):
+    """max |f| over [0, span] of a smooth f (vectorised): a fine grid, then Brent around its
+    best sample to 1e-13."""
+    from scipy.optimize import minimize_scalar
+
+    s = np.linspace(0.0, span, n)
+    k = int(np.argmax(np.abs(f(s))))
+    lo, hi = s[max(k - 1, 0)], s[min(k + 1, n - 1)]
+    opt = minimize_scalar(lambda x: -abs(f(np.array([x]))[0]), bounds=(lo, hi),
+                          method="bounded", options={"xatol": 1e-13})
+    return max(abs(f(np.array([0.0, span]))).max(), -opt.fun)
+
+
+@pytest.mark.parametrize("q", [0.0, 0.1, 0.95])
+def test_residual_figures_of_an_exact_dwell_in_closed_form(q):
+    """U0 (3.5) and U0'' (3.6) of the one-DOF model (thesis (3.3), damping (6.47)) whose
+    dwell was stepped over exactly come from the state at the end of the rise without a
+    scan (no sampling error): equal, to 1e-11 of each, to the largest |X - 1| and |X''| of
+    the free vibration from that state, found independently (undamped, lightly and heavily
+    damped; the solution e^(A s) from SciPy's expm)."""
+    from scipy.linalg import expm
+
+    from camdyn.runtime.measure.residual import residual
+
+    tau = 0.15
+    w = 2 * math.pi / tau
+    res = Simulator("one_dof", 3.0, "dop853", rtol=1e-10).run({"tau": tau, "q": q})
+    assert res.exact_segments
+    figs = residual(res)
+    assert figs.sampling["U0"] == 0.0 and figs.sampling["U0dd"] == 0.0
+    y1 = res.sample([1.0])
+    z = np.array([y1["X"][0] - 1.0, y1["Xd"][0]])
+    A = np.array([[0.0, 1.0], [-w * w, -2 * q * w]])
+    states = lambda s: np.array([expm(A * x) @ z for x in np.atleast_1d(s)])  # noqa: E731
+    U0 = _largest_of(lambda s: states(s)[:, 0], 2.0)
+    U0dd = _largest_of(lambda s: states(s) @ A[1], 2.0)
+    assert figs.U0 == pytest.approx(U0, rel=1e-11, abs=1e-15)
+    assert figs.U0dd == pytest.approx(U0dd, rel=1e-11, abs=1e-12)
+    if q == 0.0:      # the amplitude of a harmonic oscillation, the benchmark's own formula
+        assert figs.U0 == pytest.approx(math.hypot(z[0], z[1] / w), rel=1e-13)
+
+
+def test_sweeps_and_single_runs_take_the_same_closed_form():
+    """A sweep of CAMSHAFT-1 (4.15) with DOP853 (its dwell exact) gives the U0 and U0'' that
+    single runs give, to rounding, with no sampling error; the scan of the same runs' dense
+    output (the exact steps off) agrees to the integration's error."""
+    from camdyn.runtime.measure.residual import residual
+    from camdyn.runtime.studies.sweep import sweep
+    from camdyn.runtime.targets.model_target import ModelTarget
+
+    target = ModelTarget.of("camshaft1", t_end=3.0, method="dop853", rtol=1e-10)
+    grid = {"Fa": [0.0, 3.0], "tau": [0.06, 0.15, 0.5]}
+    table = sweep(target, grid, jobs=1, progress=False, estimate=False)
+    for k, (fa, tau) in enumerate(zip(table.columns["Fa"], table.columns["tau"])):
+        params = {"Fa": float(fa), "tau": float(tau)}
+        one = residual(Simulator("camshaft1", 3.0, "dop853", rtol=1e-10).run(params))
+        scan = residual(Simulator("camshaft1", 3.0, "dop853", rtol=1e-10,
+                                  exact_segments=False).run(params))
+        assert table.columns["U0"][k] == pytest.approx(one.U0, rel=1e-13, abs=1e-17)
+        assert table.columns["U0dd"][k] == pytest.approx(one.U0dd, rel=1e-13, abs=1e-13)
+        assert one.U0 == pytest.approx(scan.U0, rel=1e-7, abs=1e-12)
+        assert one.U0dd == pytest.approx(scan.U0dd, rel=1e-7, abs=1e-9)

@@ -38,6 +38,12 @@ class Result:
         return self._sim.method
 
     @property
+    def exact_segments(self) -> bool:
+        """Whether intervals where the model is linear and time invariant were stepped over
+        with their exact propagator (Simulator's ``exact_segments``)."""
+        return self._sim.exact_segments
+
+    @property
     def laws(self) -> dict:
         return self._sim.laws
 

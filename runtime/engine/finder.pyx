@@ -30,7 +30,7 @@ finders in one call that holds no GIL: one record buffer reused for every run, n
 per run.  Threads can run chunks side by side (runtime/studies/sweep.py).
 """
 from cpython.pycapsule cimport PyCapsule_GetPointer, PyCapsule_IsValid
-from libc.math cimport NAN, INFINITY, fabs, sqrt
+from libc.math cimport NAN, INFINITY, atan2, cos, exp, fabs, fmax, log, sin, sqrt
 from libc.stdlib cimport free, malloc
 from libc.string cimport memcpy
 from posix.time cimport CLOCK_MONOTONIC, clock_gettime, timespec
@@ -388,9 +388,59 @@ cdef double _verify(Rec* r, Scan* S, int k, int which, int kind, double* miss) n
     return k2 + (k2 - fv)
 
 
+cdef Py_ssize_t _walk(Rec* r, double a, double b, int per_step, int which, int kind, Scan* S,
+                      double* out, Py_ssize_t cap, int w1, int w2) noexcept nogil:
+    """The scan's samples of [a, b]: a, per_step evenly spaced times in every interval between
+    the knots (a, the distinct recorded times inside (a, b), b), b; a knot takes the step that
+    ends there, a sample inside an interval the step it lies in.  With S each is scored for
+    ``which`` and taken; else the time, the value of w1 and that of w2 (one evaluation of the
+    model's outputs for both) go to out[k], out[cap + k], out[2 cap + k] while k < cap.
+    Returns the number of samples (more than cap: out holds the first cap)."""
+    cdef Py_ssize_t i = 0, istep = 0, k = 0
+    cdef double tk = a, tk1, tq
+    cdef int q
+    cdef bint more = True
+    k = _sample(r, a, _step_of(r, a), which, kind, S, out, cap, w1, w2, k)
+    while i < r.n and _t(r, i) <= a:
+        i += 1
+    while more:
+        # next knot: the next distinct recorded time inside (tk, b), else b
+        while i < r.n and _t(r, i) <= tk:
+            i += 1
+        tk1 = _t(r, i) if i < r.n and _t(r, i) < b else b
+        if tk1 > tk and per_step > 1:
+            istep = _step_of(r, 0.5 * (tk + tk1))   # the step every sample inside lies in
+            for q in range(1, per_step):
+                tq = tk + (tk1 - tk) * q / per_step
+                k = _sample(r, tq, istep, which, kind, S, out, cap, w1, w2, k)
+        if tk1 >= b:
+            more = False
+        else:
+            k = _sample(r, tk1, _step_of(r, tk1), which, kind, S, out, cap, w1, w2, k)
+        tk = tk1
+    if b > a:
+        k = _sample(r, b, _step_of(r, b), which, kind, S, out, cap, w1, w2, k)
+    return k
+
+
+cdef inline Py_ssize_t _sample(Rec* r, double tq, Py_ssize_t i, int which, int kind, Scan* S,
+                               double* out, Py_ssize_t cap, int w1, int w2,
+                               Py_ssize_t k) noexcept nogil:
+    if S != NULL:
+        _take(S, tq, _score(r, tq, i, which, kind))
+    elif k < cap:
+        _value_in(r, tq, i, w1 if w1 >= w2 else w2)
+        out[k] = tq
+        out[cap + k] = r.y[w1] if w1 < r.ns else r.out[w1 - r.ns]
+        out[2 * cap + k] = r.y[w2] if w2 < r.ns else r.out[w2 - r.ns]
+    return k + 1
+
+
+
 cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step, int n_cand,
                   const double* cache, int stride, double* value, double* at,
-                  double* sampling) noexcept nogil:
+                  double* sampling, const double* st=NULL, const double* sv=NULL,
+                  Py_ssize_t n_samples=0) noexcept nogil:
     """The largest score on [a, b] (module doc); value (v for kinds 1, 2; |v| for 0, 3) and
     its time into value/at, and into ``sampling`` the estimate of the error the scan leaves:
     how far a peak not refined may rise above the value, its parabola's vertex raised by the
@@ -417,8 +467,11 @@ cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step,
     sampling[0] = 0.0
     if not b >= a:
         return 0
-    _take(&S, a, _score(r, a, _step_of(r, a), which, kind))
-    if cache != NULL and per_step == 1:
+    if st != NULL:
+        for j in range(n_samples):
+            _take(&S, st[j], _as_score(sv[j], kind))
+    elif cache != NULL and per_step == 1:
+        _take(&S, a, _score(r, a, _step_of(r, a), which, kind))
         # the recorded points on the stride inside (a, b), first of a pair at a stop
         j = _step_of(r, a) + 1
         j += (stride - j % stride) % stride
@@ -426,30 +479,10 @@ cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step,
             if _t(r, j) > a and _t(r, j) > _t(r, j - 1):
                 _take(&S, _t(r, j), _as_score(cache[j], kind))
             j += stride
+        if b > a:
+            _take(&S, b, _score(r, b, _step_of(r, b), which, kind))
     else:
-        # the knots a < recorded times < b, b; per_step samples in each knot interval
-        i = 0
-        while i < r.n and _t(r, i) <= a:
-            i += 1
-        tk = a
-        while more:
-            # next knot: the next distinct recorded time inside (tk, b), else b
-            while i < r.n and _t(r, i) <= tk:
-                i += 1
-            tk1 = _t(r, i) if i < r.n and _t(r, i) < b else b
-            if tk1 > tk and per_step > 1:
-                istep = _step_of(r, 0.5 * (tk + tk1))   # the step every sample inside lies in
-                for q in range(1, per_step):
-                    tq = tk + (tk1 - tk) * q / per_step
-                    _take(&S, tq, _score(r, tq, istep, which, kind))
-            if tk1 >= b:
-                more = False
-            else:
-                _take(&S, tk1, _score(r, tk1, _step_of(r, tk1), which, kind))
-            tk = tk1
-    # b itself (once, when it is not a itself)
-    if b > a:
-        _take(&S, b, _score(r, b, _step_of(r, b), which, kind))
+        _walk(r, a, b, per_step, which, kind, &S, NULL, 0, 0, 0)
     if S.n >= 2 and S.s2 >= S.s1:
         _offer(&S.c, S.s2, S.t1, S.t2)
         _note_peak(&S.P, S.s2, S.t2, S.t1, S.s1, 0.5 * (S.t1 + S.t2), S.s2, S.t2, S.s2)
@@ -535,6 +568,168 @@ cdef void _fill_cache(Rec* r, int w1, int w2, double* c1, double* c2, int stride
         j += stride
 
 
+# -- the dwell of a one-DOF model in closed form -------------------------------------------
+#
+# Where a run stepped over the dwell exactly (runtime/engine/loops.pxi, _loop_exact) the
+# dwell is y' = A y + c with A and c constant; for two states the solution from the state
+# y1 at the end of the rise is, with z = y1 - y*, y* = -A^-1 c the rest point,
+#     y(t1 + s) = y* + e^(A s) z,
+# and an output affine in y, o = g.y + o*, moves as o* + w(s), w(s) = g.e^(A s) z: for
+# complex eigenvalues alpha +- i beta, w = e^(alpha s) (p cos(beta s) + q sin(beta s)) with
+# p = g.z, q = g.(A - alpha I) z / beta (an overdamped dwell, with real eigenvalues, is left
+# to the scan).  The extremes of w lie where w' = 0, at beta s = theta0 + k pi, and successive extremes of one sign grow or shrink by the same factor e^(alpha pi/beta),
+# so the largest |o| on [0, L] is at an end or at one of the first two or last two of
+# them: U0 (3.5) and U0'' (3.6) from y1 exactly, without a scan.
+
+cdef inline double _dot2(const double* g, const double* v) noexcept nogil:
+    return g[0] * v[0] + g[1] * v[1]
+
+
+cdef bint _affine_output(Rec* r, double t, const double* y, int which, double* g,
+                         double* o0) noexcept nogil:
+    """Whether output/state ``which`` is affine in y at time t (checked by differences: a
+    second difference along each state and a mixed one, to rounding); if so its gradient into
+    g and its value at y into o0."""
+    cdef double yy[2]
+    cdef double d[2]
+    cdef double f0, f1, f2, f11, f12, tol
+    cdef int i
+    if which < 2:
+        g[0] = 1.0 if which == 0 else 0.0
+        g[1] = 1.0 - g[0]
+        o0[0] = y[which]
+        return True
+    d[0] = 1.0 + fabs(y[0])
+    d[1] = 1.0 + fabs(y[1])
+    r.m.outputs(t, y, r.out, r.ctx)
+    f0 = r.out[which - 2]
+    tol = 0.0
+    for i in range(2):
+        yy[0] = y[0]
+        yy[1] = y[1]
+        yy[i] += d[i]
+        r.m.outputs(t, yy, r.out, r.ctx)
+        f1 = r.out[which - 2]
+        yy[i] += d[i]
+        r.m.outputs(t, yy, r.out, r.ctx)
+        f2 = r.out[which - 2]
+        g[i] = (f1 - f0) / d[i]
+        tol = fmax(tol, fabs(f1) + fabs(f2))
+        if not fabs(f2 - 2.0 * f1 + f0) <= 1e-12 * (tol + fabs(f0)):
+            return False
+    yy[0] = y[0] + d[0]
+    yy[1] = y[1] + d[1]
+    r.m.outputs(t, yy, r.out, r.ctx)
+    f12 = r.out[which - 2]
+    f11 = f0 + g[0] * d[0] + g[1] * d[1]
+    o0[0] = f0
+    return fabs(f12 - f11) <= 1e-12 * (tol + fabs(f0) + fabs(f12))
+
+
+cdef double _dwell_largest(const double* A, const double* z, const double* g, double o_rest,
+                           double L, int* ok) noexcept nogil:
+    """max |o_rest + g.e^(A s) z| over s in [0, L] (see above); ok 0 where the eigenvalues are
+    real (an overdamped dwell) or nearly equal, where no closed form is taken."""
+    cdef double tr = A[0] + A[3], det = A[0] * A[3] - A[1] * A[2]
+    cdef double disc = 0.25 * tr * tr - det, alpha, beta, p, q, x, best, theta0, s
+    cdef double Az[2]
+    cdef double v[2]
+    cdef int k, n_ext
+    ok[0] = 1
+    p = _dot2(g, z)
+    Az[0] = A[0] * z[0] + A[1] * z[1]
+    Az[1] = A[2] * z[0] + A[3] * z[1]
+    best = fmax(fabs(o_rest + p), 0.0)
+    if fabs(disc) <= 1e-10 * (0.25 * tr * tr + fabs(det)):
+        ok[0] = 0
+        return NAN
+    if disc < 0.0:
+        alpha = 0.5 * tr
+        beta = sqrt(-disc)
+        v[0] = Az[0] - alpha * z[0]
+        v[1] = Az[1] - alpha * z[1]
+        q = _dot2(g, v) / beta
+        # w' = e^(alpha s) ((alpha p + beta q) cos(beta s) + (alpha q - beta p) sin(beta s))
+        theta0 = atan2(alpha * p + beta * q, beta * p - alpha * q)
+        while theta0 <= 0.0:
+            theta0 += 3.141592653589793
+        n_ext = <int> ((beta * L - theta0) / 3.141592653589793) + 1 if beta * L > theta0 else 0
+        for k in range(n_ext):
+            if k >= 2 and k < n_ext - 2:
+                continue
+            s = (theta0 + k * 3.141592653589793) / beta
+            if s < L:
+                x = o_rest + exp(alpha * s) * (p * cos(beta * s) + q * sin(beta * s))
+                best = fmax(best, fabs(x))
+        x = o_rest + exp(alpha * L) * (p * cos(beta * L) + q * sin(beta * L))
+        return fmax(best, fabs(x))
+    ok[0] = 0        # real eigenvalues (an overdamped dwell): the scan finds them
+    return NAN
+
+
+cdef bint _dwell_closed_form(Rec* r, double t1, double t_end, int w_err, int w_acc,
+                             double* U0, double* U0dd) noexcept nogil:
+    """U0 and U0'' of a two-state model's exact dwell [t1, t_end] in closed form (see above);
+    False, leaving the scan to find them, where the record shows the dwell is not linear and
+    time invariant (a recorded rate off A y + c, a mode that changes), where an output is not
+    affine in the state, or where the eigenvalues are real or (nearly) equal."""
+    cdef Py_ssize_t i1, j
+    cdef const double* row
+    cdef const double* last = r.rows + (r.n - 1) * r.width
+    cdef double A[4]
+    cdef double c[2]
+    cdef double y1[2]
+    cdef double z[2]
+    cdef double ystar[2]
+    cdef double g[2]
+    cdef double o_rest, o1, scale, det, L = t_end - t1, tm = 0.5 * (t1 + t_end)
+    cdef int k, ok
+    if r.ns != 2 or not L > 0.0:
+        return False
+    i1 = _step_of(r, t1)
+    _value_in(r, t1, i1, 0)
+    y1[0] = r.y[0]
+    y1[1] = r.y[1]
+    # the dwell's modes (those of its last point), A and c there
+    if r.nm:
+        memcpy(r.ctx.mode, r.modes + (r.n - 1) * r.nm, r.nm * sizeof(int))
+        r.m.refresh(r.ctx)
+    r.m.jac(t_end, last + 1, A, NULL, r.ctx)
+    r.m.rhs(t_end, last + 1, c, r.ctx)
+    c[0] -= A[0] * last[1] + A[1] * last[2]
+    c[1] -= A[2] * last[1] + A[3] * last[2]
+    # every recorded point of the dwell on y' = A y + c, in the same modes
+    for j in range(i1 + 1, r.n):
+        row = r.rows + j * r.width
+        if row[0] <= t1:       # the rise's own end (a stop is recorded twice)
+            continue
+        if r.nm:
+            for k in range(r.nm):
+                if r.modes[j * r.nm + k] != r.modes[(r.n - 1) * r.nm + k]:
+                    return False
+        for k in range(2):
+            o1 = A[2 * k] * row[1] + A[2 * k + 1] * row[2] + c[k]
+            scale = fabs(A[2 * k] * row[1]) + fabs(A[2 * k + 1] * row[2]) + fabs(c[k])
+            if not fabs(row[3 + k] - o1) <= 1e-10 * scale + 1e-300:
+                return False
+    det = A[0] * A[3] - A[1] * A[2]
+    if not fabs(det) > 1e-12 * (fabs(A[0] * A[3]) + fabs(A[1] * A[2])):
+        return False
+    ystar[0] = (-A[3] * c[0] + A[1] * c[1]) / det
+    ystar[1] = (A[2] * c[0] - A[0] * c[1]) / det
+    z[0] = y1[0] - ystar[0]
+    z[1] = y1[1] - ystar[1]
+    if not _affine_output(r, tm, ystar, w_err, g, &o_rest):
+        return False
+    U0[0] = _dwell_largest(A, z, g, o_rest, L, &ok)
+    if not ok:
+        return False
+    if not _affine_output(r, tm, ystar, w_acc, g, &o_rest):
+        return False
+    U0dd[0] = _dwell_largest(A, z, g, o_rest, L, &ok)
+    return ok != 0
+
+
 # -- one record, from Python -------------------------------------------------------------------
 
 cdef class _View:
@@ -612,6 +807,21 @@ def crossing(object capsule, double[::1] p, int[::1] law, double[::1] law_par, r
     return t
 
 
+def dwell_figures(object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows,
+                  modes, int ns, int nx, double t1, double t_end, int i_error, int i_acc):
+    """(U0, U0'') of a run whose dwell [t1, t_end] was stepped over exactly, in closed form
+    from the state at t1 (_dwell_closed_form), or None where no closed form applies (more
+    than two states, a dwell that is not linear and time invariant, outputs not affine)."""
+    cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, nx)
+    cdef double u0 = NAN, u0dd = NAN
+    cdef bint ok
+    if v.r.n == 0 or not v.r.rows[0] <= t1 <= t_end <= v.r.rows[(v.r.n - 1) * v.r.width]:
+        raise ValueError("the span must lie in the run")
+    with nogil:
+        ok = _dwell_closed_form(&v.r, t1, t_end, i_error, i_acc, &u0, &u0dd)
+    return (u0, u0dd) if ok else None
+
+
 # -- a chunk of a sweep -----------------------------------------------------------------------
 
 def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par,
@@ -668,6 +878,9 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
     cdef Rec rec
     cdef double* cache = NULL     # error, then acceleration, at every recorded point
     cdef Py_ssize_t ccap = 0
+    cdef double* samples = NULL   # the dwell's scan: times, error, acceleration (scap each)
+    cdef Py_ssize_t scap = 0, n_samp
+    cdef bint closed
     cdef double t1, t_end, v, at, samp
     cdef timespec c0, c1
     with nogil:
@@ -755,16 +968,42 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
                         cache = <double*> malloc(2 * ccap * sizeof(double))
                         if cache == NULL:
                             ccap = 0
-                    if cache != NULL:
+                    n_samp = 0
+                    closed = exact and _dwell_closed_form(&rec, t1, t_end, i_error, i_acc, &v,
+                                                          &at)
+                    if closed:
+                        figures[g, 0] = v
+                        figures[g, 1] = at
+                        figures[g, 5] = 0.0
+                        figures[g, 6] = 0.0
+                    elif per_step > 1:
+                        # U0 and U0'' scan the same span: one evaluation of the outputs a
+                        # sample serves both
+                        n_samp = _walk(&rec, t1, t_end, per_step, 0, 0, NULL, samples, scap,
+                                       i_error, i_acc)
+                        if n_samp > scap:
+                            free(samples)
+                            scap = n_samp + n_samp // 4
+                            samples = <double*> malloc(3 * scap * sizeof(double))
+                            if samples == NULL:
+                                scap = 0
+                                n_samp = 0
+                            else:
+                                _walk(&rec, t1, t_end, per_step, 0, 0, NULL, samples, scap,
+                                      i_error, i_acc)
+                    elif cache != NULL:
                         _fill_cache(&rec, i_error, i_acc, cache, cache + ccap, stride)
-                    _extreme(&rec, i_error, t1, t_end, 0, per_step, n_cand, cache, stride, &v, &at,
-                             &samp)
-                    figures[g, 0] = v
-                    figures[g, 5] = samp
-                    _extreme(&rec, i_acc, t1, t_end, 0, per_step, n_cand,
-                             cache + ccap if cache != NULL else NULL, stride, &v, &at, &samp)
-                    figures[g, 1] = v
-                    figures[g, 6] = samp
+                    if not closed:
+                        _extreme(&rec, i_error, t1, t_end, 0, per_step, n_cand, cache, stride,
+                                 &v, &at, &samp, samples if n_samp else NULL, samples + scap,
+                                 n_samp)
+                        figures[g, 0] = v
+                        figures[g, 5] = samp
+                        _extreme(&rec, i_acc, t1, t_end, 0, per_step, n_cand,
+                                 cache + ccap if cache != NULL else NULL, stride, &v, &at, &samp,
+                                 samples if n_samp else NULL, samples + 2 * scap, n_samp)
+                        figures[g, 1] = v
+                        figures[g, 6] = samp
                     _extreme(&rec, i_acc, rows[0] if rows[0] > 0.0 else 0.0, t1, 2, per_step,
                              n_cand, cache + ccap if cache != NULL else NULL, stride, &v, &at,
                              &samp)
@@ -778,4 +1017,5 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
     free(scratch)
     free(mode)
     free(cache)
+    free(samples)
     return cap

@@ -84,6 +84,22 @@ def extreme(result, name: str, a: float, b: float, *, absolute: bool, minimum: b
     return Extreme(float(value), float(at), float(sampling))
 
 
+def dwell_closed_form(result, spec: dict, t1: float) -> tuple | None:
+    """(U0, U0'') as two :class:`Extreme` s, in closed form from the state at the end of the
+    rise t1, for a camdyn run whose dwell [t1, end] was stepped over exactly (linear and time
+    invariant there, runtime/engine/finder.pyx: _dwell_closed_form) and whose model has two
+    states; None otherwise (the scan then finds them).  Where the extreme lies is not kept:
+    U0 and U0'' are amplitudes."""
+    if not isinstance(result, Result) or not result.exact_segments:
+        return None
+    t_end = float(result.t[-1])
+    got = finder.dwell_figures(*record(result), float(t1), t_end,
+                               column(result, spec["error"]), column(result, spec["acceleration"]))
+    if got is None:
+        return None
+    return Extreme(float(got[0]), float("nan")), Extreme(float(got[1]), float("nan"))
+
+
 def extreme_reference(result, name: str, a: float, b: float, *, absolute: bool,
                       minimum: bool, per_step: int = 12) -> Extreme:
     """Refined extreme of ``name`` on [a, b] in Python and SciPy: the best sample refined (the

@@ -6,7 +6,9 @@ Xdd_min_rise, T_at_Xdd_min
        the most negative acceleration during the rise and its instant (fig. 4.11b)
 
 Each is an extreme on the dense output (runtime/measure/extremes.py) and carries the sampling
-error of the scan that found it.  The model's manifest names the outputs ("error",
+error of the scan that found it; where the dwell was stepped over exactly and the model has
+two states (one-DOF, CAMSHAFT-1), U0 and U0'' come in closed form from the state at the end
+of the rise instead, with no sampling error.  The model's manifest names the outputs ("error",
 "acceleration") and where the rise ends ("rise_end", or the time its "rise_state" reaches it).
 """
 from __future__ import annotations
@@ -14,7 +16,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ..core.errors import CamdynInputError
-from .extremes import crossing_time, extreme, extreme_reference, first_crossing
+from .extremes import (crossing_time, dwell_closed_form, extreme, extreme_reference,
+                       first_crossing)
 
 FIGURES = ("U0", "U0dd", "Xdd_min_rise", "T_at_Xdd_min")
 """The residual-vibration figures, in the order every table gives them."""
@@ -65,8 +68,12 @@ def _residual(result, extreme, rise_end) -> ResidualVibration:
         raise CamdynInputError(
             f"the run must cover the rise [0, {t1:g}] and part of the dwell after it "
             f"(it covers [{t0:g}, {t_end:g}])")
-    U0 = extreme(result, spec["error"], t1, t_end, absolute=True, minimum=False)
-    U0dd = extreme(result, spec["acceleration"], t1, t_end, absolute=True, minimum=False)
+    closed = dwell_closed_form(result, spec, t1) if extreme is not extreme_reference else None
+    if closed is not None:
+        U0, U0dd = closed
+    else:
+        U0 = extreme(result, spec["error"], t1, t_end, absolute=True, minimum=False)
+        U0dd = extreme(result, spec["acceleration"], t1, t_end, absolute=True, minimum=False)
     xmin = extreme(result, spec["acceleration"], max(t0, 0.0), t1, absolute=False, minimum=True)
     return ResidualVibration(U0=U0.value, U0dd=U0dd.value, Xdd_min_rise=xmin.value,
                              T_at_Xdd_min=xmin.at,
