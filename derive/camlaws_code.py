@@ -14,6 +14,10 @@ from .emit import render
 from .printer import CythonPrinter, cse_block
 
 
+LAW_TRIG = {"sin": "camlaw_sin", "cos": "camlaw_cos"}
+"""The laws' sine and cosine: the template's own, reduced for the laws' arguments (camlaws.pxd)."""
+
+
 def camlaws_context() -> dict:
     """Everything the two cam-law templates need, printed as Cython strings."""
     laws = []
@@ -25,7 +29,7 @@ def camlaws_context() -> dict:
         segs = []
         for k in range(law.n_segments):
             exprs = [law.segment_exprs(order)[k] for order in range(4)]
-            lines, code, _ = cse_block(exprs, names, prefix="c")
+            lines, code, _ = cse_block(exprs, names, prefix="c", functions=LAW_TRIG)
             segs.append({"index": k, "lines": lines, "code": code})
         laws.append({
             "key": law.key,

@@ -18,14 +18,18 @@ MATH_FUNCTIONS = ("sin", "cos", "tan", "sqrt", "exp", "log", "fabs", "pow", "tan
 class CythonPrinter(C99CodePrinter):
     """C99 expressions that are also valid Cython expressions."""
 
-    def __init__(self, names: dict | None = None):
+    def __init__(self, names: dict | None = None, functions: dict | None = None):
         super().__init__()
         self.names = names or {}
+        self.functions = functions or {}
+        """Functions printed under another name (``{"sin": "camlaw_sin"}``)."""
         self.used = set()
 
     def _print(self, expr, **kwargs):
         # record every libc.math function printed, whichever printing method handles it
         name = type(expr).__name__
+        if name in self.functions:
+            return f"{self.functions[name]}({', '.join(self._print(a) for a in expr.args)})"
         if name in MATH_FUNCTIONS:
             self.used.add(name)
         elif name == "Abs":
@@ -128,14 +132,15 @@ class CythonPrinter(C99CodePrinter):
         return f"{int(expr)}.0" if abs(int(expr)) < 2**53 else repr(float(expr))
 
 
-def cse_block(exprs, names: dict, prefix: str = "s"):
-    """Common subexpressions of ``exprs``: (lines of local definitions, printed exprs)."""
+def cse_block(exprs, names: dict, prefix: str = "s", functions: dict | None = None):
+    """Common subexpressions of ``exprs``: (lines of local definitions, printed exprs);
+    ``functions`` as CythonPrinter's."""
     exprs = list(exprs)
     # the "basic" pre-optimizations (factoring) pay on small systems and take minutes on
     # the large mode-dependent ones
     small = sum(sp.count_ops(e) for e in exprs) < 1500
     replacements, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix),
                                    optimizations="basic" if small else None, order="canonical")
-    printer = CythonPrinter(names)
+    printer = CythonPrinter(names, functions)
     lines = [(str(sym), printer.doprint(e)) for sym, e in replacements]
     return lines, [printer.doprint(e) for e in reduced], printer.used

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:06618b1094d30ec1b5dad11b3656ad22e25ace484b3dc849ec7abecf9a32a8f3
-# Text hash: sha256:f59ce12ecb82633b46a316699cebb1f79ceae810634e45a66049d50a6eff1e12
+# Derivation key: sha256:a47abf847cafe44cad639e6a20642335e373d80cc872d652e3057ec196b5e92e
+# Text hash: sha256:934ebcf8feab716faf2a4ecd41b32379c28a55d82716828f654077c5ec52a130
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:bfb311a2dc642912ccf96df03b945a685fb049d1c1bb63babea364e48a9d993c

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:9eda42c36c87bd05d88cd4ddd12164a3d3db416e51a1eb34a3f23014279bc410
-# Text hash: sha256:9db07bddafa5ee14bacee98aac6fa40a9890a384c65794d07a95e1dcf7231069
+# Derivation key: sha256:7aa6da650e3bc4e29d5071401144a546c599d4d61e3a2e9a395569a1db1e7968
+# Text hash: sha256:068441a2c7f3e94d7456f10a9066363534a1eb5f3ce5600c349b990acf498d9f
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
 # Source hash: sha256:921486bdc725aa760722bfb26290d6704b3ad8c2d314f01890c68f465878e573

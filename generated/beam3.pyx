@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7d7d7bce0a6a59b670e0a0655272379c8ab579f8f9987f8d2d1ec99f90c410d4
-# Text hash: sha256:c8c30428e2aa9ead92aee141c6129ab5043676618d2c47184c78e0443e182a6c
+# Derivation key: sha256:baedd5d7db655629510e1618fe76cc59cead6c799aef468b5dcc8ed22cf12971
+# Text hash: sha256:9088cfbc5c47b7d84210a248815643f5cc9960b40b79fcda81f76ea0d02d8cde
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:1d8106cbb4c080dc1d4baa1e57662f2dae7c6b7184e85535a26798dca84a5c31

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:810b10e2acb1ed5c403621f445340cabc407d5607551d42dbb5e2c20b7ba02e8
-# Text hash: sha256:f7dbf26ef67fc2dca94415da9f63b3a727695d3e1a5e11aa3b05d5dc8377da94
+# Derivation key: sha256:0cd4c623d83d7cc2b568d9d63e92f547a8725ac7799ea77983cb7e3fa5133bf9
+# Text hash: sha256:161fe17a4e7fc351d5bdfe675a7a97a87cb7276e6744227ce9d544ead398cf4a
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:005fc6dd88930eeb16af7091c0a74ba4fe7f9c436ef794c0f2976a8de40a1269

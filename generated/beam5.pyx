@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8ac279875d3e7f958f65d6874fabf638f1d5fdc011de8d90e1b0bff48f71fafd
-# Text hash: sha256:c321255270da001e36a32775f2f3e3e4ea7d2ebe26c0dac8b73772b11b321439
+# Derivation key: sha256:30fdb5d175bb817c87f46b46ffe2b5ccf0257fd029225816f231e8a5b7749d09
+# Text hash: sha256:c27013e17dbb6e8986111e04f85a28bcfa9b4d3c41fe59cc8f1dfd1ac061fde1
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:a91861c5ef9ef871d0972bdd6fadc95fb8bd8aa9c22b166a68b2e22724f00536

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:dbfa9df04a7908ef579b96c8b2b4f6c80ee3aef8bb29d19988a3a2736f8d7aa4
-# Text hash: sha256:cb61c674bcf851ddd9594235971d1010efe1de4e04e7b881cbe7f60561e662db
+# Derivation key: sha256:60085b5f45ce2fa87b33025e597fb4f180d87f04c5f4bc5384e46ee167a5a1c1
+# Text hash: sha256:7a9b32a2abd9e358f5f419b1c9eb4504199f7b507f8f8d558302256ab4982a69
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:9d4ce2ed01f1ecad9d62194db1151f10c3655da69963e1cb0de52220801b3e5b

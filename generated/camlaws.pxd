@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a470ebab39b8cf255daccfa068fea318a6a1dd1d8f4e31991e0409627d155aec
-# Text hash: sha256:9aab06ef93802af5ade09b423b8ea3552e427b77417b6b22b96be0d3d3fb9d4a
+# Derivation key: sha256:3db264703c04e984daf7a0d1478b2c6195623bec8409265362d1cfc8a38334d3
+# Text hash: sha256:d51373b1f851537b0564fe86f72ada8f95efba3145271fcf0d4dd142d493f577
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),
@@ -26,6 +26,47 @@
 #        (below); `par` is the slot of camlaw_turns that describes it.
 
 from libc.math cimport INFINITY, M_PI, cos, floor, sin
+
+# -- sine and cosine of the laws ----------------------------------------------------------
+# The trigonometric laws evaluate sin and cos at every stage of a step, and libm's general
+# routines (any argument, several code paths, no inlining) cost several times the few
+# operations a law's argument needs: x = k pi/2 + r, |r| <= pi/4, with pi/2 split in three
+# parts of 30 bits (Cody and Waite's reduction: k * part exact for |k| < 2^23), then the
+# Taylor series of sin r to r^17 and of cos r to r^18, whose first omitted terms are below
+# 1e-19 on |r| <= pi/4.  Always inlined, so that sin and cos of one argument share the
+# reduction and both series.  Within 2 units in the last place of libm's
+# (tests/test_camlaws.py); beyond |x| = 1e6 libm's own.
+cdef extern from *:
+    """
+    #include <math.h>
+    static inline __attribute__((always_inline)) double camlaw_trig_(double x, int want_cos) {
+        if (!(x > -1e6 && x < 1e6))
+            return want_cos ? cos(x) : sin(x);
+        long k = (long)(x * 0.6366197723675814 + (x >= 0.0 ? 0.5 : -0.5));
+        double kd = (double)k;
+        double r = ((x - kd * 1.570796325802803) - kd * 9.920935791635221e-10)
+                   - kd * 5.170182981794105e-19;
+        double z = r * r;
+        double s = r + r * z * (-1.0 / 6.0 + z * (1.0 / 120.0 + z * (-1.0 / 5040.0
+            + z * (1.0 / 362880.0 + z * (-1.0 / 39916800.0 + z * (1.0 / 6227020800.0
+            + z * (-1.0 / 1307674368000.0 + z * (1.0 / 355687428096000.0))))))));
+        double c = 1.0 - 0.5 * z + z * z * (1.0 / 24.0 + z * (-1.0 / 720.0 + z * (1.0 / 40320.0
+            + z * (-1.0 / 3628800.0 + z * (1.0 / 479001600.0 + z * (-1.0 / 87178291200.0
+            + z * (1.0 / 20922789888000.0 + z * (-1.0 / 6402373705728000.0))))))));
+        long q = (k + (want_cos ? 1 : 0)) & 3;   /* cos x = sin(x + pi/2) */
+        double v = (q & 1) ? c : s;
+        return (q & 2) ? -v : v;
+    }
+    static inline __attribute__((always_inline)) double camlaw_sin(double x) {
+        return camlaw_trig_(x, 0);
+    }
+    static inline __attribute__((always_inline)) double camlaw_cos(double x) {
+        return camlaw_trig_(x, 1);
+    }
+    """
+    double camlaw_sin(double x) noexcept nogil
+    double camlaw_cos(double x) noexcept nogil
+
 
 # -- dwell-rise-dwell-return over a full cam turn (law code 1000) -----------------
 # A plain law is one rise.  Law 1000 strings a rise law, an upper dwell, a return law
@@ -345,8 +386,8 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
         elif seg == 1:
             c0 = 6.283185307179586
             c1 = T*c0
-            c2 = sin(c1)
-            c3 = cos(c1)
+            c2 = camlaw_sin(c1)
+            c3 = camlaw_cos(c1)
             out[0] = T - 0.15915494309189535*c2
             out[1] = 1.0 - c3
             out[2] = c0*c2
@@ -370,8 +411,8 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             c2 = 3.141592653589793*T
             c3 = (1.0/par)
             c4 = 0.5*c2*c3
-            c5 = sin(c4)
-            c6 = cos(c4)
+            c5 = camlaw_sin(c4)
+            c6 = camlaw_cos(c4)
             out[0] = c1*par*(c2 - 2.0*c5*par)
             out[1] = -c0*c1*(c6 - 1.0)
             out[2] = 4.934802200544679*c1*c5
@@ -380,13 +421,13 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             c0 = 2.0*par
             c1 = (1.0/(c0 - 1.0))
             c2 = 3.141592653589793*c1*(T - par)
-            c3 = cos(c2)
+            c3 = camlaw_cos(c2)
             c4 = 4.0*(par*par)
             c5 = 4.0*par
             c6 = 3.141592653589793*par
             c7 = 1.0 - c5
             c8 = 0.5*(1.0/(c6 + c7))
-            c9 = c1*sin(c2)
+            c9 = c1*camlaw_sin(c2)
             out[0] = c8*(2.0*T*c6 - c3*c4 + c3*c5 - c3 + c7)
             out[1] = 3.141592653589793*c8*(c0 + c4*c9 - c5*c9 + c9)
             out[2] = 9.869604401089358*c3*c8
@@ -400,10 +441,10 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             c5 = 1.5707963267948966*c4
             c6 = c3*c5
             c7 = c5*(c3 + 2.0*par)
-            out[0] = c2*(T*c0 + c1 - 2.0*(par*par)*sin(c6))
-            out[1] = -c0*c2*(cos(c6) - 1.0)
-            out[2] = -4.934802200544679*c2*sin(c7)
-            out[3] = -7.751569170074955*c2*c4*cos(c7)
+            out[0] = c2*(T*c0 + c1 - 2.0*(par*par)*camlaw_sin(c6))
+            out[1] = -c0*c2*(camlaw_cos(c6) - 1.0)
+            out[2] = -4.934802200544679*c2*camlaw_sin(c7)
+            out[3] = -7.751569170074955*c2*c4*camlaw_cos(c7)
         elif seg == 4:
             out[0] = 1.0
             out[1] = 0.0
@@ -441,8 +482,8 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             out[3] = 0.0
         elif seg == 1:
             c0 = 3.141592653589793*T
-            c1 = cos(c0)
-            c2 = 0.5*sin(c0)
+            c1 = camlaw_cos(c0)
+            c2 = 0.5*camlaw_sin(c0)
             out[0] = 1.0/2.0 - 0.5*c1
             out[1] = 3.141592653589793*c2
             out[2] = 4.934802200544679*c1
@@ -508,8 +549,8 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
         elif seg == 1:
             c0 = (1.0/(2.0 + M_PI))
             c1 = 12.566370614359172*T
-            c2 = sin(c1)
-            c3 = cos(c1)
+            c2 = camlaw_sin(c1)
+            c3 = camlaw_cos(c1)
             out[0] = 0.15915494309189535*c0*(c1 - c2)
             out[1] = -2.0*c0*(c3 - 1.0)
             out[2] = 25.132741228718345*c0*c2
@@ -528,10 +569,10 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             c2 = 3.141592653589793*c1
             c3 = (M_PI*M_PI)
             c4 = 3.141592653589793*(c1 - 3.0/2.0)
-            out[0] = 0.15915494309189535*c0*(c1*c3 + c2 - c3 + sin(c2))
-            out[1] = 2.0*c0*(cos(c2) + 1.0 + M_PI)
-            out[2] = 25.132741228718345*c0*cos(c4)
-            out[3] = -32.0*c0*c3*sin(c4)
+            out[0] = 0.15915494309189535*c0*(c1*c3 + c2 - c3 + camlaw_sin(c2))
+            out[1] = 2.0*c0*(camlaw_cos(c2) + 1.0 + M_PI)
+            out[2] = 25.132741228718345*c0*camlaw_cos(c4)
+            out[3] = -32.0*c0*c3*camlaw_sin(c4)
         elif seg == 4:
             c0 = (1.0/(2.0 + M_PI))
             c1 = (M_PI*M_PI)
@@ -546,10 +587,10 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             c2 = 4.0*T
             c3 = 3.141592653589793*c2
             c4 = 3.141592653589793*(c2 - 7.0/2.0)
-            out[0] = 0.3183098861837907*c0*(6.283185307179586*T + c1 - 0.5*sin(c3))
-            out[1] = -2.0*c0*(cos(c3) - 1.0)
-            out[2] = -25.132741228718345*c0*cos(c4)
-            out[3] = 32.0*c0*c1*sin(c4)
+            out[0] = 0.3183098861837907*c0*(6.283185307179586*T + c1 - 0.5*camlaw_sin(c3))
+            out[1] = -2.0*c0*(camlaw_cos(c3) - 1.0)
+            out[2] = -25.132741228718345*c0*camlaw_cos(c4)
+            out[3] = 32.0*c0*c1*camlaw_sin(c4)
         elif seg == 6:
             out[0] = 1.0
             out[1] = 0.0
@@ -584,11 +625,11 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
         elif seg == 1:
             c0 = 6.283185307179586
             c1 = 12.566370614359172*T
-            c2 = sin(c1)
+            c2 = camlaw_sin(c1)
             c3 = (par*par)
             c4 = (M_PI*M_PI)
             c5 = (1.0/(3.0*par*c4 - 24.0*par + c0 - 2.0*c3*c4 + 16.0*c3 + 8.0))
-            c6 = cos(c1)
+            c6 = camlaw_cos(c1)
             out[0] = c5*(T*c0 - 0.5*c2)
             out[1] = c0*c5*(1.0 - c6)
             out[2] = 8.0*c2*c4*c5
@@ -615,10 +656,10 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             c9 = (1.0/(par - 3.0/4.0))
             c10 = 3.141592653589793*c9*(-T + 0.5*par + 1.0/8.0)
             c11 = 8.0*c5
-            out[0] = 0.5*c5*(8.0*T*c2 - c2 + c4 - (c6*c6)*cos(c8) + 3.141592653589793*c7)
-            out[1] = c0*c5*(par*c0 - c6*sin(c8) + 1.0)
-            out[2] = c1*c11*cos(c10)
-            out[3] = 31.00627668029982*c11*c9*sin(c10)
+            out[0] = 0.5*c5*(8.0*T*c2 - c2 + c4 - (c6*c6)*camlaw_cos(c8) + 3.141592653589793*c7)
+            out[1] = c0*c5*(par*c0 - c6*camlaw_sin(c8) + 1.0)
+            out[2] = c1*c11*camlaw_cos(c10)
+            out[3] = 31.00627668029982*c11*c9*camlaw_sin(c10)
         elif seg == 4:
             c0 = (par*par)
             c1 = (M_PI*M_PI)
@@ -644,10 +685,10 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             c11 = 4.0*par - 3.0
             c12 = -1.0
             c13 = 3.141592653589793*(c9 - 7.0/2.0)
-            out[0] = 0.5*c8*(c10 + c12*c5 - c12*c6 - 9.0*c12 - 4.0*c3 + 6.0*c4 + c7 - sin(c10) + 7.0)
-            out[1] = c0*c8*(1.0 - cos(c10))
-            out[2] = -8.0*c2*c8*cos(c13)
-            out[3] = 992.2008537695942*c8*sin(c13)
+            out[0] = 0.5*c8*(c10 + c12*c5 - c12*c6 - 9.0*c12 - 4.0*c3 + 6.0*c4 + c7 - camlaw_sin(c10) + 7.0)
+            out[1] = c0*c8*(1.0 - camlaw_cos(c10))
+            out[2] = -8.0*c2*c8*camlaw_cos(c13)
+            out[3] = 992.2008537695942*c8*camlaw_sin(c13)
         elif seg == 6:
             out[0] = 1.0
             out[1] = 0.0

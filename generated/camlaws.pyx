@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a470ebab39b8cf255daccfa068fea318a6a1dd1d8f4e31991e0409627d155aec
-# Text hash: sha256:599a6587d75f4322bd09067cea271808fe04f41b606ad5df613a49fe6d8b5f8e
+# Derivation key: sha256:3db264703c04e984daf7a0d1478b2c6195623bec8409265362d1cfc8a38334d3
+# Text hash: sha256:8cd125094e47b53d2e252b918e913de69fdff3a27c2a9b30b3d119ac0a398bf5
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.
@@ -181,6 +181,19 @@ def turn_slot(int rise, double rise_par, int ret, double ret_par, double up, dou
     q[10] = k_rise + k_ret + q[11] + q[12]
     _turn_index[spec] = s
     return s
+
+
+def law_trig(x):
+    """(sin x, cos x) as the laws compute them (camlaw_sin, camlaw_cos of camlaws.pxd), for
+    checking them against libm's."""
+    cdef double[::1] v = np.ascontiguousarray(x, dtype=float).ravel()
+    out = np.empty((2, v.shape[0]))
+    cdef double[:, ::1] o = out
+    cdef Py_ssize_t i
+    for i in range(v.shape[0]):
+        o[0, i] = camlaw_sin(v[i])
+        o[1, i] = camlaw_cos(v[i])
+    return out[0], out[1]
 
 
 def evaluate(int law, double par, T):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b0340bdb9ab172e9e046a475305da4518ee3e8bd2ff73498dbb138da08d75996
-# Text hash: sha256:3da83693fe5b668f4a4d9ef73d1ddb40fe1f6f16b7a063a330668a3d11c23430
+# Derivation key: sha256:73a2a838acf189908ce89f5735f10fe548f8e34107720ffeb0d6f67e2d05dc17
+# Text hash: sha256:a2f46b7e49c90f7ff0ad88a768ddd0032ff28a96a0934dac302b9a123c08f70d
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:efab2415d6493dbcb79592970e75ac8ce9c4cb17709ff048a721d6b2139d3d8d
-# Text hash: sha256:2de180dfd76dc7c3dd8edcbcd14f9572d57cba01b578411cda5240031a610cc2
+# Derivation key: sha256:988f35d3daaf30c215e845935184410a8594e98bdc2071e12ebcf378723990b0
+# Text hash: sha256:5aaa2216639a1cd11ca28eed8ce605a4b125723690dbfb92296e4bc33878f279
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a

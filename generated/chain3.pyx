@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6f0ce5bedde8398de00f314df37cbf1223173273a3d692123bea07da16757fd4
-# Text hash: sha256:58cd57c10a04747ec2a0e51522f40d7e1f197ca497bc6496403544f3add28772
+# Derivation key: sha256:7fdf0d20194fe5f1c3d73dffc0aeedd0e45fd851b4c65a8b230b8e7d0585b3e7
+# Text hash: sha256:4744f44d7b41aa44602ee3c69e0a2ec0ec77f0f2b0e6d01e016523ce31c44ebd
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:af364af0a2933d5bd913b24c9ad9f7fc5e5eab15ac5c9bcb539d576daaa613c4
-# Text hash: sha256:52c8d0b36b9678af684680275cdbcf4b4076487e2c59ac1ccda1698585dcd8da
+# Derivation key: sha256:e5bf407f7997da101ad666f2d48f5bf02ddf0f200248c3b52692171878a03a40
+# Text hash: sha256:ab447aa0986a91a007243267e93d07622dd283eeda185877c9875e3f7929d108
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:396d1cc86005d04e7b0a2ba2e5d336befcf969f573d96735d56970b4c01327ea
-# Text hash: sha256:1920187b65524842d189dddaaba5eea4dc18af37760dc6244a2459f907779d3e
+# Derivation key: sha256:6266ee7352012f2e44b3923fb67eb196a5e14560efca7045ca792763096c7f46
+# Text hash: sha256:babfefad9580f7082b8ce564d44ed948c0a46d1d811e6c294521cc53410e37fb
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:244320aa74994aa9e669e9639536961ba92c6b1c23be07561292a0c9dea13c5c

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:66d26ad8504bcf0f8e60436a042bc0ecd6466b9d6b7a24ab7c68a76da1bf0374
-# Text hash: sha256:461f50022c896d4e275a915f87a200e63b881e3cbe46ab753a6bfa6a26d3d76b
+# Derivation key: sha256:8ae853b5a2243cbd91683618695ebb3ba70c00d9f81229e38902d51c9f00525a
+# Text hash: sha256:5c72391ed52d0bed4056c54f13ed31e522691545e1e801d5140a13b323b8268f
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:52bc8f41c0002c9f4b96f3244b61c097cc12f56dfeb3e44def9a84ace0c9a14a
-# Text hash: sha256:50cc65c9c99671c542cf9f995bdcb37a8e8bfd2d82c80f4039a0886cca535986
+# Derivation key: sha256:ec1047ed329e2077a64a5199b0315f9865a5e3cf9b3819593c7ca9a838e43f74
+# Text hash: sha256:b38b9ffcbcd57d9d03ad59d203966bca6511481a8fba144a1df2417ea8f7a109
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:747e34dbea18a7d307dc7101158b4419fb0642de73f52917507a7d1b1d7004c3

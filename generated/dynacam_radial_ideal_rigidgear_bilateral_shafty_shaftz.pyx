@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4e0de4d762cae525547bf7bff04dbd1d7091832c875b5ebabe0936538d7df4b6
-# Text hash: sha256:4bd87ab2fc38fc0af4282271f85b4ae5be77d70368c4d1c1d23ae31f7fae60be
+# Derivation key: sha256:00175078e5a10f8eb6f02314b070bd8d0c13673d241d20eabd3bc6cf68cec734
+# Text hash: sha256:8dea7c1e027b1644687c867cb72205157cae7e6d619c2d74eaf8e378f042837f
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:478faccf329f7294d2cd47f536ad5f78fa53fe5d590d1d87b6cb5079502bd98d

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:66a29a4d81378caa26f5b7bac33ff09952d3f2d07bac9f15d0cae98648f5f469
-# Text hash: sha256:e63ed38b5134a21c6656c22cda884b66b15edaf96bc7fc6a36265e94d8b62502
+# Derivation key: sha256:7e9098c88f06f9878a7de72879c6868dfb59707d1bdd32170ca01205a6703c0c
+# Text hash: sha256:419a580bdc2b77fca3f3aefcf7fbf86cd024c39ad58dc7e7e6e17e89f1eddc11
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7df6f3da3414231df3e2e1f7adc385d77f7cfc0e35b975f115056fce8cb53bba

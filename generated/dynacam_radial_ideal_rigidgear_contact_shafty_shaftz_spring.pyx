@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8b65ff794ea6b30855e776bc7a107c6a7326226d2704494b9db17e5f911b00d8
-# Text hash: sha256:b52da6f891fdb4240626ed14bc16004da770a51aa89414ddfc2c5fb47dbac248
+# Derivation key: sha256:f665c861c540b4559741c493281247ca81002b83683417dc4f7d50feef37c857
+# Text hash: sha256:183c2942b809d4d8ad31aefd880d0e49c794fc7a13158cb9ab58a6beb99609bc
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:13480ffa0d0023165d87f5a69bf928d6b732714ffe2947648ce739c9921d661c
-# Text hash: sha256:95a6e7e970a0d19fd17320649524a6248a97ad9e2da30b50af1f14c8d021dadf
+# Derivation key: sha256:b7bbe7fd2c4ccc0a6cba2322009b0b3225cbbcd462845ceac2a96ee0c609ba48
+# Text hash: sha256:cd37d590802d553a2858ed6bc6dc615e6014ec49ca11ded2798b6c7a1ead489b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:775dc74d7dd69da69bafb1940d40799b0a663f4cd304542cf146150dfdb0178d

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:41f9c7d7fcad5849c0ba7c9efb7322e4ee0a80db7a90a667020af358f9efdace
-# Text hash: sha256:e84589ff57318d21f8dd7c749ab5d85e779a60f5bcd8e81c4c2f3284b4efba60
+# Derivation key: sha256:b4499c7eb67910d90d6b72b5efd84cafd0eafff9a89e63e585bd853e616b2d0a
+# Text hash: sha256:c375343c887744c2053e3c8bdb846b2ded08dda6ce9ae884594043c25380463e
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68

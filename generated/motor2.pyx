@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0809cfa53ca313bca428e882566f4c100b3383315fbbc76fb3e5c647cce8cba1
-# Text hash: sha256:d02076d26c0e1886b314c2be5bfb03992d280d4393f0776a7945a89b8206019e
+# Derivation key: sha256:641ec9a6de4d8d9797b1849a8214cb473e04d1df2299a4b4c72c2d99e9d199b7
+# Text hash: sha256:62d1c21f7df5fd911f22bb8bd240ffd31dd6d4e78a9076e64cda22e6537dcbbd
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71

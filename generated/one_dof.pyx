@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8797b9a8fe662f8c1f8ef253842649b2613eeaad077495763698377eeae8a811
-# Text hash: sha256:9627a47b03c78f2f5f1db0c1e7bd4ad56ab0d38cc13053d8fd55d2b6fb58d698
+# Derivation key: sha256:fdffc7fdd8631a0aaccb3005ea6fca1182546803cf0dcea65eeac5eab15523fd
+# Text hash: sha256:4ca8ba792a06356cc61ec9749784485dbc2f8a072b94073495a7ba19a808145a
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073

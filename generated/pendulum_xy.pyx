@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:36cf408153cc5616d4fb99c697647e35fb1b5e1439bb6c25cc1522f3275a7dfc
-# Text hash: sha256:05e9d970a7d431b0b7bf19a24149bd93d0122c99ff410d6d96d32949c2a69a50
+# Derivation key: sha256:c519c277c2230e9a0a63d9857acec4637d86eb154c818fde60b81412d8fb39ac
+# Text hash: sha256:6043f6353e03119926a90827a6edc5e2850390b280ca27465b7e848cb52a3496
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:e017c1589554bffedb179ec1f3fe3f8fdb43bb82d0bdd5e3f88df9f352e7786a

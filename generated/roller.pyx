@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:27b0cfbf1eb27f3ac3dcce06462dca0ae8552b52e26df03ee3eadf8ec36de6e7
-# Text hash: sha256:17a02469bceb45b194dafd8e318eacd1eed7e76ee99f1b726dcef93ab8e1c28a
+# Derivation key: sha256:4c0a4a6733c4d0e84cda135c3c9a9335765e589bac303f8888b0bf0ce0b86b64
+# Text hash: sha256:f24beef92e6188420519bce888a33160cae589b4447d78f6984dbd6a7e2c601d
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e02658720d7bfba1f89c89876c44b79bac2857e25aa3d73f5c6ef22c12b90170
-# Text hash: sha256:d77679fea1577e5f62963ad574716256bee4798d3bd24ec4db0f54ac9dd993c7
+# Derivation key: sha256:5198c224f803426761461a1ec2b3f886c93a96cd1e894e30d5a681d11cb002aa
+# Text hash: sha256:b1776670cd0fee3f07232973b4a848af29ae3433444be849ad1d283652327901
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360

@@ -1663,6 +1663,12 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
     cdef double* P
     cdef double* G
     cdef double* row
+    cdef double* X = NULL
+    cdef double* x0 = NULL
+    cdef double ys[_NS]
+    cdef double fs[_NS]
+    cdef double ex[4 * _NS]
+    cdef double sc
     cdef long k, nstep, done = 0
     if A == NULL:
         return STATUS_NO_MEMORY
@@ -1704,8 +1710,34 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
     for j in range(1, nx + 1):
         _matmul(_NS, P, P + (j - 1) * _NS * _NS, P + j * _NS * _NS)
         _affine(P, G + (j - 1) * _NS, G, G + j * _NS)
+    if nx:
+        # the extras are affine in the step's starting state too (every input of fit_extras
+        # is): X y + x0, X and x0 fitted once from the zero state and the unit states, so a
+        # step costs matrix-vector products only
+        X = <double*> malloc((nx * _NS * _NS + nx * _NS) * sizeof(double))
+        if X == NULL:
+            free(A)
+            return STATUS_NO_MEMORY
+        x0 = X + nx * _NS * _NS
+        for i in range(_NS + 1):
+            memset(ys, 0, sizeof(ys))
+            if i < _NS:
+                ys[i] = 1.0
+            _affine(P + nx * _NS * _NS, ys, G + nx * _NS, yn)
+            _affine(A, ys, c, fs)
+            _affine(A, yn, c, fn)
+            for j in range(nx):
+                _affine(P + j * _NS * _NS, ys, G + j * _NS, vals + j * _NS)
+            fit_extras(nx, _NS, W, h, ys, yn, fs, fn, vals, x0 if i == _NS else ex)
+            if i < _NS:
+                for j in range(nx * _NS):
+                    X[j * _NS + i] = ex[j]
+        for i in range(_NS):
+            for j in range(nx * _NS):
+                X[j * _NS + i] -= x0[j]
     if _rec_point(run, t, y, f) != 0:
         free(A)
+        free(X)
         return STATUS_NO_MEMORY
     for k in range(nstep):
         _affine(P + nx * _NS * _NS, y, G + nx * _NS, yn)
@@ -1716,10 +1748,12 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
             status = STATUS_NOT_FINITE
             break
         if nx:     # the extras of the step from the last recorded point
-            for j in range(nx):
-                _affine(P + j * _NS * _NS, y, G + j * _NS, vals + j * _NS)
             row = r.rows + (r.n - 1) * r.width + 1 + 2 * _NS
-            fit_extras(nx, _NS, W, h, y, yn, f, fn, vals, row)
+            for j in range(nx * _NS):
+                sc = x0[j]
+                for i in range(_NS):
+                    sc += X[j * _NS + i] * y[i]
+                row[j] = sc
         memcpy(y, yn, sizeof(y))
         memcpy(f, fn, sizeof(f))
         if _rec_point(run, t, y, f) != 0:
@@ -1729,6 +1763,7 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
     run.n_steps += done
     memcpy(run.y, y, sizeof(y))
     free(A)
+    free(X)
     return status
 
 
