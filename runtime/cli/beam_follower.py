@@ -7,8 +7,8 @@ import time
 
 from ..core.errors import CamdynInputError, SimulationError
 from ..core.outdir import out_folder
-from .common import (add_estimate_option, add_out_option, fail, report_health, run_failed,
-                     say_on_stderr)
+from .common import (add_estimate_option, add_out_option, add_tolerance_options, fail,
+                     report_health, run_failed, say_on_stderr, tolerance_argument, tolerances)
 
 FLAGS = {"omega": "--omega", "modes": "--modes", "rod_radius": "--rod-radius",
                "distance": "--distance", "base_radius": "--base-radius", "rise": "--rise",
@@ -77,6 +77,7 @@ def add(sub):
     b.add_argument("--rtol", type=float, metavar="RTOL",
                    help=f"relative tolerance of the method, 1e-14 <= rtol < 1 (default "
                         f"{dflt['rtol']:g}; the error estimate runs again at rtol/10)")
+    add_tolerance_options(b)
     b.add_argument("--json", action="store_true", help="one JSON object on stdout")
     add_estimate_option(b)
     add_out_option(b, default=None, metavar="DIR",
@@ -94,7 +95,10 @@ def run(args) -> int:
     say = say_on_stderr()
     given = {key: getattr(args, key) for key in FLAGS}
     try:
-        target = BeamTarget.of(beam.Case(**{k: v for k, v in given.items() if v is not None}))
+        tol = tolerances(args)
+        target = BeamTarget.of(beam.Case(**{k: v for k, v in given.items() if v is not None},
+                                         **{k: tuple(v.items()) if k == "state_atol" else v
+                                            for k, v in tol.items()}))
         planned = target.figure_runs() if args.out else []     # refused before anything runs
         if args.out:                   # a picture of the user's is refused before the runs
             out_folder(args.out, files=target.figure_files())
@@ -118,7 +122,7 @@ def run(args) -> int:
                                                   estimate=not args.no_error_estimate)
             out["figures_cpu_seconds"] = time.process_time() - c0
     except CamdynInputError as exc:
-        return fail(prog, _beam_argument(str(exc)))
+        return fail(prog, tolerance_argument(_beam_argument(str(exc))))
     except SimulationError as exc:
         return run_failed(prog, exc)
     report_health(prog, out, "t")

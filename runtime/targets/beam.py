@@ -94,7 +94,7 @@ def simulator(case: Case, t_end: float | None = None,
     check(case)
     model = load(case.model)
     t_end = case.revolutions * case.period if t_end is None else t_end
-    sim = Simulator(model, t_end, case.method, rtol=case.rtol, law=case.law,
+    sim = Simulator(model, t_end, case.integrator(), law=case.law,
                     y0=initial_state(case, model), max_steps=max_steps)
     return sim, model
 

@@ -58,10 +58,18 @@ class Case:
     rtol: float = 1e-9
     method: str = "dp54"            # an adaptive method: dp54, or rodas4 for stiff rods
     w_B: float = _D["w_B"]          # rad/s, Baumgarte rate (augmented form)
+    atol: float | None = None       # absolute tolerance, in the states' tolerance scales
+    state_atol: tuple = ()          # (state, absolute tolerance in its units) pairs
 
     @property
     def model(self) -> str:
         return f"beam{self.modes}"
+
+    def integrator(self):
+        """The method object of the case's run: method, rtol and absolute tolerances."""
+        from ..core.methods import METHODS  # here, not at the top: the help text loads this module
+
+        return METHODS[self.method](rtol=self.rtol, atol=self.atol, state_atol=self.state_atol)
 
     @property
     def J_r(self) -> float:
@@ -111,4 +119,5 @@ def check(case: Case) -> Case:
         raise CamdynInputError(f"method={case.method!r}: the beam follower takes an adaptive "
                                f"method: {', '.join(ADAPTIVE)}")
     choose(case.law)
+    case.integrator()               # rtol, atol and state_atol checked
     return case

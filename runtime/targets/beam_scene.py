@@ -13,7 +13,6 @@ from __future__ import annotations
 from dataclasses import dataclass, fields, replace
 
 from ..core.errors import CamdynInputError
-from ..core.methods import METHODS
 from ..core.compiled import load
 from . import beam, scene_files
 from .base import Figure, Outcome, Parameter, Target
@@ -92,19 +91,23 @@ class BeamTarget(Target):
         except TypeError as exc:
             raise CamdynInputError(f"the beam follower has no parameter: {exc}") from None
 
-    def with_settings(self, method=None, rtol=None, **rest):
+    def with_settings(self, method=None, rtol=None, atol=None, state_atol=None, **rest):
         if rest:
             raise CamdynInputError(f"{', '.join(rest)} of a beam-follower scene come from the "
                                    "scene file")
-        changes = {k: v for k, v in (("method", method), ("rtol", rtol)) if v is not None}
+        changes = {k: v for k, v in (("method", method), ("rtol", rtol), ("atol", atol))
+                   if v is not None}
+        if state_atol:
+            changes["state_atol"] = tuple(dict(state_atol).items())
         return replace(self, case=check(replace(self.case, **changes))) if changes else self
 
     def method(self):
-        return METHODS[self.case.method](rtol=self.case.rtol)
+        return self.case.integrator()
 
     def tighter(self):
         m = self.method().tighter()
-        return None if m is None else replace(self, case=replace(self.case, rtol=m.rtol))
+        return None if m is None else replace(self, case=replace(
+            self.case, rtol=m.rtol, atol=m.atol, state_atol=m.state_atol))
 
     def run(self, progress=None) -> Outcome:
         from ..cam.motion import RDFD
