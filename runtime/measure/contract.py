@@ -72,15 +72,12 @@ class Answer:
         multipliers among them (named after its constraints, following its own outputs): the
         estimate is |v - v'| times the method's factor, v' the output at the end of the run
         one notch tighter; None without that run (not asked for, or unavailable)."""
-        res = self.result
+        res, tight = self.result, self.tight_result
         names = list(res.output_names)
-        end = res.sample([res.t[-1]])
-        values = {n: float(end[n][0]) for n in names}
-        tight = None
-        if self.tight_result is not None:
-            tight = self.tight_result.sample([self.tight_result.t[-1]])
-        errors = {n: None if tight is None else abs(values[n] - float(tight[n][0])) * self.factor
-                  for n in names}
+        # the last recorded point is the run's end (its right limit where a breakpoint is there)
+        values = {n: float(res.outputs[n][-1]) for n in names}
+        errors = {n: None if tight is None else abs(values[n] - float(tight.outputs[n][-1]))
+                  * self.factor for n in names}
         return values, errors
 
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import asdict, replace
+from functools import lru_cache
 
 import numpy as np
 
@@ -182,6 +183,7 @@ def dwell_frequencies(case: Case) -> np.ndarray:
     return w / (2 * math.pi)
 
 
+@lru_cache(maxsize=64)
 def dwell_frequency(case: Case) -> float:
     """The lowest transverse natural frequency [Hz] at the outer dwell (follower raised)."""
     return float(dwell_frequencies(case)[0])
