@@ -102,7 +102,7 @@ class BeamTarget(Target):
         return replace(self, case=check(replace(self.case, **changes))) if changes else self
 
     def method(self):
-        return self.case.integrator()
+        return beam.integrator(self.case)
 
     def tighter(self):
         m = self.method().tighter()

@@ -68,7 +68,7 @@ class StudyTarget(ModelTarget):
         t = cls.of("camshaft1", {"tau": resp["tau"], "Fa": max(resp["Fa"])},
                    method=run["method"], rtol=run["rtol"] if adaptive else None,
                    law=data["law"], theta=data.get("theta"), label=label or data["title"],
-                   **data.get("tolerances", {}))
+                   **scene_files.tolerances(run))
         return cls(**{**t.__getstate__(), "scene": data})
 
     @property

@@ -169,9 +169,11 @@ def check_study(data: dict, where: str) -> dict:
 
     run = data.get("run")
     if isinstance(run, dict):          # the tolerances are read apart, by the one reader
-        data = {**data, "run": {k: v for k, v in run.items() if k not in TOLERANCE_KEYS},
-                "tolerances": tolerances(run, where)}
-    _check({k: v for k, v in data.items() if k != "tolerances"}, STUDY_SCHEMA, where)
+        tolerances(run, where)
+        _check({**data, "run": {k: v for k, v in run.items() if k not in TOLERANCE_KEYS}},
+               STUDY_SCHEMA, where)
+    else:
+        _check(data, STUDY_SCHEMA, where)
     choose(data["law"])
     if data["run"]["method"] not in METHODS:
         raise CamdynInputError(f"{where}: run.method={data['run']['method']!r}: choose one of "
@@ -443,7 +445,7 @@ class BeamScene:
     case: object    # beam_case.Case
 
 
-_BEAM_RUN = ("revolutions", "rtol", "formulation", "method") + TOLERANCE_KEYS
+_BEAM_RUN = ("revolutions", "rtol", "formulation", "method", "mode_atol") + TOLERANCE_KEYS
 
 
 def beam_from_dict(data: dict, path: str = "<scene>") -> BeamScene:
