@@ -86,6 +86,7 @@ def test_a_failed_estimate_leaves_the_answer_with_its_reason():
     a = contract.answer(Twin())
     assert a.figures == {"U0": 0.25} and a.errors == {"U0": None}
     (w,) = a.warnings
-    assert w.startswith("no error estimate: the run one notch tighter failed (twin with dp54: "
+    assert w.startswith("estimate unavailable: the run one notch tighter failed (twin with dp54: "
                         "the step budget")
     assert a.as_dict()["U0_error"] is None
+    assert a.as_dict()["estimate_unavailable"].startswith("the run one notch tighter failed")

@@ -102,3 +102,51 @@ def add_estimate_option(parser) -> None:
     parser.add_argument("--no-error-estimate", action="store_true",
                         help="skip the second, one notch tighter run that estimates each "
                              "figure's error (for speed; the figures then say so)")
+
+
+ATOL_HELP = ("absolute tolerance of dp54/dop853/rodas4, > 0, in units of each state's tolerance "
+             "scale: a coordinate's declared scale, its rate's that scale times the rate the "
+             "mechanism is driven at (1 per unit of T for the thesis's models, the cam speed "
+             "for models in seconds); default 1e-3 rtol (README \"Tolerances\")")
+STATE_ATOL_HELP = ("absolute tolerance of one state, in its own units, > 0 (repeatable); a "
+                   "large one takes the state out of the error control (its own history is then "
+                   "not resolved)")
+
+
+def add_tolerance_options(parser) -> None:
+    """--atol and --state-atol: the absolute tolerances of an adaptive method (runtime/core/
+    methods.py DP54), tightened with rtol for the error estimate's second run."""
+    parser.add_argument("--atol", type=float, default=None, metavar="A", help=ATOL_HELP)
+    parser.add_argument("--state-atol", action="append", default=None, metavar="NAME=VALUE",
+                        help=STATE_ATOL_HELP)
+
+
+def tolerances(args) -> dict:
+    """{"atol": ..., "state_atol": {...}} from --atol and --state-atol, checked: finite and
+    > 0; unknown state names are refused when the model is known, naming its states."""
+    import math
+
+    out = {}
+    if args.atol is not None:
+        if not (math.isfinite(args.atol) and args.atol > 0):
+            raise CamdynInputError(f"argument --atol: {args.atol:g} is out of range: a finite "
+                                   "atol > 0 (in units of each state's tolerance scale)")
+        out["atol"] = args.atol
+    pairs = assignments(args.state_atol, "--state-atol")
+    for name, value in pairs.items():
+        if not (math.isfinite(value) and value > 0):
+            raise CamdynInputError(f"argument --state-atol: {name}={value:g} is out of range: a "
+                                   "finite absolute tolerance > 0 in the state's units")
+    if pairs:
+        out["state_atol"] = pairs
+    return out
+
+
+def tolerance_argument(message: str) -> str:
+    """A library message about the tolerances (atol=..., state_atol...) with the flag it came
+    from in front, as every other bad argument is named."""
+    if message.startswith("atol="):
+        return f"argument --atol: {message}"
+    if message.startswith("state_atol"):
+        return f"argument --state-atol: {message.removeprefix('state_atol: ')}"
+    return message

@@ -4,9 +4,10 @@ from __future__ import annotations
 import json
 
 from ..core.errors import CamdynInputError, SimulationError
-from ..measure.contract import plus_minus
-from .common import (add_estimate_option, add_out_option, assignments, fail, law_names,
-                     method_names, report_health, run_failed, say_on_stderr)
+from ..measure.contract import missing_estimate, plus_minus
+from .common import (add_estimate_option, add_out_option, add_tolerance_options, assignments,
+                     fail, law_names, method_names, report_health, run_failed, say_on_stderr,
+                     tolerance_argument, tolerances)
 
 
 def add(sub):
@@ -25,6 +26,10 @@ def add(sub):
     ig.add_argument("--rtol", type=float, default=None,
                     help="dp54/dop853/rodas4 tolerance (default 1e-8)")
     ig.add_argument("--step", type=float, default=None, help="rk4/koster step")
+    add_tolerance_options(ig)
+    ig.add_argument("--max-steps", type=int, default=None, metavar="N",
+                    help="the run's budget of steps, a whole number >= 1 (default 5,000,000); "
+                         "the error estimate's run one notch tighter has the same budget")
     ig.add_argument("--law", default="cycloidal", choices=law_names(), help="cam law of the inputs")
     ig.add_argument("--theta", type=float, default=None, help="shape parameter of the law")
     ig.add_argument("--turn", default=None, metavar="RISE,UP,RETURN,LOW",
@@ -77,7 +82,8 @@ def run(args) -> int:
         law, theta = law_arg(args)
         t = resolve.model(args.model, StateTarget, say, params=params, method=args.method,
                           rtol=args.rtol, step=args.step, t_end=args.t_end, law=law,
-                          theta=theta, initial=initial)
+                          theta=theta, initial=initial, max_steps=args.max_steps,
+                          **tolerances(args))
         if args.out:
             from ..core.outdir import out_folder
 
@@ -89,14 +95,22 @@ def run(args) -> int:
 
             files = write_series(a, args.out)
     except CamdynInputError as exc:
-        return fail(prog, str(exc))
+        message = str(exc)
+        if message.startswith("max_steps"):
+            message = f"argument --max-steps: {message}"
+        return fail(prog, tolerance_argument(message))
     except SimulationError as exc:
         return run_failed(prog, exc)
     summary = {**a.record, "cpu_seconds": a.stats["cpu_seconds"], "status": "ok",
                "warnings": list(a.warnings), "stiff_from_T": a.stats["stiff_from_T"]}
+    outputs, output_errors = a.at_end()
+    summary["outputs"] = outputs
     if a.estimated:
         summary["state_error"] = dict(a.errors)
+        summary["outputs_error"] = output_errors
         summary["error_sources"] = a.sources
+    if a.unavailable is not None:
+        summary["estimate_unavailable"] = a.unavailable
     if files:
         summary["files"] = files
     report_health(prog, summary, t.model.manifest["time"]["name"])
@@ -106,9 +120,14 @@ def run(args) -> int:
     print(f"{summary['model']}: {summary['method']} to {summary['t_end']:g} "
           f"{summary['time_unit']}, {summary['n_steps']} steps, {summary['n_rhs']} rhs calls, "
           f"{summary['cpu_seconds']:.3g} s CPU")
-    errs = summary.get("state_error", {})
-    for name, value in summary["state"].items():
-        print(f"  {name:12s} {value:.10g}{plus_minus(errs.get(name))}")
+    none = missing_estimate(summary)
+    for what, errs in (("state", summary.get("state_error", {})),
+                       ("outputs", summary.get("outputs_error", {}))):
+        if what == "outputs" and summary["outputs"]:
+            print(f"  outputs at {summary['t_end']:g} {summary['time_unit']}:")
+        for name, value in summary[what].items():
+            e = errs.get(name)
+            print(f"  {name:12s} {value:.10g}{plus_minus(e) if e is not None else none}")
     for f in files:
         print(f"wrote {f}")
     return 0

@@ -5,8 +5,8 @@ import json
 
 from ..core.errors import CamdynInputError, SimulationError
 from ..measure.contract import with_errors
-from .common import (add_estimate_option, fail, law_names, method_names, report_health,
-                     run_failed)
+from .common import (add_estimate_option, add_tolerance_options, fail, law_names, method_names,
+                     report_health, run_failed, tolerance_argument, tolerances)
 
 MODELS = {"one-dof": "one_dof", "camshaft1": "camshaft1", "camshaft2": "camshaft2"}
 """The thesis's residual-vibration models by their command-line names (chs 3, 4, 5)."""
@@ -39,6 +39,7 @@ def add(sub):
                    help="rk4/koster step in T (default: 1/100 of the shortest period of the "
                         "dwell's modes: tau/100 (sec. 4.4.2), for CAMSHAFT-2 also its flywheel "
                         "period (5.19))")
+    add_tolerance_options(r)
     r.add_argument("--t-end", type=float, default=None,
                    help="end of the dwell, in T (default 3, longer where one period of the "
                         "slowest mode a figure sees needs it; a shorter one given is refused)")
@@ -100,7 +101,7 @@ def target(args):
         step = ModelTarget.of(MODELS[args.model], params, law=args.law,
                               theta=args.theta).default_step()
     return ModelTarget.of(MODELS[args.model], params, method=args.method, rtol=rtol, step=step,
-                          t_end=args.t_end, law=args.law, theta=args.theta)
+                          t_end=args.t_end, law=args.law, theta=args.theta, **tolerances(args))
 
 
 def run(args) -> int:
@@ -111,7 +112,7 @@ def run(args) -> int:
         t = target(args)
         a = answer(t, estimate=not args.no_error_estimate)
     except CamdynInputError as exc:
-        return fail(prog, name_argument(str(exc)))
+        return fail(prog, tolerance_argument(name_argument(str(exc))))
     except SimulationError as exc:
         return run_failed(prog, exc)
     out = {**a.as_dict(), "model": args.model, **t.references()}

@@ -5,8 +5,9 @@ from pathlib import Path
 
 from ..core.errors import CamdynInputError, SimulationError
 from ..core.outdir import out_folder
-from .common import (add_estimate_option, add_out_option, fail, method_names, report_health,
-                     run_failed, say_on_stderr)
+from .common import (add_estimate_option, add_out_option, add_tolerance_options, fail,
+                     method_names, report_health, run_failed, say_on_stderr, tolerance_argument,
+                     tolerances)
 
 
 def add(sub):
@@ -20,6 +21,7 @@ def add(sub):
     m.add_argument("--method", default=None, choices=adaptive,
                    help="integration method instead of the scene's [run] method; rodas4 is the "
                         "stiff solver")
+    add_tolerance_options(m)
     m.add_argument("--quiet", action="store_true", help="no progress lines")
     add_estimate_option(m)
     return m
@@ -36,11 +38,14 @@ def run(args) -> int:
         target = scene(args.scene or "default")
         if args.method is not None:
             target = target.with_settings(method=args.method)
+        tol = tolerances(args)
+        if tol:
+            target = target.with_settings(**tol)
         out_dir = Path(out_folder(args.out, create=False))       # checked before the runs
         record = target.job(out_dir, estimate=not args.no_error_estimate,
                             progress=say_on_stderr(args.quiet))
     except CamdynInputError as exc:
-        return fail(prog, str(exc))
+        return fail(prog, tolerance_argument(str(exc)))
     except SimulationError as exc:
         return run_failed(prog, exc)
     report_health(prog, record, target.time_name)

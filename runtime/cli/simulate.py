@@ -5,9 +5,10 @@ import json
 
 from ..core.errors import CamdynInputError, SimulationError
 from ..core.outdir import out_folder
-from .common import (add_estimate_option, add_out_option, fail, fmt, method_names,
-                     report_health, run_failed)
+from .common import (add_estimate_option, add_out_option, add_tolerance_options, fail, fmt,
+                     method_names, report_health, run_failed, tolerance_argument, tolerances)
 from .common import say_on_stderr
+from ..measure.contract import missing_estimate, plus_minus
 
 
 def add(sub):
@@ -21,6 +22,7 @@ def add(sub):
     sm.add_argument("--method", default=None, choices=adaptive,
                     help="integration method instead of the scene's (dp54 unless it sets "
                          "run.method); rodas4 is the stiff solver")
+    add_tolerance_options(sm)
     sm.add_argument("--model", default="scene", choices=("scene", "auto"),
                     help="auto: the least model of the chain of sec. 8.2 (ideal drive, no "
                          "backlash, spring, shaft directions, CAMSHAFT-2, -1, one DOF) that keeps "
@@ -47,6 +49,9 @@ def run(args) -> int:
         target = DynacamTarget.from_scene(scene_files.load(args.scene), args.scene)
         if args.method is not None:
             target = target.with_settings(method=args.method)
+        tol = tolerances(args)
+        if tol:
+            target = target.with_settings(**tol)
         if args.model == "auto":
             if args.out:
                 raise CamdynInputError("--out does not go with --model auto (no diagrams of the "
@@ -61,10 +66,13 @@ def run(args) -> int:
             out_folder(args.out)
         a = answer(target, estimate=not args.no_error_estimate, progress=progress)
         out = a.as_dict()
+        out["outputs"], errors = a.at_end()
+        if a.estimated:
+            out["outputs_error"] = errors
         if args.out:
             out["figures"] = target.main_job(args.out, a)
     except CamdynInputError as exc:
-        return fail(prog, str(exc))
+        return fail(prog, tolerance_argument(str(exc)))
     except SimulationError as exc:
         return run_failed(prog, exc)
     report_health(prog, out)
@@ -72,6 +80,11 @@ def run(args) -> int:
         print(json.dumps(out, indent=1))
         return 0
     print("\n".join(target.table(out)))
+    none = missing_estimate(out)
+    print(f"  outputs at the end of the run (T = {target.scene.T_end:g}):")
+    for name, value in out["outputs"].items():
+        e = out.get("outputs_error", {}).get(name)
+        print(f"    {name:24s} {value:.6g}{plus_minus(e) if e is not None else none}")
     return 0
 
 

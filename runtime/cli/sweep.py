@@ -5,7 +5,8 @@ import sys
 
 from ..core.errors import CamdynInputError, SimulationError
 from ..core.outdir import out_folder
-from .common import add_estimate_option, add_out_option, fail, law_names, method_names, run_failed
+from .common import (add_estimate_option, add_out_option, add_tolerance_options, fail, law_names,
+                     method_names, run_failed, tolerance_argument, tolerances)
 
 
 def add(sub):
@@ -37,6 +38,7 @@ def add(sub):
     sw.add_argument("--step", type=float, default=None,
                     help="step of a fixed-step method (rk4, koster; required there), in the "
                          "model's time unit; not with dp54/dop853/rodas4")
+    add_tolerance_options(sw)
     sw.add_argument("--law", choices=names, default=None,
                     help="cam law of a model (default: the scene's, cycloidal)")
     sw.add_argument("--error-estimate", action="store_true",
@@ -63,9 +65,10 @@ def run(args) -> int:
         res = sw.sweep(args.target, grid, jobs=args.jobs, dask=args.dask,
                        progress=not args.quiet, t_end=args.t_end, method=args.method,
                        rtol=args.rtol, law=args.law, step=args.step,
-                       estimate=not args.no_error_estimate, out=args.out, resume=args.resume)
+                       estimate=not args.no_error_estimate, out=args.out, resume=args.resume,
+                       **tolerances(args))
     except CamdynInputError as exc:
-        return fail("camdyn sweep", str(exc))
+        return fail("camdyn sweep", tolerance_argument(str(exc)))
     except SimulationError as exc:
         return run_failed("camdyn sweep", exc)
     if args.error_estimate and args.no_error_estimate:

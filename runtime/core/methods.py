@@ -110,9 +110,10 @@ class Koster(_FixedStep):
 class DP54:
     """Dormand-Prince 5(4), local extrapolation, PI step-size control, dense output.
 
-    Error per step is measured in the RMS norm against atol + rtol |y|;
-    ``atol`` defaults to rtol times the state scales of the model's manifest
-    times 1e-3.  ``state_atol``, pairs (state name, absolute tolerance), sets the
+    Error per step is measured in the RMS norm against atol + rtol |y|.  ``atol`` is in
+    units of each state's tolerance scale (runtime/core/simulator.py tolerance_scales: a
+    coordinate's scale from the model's manifest, its rate's that scale times the rate the
+    mechanism is driven at), default 1e-3 rtol.  ``state_atol``, pairs (state name, absolute tolerance), sets the
     tolerance of single states: a large one takes a state out of the error control
     (it is then as accurate as the others' accuracy makes it, no more), so that an
     L-stable method can step over a fast mode that only rings (the roller on its
@@ -141,9 +142,8 @@ class DP54:
         if self.max_step != math.inf:
             object.__setattr__(self, "max_step", _positive("max_step", self.max_step))
         pairs = tuple(dict(self.state_atol).items())
-        for name, value in pairs:
-            _positive(f"state_atol[{name}]", value)
-        object.__setattr__(self, "state_atol", pairs)
+        object.__setattr__(self, "state_atol", tuple(
+            (name, _positive(f"state_atol[{name}]", value)) for name, value in pairs))
 
     def tighter(self):
         """The same method one notch more accurate, for an error estimate: rtol/10 (and every
@@ -247,8 +247,9 @@ def apply_notches(method):
     return method
 
 
-def make(name: str, *, rtol=None, atol=None, step=None):
-    """A method from its name and the options given on a command line or API call."""
+def make(name: str, *, rtol=None, atol=None, step=None, state_atol=()):
+    """A method from its name and the options given on a command line or API call
+    (``state_atol``: pairs or a dict, state name -> absolute tolerance)."""
     if name not in METHODS:
         raise CamdynInputError(f"unknown method {name!r}; choose one of {', '.join(METHODS)}")
     cls = METHODS[name]
@@ -256,8 +257,9 @@ def make(name: str, *, rtol=None, atol=None, step=None):
         if step is not None:
             raise CamdynInputError("step applies to the fixed-step methods rk4 and koster; "
                                    f"{name} takes rtol")
-        return cls(rtol=DEFAULT_RTOL if rtol is None else rtol, atol=atol)
-    if rtol is not None or atol is not None:
+        return cls(rtol=DEFAULT_RTOL if rtol is None else rtol, atol=atol,
+                   state_atol=tuple(dict(state_atol or ()).items()))
+    if rtol is not None or atol is not None or state_atol:
         raise CamdynInputError(f"rtol/atol apply to {', '.join(ADAPTIVE)}; {name} takes step")
     if step is None:
         raise CamdynInputError(f"method {name} needs step")

@@ -78,6 +78,38 @@ def initial_modes(model: CompiledModel, modes: dict | None) -> list[int]:
     return out
 
 
+def drive_rate(model: CompiledModel, p: np.ndarray, y0: np.ndarray) -> float:
+    """The rate the mechanism is driven at, per unit of the model's time: the fastest of a cam
+    input's rises per time unit (its argument a t + b: |a|) and a coordinate's initial rate in
+    its scales per time unit (a cam turning at Omega from the start: Omega/1 rad), never below
+    1.  It is 1 for the thesis's models, whose time T = t/t_m counts rises (the follower moves
+    its scale in about one unit of T), and the cam's speed for the models in seconds (the
+    beam follower, DYNACAM), whose coordinates move their scales in about 1/Omega."""
+    rate = 1.0
+    for ab in model.cam_time_affine(p):
+        if ab is not None:
+            rate = max(rate, abs(float(ab[0])))
+    n_q = int(model.manifest.get("n_q", 0))
+    scales = model.state_scales()
+    for k in range(n_q):
+        v = abs(float(y0[n_q + k])) / scales[k]
+        if math.isfinite(v):
+            rate = max(rate, v)
+    return rate
+
+
+def tolerance_scales(model: CompiledModel, p: np.ndarray, y0: np.ndarray) -> np.ndarray:
+    """What an absolute tolerance of 1 means for each state: a coordinate's declared scale; its
+    rate's that scale times :func:`drive_rate` (a coordinate that moves its scale over a rise
+    of length 1/rate moves at about scale x rate: with the scale alone, a beam mode's rate in
+    m/s would have been held to the tolerance of its amplitude in m, 240 times too tight at
+    the paper's 240 rad/s); a first-order state its declared scale."""
+    scales = model.state_scales().copy()
+    n_q = int(model.manifest.get("n_q", 0))
+    scales[n_q:2 * n_q] *= drive_rate(model, p, y0)
+    return scales
+
+
 @dataclass(frozen=True)
 class BatchInputs:
     """What the compiled loops take to run many parameter sets of one Simulator (its
@@ -173,8 +205,12 @@ class Simulator:
             raise CamdynInputError(f"y0 must be {n} finite numbers ({', '.join(m.state_names)})")
         self._y_init = y_init
         if method.adaptive:
+            # the tolerance scales of the declared start at the default parameters (or of y0):
+            # a grid over the parameters keeps one absolute tolerance for all its points
+            p_scale = m.parameter_vector()
+            y_scale = y_init if self._y0_given else m.initial_state(p_scale)
             base = method.atol if method.atol is not None else 1e-3 * method.rtol
-            atol = np.ascontiguousarray(base * m.state_scales(), dtype=float)
+            atol = np.ascontiguousarray(base * tolerance_scales(m, p_scale, y_scale), dtype=float)
             for name, value in method.state_atol:
                 if name not in m.state_names:
                     raise CamdynInputError(f"state_atol: {m.name} has no state {name}; its states "

@@ -19,6 +19,12 @@ The estimate of a figure v covers every error it has:
 The total is the sum of the three (each a bound of its own error to the accuracy the
 estimate has), with the parts in ``sources``.  With ``estimate=False`` (the command's
 ``--no-error-estimate``, for speed) the figures come back with their estimate as None.
+
+A second run that fails where the first succeeded (a step budget the tighter run exhausts, a
+step that collapses at rtol/10) takes the estimate away, not the answer: the figures keep
+their values, their estimates are None ("estimate unavailable" in text, null in JSON, NaN in a
+grid's table), and a warning "estimate unavailable: <why>" says what happened, on every road
+(:func:`answer`, :class:`Twin` for a grid's chunks).
 """
 from __future__ import annotations
 
@@ -46,6 +52,7 @@ class Answer:
     result: object = None
     tight_result: object = None     # the run one notch tighter (None without an estimate)
     factor: float = 1.0             # the method's factor of |v - v'| (Richardson's for rk4)
+    unavailable: str | None = None  # why the estimate was asked for and could not be made
 
     def as_dict(self) -> dict:
         """The command's record with ``<figure>_error`` beside it, the warnings and the
@@ -56,7 +63,22 @@ class Answer:
         out["warnings"] = list(self.warnings)
         if self.sources:
             out["error_sources"] = self.sources
+        if self.unavailable is not None:
+            out["estimate_unavailable"] = self.unavailable
         return out
+
+    def at_end(self) -> tuple[dict, dict]:
+        """(values, estimates) of every output of the run at its end, a constrained model's
+        multipliers among them (named after its constraints, following its own outputs): the
+        estimate is |v - v'| times the method's factor, v' the output at the end of the run
+        one notch tighter; None without that run (not asked for, or unavailable)."""
+        res, tight = self.result, self.tight_result
+        names = list(res.output_names)
+        # the last recorded point is the run's end (its right limit where a breakpoint is there)
+        values = {n: float(res.outputs[n][-1]) for n in names}
+        errors = {n: None if tight is None else abs(values[n] - float(tight.outputs[n][-1]))
+                  * self.factor for n in names}
+        return values, errors
 
 
 def _number(v) -> bool:
@@ -87,31 +109,47 @@ def fit_window(target, window=None, at: str = ""):
         f"{w.end_for(need):.4g}")
 
 
+UNAVAILABLE = "estimate unavailable"
+"""The words of a warning, and of a text table, where an estimate was asked for and the run
+one notch tighter could not give it."""
+
+
+def unavailable(why: str) -> str:
+    """The warning of an estimate that could not be made, saying why."""
+    return f"{UNAVAILABLE}: {why}; the figures are the run's, without an error estimate"
+
+
+def tighter_run(target):
+    """(the run of ``target`` one notch tighter, None) or (None, why it could not be made):
+    the second run of every error estimate.  A failure of it (a budget of steps it exhausts, a
+    step that collapses, a tolerance with no tighter notch) leaves the answer standing."""
+    tighter = target.tighter()
+    if tighter is None:
+        return None, (f"rtol={target.method().rtol:g} is the tightest tolerance there is, no "
+                      "run one notch tighter (give a larger rtol)")
+    try:
+        return tighter.run(), None
+    except (SimulationError, CamdynInputError) as exc:
+        return None, f"the run one notch tighter failed ({exc})"
+
+
 def answer(target, *, estimate: bool = True, progress=None) -> Answer:
     """One run of ``target`` with every figure's error estimate (module doc)."""
     target = fit_window(target)
     base = target.run(progress)
-    tight = None
+    tight, why = None, None
     warnings = list(base.warnings)
     if estimate:
-        tighter = target.tighter()
-        if tighter is None:
-            warnings.append("no error estimate: the run is at the tightest tolerance there is "
-                            "(give a larger rtol)")
-        else:
-            try:
-                tight = tighter.run()
-            except SimulationError as exc:
-                # the answer stands; only its estimate is missing, and says why
-                warnings.append(f"no error estimate: the run one notch tighter failed ({exc}); "
-                                "the figures are the run's, unchecked")
+        tight, why = tighter_run(target)
+        if why is not None:
+            warnings.append(unavailable(why))
     errors, sources, missing = combine(target, base, tight, estimate)
     for name in missing:
         warnings.append(f"no error estimate for {name}: the tighter run does not give it")
     warnings += unresolved(base.figures, errors, _scales(target))
     return Answer(target.name, target.kind, dict(base.figures), errors, sources, warnings,
                   base.record, base.stats, estimate, base.result,
-                  None if tight is None else tight.result, target.method().estimate_factor)
+                  None if tight is None else tight.result, target.method().estimate_factor, why)
 
 
 def combine(target, base, tight, estimate: bool) -> tuple[dict, dict, list]:
@@ -171,6 +209,9 @@ def grid_columns(target, base, tight) -> dict:
             flagged |= (np.isfinite(e) & np.isfinite(v)
                         & (e > UNRESOLVED * (np.abs(v) + scales.get(f, 0.0))))
     warnings = [list(w) for w in base.warnings]
+    if tight is not None:       # a chunk whose tighter runs failed says so (Twin)
+        for j, w in enumerate(tight.warnings):
+            warnings[j] += [x for x in w if x.startswith(UNAVAILABLE)]
     for j in np.flatnonzero(flagged):
         warnings[j] += unresolved({f: float(base.figures[j, k]) for k, f in shown},
                                   {f: float(cols[f"{f}_error"][j]) for _, f in shown}, scales)
@@ -270,14 +311,21 @@ def plus_minus(e) -> str:
 
 def note(out: dict, key: str, exact=()) -> str:
     """What follows figure ``key``'s value in a text table: " (exact)" for a figure in
-    ``exact`` (it follows from the parameters), " ± e" with its estimate, " (no error
-    estimate)" where the record has none for it, "" for what is no figure."""
+    ``exact`` (it follows from the parameters), " ± e" with its estimate, " (estimate
+    unavailable)" where it was asked for and could not be made, " (no error estimate)" where
+    the record has none for it, "" for what is no figure."""
     if key in exact:
         return " (exact)"
     e = out.get(f"{key}_error")
     if _number(e):
         return plus_minus(e)
-    return " (no error estimate)" if f"{key}_error" in out else ""
+    return missing_estimate(out) if f"{key}_error" in out else ""
+
+
+def missing_estimate(out: dict) -> str:
+    """What a text table shows for a number without an estimate: " (estimate unavailable)"
+    where it was asked for and could not be made, " (no error estimate)" otherwise."""
+    return f" ({UNAVAILABLE})" if out.get("estimate_unavailable") else " (no error estimate)"
 
 
 def exact_figures(target) -> set:
@@ -290,7 +338,7 @@ def with_errors(figures: dict, exact=()) -> list:
     their figure (:func:`note`)."""
     rows = []
     keys = [k for k in figures if not (k.endswith("_error") and k[:-6] in figures)
-            and k not in ("warnings", "error_sources")]
+            and k not in ("warnings", "error_sources", "estimate_unavailable")]
     width = max((len(k) for k in keys), default=0)
     for k in keys:
         v = figures[k]

@@ -31,7 +31,7 @@ from scipy.interpolate import CubicHermiteSpline
 from ..engine import driver
 from ..core.errors import CamdynInputError
 from ..core.compiled import CompiledModel, load
-from ..core.simulator import law_choices, stop_times
+from ..core.simulator import law_choices, stop_times, tolerance_scales
 
 PEERS = ("RK45", "DOP853", "Radau", "BDF", "LSODA", "odeint")
 """The peers, as named on the command line and in charts."""
@@ -169,9 +169,13 @@ def _state_driven(model: CompiledModel) -> bool:
     return any(not inst.get("time_affine", True) for inst in model.manifest["cam_instances"])
 
 
-def default_atol(model: CompiledModel, rtol: float) -> np.ndarray:
-    """camdyn's default absolute tolerances: 1e-3 rtol times the state scales."""
-    return 1e-3 * rtol * model.state_scales()
+def default_atol(model: CompiledModel, rtol: float, y0=None) -> np.ndarray:
+    """camdyn's default absolute tolerances: 1e-3 rtol times the tolerance scales of the states
+    (runtime/core/simulator.py tolerance_scales), as a Simulator starting at ``y0`` (default:
+    the declared start) takes them."""
+    p = model.parameter_vector()
+    y = model.initial_state(p) if y0 is None else np.asarray(y0, dtype=float).ravel()
+    return 1e-3 * rtol * tolerance_scales(model, p, y)
 
 
 def run_peer(name: str, model, params: dict | None, t_end: float, rtol: float, atol=None, *,
@@ -197,7 +201,7 @@ def run_peer(name: str, model, params: dict | None, t_end: float, rtol: float, a
     if not (math.isfinite(t0) and math.isfinite(t_end) and t_end > t0):
         raise CamdynInputError(f"t_end={t_end:g} must be finite and greater than t0={t0:g}")
     ns = len(m.state_names)
-    atol_v = default_atol(m, rtol) if atol is None else np.broadcast_to(
+    atol_v = default_atol(m, rtol, y0) if atol is None else np.broadcast_to(
         np.asarray(atol, dtype=float), (ns,)).copy()
     if not np.all(atol_v > 0):
         raise CamdynInputError("atol must be positive")

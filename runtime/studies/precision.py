@@ -5,7 +5,7 @@ the chart shows the error against CPU time, log-log, one line per method, SciPy'
 (:mod:`camdyn.runtime.studies.peers`) on the same generated right-hand side and Jacobian beside camdyn's.
 
 * the ladder: rtol = 1e-3 ... 1e-10 (one per decade) for the adaptive methods (dp54, dop853, rodas4 and
-  the peers, atol = 1e-3 rtol times the state scales, camdyn's default); for the fixed-step ones
+  the peers, atol = 1e-3 rtol times the states' tolerance scales, camdyn's default); for the fixed-step ones
   (rk4, koster) N, 2N, 4N, ... 128N steps over the run, N the steps DP54 takes at rtol 1e-3.
   ``quick`` takes every other rung.
 * the reference: DP54 at rtol 1e-13.  Its own error is estimated by scoring DP54 at rtol 1e-12

@@ -318,7 +318,8 @@ on 2 threads; at 512 they take the same time."""
 def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: bool = True,
           t_end: float | None = None, method: str | None = None, rtol: float | None = None,
           law: str | None = None, step: float | None = None, chunk: int | None = None,
-          estimate: bool = True, out=None, resume: bool = False) -> SweepResult:
+          estimate: bool = True, out=None, resume: bool = False, atol: float | None = None,
+          state_atol: dict | None = None) -> SweepResult:
     """Run ``target`` (a name, or a target of runtime/targets) at every point of ``grid``
     ({name: values}); ``jobs`` threads (default: every core), or the Dask cluster ``dask``;
     a progress bar on stderr.  Every figure comes with its error estimate (the grid again
@@ -340,7 +341,8 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
     if isinstance(target, str):
         if rtol is None and (method or "dp54") in ADAPTIVE and is_model(target):
             rtol = MODEL_RTOL
-        tgt = resolve(target, t_end=t_end, method=method, rtol=rtol, law=law, step=step)
+        tgt = resolve(target, t_end=t_end, method=method, rtol=rtol, law=law, step=step,
+                      atol=atol, state_atol=state_atol or None)
     else:
         tgt = target
     axes = _axes(grid)

@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import asdict, replace
+from functools import lru_cache
 
 import numpy as np
 
@@ -89,12 +90,34 @@ def initial_state(case: Case, model, b=None, b_rate=None) -> np.ndarray:
     return y
 
 
+def deflection_scale(case: Case) -> float:
+    """S_T Omega^2/w_1^2, m: the static deflection of the lowest mode under the cam's
+    acceleration (w_1 the lowest transverse frequency at the outer dwell)."""
+    w1 = 2 * math.pi * dwell_frequency(case)
+    return case.rise * case.omega**2 / w1**2
+
+
+def integrator(case: Case):
+    """The method object of the case's run: method, rtol and absolute tolerances, the mode
+    amplitudes' from ``case.mode_atol`` (beam_case.MODE_ATOL) unless the user's atol or
+    state_atol say otherwise."""
+    from ..core.methods import METHODS
+
+    pairs = dict(case.state_atol)
+    if case.mode_atol is not None and case.atol is None:
+        tol = case.mode_atol * deflection_scale(case)
+        for i in range(1, case.modes + 1):
+            pairs.setdefault(f"b{i}", tol)
+            pairs.setdefault(f"b{i}d", tol * case.omega)
+    return METHODS[case.method](rtol=case.rtol, atol=case.atol, state_atol=tuple(pairs.items()))
+
+
 def simulator(case: Case, t_end: float | None = None,
               max_steps: int = 20_000_000) -> tuple[Simulator, object]:
     check(case)
     model = load(case.model)
     t_end = case.revolutions * case.period if t_end is None else t_end
-    sim = Simulator(model, t_end, case.method, rtol=case.rtol, law=case.law,
+    sim = Simulator(model, t_end, integrator(case), law=case.law,
                     y0=initial_state(case, model), max_steps=max_steps)
     return sim, model
 
@@ -182,6 +205,7 @@ def dwell_frequencies(case: Case) -> np.ndarray:
     return w / (2 * math.pi)
 
 
+@lru_cache(maxsize=64)
 def dwell_frequency(case: Case) -> float:
     """The lowest transverse natural frequency [Hz] at the outer dwell (follower raised)."""
     return float(dwell_frequencies(case)[0])

@@ -13,7 +13,6 @@ from __future__ import annotations
 from dataclasses import dataclass, fields, replace
 
 from ..core.errors import CamdynInputError
-from ..core.methods import METHODS
 from ..core.compiled import load
 from . import beam, scene_files
 from .base import Figure, Outcome, Parameter, Target
@@ -92,19 +91,27 @@ class BeamTarget(Target):
         except TypeError as exc:
             raise CamdynInputError(f"the beam follower has no parameter: {exc}") from None
 
-    def with_settings(self, method=None, rtol=None, **rest):
+    def with_settings(self, method=None, rtol=None, atol=None, state_atol=None, **rest):
         if rest:
             raise CamdynInputError(f"{', '.join(rest)} of a beam-follower scene come from the "
                                    "scene file")
-        changes = {k: v for k, v in (("method", method), ("rtol", rtol)) if v is not None}
+        changes = {k: v for k, v in (("method", method), ("rtol", rtol), ("atol", atol))
+                   if v is not None}
+        if state_atol:
+            changes["state_atol"] = tuple(dict(state_atol).items())
         return replace(self, case=check(replace(self.case, **changes))) if changes else self
 
     def method(self):
-        return METHODS[self.case.method](rtol=self.case.rtol)
+        return beam.integrator(self.case)
 
     def tighter(self):
         m = self.method().tighter()
-        return None if m is None else replace(self, case=replace(self.case, rtol=m.rtol))
+        if m is None:
+            return None
+        c = self.case
+        return replace(self, case=replace(
+            c, rtol=m.rtol, atol=m.atol, state_atol=tuple((k, v / 10) for k, v in c.state_atol),
+            mode_atol=None if c.mode_atol is None else c.mode_atol / 10))
 
     def run(self, progress=None) -> Outcome:
         from ..cam.motion import RDFD
@@ -175,11 +182,13 @@ class BeamTarget(Target):
         """The names of the paper's figures :meth:`paper_figures` writes."""
         return [f"{name}.png" for name in beam.FIGURES]
 
-    def paper_figures(self, out_dir, progress=None, estimate: bool = True) -> list:
+    def paper_figures(self, out_dir, progress=None, estimate: bool = True, known=None) -> list:
         """PNG files of the paper's figs 4-9 in ``out_dir``: the tip deflection v_E against the
         cam angle Omega t (deg), one field of this case varied per figure (beam.FIGURES).
         Every curve is one answer (runtime/measure/contract.py): its largest |v_E| with its
-        estimate in the legend, and the runs' warnings in the footnote."""
+        estimate in the legend, and the runs' warnings in the footnote.  A case that several
+        figures draw (this case itself, in most of them) runs once; ``known``, this case's
+        answer where the caller has it already, is not run again."""
         import matplotlib
 
         matplotlib.use("Agg")
@@ -191,13 +200,18 @@ class BeamTarget(Target):
 
         out = out_folder(out_dir, files=self.figure_files())
         written = []
+        answers = {} if known is None else {self.case: known}
         for (name, (field, values, label)), file in zip(beam.FIGURES.items(),
                                                          self.figure_files()):
             fig, ax = plt.subplots(figsize=(8, 4.4))
             tips, errors, warnings = [], [], []
             for v in values:
-                a = answer(self.with_parameters({field: v}), estimate=estimate,
-                           progress=progress)
+                case = self.with_parameters({field: v})
+                a = answers.get(case.case)
+                if a is None:
+                    a = answers[case.case] = answer(case, estimate=estimate, progress=progress)
+                elif progress:
+                    progress("the same case as an earlier curve: its run is reused")
                 res, omega = a.result, v if field == "omega" else self.case.omega
                 tip, err = a.figures["max_abs_tip_deflection"], a.errors["max_abs_tip_deflection"]
                 tips.append(tip)

@@ -67,7 +67,8 @@ class StudyTarget(ModelTarget):
         adaptive = run["method"] in ADAPTIVE
         t = cls.of("camshaft1", {"tau": resp["tau"], "Fa": max(resp["Fa"])},
                    method=run["method"], rtol=run["rtol"] if adaptive else None,
-                   law=data["law"], theta=data.get("theta"), label=label or data["title"])
+                   law=data["law"], theta=data.get("theta"), label=label or data["title"],
+                   **scene_files.tolerances(run))
         return cls(**{**t.__getstate__(), "scene": data})
 
     @property

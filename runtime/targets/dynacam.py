@@ -145,6 +145,11 @@ class Prepared:
     t_end: float
 
 
+def scene_method(scene: DynacamScene):
+    """The method of the scene's [run]: method, rtol and absolute tolerances."""
+    return METHODS[scene.method](rtol=scene.rtol, atol=scene.atol, state_atol=scene.state_atol)
+
+
 def prepare(scene: DynacamScene, method=None, progress=None) -> Prepared:
     """The scene's run made ready: ``method`` by default the scene's (DP54 unless it says
     rodas4) at its rtol with no step limit (a step-limited one serves as a reference)."""
@@ -155,7 +160,7 @@ def prepare(scene: DynacamScene, method=None, progress=None) -> Prepared:
     t_m = ch["t_m"]
     t_end = (scene.T_end - scene.T_start) * t_m
     if method is None:
-        method = METHODS[scene.method](rtol=scene.rtol)
+        method = scene_method(scene)
     law = scene.cam_law()
     sim = Simulator(model, t_end, method, law=law, modes=scene.modes, max_steps=2_000_000)
     p = model.parameter_vector(params)
@@ -197,25 +202,6 @@ FIGURES = ("Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_rise", "U0dd", "U0", "speed_
            "motor_speed_variation_max", "Xdd_absmax_return", "U0dd_return", "U0_return")
 """The headline figures of a scene's summary that get an error estimate (the last three only
 with a full turn)."""
-
-
-def errors(scene: DynacamScene, summary: dict) -> dict:
-    """``<figure>_error`` for the headline figures of ``summary`` (and ``jump_T_error``): the
-    scene run again one notch tighter (rtol/10, runtime/core/methods.py)."""
-    method = METHODS[scene.method](rtol=scene.rtol).tighter()
-    tight = None if method is None else run(scene, method=method)[0]
-    out = {}
-    for key in FIGURES:
-        v = summary.get(key)
-        if v is None:
-            continue
-        w = None if tight is None else tight.get(key)
-        out[f"{key}_error"] = None if w is None else abs(v - w)
-    jump = summary["jump"]
-    if jump["occurs"]:
-        T_t = None if tight is None else tight["jump"]["T"]
-        out["jump_T_error"] = None if T_t is None else abs(jump["T"] - T_t)
-    return out
 
 
 def nominal_T(scene: DynacamScene, res) -> np.ndarray:

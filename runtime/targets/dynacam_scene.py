@@ -108,10 +108,15 @@ class DynacamTarget(Target):
                 except CamdynInputError as exc:
                     raise CamdynInputError(f"grid {name}: {exc}") from None
 
-    def with_settings(self, method=None, rtol=None, **rest):
+    def with_settings(self, method=None, rtol=None, atol=None, state_atol=None, **rest):
         if rest:
             raise CamdynInputError(f"{', '.join(rest)} of a scene come from the scene file")
         changes = {}
+        if atol is not None or state_atol:
+            # checked as the scene file's [run] is
+            tol = scene_files.tolerances({k: v for k, v in (("atol", atol), (
+                "state_atol", dict(state_atol or {}))) if v})
+            changes.update(tol)
         if method is not None:
             if not METHODS[method].adaptive:
                 raise CamdynInputError(f"method {method}: a dynacam scene takes an adaptive "
@@ -122,7 +127,7 @@ class DynacamTarget(Target):
         return replace(self, scene=replace(self.scene, **changes)) if changes else self
 
     def method(self):
-        m = METHODS[self.scene.method](rtol=self.scene.rtol)
+        m = dynacam.scene_method(self.scene)
         for _ in range(self.notches):
             m = m.tighter()
         return m

@@ -18,8 +18,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..core.errors import CamdynInputError
-from ..measure.contract import grid_columns
+from ..core.errors import CamdynInputError, SimulationError
+from ..measure.contract import grid_columns, unavailable
 from .base import Batch
 
 
@@ -34,6 +34,36 @@ def default_jobs() -> int:
 def run_chunk(target, names: tuple, points: np.ndarray) -> Batch:
     """One chunk of a grid (a module-level function, so that a Dask worker can call it)."""
     return target.run_points(names, points)
+
+
+@dataclass(frozen=True)
+class Twin:
+    """The tighter twin of a grid's target, as the chunks run it: a point whose run one notch
+    tighter fails (a step budget it exhausts, a step that collapses) keeps its figures and
+    loses only its estimate (NaN), with the warning that says why (runtime/measure/contract.py
+    unavailable), instead of failing the grid."""
+
+    target: object
+
+    def run_points(self, names: tuple, points: np.ndarray) -> Batch:
+        try:
+            return self.target.run_points(names, points)
+        except (SimulationError, CamdynInputError):
+            pass
+        # the chunk stopped at a point that failed: each point alone, so that only those lose
+        parts = []
+        for j in range(len(points)):
+            try:
+                parts.append(self.target.run_points(names, points[j:j + 1]))
+            except (SimulationError, CamdynInputError) as exc:
+                k = len(self.target.figure_names())
+                parts.append(Batch(np.full((1, k), np.nan), np.zeros((1, k)),
+                                   [[unavailable(f"the run one notch tighter failed ({exc})")]],
+                                   np.full(1, np.nan)))
+        return Batch(np.concatenate([b.figures for b in parts]),
+                     np.concatenate([b.sampling for b in parts]),
+                     [w for b in parts for w in b.warnings],
+                     np.concatenate([np.asarray(b.steps, dtype=float) for b in parts]))
 
 
 class _Threads:
@@ -134,7 +164,7 @@ class GridPlan:
         grid's order as soon as they are in (a sweep writes its table so)."""
         rest = self.points[start:]
         pieces = [rest[i:i + self.size] for i in range(0, len(rest), self.size)]
-        twins = [self.target] if self.tight is None else [self.target, self.tight]
+        twins = [self.target] if self.tight is None else [self.target, Twin(self.tight)]
         todo = [(t, p) for p in pieces for t in twins]
         mapper = mapper or _Threads(self.jobs)
         started = time.perf_counter()

@@ -145,6 +145,12 @@ class ModelTarget(Target):
     t_end       the run's end in the model's time; None: DEFAULT_T_END, or longer where a
                 figure's window needs it (``end_given`` says the user chose it)
     law, theta  the cam law of the inputs (a name, a composed full turn, or {family: name})
+    atol, state_atol
+                an adaptive method's absolute tolerances (runtime/core/methods.py DP54):
+                atol in units of each state's tolerance scale, state_atol (name, value) pairs
+                in the state's own units
+    max_steps   the step budget of a run (None: the Simulator's); the run one notch tighter
+                of an error estimate has the same budget
     """
 
     ref: str
@@ -158,6 +164,9 @@ class ModelTarget(Target):
     theta: float | None = None
     initial: tuple = ()
     label: str = ""
+    atol: float | None = None
+    state_atol: tuple = ()
+    max_steps: int | None = None
 
     kind = "model"
     chunk = 32
@@ -166,12 +175,13 @@ class ModelTarget(Target):
     @classmethod
     def of(cls, name: str, params: dict | None = None, *, method: str = "dp54", rtol=None,
            step=None, t_end=None, law="cycloidal", theta=None, initial: dict | None = None,
-           label: str = "", progress=None):
+           label: str = "", progress=None, atol=None, state_atol=None, max_steps=None):
         """The target of a model named on the command line or in code, checked: parameters
-        in range, the method's options, the cam law, the initial values."""
+        in range, the method's options, the cam law, the initial values, the tolerances."""
         t = cls(model_ref(str(name)), (), method, rtol, step,
                 None if t_end is None else float(t_end), t_end is not None,
-                _hashable_law(law), theta, tuple(sorted((initial or {}).items())), label)
+                _hashable_law(law), theta, tuple(sorted((initial or {}).items())), label,
+                atol, tuple(dict(state_atol or {}).items()), max_steps)
         t.load(progress)
         t = t.with_parameters(params or {})
         t.method()
@@ -251,18 +261,25 @@ class ModelTarget(Target):
             changes["method_name"] = changes.pop("method")
         if "law" in changes:
             changes["law"] = _hashable_law(changes["law"])
-        return replace(self, **changes)
+        if "state_atol" in changes:
+            changes["state_atol"] = tuple(dict(changes["state_atol"] or {}).items())
+        out = replace(self, **changes)
+        if changes.get("atol") is not None or changes.get("state_atol"):
+            out.method()                # the tolerances checked now, not at the first run
+        return out
 
     def method(self):
         # an adaptive method without rtol takes methods.DEFAULT_RTOL
-        return _methods.make(self.method_name, rtol=self.rtol, step=self.step)
+        return _methods.make(self.method_name, rtol=self.rtol, step=self.step, atol=self.atol,
+                             state_atol=self.state_atol)
 
     def tighter(self):
         m = self.method().tighter()
         if m is None:
             return None
-        return replace(self, rtol=m.rtol if m.adaptive else None,
-                       step=None if m.adaptive else m.step)
+        if not m.adaptive:
+            return replace(self, rtol=None, step=m.step)
+        return replace(self, rtol=m.rtol, step=None, atol=m.atol, state_atol=m.state_atol)
 
     def default_step(self) -> float:
         """A fixed step of 1/100 of the shortest period of the dwell's modes: the thesis's
@@ -305,8 +322,9 @@ class ModelTarget(Target):
         if not isinstance(self._law, str) and not self.model.manifest.get("cam_instances"):
             # a full turn drives the cam inputs; without one it would be dropped unread
             raise CamdynInputError(f"argument --turn: {self.model.name} has no cam input to drive")
+        budget = {} if self.max_steps is None else {"max_steps": self.max_steps}
         return Simulator(self.model, self.end, self.method(), law=self._law, theta=self.theta,
-                         y0=self._y0)
+                         y0=self._y0, **budget)
 
     def window(self) -> Window | None:
         sim = self.simulator

@@ -22,6 +22,11 @@ Every scene says which study it is with ``kind`` and has the same top-level shap
     the paper's Rayleigh-beam follower: ``[parameters]`` the fields of
     :class:`camdyn.runtime.targets.beam_case.Case`, ``[run]`` revolutions, rtol, formulation.
 
+Every kind's ``[run]`` also takes the absolute tolerances of its adaptive method (one
+reader, :func:`tolerances`): ``atol``, in units of each state's tolerance scale (default 1e-3
+rtol; runtime/core/simulator.py tolerance_scales), and a table ``[run.state_atol]`` of
+``state = absolute tolerance`` in the state's own units.
+
 Everything is checked before anything runs, against the model's manifest where the model
 declares it: an unknown key, a missing parameter, a value of the wrong type or out of the
 declared range is refused with a message that names it.  `camdyn run SCENE` runs any kind,
@@ -43,6 +48,8 @@ _TOP = {"kind", "title", "reference", "note", "law", "theta", "options", "parame
 _TURN = {"upper_dwell", "return", "return_law", "return_theta"}
 # T_end >= 1: a run covers the whole rise, whose largest deceleration every summary reports
 _RUN = {"T_start": (-5.0, 0.0), "T_end": (1.0, 50.0), "rtol": (1e-13, 1e-2), "method": None}
+TOLERANCE_KEYS = ("atol", "state_atol")
+"""The [run] keys every kind of scene takes (:func:`tolerances`)."""
 
 
 @dataclass(frozen=True)
@@ -62,6 +69,8 @@ class DynacamScene:
     rtol: float = DEFAULT_RTOL
     method: str = "dp54"
     turn: dict | None = None
+    atol: float | None = None
+    state_atol: tuple = ()
     """The ``[turn]`` table, checked: upper_dwell, return (deg), return_law, return_theta."""
 
     @property
@@ -158,7 +167,13 @@ def check_study(data: dict, where: str) -> dict:
     from ..core.methods import METHODS
     from ..core.compiled import load
 
-    _check(data, STUDY_SCHEMA, where)
+    run = data.get("run")
+    if isinstance(run, dict):          # the tolerances are read apart, by the one reader
+        tolerances(run, where)
+        _check({**data, "run": {k: v for k, v in run.items() if k not in TOLERANCE_KEYS}},
+               STUDY_SCHEMA, where)
+    else:
+        _check(data, STUDY_SCHEMA, where)
     choose(data["law"])
     if data["run"]["method"] not in METHODS:
         raise CamdynInputError(f"{where}: run.method={data['run']['method']!r}: choose one of "
@@ -216,6 +231,35 @@ def _check(d: dict, schema: dict, where: str, prefix: str = ""):
     extra = sorted(set(d) - set(schema) - set(optional))
     if extra:
         raise CamdynInputError(f"{where}: unknown key {prefix}{extra[0]}")
+
+
+def tolerances(run: dict, where: str = "") -> dict:
+    """``atol`` and ``state_atol`` of a scene's [run] table (any kind), checked: atol > 0 and
+    finite, in units of each state's tolerance scale; [run.state_atol] a table of state name =
+    absolute tolerance > 0 in the state's units, as (name, value) pairs.  The names are checked
+    against the model when its run is made (the error lists its states)."""
+    at = f"{where}: " if where else ""
+    out = {}
+    if "atol" in run:
+        v = _number(f"{at}run.atol", run["atol"])
+        if not v > 0:
+            raise CamdynInputError(f"{at}run.atol={v:g} is out of range: atol > 0 (in units of "
+                                   "each state's tolerance scale)")
+        out["atol"] = v
+    if "state_atol" in run:
+        table = run["state_atol"]
+        if not isinstance(table, dict) or not table:
+            raise CamdynInputError(f"{at}[run.state_atol] must be a table of state = absolute "
+                                   f"tolerance, got {table!r}")
+        pairs = []
+        for name, value in table.items():
+            v = _number(f"{at}run.state_atol.{name}", value)
+            if not v > 0:
+                raise CamdynInputError(f"{at}run.state_atol.{name}={v:g} is out of range: > 0 "
+                                       "(an absolute tolerance in the state's units)")
+            pairs.append((name, v))
+        out["state_atol"] = tuple(pairs)
+    return out
 
 
 # -- DYNACAM (kind dynacam) -----------------------------------------------------------------
@@ -401,7 +445,7 @@ class BeamScene:
     case: object    # beam_case.Case
 
 
-_BEAM_RUN = ("revolutions", "rtol", "formulation", "method")
+_BEAM_RUN = ("revolutions", "rtol", "formulation", "method", "mode_atol") + TOLERANCE_KEYS
 
 
 def beam_from_dict(data: dict, path: str = "<scene>") -> BeamScene:
@@ -429,7 +473,11 @@ def beam_from_dict(data: dict, path: str = "<scene>") -> BeamScene:
             values[key] = value
     if "law" in data:
         values["law"] = data["law"]
+    if isinstance(data.get("run"), dict):
+        values.update(tolerances(data["run"]))
     for key, value in values.items():
+        if key in TOLERANCE_KEYS:
+            continue
         if key in ("rayleigh",):
             if not isinstance(value, bool):
                 raise CamdynInputError(f"{key} must be true or false, got {value!r}")
@@ -467,10 +515,13 @@ def from_dict(data: dict, path: str = "<scene>") -> DynacamScene:
     run = data.get("run", {})
     if not isinstance(run, dict):
         raise CamdynInputError("[run] must be a table")
-    settings = {}
+    settings = tolerances(run)
     for key, value in run.items():
+        if key in TOLERANCE_KEYS:
+            continue
         if key not in _RUN:
-            raise CamdynInputError(f"run.{key} is not a run setting; settings are {', '.join(_RUN)}")
+            raise CamdynInputError(f"run.{key} is not a run setting; settings are "
+                                   f"{', '.join((*_RUN, *TOLERANCE_KEYS))}")
         if key == "method":
             from ..core.methods import ADAPTIVE
 
@@ -503,6 +554,10 @@ def replace(sc: DynacamScene, options: dict | None = None, parameters: dict | No
     data = {"title": sc.title, "reference": sc.reference, "law": sc.law, "options": opts,
             "parameters": params, "modes": dict(sc.modes),
             "run": {"T_start": sc.T_start, "T_end": sc.T_end, "rtol": sc.rtol, "method": sc.method}}
+    if sc.atol is not None:
+        data["run"]["atol"] = sc.atol
+    if sc.state_atol:
+        data["run"]["state_atol"] = dict(sc.state_atol)
     if sc.theta is not None:
         data["theta"] = sc.theta
     if sc.turn is not None:
