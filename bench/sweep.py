@@ -26,9 +26,9 @@ taken in turn in every repeat; the tables must be equal to the last bit):
   DYNACAM scene       spring_loaded (fig. 7.2) over its follower stiffness c_x: each point's
                       consistent initial state in Python, the runs and figures of a chunk in
                       one nogil call, against DynacamTarget.run per point
-  model file          README's oscillator.py (built on first use into camdyn's cache), its
-                      states at t = 3 s over its spring c, against Simulator.run per point
-                      (one Simulator for all)
+  model file          bench/models/oscillator.py, README's model file (built on first use
+                      into camdyn's cache), its states at t = 3 s over its spring c, against
+                      Simulator.run per point (one Simulator for all)
 
     python bench/sweep.py            writes bench/results/BENCHMARKS-sweep.md
     python bench/sweep.py --quick    the same in miniature (2 Fa x 20 tau, one repeat, Dask
@@ -285,22 +285,16 @@ def markdown(med, times, old, dask_start, cores, same, repeat, wall, fa=FA, n_ta
 
 def other_targets(sizes: dict, repeat: int) -> dict:
     """{kind: (points, per-point times, compiled times, tables equal)} (module doc)."""
-    import re
-    import tempfile
-
     from camdyn.runtime.targets.base import Target
     from camdyn.runtime.targets.model_target import StateTarget
     from camdyn.runtime.targets.resolve import resolve
 
-    readme = (HERE.parent / "README.md").read_text()
-    source = re.search(r"user-model: oscillator.py -->\s*```python\n(.*?)```", readme, re.S)
-    folder = Path(tempfile.mkdtemp(prefix="camdyn-bench-"))
-    (folder / "oscillator.py").write_text(source.group(1))
     dyn = resolve("spring_loaded")
     c_x = dyn.scene.parameters["c_x"]
+    model_file = str(HERE / "models" / "oscillator.py")      # built on demand, then cached
     cases = {"dynacam": (dyn, "c_x", np.linspace(0.8 * c_x, 1.2 * c_x, sizes["dynacam"])),
-             "model file": (resolve(str(folder / "oscillator.py"), model_class=StateTarget,
-                                    t_end=3.0, rtol=1e-9, progress=_say),
+             "model file": (resolve(model_file, model_class=StateTarget, t_end=3.0, rtol=1e-9,
+                                    progress=_say),
                             "c", np.linspace(300.0, 900.0, sizes["model file"]))}
     out = {}
     for kind, (target, name, values) in cases.items():
