@@ -21,6 +21,15 @@ sweep with it takes the time of this one at rtol 1e-9 plus this one at 1e-10:
 Accuracy: the sweep's figures against the old path's, the largest difference per figure over
 the grid relative to the figure's largest value.
 
+Other targets, compiled chunks against runs one at a time (one core each, the same points,
+taken in turn in every repeat; the tables must be equal to the last bit):
+  DYNACAM scene       spring_loaded (fig. 7.2) over its follower stiffness c_x: each point's
+                      consistent initial state in Python, the runs and figures of a chunk in
+                      one nogil call, against DynacamTarget.run per point
+  model file          bench/models/oscillator.py, README's model file (built on first use
+                      into camdyn's cache), its states at t = 3 s over its spring c, against
+                      Simulator.run per point (one Simulator for all)
+
     python bench/sweep.py            writes bench/results/BENCHMARKS-sweep.md
     python bench/sweep.py --quick    the same in miniature (2 Fa x 20 tau, one repeat, Dask
                                      included), into a temporary folder
@@ -44,6 +53,9 @@ sys.path.insert(0, str(HERE))
 
 from report import machine_info  # noqa: E402
 
+OTHERS = {"dynacam": 64, "model file": 400}
+QUICK_OTHERS = {"dynacam": 4, "model file": 40}
+"""Grid points of the other targets' sweeps."""
 FA = (0.0, 0.1, 0.3, 1.0, 3.0, 10.0)
 N_TAU = 400
 QUICK_FA, QUICK_N_TAU = (0.0, 1.0), 20
@@ -157,6 +169,8 @@ def main(argv=None) -> int:
                        and np.array_equal(res_dask[name], result_one[name]))
             for name in FIGURES}
 
+    _say("other targets: compiled chunks against runs one at a time")
+    others = other_targets(QUICK_OTHERS if args.quick else OTHERS, repeat)
     med = {k: statistics.median(v) for k, v in times.items()}
     old = {}
     _say("the Python paths, once each (about 20 s on the full grid)")
@@ -176,7 +190,8 @@ def main(argv=None) -> int:
     old["deviation"] = dev
 
     wall = time.perf_counter() - t_bench
-    text = markdown(med, times, old, dask_start, cores, same, repeat, wall, fa, n_tau)
+    text = markdown(med, times, old, dask_start, cores, same, repeat, wall, fa, n_tau) + \
+        others_markdown(others, repeat)
     if args.quick:
         print(text)
     from where import report_folder, write_report
@@ -266,6 +281,55 @@ def markdown(med, times, old, dask_start, cores, same, repeat, wall, fa=FA, n_ta
               "above is the measured alternative.  On a machine whose cores are busy with other",
               "work the all-cores figure gains less than the core count.", ""]
     return "\n".join(lines)
+
+
+def other_targets(sizes: dict, repeat: int) -> dict:
+    """{kind: (points, per-point times, compiled times, tables equal)} (module doc)."""
+    from camdyn.runtime.targets.base import Target
+    from camdyn.runtime.targets.model_target import StateTarget
+    from camdyn.runtime.targets.resolve import resolve
+
+    dyn = resolve("spring_loaded")
+    c_x = dyn.scene.parameters["c_x"]
+    model_file = str(HERE / "models" / "oscillator.py")      # built on demand, then cached
+    cases = {"dynacam": (dyn, "c_x", np.linspace(0.8 * c_x, 1.2 * c_x, sizes["dynacam"])),
+             "model file": (resolve(model_file, model_class=StateTarget, t_end=3.0, rtol=1e-9,
+                                    progress=_say),
+                            "c", np.linspace(300.0, 900.0, sizes["model file"]))}
+    out = {}
+    for kind, (target, name, values) in cases.items():
+        pts = values[:, None]
+        target = target.fit_points((name,), pts)
+        slow, fast, same = [], [], True
+        figs = target.figure_names()
+
+        def one_at_a_time():
+            if kind == "dynacam":        # a scene's run per point: its own Simulator
+                return Target.run_points(target, (name,), pts).figures
+            # a model's runs share one Simulator, as `camdyn sweep` ran them point by point
+            return np.array([[target.read(target.simulator.run({name: float(v)})).figures[f]
+                              for f in figs] for v in values])
+        for _ in range(repeat):
+            w, _, a = _timed(one_at_a_time)
+            slow.append(w)
+            w, _, b = _timed(lambda: target.run_points((name,), pts))
+            fast.append(w)
+            same &= bool(np.array_equal(a, b.figures, equal_nan=True))
+        out[kind] = (len(pts), slow, fast, same)
+    return out
+
+
+def others_markdown(others: dict, repeat: int) -> str:
+    lines = ["", "## Other targets: compiled chunks against runs one at a time", "",
+             "One core each, the same points (bench/sweep.py's docstring says what is run); "
+             f"median of {repeat}.", "",
+             "| target | points | one at a time | compiled chunk | ratio | tables equal to the "
+             "last bit |", "|:---|---:|---:|---:|---:|:---|"]
+    for kind, (n, slow, fast, same) in others.items():
+        a, b = statistics.median(slow), statistics.median(fast)
+        lines.append(f"| {kind} | {n} | {a:.3f} s | {b:.3f} s | **{a / b:.2f}** | "
+                     f"{'yes' if same else 'NO'} |")
+    return "\n".join(lines + [""])
 
 
 if __name__ == "__main__":

@@ -280,6 +280,16 @@ class Simulator:
                            modes0=np.array(self.modes0, dtype=np.intc),
                            max_events=self.max_events)
 
+    def start(self, p: np.ndarray, y0=None) -> tuple[np.ndarray, str | None]:
+        """(the state a run with parameters p starts from, the note that the constraints
+        moved it or None): ``y0``, else the initial values given, else the model's own for p,
+        for a constrained model projected onto its constraints (see ``consistent``)."""
+        if y0 is None:
+            y0 = self._y_init if self._y0_given else self.model.initial_state(p)
+        if self._project:
+            return self._consistent(p, y0)
+        return y0, None
+
     def stops(self, p: np.ndarray) -> np.ndarray:
         """Stop times for parameters p (cached: they depend on p only through the cam inputs)."""
         return self.stops_and_capacity(p)[0]
@@ -314,10 +324,9 @@ class Simulator:
         p = m.parameter_vector(params)
         hit = self._stops.get(p.tobytes())
         stops, cap = self._new_stops(p) if hit is None else hit
-        y0 = None if self._y0_given else m.initial_state(p)
-        note = None
-        if self._project:
-            y0, note = self._consistent(p, self._y_init if y0 is None else y0)
+        y0 = note = None
+        if self._project or not self._y0_given:
+            y0, note = self.start(p)
         out = self.integrator.run(p, stops, cap or self._cap, y0)
         if out.status != 0:
             self._failed(p, out)

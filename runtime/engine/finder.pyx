@@ -824,6 +824,158 @@ def dwell_figures(object capsule, double[::1] p, int[::1] law, double[::1] law_p
 
 # -- a chunk of a sweep -----------------------------------------------------------------------
 
+cdef struct Chunk:
+    # what every run of a chunk shares, and the buffers they reuse one after the other
+    ModelC* m
+    Ctx ctx
+    Run run
+    int method
+    const int* law
+    const double* law_par
+    double t0
+    double h
+    double rtol
+    const double* atol
+    long max_steps
+    long max_events
+    const int* modes0
+    bint exact
+    int width
+    Py_ssize_t cap
+    double* rows
+    int* rmode
+    double* scratch    # the state, the model's constants and cache, a state and the outputs
+    int* mode
+
+
+cdef int _chunk_open(Chunk* c, ModelC* m, int method, const int* law, const double* law_par,
+                     double t0, double h, double rtol, const double* atol, long max_steps,
+                     const int* modes0, long max_events, bint exact, Py_ssize_t cap) noexcept:
+    """The buffers of a chunk's runs (0), or -1 when memory is short (all freed)."""
+    cdef int ns = m.n_states, nm = m.n_modes
+    c.m = m
+    c.method = method
+    c.law = law
+    c.law_par = law_par
+    c.t0 = t0
+    c.h = h
+    c.rtol = rtol
+    c.atol = atol
+    c.max_steps = max_steps
+    c.max_events = max_events
+    c.modes0 = modes0
+    c.exact = exact
+    c.width = 1 + (2 + extra_terms(method)) * ns
+    c.cap = cap if cap >= 64 else 64
+    c.rows = <double*> malloc(c.cap * c.width * sizeof(double))
+    c.rmode = <int*> malloc(c.cap * (nm if nm > 0 else 1) * sizeof(int))
+    c.scratch = <double*> malloc((2 * ns + m.n_const + m.n_cache + m.n_outputs + 1) * sizeof(double))
+    c.mode = <int*> malloc((nm + 1) * sizeof(int))
+    if c.rows == NULL or c.rmode == NULL or c.scratch == NULL or c.mode == NULL:
+        _chunk_close(c)
+        return -1
+    return 0
+
+
+cdef void _chunk_close(Chunk* c) noexcept nogil:
+    free(c.rows)
+    free(c.rmode)
+    free(c.scratch)
+    free(c.mode)
+    c.rows = NULL
+    c.rmode = NULL
+    c.scratch = NULL
+    c.mode = NULL
+
+
+cdef int _chunk_run(Chunk* c, const double* p, const double* y0, const double* stops,
+                    int n_stops, double h_max) noexcept nogil:
+    """One run of the chunk from y0 with parameters p to the last of its stops, recorded in the
+    chunk's buffer (grown as needed and kept for the next run); its status."""
+    cdef ModelC* m = c.m
+    cdef int ns = m.n_states, nm = m.n_modes, ncam = m.n_instances, j, status
+    memcpy(c.scratch, y0, ns * sizeof(double))
+    for j in range(nm - ncam):
+        c.mode[ncam + j] = c.modes0[j]
+    c.ctx.p = p
+    c.ctx.k = c.scratch + ns
+    c.ctx.cache = c.scratch + ns + m.n_const
+    c.ctx.law = c.law
+    c.ctx.law_par = c.law_par
+    c.ctx.mode = c.mode
+    c.ctx.variant = 0
+    c.run.ctx = &c.ctx
+    c.run.rec.n = 0
+    c.run.rec.cap = c.cap
+    c.run.rec.width = c.width
+    c.run.rec.n_extra = extra_terms(c.method)
+    c.run.rec.owned = True       # ours (malloc): the loops may grow and free it
+    c.run.rec.rows = c.rows
+    c.run.rec.mode = c.rmode
+    c.run.method = c.method
+    c.run.stops = stops
+    c.run.n_stops = n_stops
+    c.run.t0 = c.t0
+    c.run.y = c.scratch
+    c.run.h = c.h
+    c.run.h_max = h_max
+    c.run.rtol = c.rtol
+    c.run.atol = c.atol
+    c.run.max_steps = c.max_steps
+    c.run.max_events = c.max_events
+    c.run.n_events = 0
+    c.run.n_steps = 0
+    c.run.n_rejected = 0
+    c.run.n_rhs = 0
+    c.run.t_fail = c.t0
+    c.run.err_old = 1e-4
+    c.run.t_stiff = NAN
+    c.run.stab_mode = 0      # adaptive methods only (checked by the callers)
+    c.run.stab_bound = NULL
+    c.run.n_stab_bound = 0
+    c.run.stab_work = NULL
+    c.run.stab_ratio = -1.0
+    c.run.n_checks = 0
+    c.run.exact = c.exact
+    status = m.run(&c.run)
+    # keep the (possibly grown) buffers for the next run
+    c.rows = c.run.rec.rows
+    c.rmode = c.run.rec.mode
+    c.cap = c.run.rec.cap
+    return status
+
+
+cdef void _chunk_record(Chunk* c, Rec* rec) noexcept nogil:
+    """A view of the last run's record, to find its figures on."""
+    cdef ModelC* m = c.m
+    cdef int ns = m.n_states
+    rec.m = m
+    rec.ctx = &c.ctx
+    rec.rows = c.rows
+    rec.modes = c.rmode
+    rec.n = c.run.rec.n
+    rec.ns = ns
+    rec.nm = m.n_modes
+    rec.width = c.width
+    rec.nx = extra_terms(c.method)
+    rec.y = c.scratch + ns + m.n_const + m.n_cache
+    rec.out = rec.y + ns
+
+
+cdef ModelC* _chunk_model(object capsule, int method, const double[:, ::1] P,
+                          const double[:, ::1] Y0, const double[::1] atol,
+                          const int[::1] modes0) except NULL:
+    """The model of a chunk's runs, the arrays' widths checked against it."""
+    cdef ModelC* m = _model(capsule)
+    if P.shape[1] != m.n_params or Y0.shape[1] != m.n_states or atol.shape[0] != m.n_states:
+        raise ValueError("parameter, state or tolerance arrays of the wrong width")
+    if modes0.shape[0] != m.n_modes - m.n_instances:
+        raise ValueError("one initial mode per force element expected")
+    if not adaptive_method(method):
+        raise ValueError("the compiled sweep takes the adaptive methods (dp54, dop853, rodas4)")
+    return m
+
+
 def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par,
                    const double[:, ::1] P, const double[:, ::1] Y0, const double[:, ::1] stops,
                    const int[::1] n_stops, double t0, double h, double h_max, double rtol,
@@ -845,114 +997,42 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
 
     A run that fails leaves its status (runtime/driver.STATUS_TEXT) and NaN figures; a run
     whose span does not cover the rise and part of the dwell after it, status -1."""
-    cdef ModelC* m = _model(capsule)
-    cdef int ns = m.n_states, nm = m.n_modes, ncam = m.n_instances, width, j, status, ok
-    cdef Py_ssize_t g
-    if P.shape[1] != m.n_params or Y0.shape[1] != ns or atol.shape[0] != ns:
-        raise ValueError("parameter, state or tolerance arrays of the wrong width")
+    cdef ModelC* m = _chunk_model(capsule, method, P, Y0, atol, modes0)
     if figures.shape[1] != len(FIGURE_COLUMNS):
         raise ValueError(f"figures must have {len(FIGURE_COLUMNS)} columns (FIGURE_COLUMNS)")
-    if modes0.shape[0] != nm - ncam:
-        raise ValueError("one initial mode per force element expected")
-    if not adaptive_method(method):
-        raise ValueError("the compiled sweep takes the adaptive methods (dp54, dop853, rodas4)")
     if per_step < 1 or not (0 < n_cand <= MAX_CAND) or stride < 1:
         raise ValueError(f"per_step >= 1, stride >= 1 and 1 <= n_cand <= {MAX_CAND}")
     if per_step > 1:
         stride = 1
-    width = 1 + (2 + extra_terms(method)) * ns
-    if cap < 64:
-        cap = 64
-    cdef double* rows = <double*> malloc(cap * width * sizeof(double))
-    cdef int* rmode = <int*> malloc(cap * (nm if nm > 0 else 1) * sizeof(int))
-    cdef double* scratch = <double*> malloc((2 * ns + m.n_const + m.n_cache + m.n_outputs + 1) * sizeof(double))
-    cdef int* mode = <int*> malloc((nm + 1) * sizeof(int))
-    if rows == NULL or rmode == NULL or scratch == NULL or mode == NULL:
-        free(rows)
-        free(rmode)
-        free(scratch)
-        free(mode)
+    cdef Chunk c
+    if _chunk_open(&c, m, method, &law[0], &law_par[0], t0, h, rtol, &atol[0], max_steps,
+                   &modes0[0] if modes0.shape[0] else NULL, max_events, exact, cap) != 0:
         raise MemoryError()
-    cdef Ctx ctx
-    cdef Run run
     cdef Rec rec
     cdef double* cache = NULL     # error, then acceleration, at every recorded point
     cdef Py_ssize_t ccap = 0
     cdef double* samples = NULL   # the dwell's scan: times, error, acceleration (scap each)
     cdef Py_ssize_t scap = 0, n_samp
     cdef bint closed
+    cdef Py_ssize_t g
+    cdef int j, status, ok, width = c.width
     cdef double t1, t_end, v, at, samp
+    cdef double* rows
     cdef timespec c0, c1
     with nogil:
         for g in range(start, stop):
             clock_gettime(CLOCK_MONOTONIC, &c0)
-            memcpy(scratch, &Y0[g, 0], ns * sizeof(double))
-            for j in range(nm - ncam):
-                mode[ncam + j] = modes0[j]
-            ctx.p = &P[g, 0]
-            ctx.k = scratch + ns
-            ctx.cache = scratch + ns + m.n_const
-            ctx.law = &law[0]
-            ctx.law_par = &law_par[0]
-            ctx.mode = mode
-            ctx.variant = 0
-            run.ctx = &ctx
-            run.rec.n = 0
-            run.rec.cap = cap
-            run.rec.width = width
-            run.rec.n_extra = extra_terms(method)
-            run.rec.owned = True       # ours (malloc): the loops may grow and free it
-            run.rec.rows = rows
-            run.rec.mode = rmode
-            run.method = method
-            run.stops = &stops[g, 0]
-            run.n_stops = n_stops[g]
-            run.t0 = t0
-            run.y = scratch
-            run.h = h
-            run.h_max = h_max
-            run.rtol = rtol
-            run.atol = &atol[0]
-            run.max_steps = max_steps
-            run.max_events = max_events
-            run.n_events = 0
-            run.n_steps = 0
-            run.n_rejected = 0
-            run.n_rhs = 0
-            run.t_fail = t0
-            run.err_old = 1e-4
-            run.t_stiff = NAN
-            run.stab_mode = 0      # adaptive methods only (checked above)
-            run.stab_bound = NULL
-            run.n_stab_bound = 0
-            run.stab_work = NULL
-            run.stab_ratio = -1.0
-            run.n_checks = 0
-            run.exact = exact
-            status = m.run(&run)
-            # keep the (possibly grown) buffers for the next run
-            rows = run.rec.rows
-            rmode = run.rec.mode
-            cap = run.rec.cap
+            status = _chunk_run(&c, &P[g, 0], &Y0[g, 0], &stops[g, 0], n_stops[g], h_max)
             stats[g, 0] = status
-            stats[g, 1] = run.n_steps
-            stats[g, 2] = run.n_rejected
-            stats[g, 3] = run.n_rhs
-            stats[g, 4] = run.rec.n
+            stats[g, 1] = c.run.n_steps
+            stats[g, 2] = c.run.n_rejected
+            stats[g, 3] = c.run.n_rhs
+            stats[g, 4] = c.run.rec.n
             for j in range(8):
                 figures[g, j] = NAN
-            if status == STATUS_OK and run.rec.n > 0 and figures_too:
-                rec.m = m
-                rec.ctx = &ctx
-                rec.rows = rows
-                rec.modes = rmode
-                rec.n = run.rec.n
-                rec.ns = ns
-                rec.nm = nm
-                rec.width = width
-                rec.nx = extra_terms(method)
-                rec.y = scratch + ns + m.n_const + m.n_cache
-                rec.out = rec.y + ns
+            if status == STATUS_OK and c.run.rec.n > 0 and figures_too:
+                _chunk_record(&c, &rec)
+                rows = c.rows
                 t_end = rows[(rec.n - 1) * width]
                 t1 = rise_end
                 ok = 1
@@ -1012,10 +1092,104 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
                     figures[g, 7] = samp
             clock_gettime(CLOCK_MONOTONIC, &c1)
             seconds[g] = (c1.tv_sec - c0.tv_sec) + 1e-9 * (c1.tv_nsec - c0.tv_nsec)
-    free(rows)
-    free(rmode)
-    free(scratch)
-    free(mode)
+    cap = c.cap
+    _chunk_close(&c)
     free(cache)
     free(samples)
+    return cap
+
+
+# the statistics sweep_extremes writes of every run
+RUN_STATS = ("status", "n_steps", "n_rejected", "n_rhs", "n_points", "n_events")
+
+
+def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par,
+                   const double[:, ::1] P, const double[:, ::1] Y0, const double[:, ::1] stops,
+                   const int[::1] n_stops, double t0, double h, const double[::1] h_max,
+                   double rtol, const double[::1] atol, long max_steps, const int[::1] modes0,
+                   long max_events, const int[::1] which, const int[::1] kind,
+                   const int[::1] per_step, const int[::1] n_cand, const double[:, ::1] A,
+                   const double[:, ::1] B, double[:, ::1] value, double[:, ::1] at,
+                   double[:, ::1] sampling, long[:, ::1] stats, double[::1] t_stiff,
+                   int mode_col=-1, int mode_value=0, double[::1] first_in_mode=None,
+                   Py_ssize_t cap=4096, bint exact=False):
+    """Run every parameter set (rows of P, initial states Y0, stop tables, h_max per run) and
+    find extreme k of each run as :func:`extreme` finds it on a recorded run (the same scan,
+    refinement and sampling check, so the same bits): state or output ``which[k]`` on
+    [A[g, k], B[g, k]] (-inf: the run's start; +inf: its end; NaN in A: not wanted, NaN
+    out), score ``kind[k]`` (0 |v|, 1 v, 2 -v, 3 -|v|), ``per_step[k]`` samples a recorded step,
+    ``n_cand[k]`` peaks refined.  value, at, sampling: (n, n_figures); stats: the RUN_STATS;
+    t_stiff: where Hairer's stiffness test first fired (NaN: never).  With ``mode_col`` >= 0,
+    first_in_mode[g] is the first recorded time whose mode ``mode_col`` (among all modes, the
+    cam segments first) is ``mode_value`` (NaN: none).  No GIL is held while it runs.
+
+    A run that fails leaves its status (runtime/driver.STATUS_TEXT) and NaN figures."""
+    cdef ModelC* m = _chunk_model(capsule, method, P, Y0, atol, modes0)
+    cdef Py_ssize_t n = P.shape[0], nf = which.shape[0], g
+    cdef int k, status, nm = m.n_modes, ns = m.n_states
+    if not (Y0.shape[0] == stops.shape[0] == n_stops.shape[0] == h_max.shape[0] == A.shape[0]
+            == B.shape[0] == value.shape[0] == at.shape[0] == sampling.shape[0] == stats.shape[0]
+            == t_stiff.shape[0] == n):
+        raise ValueError("one row per run expected in every per-run array")
+    if not (kind.shape[0] == per_step.shape[0] == n_cand.shape[0] == A.shape[1] == B.shape[1]
+            == value.shape[1] == at.shape[1] == sampling.shape[1] == nf):
+        raise ValueError("one column per figure expected in every per-figure array")
+    if stats.shape[1] != len(RUN_STATS):
+        raise ValueError(f"stats must have {len(RUN_STATS)} columns (RUN_STATS)")
+    for k in range(nf):
+        if not (0 <= which[k] < ns + m.n_outputs and 0 <= kind[k] <= 3 and per_step[k] >= 1
+                and 0 < n_cand[k] <= MAX_CAND):
+            raise ValueError(f"figure {k}: a state or output, kind 0-3, per_step >= 1 and "
+                             f"1 <= n_cand <= {MAX_CAND}")
+    if mode_col >= nm or (mode_col >= 0 and (first_in_mode is None or first_in_mode.shape[0] != n)):
+        raise ValueError("mode_col must name a mode, with first_in_mode one value per run")
+    cdef Chunk c
+    if _chunk_open(&c, m, method, &law[0], &law_par[0], t0, h, rtol, &atol[0], max_steps,
+                   &modes0[0] if modes0.shape[0] else NULL, max_events, exact, cap) != 0:
+        raise MemoryError()
+    cdef Rec rec
+    cdef Py_ssize_t i
+    cdef double a, b, v, t, samp
+    with nogil:
+        for g in range(n):
+            status = _chunk_run(&c, &P[g, 0], &Y0[g, 0], &stops[g, 0], n_stops[g], h_max[g])
+            stats[g, 0] = status
+            stats[g, 1] = c.run.n_steps
+            stats[g, 2] = c.run.n_rejected
+            stats[g, 3] = c.run.n_rhs
+            stats[g, 4] = c.run.rec.n
+            stats[g, 5] = c.run.n_events
+            t_stiff[g] = c.run.t_stiff
+            if mode_col >= 0:
+                first_in_mode[g] = NAN
+            for k in range(nf):
+                value[g, k] = NAN
+                at[g, k] = NAN
+                sampling[g, k] = NAN
+            if status != STATUS_OK or c.run.rec.n == 0:
+                continue
+            _chunk_record(&c, &rec)
+            if mode_col >= 0:
+                for i in range(rec.n):
+                    if c.rmode[i * nm + mode_col] == mode_value:
+                        first_in_mode[g] = _t(&rec, i)
+                        break
+            for k in range(nf):
+                a = A[g, k]
+                b = B[g, k]
+                if a != a:
+                    continue
+                if a == -INFINITY:
+                    a = _t(&rec, 0)
+                if b == INFINITY:
+                    b = _t(&rec, rec.n - 1)
+                if not (_t(&rec, 0) <= a <= b <= _t(&rec, rec.n - 1)):
+                    continue
+                _extreme(&rec, which[k], a, b, kind[k], per_step[k], n_cand[k], NULL, 1, &v, &t,
+                         &samp)
+                value[g, k] = v
+                at[g, k] = t
+                sampling[g, k] = samp
+    cap = c.cap
+    _chunk_close(&c)
     return cap

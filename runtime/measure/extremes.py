@@ -45,14 +45,16 @@ def scan_grid(t_rec: np.ndarray, a: float, b: float, per_step: int) -> np.ndarra
     return np.append(grid, b)
 
 
-def column(result: Result, name: str) -> int:
-    """Index of a state, or of an output after the states, as the compiled finder takes it."""
+def column(result, name: str) -> int:
+    """Index of a state, or of an output after the states, as the compiled finder takes it
+    (of a Result's model, or of a model)."""
     if name in result.state_names:
         return result.state_names.index(name)
     if name in result.output_names:
         return len(result.state_names) + result.output_names.index(name)
-    raise KeyError(f"{name!r} is neither a state nor an output of {result.model.name}; "
-                   f"known: {', '.join(result.names)}")
+    model = getattr(result, "model", result)       # a Result, or the model itself
+    raise KeyError(f"{name!r} is neither a state nor an output of {model.name}; known: "
+                   f"{', '.join([*result.state_names, *result.output_names])}")
 
 
 def record(result: Result) -> tuple:

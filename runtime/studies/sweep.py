@@ -341,8 +341,9 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
     if isinstance(target, str):
         if rtol is None and (method or "dp54") in ADAPTIVE and is_model(target):
             rtol = MODEL_RTOL
-        tgt = resolve(target, t_end=t_end, method=method, rtol=rtol, law=law, step=step,
-                      atol=atol, state_atol=state_atol or None)
+        # a model that declares no rise: its states at t_end (runtime/targets/resolve.py)
+        tgt = resolve(target, model_class=None, t_end=t_end, method=method, rtol=rtol, law=law,
+                      step=step, atol=atol, state_atol=state_atol or None)
     else:
         tgt = target
     axes = _axes(grid)

@@ -19,6 +19,7 @@ from ..core.errors import CamdynInputError
 from ..core.laws import choose
 from ..core.compiled import load
 from .beam_case import FORMULATIONS, N_MAX, Case, check  # noqa: F401  (the case, re-exported)
+from ..measure.batch import Wanted
 from ..measure.extremes import extreme
 from ..core.simulator import Simulator
 
@@ -142,25 +143,38 @@ def tip_max(res) -> float:
 def tip_extreme(res):
     """The largest |v_E| over the run with the sampling error of the scan that found it
     (4 samples a recorded step, the peaks checked; runtime/measure/extremes.py)."""
-    return extreme(res, "vE", float(res.t[0]), float(res.t[-1]), absolute=True, minimum=False,
-                   per_step=4, candidates=4)
+    return extreme(res, TIP.name, float(res.t[0]), float(res.t[-1]), absolute=TIP.absolute,
+                   minimum=TIP.minimum, per_step=TIP.per_step, candidates=TIP.candidates)
+
+
+TIP = Wanted("vE", absolute=True, minimum=False, per_step=4, candidates=4)
+"""How the largest tip deflection is found: 4 samples a recorded step, the peaks checked."""
+RESIDUALS = tuple(Wanted(k, absolute=True, minimum=False, per_step=4) for k in ("Phi1", "Phi2"))
+"""How the largest constraint residuals |Phi1|, |Phi2| are found."""
 
 
 def summarize(case: Case, res, cpu: float) -> dict:
     """The run's summary; ``sampling`` in it: the sampling error of each largest value."""
+    t0, t1 = float(res.t[0]), float(res.t[-1])
     tip = tip_extreme(res)
-    phi = [extreme(res, k, float(res.t[0]), float(res.t[-1]), absolute=True, minimum=False,
-                   per_step=4) for k in ("Phi1", "Phi2")]
-    worst = max(phi, key=lambda e: e.value)
+    phi = [extreme(res, w.name, t0, t1, absolute=w.absolute, minimum=w.minimum,
+                   per_step=w.per_step, candidates=w.candidates) for w in RESIDUALS]
+    worst, sampling = largest(tip, phi)
     return {"model": case.model, "formulation": case.formulation, "omega": case.omega,
             "modes": case.modes, "revolutions": case.revolutions,
-            "max_abs_tip_deflection": tip.value, "max_constraint_residual": worst.value,
+            "max_abs_tip_deflection": tip.value, "max_constraint_residual": worst,
             "dwell_frequency_hz": dwell_frequency(case), "n_steps": int(res.stats["n_steps"]),
             # DP54's stiffness test (Hairer): where it fired, in the model's time t (s)
             "stiff_from_T": res.stiff_from_T, "warnings": list(res.warnings),
-            "cpu_seconds": cpu, "case": asdict(case),
-            "sampling": {"max_abs_tip_deflection": tip.sampling_error,
-                         "max_constraint_residual": max(e.sampling_error for e in phi)}}
+            "cpu_seconds": cpu, "case": asdict(case), "sampling": sampling}
+
+
+def largest(tip, phi) -> tuple[float, dict]:
+    """(the largest constraint residual, the sampling errors of the summary's figures) from
+    the extremes of |v_E| and of every |Phi| (runtime/measure/extremes.py)."""
+    return max(phi, key=lambda e: e.value).value, {
+        "max_abs_tip_deflection": tip.sampling_error,
+        "max_constraint_residual": max(e.sampling_error for e in phi)}
 
 
 def linearized(case: Case) -> np.ndarray:

@@ -12,10 +12,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, fields, replace
 
-from ..core.errors import CamdynInputError
+import numpy as np
+
+from ..core.errors import CamdynInputError, SimulationError
+from ..core.methods import METHODS
 from ..core.compiled import load
+from ..engine import driver
+from ..measure import batch
 from . import beam, scene_files
-from .base import Figure, Outcome, Parameter, Target
+from .base import Batch, Figure, Outcome, Parameter, Target
 from .beam_case import N_MAX, Case, check
 from .problem import Problem
 
@@ -133,10 +138,58 @@ class BeamTarget(Target):
         record["cpu_seconds"] = summary["cpu_seconds"]
         warnings = list(summary["warnings"])
         if cut:
-            warnings.append(f"{cut.message} The run follows the pitch curve all the same.")
+            warnings.append(_undercut_warning(cut))
         stats = {k: summary[k] for k in ("n_steps", "cpu_seconds", "stiff_from_T")}
         return Outcome({f.name: summary[f.name] for f in FIGURES}, dict(summary["sampling"]), {},
                        warnings, record, stats, res)
+
+    chunk = 8
+    """Grid points per chunk: each point's consistent initial state is solved in Python before
+    the chunk's runs go to compiled code together (:meth:`run_points`)."""
+
+    def run_points(self, names: tuple, points: np.ndarray) -> Batch:
+        """The points' runs in compiled calls holding no GIL (runtime/measure/batch.py), one
+        for each beam<N> model the points use, every run from its consistent initial state
+        solved beforehand, the figures found on each record as a single run finds them (the
+        same numbers, bit for bit)."""
+        from ..cam.motion import RDFD
+
+        cases = [self.with_parameters(dict(zip(names, map(float, pt)))).case for pt in points]
+        figs = self.figure_names()
+        out = np.full((len(points), len(figs)), np.nan)
+        samp = np.zeros_like(out)
+        warnings, steps = [[] for _ in points], np.empty(len(points))
+        groups: dict = {}
+        for j, case in enumerate(cases):
+            groups.setdefault(case.model, []).append(j)
+        wanted = (beam.TIP, *beam.RESIDUALS)
+        for rows in groups.values():
+            sim, model = beam.simulator(cases[rows[0]])
+            P = np.array([model.parameter_vector(beam.parameters(cases[j])) for j in rows])
+            starts = [sim.start(p, beam.initial_state(cases[j], model)) for j, p in zip(rows, P)]
+            t_end = np.array([cases[j].revolutions * cases[j].period for j in rows])
+            runs = batch.run_batch(sim, P, np.array([y for y, _ in starts]), t_end, wanted,
+                                   np.full((len(rows), len(wanted), 2), [-np.inf, np.inf]))
+            bad = np.flatnonzero(runs.stats["status"] != 0)
+            if bad.size:
+                j = rows[int(bad[0])]
+                beam.run(cases[j])          # the failed point alone: it raises what it ran into
+                raise SimulationError(f"{self.name} at " + ", ".join(
+                    f"{k} = {v:g}" for k, v in zip(names, points[j])) + ": " +
+                    driver.STATUS_TEXT[int(runs.stats["status"][bad[0]])])
+            for i, j in enumerate(rows):
+                tip, *phi = (runs.extreme(i, k) for k in range(len(wanted)))
+                worst, sampling = beam.largest(tip, phi)
+                figures = {"max_abs_tip_deflection": tip.value, "max_constraint_residual": worst,
+                           "dwell_frequency_hz": beam.dwell_frequency(cases[j])}
+                out[j] = [figures[f] for f in figs]
+                samp[j] = [sampling.get(f, 0.0) for f in figs]
+                c = cases[j]
+                cut = RDFD.of(c.rise, c.base_radius, c.roller_radius, c.law).undercut()
+                warnings[j] = ([starts[i][1]] if starts[i][1] else []) + \
+                    ([_undercut_warning(cut)] if cut else [])
+                steps[j] = runs.stats["n_steps"][i]
+        return Batch(out, samp, warnings, steps)
 
     def table(self, out: dict) -> list:
         """The record as a table with units, each figure with its estimate."""
@@ -251,3 +304,7 @@ class BeamTarget(Target):
                 planned.append((name, field, v))
         return planned
 
+
+
+def _undercut_warning(cut) -> str:
+    return f"{cut.message} The run follows the pitch curve all the same."

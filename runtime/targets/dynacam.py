@@ -154,19 +154,28 @@ def prepare(scene: DynacamScene, method=None, progress=None) -> Prepared:
     """The scene's run made ready: ``method`` by default the scene's (DP54 unless it says
     rodas4) at its rtol with no step limit (a step-limited one serves as a reference)."""
     model = variant_model(scene, progress)
-    params = dict(scene.parameters)
-    params["beta_0"] = -scene.T_start * params["beta_m"]
-    ch = characteristics(scene.options, params)
-    t_m = ch["t_m"]
-    t_end = (scene.T_end - scene.T_start) * t_m
+    params, ch, t_end = placed(scene)
     if method is None:
         method = scene_method(scene)
     law = scene.cam_law()
-    sim = Simulator(model, t_end, method, law=law, modes=scene.modes, max_steps=2_000_000)
+    sim = Simulator(model, t_end, method, law=law, modes=scene.modes, max_steps=MAX_STEPS)
     p = model.parameter_vector(params)
     y0 = equilibrium(model, p, sim)
-    sim = Simulator(model, t_end, method, law=law, modes=scene.modes, max_steps=2_000_000, y0=y0)
-    return Prepared(model, params, ch, sim, y0, t_m, t_end)
+    sim = Simulator(model, t_end, method, law=law, modes=scene.modes, max_steps=MAX_STEPS, y0=y0)
+    return Prepared(model, params, ch, sim, y0, ch["t_m"], t_end)
+
+
+MAX_STEPS = 2_000_000
+"""The most steps of a scene's run."""
+
+
+def placed(scene: DynacamScene) -> tuple[dict, dict, float]:
+    """(the parameter values with beta_0 placed from run.T_start, the characteristic numbers
+    (4.3)-(5.52), the run's end in time) of a scene."""
+    params = dict(scene.parameters)
+    params["beta_0"] = -scene.T_start * params["beta_m"]
+    ch = characteristics(scene.options, params)
+    return params, ch, (scene.T_end - scene.T_start) * ch["t_m"]
 
 
 @dataclass
@@ -223,6 +232,53 @@ def mode_changes(scene: DynacamScene, res, mode: str) -> list:
     return [(float(T[i + 1]), values[i + 1]) for i in np.flatnonzero(values[1:] != values[:-1])]
 
 
+@dataclass(frozen=True)
+class Span:
+    """A headline figure read as an extreme: of output ``name`` on [a, b] of the run's time,
+    of |v| (``absolute``), least (``minimum``) or largest; ``time_key``: the figure that holds
+    where it lies, as the nominal T."""
+
+    key: str
+    name: str
+    a: float
+    b: float
+    absolute: bool
+    minimum: bool
+    time_key: str | None = None
+
+
+def headline_spans(scene: DynacamScene, t_m: float, t0: float, t_end: float,
+                   outputs) -> tuple[tuple, tuple]:
+    """(every headline figure's key in order, the Spans of those a run of [t0, t_end] reaches)
+    (:func:`headline`); ``outputs``: the variant's output names."""
+    keys = ["Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_rise", "U0dd", "U0"]
+    spans = []
+    rise0, rise1 = -scene.T_start * t_m, (1 - scene.T_start) * t_m
+    spans.append(Span("Xdd_min_rise", "Xdd", rise0, rise1, False, True, "T_at_Xdd_min"))
+    spans.append(Span("Xdd_max_rise", "Xdd", rise0, rise1, False, False))
+    turn = scene.cam_law() if scene.turn is not None else None
+    # with a full turn the dwell after the rise ends where the return starts
+    dwell_end = t_end if turn is None else min(t_end, (1 + turn.up - scene.T_start) * t_m)
+    if dwell_end > rise1:
+        spans.append(Span("U0dd", "Xdd", rise1, dwell_end, True, False))
+        spans.append(Span("U0", "U", rise1, dwell_end, True, False))
+    if turn is not None:
+        keys += ["Xdd_absmax_return", "U0_return", "U0dd_return"]
+        ret0 = (1 + turn.up - scene.T_start) * t_m
+        ret1 = (1 + turn.up + turn.r - scene.T_start) * t_m
+        low1 = min(t_end, (turn.period - scene.T_start) * t_m)
+        if t_end > ret0:
+            spans.append(Span("Xdd_absmax_return", "Xdd", ret0, min(ret1, t_end), True, False))
+        if low1 > ret1:
+            spans.append(Span("U0_return", "U", ret1, low1, True, False))
+            spans.append(Span("U0dd_return", "Xdd", ret1, low1, True, False))
+    keys += ["speed_variation_max", "motor_speed_variation_max"]
+    spans.append(Span("speed_variation_max", "speed_var", t0, t_end, True, False))
+    if "motor_speed_var" in outputs:
+        spans.append(Span("motor_speed_variation_max", "motor_speed_var", t0, t_end, True, False))
+    return tuple(keys), tuple(spans)
+
+
 def headline(scene: DynacamScene, res, t_m: float) -> tuple[dict, dict]:
     """The scene's headline figures of a run (a camdyn Result or another integrator's run that
     offers ``sample``) and the sampling error of each: the extremes of X'' in the rise (nominal
@@ -230,42 +286,21 @@ def headline(scene: DynacamScene, res, t_m: float) -> tuple[dict, dict]:
     full turn), the largest speed variations over the run, and with a [turn] the return's
     largest |X''| and U0, U0'' in the lower dwell after it.  Every extreme is refined on the
     dense output, not read at the recorded steps."""
-    figures, sampling = {}, {}
-
-    def ext(key, name, a, b, absolute, minimum, time_key=None):
-        e = extreme(res, name, a, b, absolute=absolute, minimum=minimum)
-        figures[key] = e.value
-        sampling[key] = e.sampling_error
-        if time_key:
-            figures[time_key] = e.at / t_m + scene.T_start
-        return e
-
-    t0, t_end = float(res.t[0]), float(res.t[-1])
-    rise0, rise1 = -scene.T_start * t_m, (1 - scene.T_start) * t_m
-    ext("Xdd_min_rise", "Xdd", rise0, rise1, False, True, "T_at_Xdd_min")
-    ext("Xdd_max_rise", "Xdd", rise0, rise1, False, False)
-    turn = scene.cam_law() if scene.turn is not None else None
-    # with a full turn the dwell after the rise ends where the return starts
-    dwell_end = t_end if turn is None else min(t_end, (1 + turn.up - scene.T_start) * t_m)
-    figures["U0dd"] = figures["U0"] = None
-    if dwell_end > rise1:
-        ext("U0dd", "Xdd", rise1, dwell_end, True, False)
-        ext("U0", "U", rise1, dwell_end, True, False)
-    if turn is not None:
-        ret0 = (1 + turn.up - scene.T_start) * t_m
-        ret1 = (1 + turn.up + turn.r - scene.T_start) * t_m
-        low1 = min(t_end, (turn.period - scene.T_start) * t_m)
-        figures.update(Xdd_absmax_return=None, U0_return=None, U0dd_return=None)
-        if t_end > ret0:
-            ext("Xdd_absmax_return", "Xdd", ret0, min(ret1, t_end), True, False)
-        if low1 > ret1:
-            ext("U0_return", "U", ret1, low1, True, False)
-            ext("U0dd_return", "Xdd", ret1, low1, True, False)
-    ext("speed_variation_max", "speed_var", t0, t_end, True, False)
-    figures["motor_speed_variation_max"] = None
-    if "motor_speed_var" in res.model.output_names:
-        ext("motor_speed_variation_max", "motor_speed_var", t0, t_end, True, False)
+    keys, spans = headline_spans(scene, t_m, float(res.t[0]), float(res.t[-1]),
+                                 res.model.output_names)
+    figures, sampling = dict.fromkeys(keys), {}
+    for sp in spans:
+        e = extreme(res, sp.name, sp.a, sp.b, absolute=sp.absolute, minimum=sp.minimum)
+        read_span(sp, e, t_m, scene.T_start, figures, sampling)
     return figures, sampling
+
+
+def read_span(sp: Span, e, t_m: float, T_start: float, figures: dict, sampling: dict) -> None:
+    """The figure (and where it lies) and its sampling error of Span ``sp`` from its extreme."""
+    figures[sp.key] = e.value
+    sampling[sp.key] = e.sampling_error
+    if sp.time_key:
+        figures[sp.time_key] = e.at / t_m + T_start
 
 
 def dwell_spans(scene: DynacamScene, t_m: float, t_end: float) -> dict:

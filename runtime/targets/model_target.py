@@ -23,7 +23,7 @@ from ..core.errors import CamdynInputError, SimulationError, on_disk
 from ..core.compiled import available, load
 from ..core.simulator import Simulator
 from ..engine import finder, driver
-from ..measure import references
+from ..measure import batch, references
 from ..measure.contract import fit_window
 from ..measure.extremes import extreme
 from ..measure.modes import slowest_periods
@@ -426,7 +426,7 @@ class ModelTarget(Target):
                 or self.spec.get("rise_state") and \
                 self.spec["rise_state"] not in self.model.state_names:
             return self._points_one_by_one(names, points)
-        return self._points_compiled(names, points)
+        return self.residual_points(names, points)
 
     def _points_one_by_one(self, names, points) -> Batch:
         """Fixed-step methods (their stability check lives in Simulator.run) and models with
@@ -443,14 +443,20 @@ class ModelTarget(Target):
             steps[j] = o.stats["n_steps"]
         return Batch(out, samp, warnings, steps)
 
-    def _points_compiled(self, names, points) -> Batch:
+    def residual_points(self, names, points, reference: bool = False) -> Batch:
+        """The residual-vibration figures of every point (a model with an adaptive method whose
+        rise ends at a time or at a state's crossing) in one compiled call holding no GIL: the
+        sweep's scan (:func:`scan_density`, the CANDIDATES best peaks refined), or with
+        ``reference`` the scan of a single run (runtime/measure/residual.py: 12 samples a
+        step, the best refined), whose figures equal a single run's bit for bit."""
         model, sim, spec = self.model, self.simulator, self.spec
         b = sim.batch_inputs(self._grid_parameters(names, points))
         n, ns = len(points), len(model.state_names)
         index = {k: i for i, k in enumerate(model.state_names)}
         index.update({k: ns + i for i, k in enumerate(model.output_names)})
         i_rise = index[spec["rise_state"]] if spec.get("rise_state") else -1
-        per_step, stride = scan_density(sim.method)
+        per_step, stride = (12, 1) if reference else scan_density(sim.method)
+        candidates = 1 if reference else CANDIDATES
         figures = np.empty((n, len(finder.FIGURE_COLUMNS)))
         stats = np.empty((n, len(finder.STAT_COLUMNS)), dtype=np.int64)
         secs = np.empty(n)
@@ -458,7 +464,7 @@ class ModelTarget(Target):
             model.capsule, b.method, b.law_codes, b.law_pars, b.P, b.Y0, b.stops, b.n_stops,
             b.t0, b.first_step, b.h_max, b.rtol, b.atol, b.max_steps, b.modes0, b.max_events,
             index[spec["error"]], index[spec["acceleration"]], float(spec["rise_end"]), i_rise,
-            per_step, CANDIDATES, figures, stats, secs, 0, n, 4096, stride,
+            per_step, candidates, figures, stats, secs, 0, n, 4096, stride,
             exact=sim.exact_segments)
         bad = np.flatnonzero(stats[:, 0] != 0)
         if bad.size:
@@ -509,6 +515,8 @@ class StateTarget(ModelTarget):
     def window(self):
         return None
 
+    fit_points = Target.fit_points      # no dwell to fit: the run ends where the user says
+
     @property
     def end(self) -> float:
         if self.t_end is None:
@@ -527,7 +535,29 @@ class StateTarget(ModelTarget):
         return Outcome(figures, {}, {}, list(res.warnings), record, stats, res)
 
     def run_points(self, names, points) -> Batch:
-        return self._points_one_by_one(names, points)
+        """An adaptive method's points in one compiled call holding no GIL
+        (runtime/measure/batch.py): every state at t_end as :meth:`read` samples it (the same
+        numbers, bit for bit); fixed-step methods one at a time (their stability check lives
+        in Simulator.run)."""
+        sim = self.simulator
+        if not sim.method.adaptive:
+            return self._points_one_by_one(names, points)
+        P = self._grid_parameters(names, points)
+        starts = [sim.start(p) for p in P]
+        m = self.model
+        wanted = tuple(batch.Wanted(k, absolute=False, minimum=False) for k in m.state_names)
+        ends = np.full((len(P), len(wanted), 2), sim.t_end)
+        runs = batch.run_batch(sim, P, np.array([y for y, _ in starts]), sim.t_end, wanted, ends)
+        bad = np.flatnonzero(runs.stats["status"] != 0)
+        if bad.size:
+            j = int(bad[0])
+            sim.run({**self.values, **dict(zip(names, map(float, points[j])))})   # says why
+            at = ", ".join(f"{k} = {v:g}" for k, v in zip(names, points[j]))
+            raise SimulationError(f"{m.name} with {sim.method.name} at {at}: "
+                                  f"{driver.STATUS_TEXT[int(runs.stats['status'][j])]}")
+        return Batch(runs.value, np.zeros_like(runs.value),
+                     [[note] if note else [] for _, note in starts],
+                     runs.stats["n_steps"].astype(float))
 
     def problem(self):
         from .problem import Problem

@@ -8,20 +8,23 @@ and any Fa can be read, also beyond the printed graphs (tau 0.06-0.7, Fa 0-2).
 from __future__ import annotations
 
 import math
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 from scipy.interpolate import CubicSpline
 
 from camdyn.runtime.core import laws
 from camdyn.runtime.core.errors import CamdynInputError
-from camdyn.runtime.core.simulator import Simulator
 from camdyn.runtime.measure.envelope import dips, maxima, through_maxima
-from camdyn.runtime.measure.residual import residual
+from camdyn.runtime.targets.grid import default_jobs
+from camdyn.runtime.targets.model_target import ModelTarget
 
 PER_DIP = 12
 """Samples per unit of 1/tau (one tuning dip of (3.5) at Fa = 0; wider at Fa > 0)."""
 LATTICE_CAP = 0.95
 """The largest tau sampled (windows around tau up to limits.TAU_CAP reach beyond it)."""
+CHUNK = 32
+"""Runs a thread takes at least: fewer are not worth a thread's start."""
 RTOL = 1e-9
 """Tolerance of the graph runs (DP54); their error is far below the envelope's."""
 
@@ -90,39 +93,70 @@ class Graphs:
     """U0 and U0'' of CAMSHAFT-1 (4.15) for one law, run once per (tau, Fa) and kept.
 
     tau is always taken on the lattice 1/tau = k/per_dip, so windows around different tau
-    share their runs."""
+    share their runs.  The runs a window lacks go to compiled code together, as a sweep's
+    chunks do (runtime/targets/model_target.py residual_points), on ``jobs`` threads, with
+    the sweep's scan; with ``reference`` the scan of a single run, whose figures are those
+    of residual() on each run alone, bit for bit (the answers of `camdyn design` differ by
+    1e-13 relative at most)."""
 
-    def __init__(self, law: str = "cycloidal", theta=None, per_dip: int = PER_DIP):
+    def __init__(self, law: str = "cycloidal", theta=None, per_dip: int = PER_DIP,
+                 jobs: int | None = None, reference: bool = False):
         laws.choose(law, theta)
         self.law, self.theta, self.per_dip = law, theta, per_dip
+        self.jobs = default_jobs() if jobs is None else jobs
         self._cache: dict = {}
-        self._sims: dict = {}
+        self._targets: dict = {}
+        self._threads = None
+        self.reference = reference
         self.runs = 0
 
-    def _sim(self, t_end: float) -> Simulator:
-        if t_end not in self._sims:
-            self._sims[t_end] = Simulator("camshaft1", t_end, "dp54", rtol=RTOL, law=self.law,
-                                          theta=self.theta)
-        return self._sims[t_end]
+    def _target(self, t_end: float) -> ModelTarget:
+        if t_end not in self._targets:
+            self._targets[t_end] = ModelTarget.of("camshaft1", method="dp54", rtol=RTOL,
+                                                  law=self.law, theta=self.theta, t_end=t_end)
+        return self._targets[t_end]
+
+    @staticmethod
+    def t_end(tau: float) -> float:
+        """Two periods of the dwell or more (its period is tau in T whatever Fa: H' = 0
+        there), in steps of 0.1 so that few simulators are prepared."""
+        return 1.0 + 0.1 * math.ceil((2.0 * tau + 0.05) / 0.1)
+
+    def _run(self, keys) -> None:
+        """Run the (tau, Fa) not yet kept, those of one run end together, in ``jobs`` chunks
+        on as many threads (the compiled chunks hold no GIL)."""
+        todo: dict = {}
+        for key in dict.fromkeys(keys):
+            if key not in self._cache:
+                todo.setdefault(self.t_end(key[0]), []).append(key)
+        for t_end, group in todo.items():
+            pts = np.array(group, dtype=float)
+            target = self._target(t_end)
+            pieces = np.array_split(pts, min(self.jobs, math.ceil(len(pts) / CHUNK)))
+            done = self._pool().map(lambda piece: target.residual_points(
+                ("tau", "Fa"), piece, reference=self.reference), pieces)
+            rows = np.concatenate([b.figures for b in done])
+            for (tau, Fa), r in zip(group, rows):
+                self._cache[tau, Fa] = (tau, float(r[0]), float(r[1]))
+            self.runs += len(group)
+
+    def _pool(self) -> ThreadPoolExecutor:
+        if self._threads is None:
+            self._threads = ThreadPoolExecutor(max_workers=self.jobs)
+        return self._threads
 
     def point(self, k: int, Fa: float, per_dip: int) -> tuple[float, float, float]:
         """(tau, U0, U0'') at 1/tau = k/per_dip."""
         tau = per_dip / k              # correctly rounded: equal for k/n and 2k/2n
-        key = (tau, Fa)
-        if key not in self._cache:
-            # two periods of the dwell or more (its period is tau in T whatever Fa: H' = 0
-            # there), in steps of 0.1 so that few simulators are prepared
-            t_end = 1.0 + 0.1 * math.ceil((2.0 * tau + 0.05) / 0.1)
-            r = residual(self._sim(t_end).run({"tau": tau, "Fa": Fa}))
-            self.runs += 1
-            self._cache[key] = (tau, r.U0, r.U0dd)
-        return self._cache[key]
+        self._run([(tau, Fa)])
+        return self._cache[tau, Fa]
 
     def samples(self, x_lo: float, x_hi: float, Fa: float, per_dip: int | None = None):
         """(tau, U0, U0'') arrays on the lattice points with x_lo <= 1/tau <= x_hi."""
         n = per_dip or self.per_dip
         ks = range(max(math.ceil(x_lo * n), math.ceil(n / LATTICE_CAP)), math.floor(x_hi * n) + 1)
-        pts = np.array([self.point(k, Fa, n) for k in ks])
+        self._run([(n / k, Fa) for k in ks])
+        pts = np.array([self._cache[n / k, Fa] for k in ks])
         order = np.argsort(pts[:, 0])
         return pts[order, 0], pts[order, 1], pts[order, 2]
 

@@ -6,7 +6,6 @@ from __future__ import annotations
 import math
 
 from camdyn.runtime.core.errors import CamdynInputError
-from camdyn.thesis.theory import motor_theory as mt
 
 from .machine import positive
 
@@ -23,6 +22,8 @@ def motor(*, t_m, T_m, delta_n, delta_lim, eta_g=1.0, spring=False, T_el=None, m
     sec. 8.3 says; second order (A.5.25) with T_el), P (8.1), M_ena (8.2), N_n (8.3), (8.4);
     the torque and power need the mass (at the output member, with the stroke h_m' there),
     the torque also the shaft speed."""
+    from camdyn.thesis.theory import motor_theory as mt   # SymPy's: only a design with a motor
+
     tau_m = T_m / t_m
     tau_el = None if T_el is None else T_el / t_m
     rel, T_peak = mt.relative_slip_peak(tau_m, tau_el)
@@ -84,6 +85,8 @@ def settings(*, motor_rpm=None, motor_tm=None, slip_limit=None, rated_slip=None,
         if not (0 < alpha < math.pi / 2 and 0 <= mu and alpha + mu < math.pi / 2):
             raise CamdynInputError(f"argument --worm: alpha={alpha:g}, mu={mu:g} rad out of "
                                    "range: 0 < alpha, 0 <= mu, alpha + mu < pi/2")
+        from camdyn.thesis.theory import motor_theory as mt
+
         eta = mt.worm_gear_efficiency(alpha, mu)       # motor driving (6.72), (A.5.34)
     T_el = positive("T_el", "--motor-tel", motor_tel, "s, electrical time constant (A.5.3)")
     return {"T_m": T_m, "delta_n": delta_n, "delta_lim": slip_limit, "eta_g": eta,

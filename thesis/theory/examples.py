@@ -32,7 +32,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from . import impact
 from .mechanisms import INDEXING, SPRING_LOADED, IndexingMechanism, SpringLoadedFollower, omega
 
 
@@ -234,6 +233,8 @@ class ImpactEstimate:
 def impact_estimate(S: float, tau: float, Fa: float, Xdd_s0: float, T: float = 0.68,
                     H3: float = 4 * math.pi**2) -> ImpactEstimate:
     """Sec. 7.4.4 at full precision: r_e (3.16), tau_T (4.32), U_sn'' (3.12), X''_T."""
+    from . import impact    # SymPy's: imported where used, so that `camdyn design` starts fast
+
     r_e = impact.r_e_from_backlash(S, H3)
     Hd = cycloid_velocity(T)
     tau_T = tau_at(tau, Fa, Hd)
@@ -257,6 +258,8 @@ def impact_as_printed(mech: IndexingMechanism = INDEXING) -> dict[str, float]:
     p = mech.printed
     tau, Fa = float(p["tau"].text), float(p["Fa"].text)
     tau_T = tau_at(tau, Fa, float(p["Hd_068"].text))
+    from . import impact
+
     Udd = impact.Udd_sn(float(p["r_e"].text), float(p["tau_068"].text))
     return {"tau_068": tau_T, "Udd_sn": Udd, "Xdd_068": float(p["Xdd_s0_068"].text) - Udd}
 
