@@ -1112,7 +1112,7 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
                    const double[:, ::1] B, double[:, ::1] value, double[:, ::1] at,
                    double[:, ::1] sampling, long[:, ::1] stats, double[::1] t_stiff,
                    int mode_col=-1, int mode_value=0, double[::1] first_in_mode=None,
-                   Py_ssize_t cap=4096, bint exact=False):
+                   Py_ssize_t cap=4096, bint exact=False, const double[:, ::1] atol_rows=None):
     """Run every parameter set (rows of P, initial states Y0, stop tables, h_max per run) and
     find extreme k of each run as :func:`extreme` finds it on a recorded run (the same scan,
     refinement and sampling check, so the same bits): state or output ``which[k]`` on
@@ -1143,6 +1143,8 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
                              f"1 <= n_cand <= {MAX_CAND}")
     if mode_col >= nm or (mode_col >= 0 and (first_in_mode is None or first_in_mode.shape[0] != n)):
         raise ValueError("mode_col must name a mode, with first_in_mode one value per run")
+    if atol_rows is not None and (atol_rows.shape[0] != n or atol_rows.shape[1] != ns):
+        raise ValueError("atol_rows: one absolute tolerance per state and run")
     cdef Chunk c
     if _chunk_open(&c, m, method, &law[0], &law_par[0], t0, h, rtol, &atol[0], max_steps,
                    &modes0[0] if modes0.shape[0] else NULL, max_events, exact, cap) != 0:
@@ -1152,6 +1154,8 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
     cdef double a, b, v, t, samp
     with nogil:
         for g in range(n):
+            if atol_rows is not None:
+                c.atol = &atol_rows[g, 0]
             status = _chunk_run(&c, &P[g, 0], &Y0[g, 0], &stops[g, 0], n_stops[g], h_max[g])
             stats[g, 0] = status
             stats[g, 1] = c.run.n_steps

@@ -55,7 +55,8 @@ class Runs:
 
 
 def run_batch(sim: Simulator, P: np.ndarray, Y0: np.ndarray, t_end: np.ndarray,
-              wanted: tuple, spans: np.ndarray, mode: tuple | None = None) -> Runs:
+              wanted: tuple, spans: np.ndarray, mode: tuple | None = None,
+              atol: np.ndarray | None = None) -> Runs:
     """Run the rows of P from the rows of Y0, each to its own ``t_end`` (its stop times and
     largest step as a Simulator to that end makes them), with ``sim``'s method, laws and modes;
     ``spans[j, k]`` = (a, b) of wanted extreme k in run j (-inf, inf: the run's ends; NaN: not
@@ -93,6 +94,7 @@ def run_batch(sim: Simulator, P: np.ndarray, Y0: np.ndarray, t_end: np.ndarray,
         np.array([w.per_step for w in wanted], dtype=np.intc),
         np.array([w.candidates for w in wanted], dtype=np.intc),
         np.ascontiguousarray(spans[:, :, 0]), np.ascontiguousarray(spans[:, :, 1]),
-        value, at, samp, stats, t_stiff, col, val, first, exact=sim.exact_segments)
+        value, at, samp, stats, t_stiff, col, val, first, exact=sim.exact_segments,
+        atol_rows=None if atol is None else np.ascontiguousarray(atol, dtype=float))
     return Runs(value, at, samp, {k: stats[:, i] for i, k in enumerate(finder.RUN_STATS)},
                 t_stiff, first)

@@ -168,8 +168,11 @@ class BeamTarget(Target):
             P = np.array([model.parameter_vector(beam.parameters(cases[j])) for j in rows])
             starts = [sim.start(p, beam.initial_state(cases[j], model)) for j, p in zip(rows, P)]
             t_end = np.array([cases[j].revolutions * cases[j].period for j in rows])
+            # each case's own absolute tolerances (they follow its cam speed, beam.integrator)
+            atol = np.array([beam.simulator(cases[j])[0].atol for j in rows])
             runs = batch.run_batch(sim, P, np.array([y for y, _ in starts]), t_end, wanted,
-                                   np.full((len(rows), len(wanted), 2), [-np.inf, np.inf]))
+                                   np.full((len(rows), len(wanted), 2), [-np.inf, np.inf]),
+                                   atol=atol)
             bad = np.flatnonzero(runs.stats["status"] != 0)
             if bad.size:
                 j = rows[int(bad[0])]
