@@ -77,6 +77,8 @@ cdef struct Run:
     long n_rejected
     long n_rhs
     long n_events          # events located and applied
+    long n_jac             # Jacobians evaluated by the implicit methods (ABI 9)
+    long n_lu              # LU factorizations of their iteration matrices (ABI 9)
     long max_events
     double t_fail
     double err_old

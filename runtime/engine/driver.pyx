@@ -54,7 +54,7 @@ cdef class RunRecord:
     cdef readonly int status
     cdef readonly object rows, modes
     cdef readonly Py_ssize_t n
-    cdef readonly long n_steps, n_rejected, n_rhs, n_events, n_checks
+    cdef readonly long n_steps, n_rejected, n_rhs, n_events, n_checks, n_jac, n_lu
     cdef readonly double t_fail, seconds, t_stiff, stab_ratio, stab_t, stab_rho, stab_b
 
     def __repr__(self):
@@ -372,6 +372,8 @@ cdef class Integrator:
         run.stab_rho = NAN
         run.stab_b = NAN
         run.n_checks = 0
+        run.n_jac = 0
+        run.n_lu = 0
         run.exact = self.exact
         cdef int status
         cdef timespec c0, c1
@@ -411,6 +413,8 @@ cdef class Integrator:
         out.stab_rho = run.stab_rho
         out.stab_b = run.stab_b
         out.n_checks = run.n_checks
+        out.n_jac = run.n_jac
+        out.n_lu = run.n_lu
         return out
 
 

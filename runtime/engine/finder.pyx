@@ -715,6 +715,8 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
             run.stab_work = NULL
             run.stab_ratio = -1.0
             run.n_checks = 0
+            run.n_jac = 0
+            run.n_lu = 0
             run.exact = exact
             status = m.run(&run)
             # keep the (possibly grown) buffers for the next run

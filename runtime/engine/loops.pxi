@@ -1417,12 +1417,14 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
         tn = b if last else t + h
         if not have_jac:
             n_rhs += _jacobian(run, ctx, t, y, f0, b - a, ymag, h, J, ft)
+            run.n_jac += 1
             have_jac = True
         hinv = 1.0 / h
         for i in range(_NS * _NS):
             W[i] = -J[i]
         for i in range(_NS):
             W[i * _NS + i] += hinv / RO4_GAMMA
+        run.n_lu += 1
         if lu_factor(_NS, W, piv) != 0:
             # 1/(h gamma) is an eigenvalue of J: any other step avoids it
             h *= 0.5
@@ -1598,7 +1600,7 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
     cdef double yn[_NS]
     cdef double fn[_NS]
     cdef double ev[_NS]
-    cdef double scal[_NS]
+    cdef double wt[_NS]     # 1/(atol + rtol |y|): the Newton iteration's error weights
     cdef double ymag[_NS]   # largest |y_j| of the interval so far: the Jacobian's increments
     cdef int piv1[_NS]
     cdef int piv2[2 * _NS]
@@ -1657,10 +1659,12 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
         tn = b if last else t + h
         if need_jac:
             n_rhs += _jacobian(run, ctx, t, y, f0, b - a, ymag, h, J, NULL)
+            run.n_jac += 1
             need_jac = False
             fresh_jac = True
             h_lu = 0.0
         if h != h_lu:
+            run.n_lu += 1
             if _radau_matrices(J, h, E1, piv1, E2, piv2) != 0:
                 # gamma/h or (alpha + i beta)/h is an eigenvalue of J: any other step avoids it
                 h *= 0.5
@@ -1669,7 +1673,7 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
                 continue
             h_lu = h
         for i in range(_NS):
-            scal[i] = atol[i] + rtol * fabs(y[i])
+            wt[i] = 1.0 / (atol[i] + rtol * fabs(y[i]))
         # starting values: the last step's collocation polynomial extrapolated to the stages
         if have_cont:
             c3q = h / hold
@@ -1719,11 +1723,11 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
             newt += 1
             dyno = 0.0
             for i in range(_NS):
-                x = k1[i] / scal[i]
+                x = k1[i] * wt[i]
                 dyno += x * x
-                x = r23[i] / scal[i]
+                x = r23[i] * wt[i]
                 dyno += x * x
-                x = r23[i + _NS] / scal[i]
+                x = r23[i + _NS] * wt[i]
                 dyno += x * x
             dyno = sqrt(dyno / (3 * _NS))
             if not isfinite(dyno):
@@ -1735,7 +1739,9 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
                 if theta >= 0.99:
                     break
                 faccon = theta / (1.0 - theta)
-                dyth = faccon * dyno * pow(theta, RA_NIT - 1 - newt) / fnewt
+                dyth = faccon * dyno / fnewt
+                for i in range(RA_NIT - 1 - newt):
+                    dyth *= theta
                 if dyth >= 1.0:
                     # would not converge in the sweeps left: a step it converges on
                     h *= 0.8 * pow(fmax(1e-4, fmin(20.0, dyth)), -1.0 / (4 + RA_NIT - 1 - newt))
@@ -1786,13 +1792,13 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
                 need_jac = True
             continue
         fac = fmin(RA_SAFE, cfac / (newt + 2 * RA_NIT))
-        quot = fmax(RA_FACR, fmin(RA_FACL, pow(err, 0.25) / fac))
+        quot = fmax(RA_FACR, fmin(RA_FACL, sqrt(sqrt(err)) / fac))
         hnew = h / quot
         if err < 1.0:
             first = False
             if n_acc > 0:
                 # Gustafsson's predictive controller (RADAU5's PRED)
-                facgus = (hacc / h) * pow(err * err / erracc, 0.25) / RA_SAFE
+                facgus = (hacc / h) * sqrt(sqrt(err * err / erracc)) / RA_SAFE
                 quot = fmax(quot, fmax(RA_FACR, fmin(RA_FACL, facgus)))
                 hnew = h / quot
             hacc = h
