@@ -275,20 +275,22 @@ def markdown(results: list, info: dict, wall: float) -> str:
         lines.append("")
     lines += ["## When to pick which", "",
               "- A fast mode that only rings and that the answer does not need (the roller on its "
-              "contact spring, seen from the follower): rodas4 with that mode's states given large "
-              "`state_atol`; it steps over the mode (L-stable) and the follower's error stays "
-              "controlled. Its own history (contact force) is then not resolved.",
+              "contact spring, seen from the follower): rodas4 or radau5 with that mode's states "
+              "given large `state_atol`; they step over the mode (L-stable) at about the same cost "
+              "and the follower's error stays controlled. Its own history (contact force) is then "
+              "not resolved.",
               "- A fast mode whose motion is part of the answer (the beam's higher modes in the tip "
               "deflection, the contact force history): it must be resolved, and dp54 resolves it "
               "more cheaply than an implicit method (order 5, no linear algebra); the charts show "
               "dp54 ahead there.",
               "- A fast mode that is heavily damped (a stiff shaft, a motor's electrical time "
-              "constant: chain3 with c3 = 1e6, motor2 with T_el = 1e-6 in the README): rodas4; "
-              "dp54 is held to its stability limit whatever the tolerance.",
-              "- The beam follower: dp54. Its rod's modes are undamped and excited, and rodas4 "
-              "(a difference Jacobian of 16 states, some 40 rhs calls a step) resolves them at "
-              "a higher price; its rigid limit (E x 1e6) is out of reach of both methods within "
-              "the step budgets above, as the table says.", ""]
+              "constant: chain3 with c3 = 1e6, motor2 with T_el = 1e-6 in the README): rodas4 or "
+              "radau5; dp54 is held to its stability limit whatever the tolerance.",
+              "- The beam follower: dop853 or dp54. Its rod's modes are undamped and excited, and "
+              "the implicit methods (a difference Jacobian of 16 states) resolve them at a higher "
+              "price, radau5 (its Jacobian kept over many steps) at a third of rodas4's (fresh "
+              "every step); its rigid limit (E x 1e6) is out of reach of every method within the "
+              "step budgets above, as the table says.", ""]
     return "\n".join(lines)
 
 
