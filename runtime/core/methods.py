@@ -166,10 +166,11 @@ class RODAS4(DP54):
     embedded order-3 estimate, stiffly accurate and L-stable (Hairer & Wanner, Solving
     Ordinary Differential Equations II, sec. IV.7, the method of their code RODAS).
 
-    Chosen over Radau IIA of order 5 (RADAU5) because a step is one LU of
-    (I/(h gamma) - J) and six triangular solves: there is no Newton iteration that could
-    fail to converge or need a complex transformation of the stage system, the cost of a
-    step is fixed, and order 4 suits the moderate tolerances of design runs.  Stiffly
+    Beside Radau IIA of order 5 (RADAU5, radau5) its step is one LU of (I/(h gamma) - J)
+    and six triangular solves: there is no Newton iteration that could fail to converge or
+    need a complex transformation of the stage system, the cost of a step is fixed, and
+    order 4 suits the moderate tolerances of design runs; but it needs a fresh Jacobian and
+    LU every step, where RADAU5 keeps them over many.  Stiffly
     accurate and L-stable, it damps the parasitic high frequencies (a stiff shaft, a beam's
     higher modes, a penalty contact) in one step instead of resolving them, as DP54 must to
     stay stable.  The Jacobian is the model's generated one where it is symbolic, else
