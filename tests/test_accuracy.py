@@ -36,6 +36,8 @@ def reference():
 @pytest.mark.parametrize("method,rtol,step", [("dp54", 1e-5, None), ("dp54", 1e-6, None),
                                               ("dp54", 1e-7, None), ("dop853", 1e-5, None),
                                               ("dop853", 1e-6, None), ("dop853", 1e-7, None),
+                                              ("radau5", 1e-5, None), ("radau5", 1e-6, None),
+                                              ("radau5", 1e-7, None),
                                               ("rk4", None, 0.01),
                                               ("rk4", None, 0.005), ("rk4", None, 0.0025),
                                               ("koster", None, 0.005), ("koster", None, 0.0025)])

@@ -6,9 +6,9 @@ step control.
 
 Each method also knows its one-notch-tighter self, the second run of an error estimate: a
 figure v is computed again as v' and |v - v'| times the method's factor estimates v's global
-error.  For the adaptive methods (dp54, dop853, rodas4) the second run is at rtol/10 and atol/10: the
-error of a run being roughly proportional to its tolerance, v' carries a tenth of v's error and
-|v - v'| estimates it to within about 10 %.  For the fixed-step methods (rk4, and the thesis's
+error.  For the adaptive methods (dp54, dop853, rodas4, radau5) the second run is at rtol/10 and
+atol/10: the error of a run being roughly proportional to its tolerance, v' carries a tenth of
+v's error and |v - v'| estimates it to within about 10 %.  For the fixed-step methods (rk4, and the thesis's
 scheme, whose acceleration is held at its mid-step value (4.23)-(4.31)) it is at half the step,
 with Richardson's factor 2^p/(2^p - 1), p the method's order.  The estimate needs the error to
 be in its asymptotic range; near a stability limit, or for a figure that jumps (an event in one
@@ -39,7 +39,7 @@ def _positive(name: str, value, upper: float | None = None) -> float:
 
 
 DEFAULT_RTOL = 1e-8
-"""The tolerance of an adaptive method (dp54, dop853, rodas4) when none is given."""
+"""The tolerance of an adaptive method (dp54, dop853, rodas4, radau5) when none is given."""
 
 RTOL_MIN = 1e-14
 """The tightest rtol an adaptive method accepts: a run there has no tighter neighbour."""
@@ -166,10 +166,11 @@ class RODAS4(DP54):
     embedded order-3 estimate, stiffly accurate and L-stable (Hairer & Wanner, Solving
     Ordinary Differential Equations II, sec. IV.7, the method of their code RODAS).
 
-    Chosen over Radau IIA of order 5 (RADAU5) because a step is one LU of
-    (I/(h gamma) - J) and six triangular solves: there is no Newton iteration that could
-    fail to converge or need a complex transformation of the stage system, the cost of a
-    step is fixed, and order 4 suits the moderate tolerances of design runs.  Stiffly
+    Beside Radau IIA of order 5 (RADAU5, radau5) its step is one LU of (I/(h gamma) - J)
+    and six triangular solves: there is no Newton iteration that could fail to converge or
+    need a complex transformation of the stage system, the cost of a step is fixed, and
+    order 4 suits the moderate tolerances of design runs; but it needs a fresh Jacobian and
+    LU every step, where RADAU5 keeps them over many.  Stiffly
     accurate and L-stable, it damps the parasitic high frequencies (a stiff shaft, a beam's
     higher modes, a penalty contact) in one step instead of resolving them, as DP54 must to
     stay stable.  The Jacobian is the model's generated one where it is symbolic, else
@@ -210,7 +211,39 @@ class DOP853(DP54):
     name = "dop853"
 
 
-METHODS = {"rk4": RK4, "dp54": DP54, "dop853": DOP853, "koster": Koster, "rodas4": RODAS4}
+@dataclass(frozen=True)
+class RADAU5(DP54):
+    """Radau IIA of order 5, the implicit Runge-Kutta method of three stages of Hairer & Wanner's
+    code RADAU5 (Solving Ordinary Differential Equations II, sec. IV.8), for stiff problems.
+
+    A collocation method at the right Radau points: stiffly accurate (the last stage is the new
+    state, so a fast damped mode sits on its slow manifold after every step) and L-stable
+    (a mode far beyond the step is damped to nothing, not reflected as by the trapezoidal rule),
+    of order 5 (stage order 3), and it keeps its order 5 in the positions of an index-1
+    differential-algebraic system (sec. VI.1): a stiff contact spring or a penalty constraint in
+    its rigid limit does not lower it, where RODAS4's order 4 needs a new, accurate Jacobian
+    every step to hold.  Its stage equations are solved by a simplified Newton iteration with
+    the Jacobian kept over many steps while the iteration converges fast (Hairer's contraction
+    test, theta <= 0.001 with the model's generated Jacobian, 0.1 with a difference one) and
+    the LU factors kept while the step stays within 1.0-1.2 times the factored one; an
+    iteration that would not converge shortens the step at once.  Error estimate: RADAU5's
+    embedded one of order 3 (one more solve with the factors, refined after a first or rejected
+    step); Gustafsson's predictive step control.  The real and complex transformed systems of
+    the three stages (one real n x n, one complex n x n) are factored, the complex one as a
+    real system of size 2n.  Dense output and event location: the cubic Hermite interpolant of
+    the recorded points and slopes, O(h^4) like the collocation polynomial (which RADAU5's
+    CONTR5 interpolates), to which it is equal in order.  rtol is used as given (RADAU5 itself
+    maps it to 0.1 rtol^(2/3)); options, breakpoints, events, state_atol and error estimates
+    are DP54's.  The Jacobian is the model's generated one where it has one, else central
+    differences of the right-hand side (2 n_states calls, counted in n_rhs).
+    """
+
+    code = driver.RADAU
+    name = "radau5"
+
+
+METHODS = {"rk4": RK4, "dp54": DP54, "dop853": DOP853, "koster": Koster, "rodas4": RODAS4,
+           "radau5": RADAU5}
 ADAPTIVE = tuple(name for name, cls in METHODS.items() if cls.adaptive)
 """The methods with error control and dense output: those scenes and the beam follower take."""
 

@@ -71,10 +71,14 @@ class Result:
 
     @cached_property
     def stats(self) -> dict:
-        """Steps, rejected steps, right-hand-side calls, wall time of the compiled loops."""
+        """Steps, rejected steps, right-hand-side calls, wall time of the compiled loops; for
+        the implicit methods also the Jacobians evaluated and the LU factorizations made."""
         o = self._out
-        return {"n_steps": o.n_steps, "n_rejected": o.n_rejected, "n_rhs": o.n_rhs,
-                "n_events": o.n_events, "seconds": o.seconds}
+        out = {"n_steps": o.n_steps, "n_rejected": o.n_rejected, "n_rhs": o.n_rhs,
+               "n_events": o.n_events, "seconds": o.seconds}
+        if getattr(o, "n_jac", 0):
+            out.update(n_jac=o.n_jac, n_lu=o.n_lu)
+        return out
 
     @cached_property
     def record(self) -> np.ndarray:

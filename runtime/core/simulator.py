@@ -138,8 +138,8 @@ class Simulator:
 
     model   name of a generated model ("camshaft1") or a CompiledModel
     t_end   end of the run (model time)
-    method  "dp54", "dop853", "rodas4" (rtol, atol), "rk4" or "koster" (step), or a method
-            object (runtime/core/methods.py)
+    method  "dp54", "dop853", "rodas4", "radau5" (rtol, atol), "rk4" or "koster" (step), or a
+            method object (runtime/core/methods.py)
     law     cam-law name, or {family: name} for models with several inputs;
             theta is the law's shape parameter (modified sine)
     check_stability
@@ -158,12 +158,12 @@ class Simulator:
             contact or friction: the free vibration after a rise of one-DOF, CAMSHAFT-1, the
             chain), step over the interval with its exact propagator e^(A h) instead of the
             method (runtime/engine/loops.pxi, _loop_exact), recorded at the method's step
-            (RK4) or as densely as the dense output needs at rtol (DP54, DOP853, RODAS4).
+            (RK4) or as densely as the dense output needs at rtol (DP54, DOP853, RODAS4, RADAU5).
             Default: True for RK4, whose dwell then costs a matrix-vector product a step and
             carries no error, and for DOP853, whose degree-7 dense output through the exact
             state needs a point every ~(10^8 rtol)^(1/8)/w (w the highest frequency); False for
-            DP54 and RODAS4 (their figures are read off a record whose density their own step
-            control sets) and for the thesis scheme, which is run as the thesis ran it; False
+            DP54, RODAS4 and RADAU5 (their figures are read off a record whose density their
+            own step control sets) and for the thesis scheme, which is run as the thesis ran it; False
             with check_stability=False too, whose runs are made to see what the method's step
             does, the dwell included (the stability map).
     """

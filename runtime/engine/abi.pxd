@@ -12,7 +12,7 @@
 # a module at run time.
 
 cdef enum:
-    CAMDYN_ABI = 8
+    CAMDYN_ABI = 9
 
 # method codes
 cdef enum:
@@ -21,6 +21,7 @@ cdef enum:
     METHOD_KOSTER = 2
     METHOD_RODAS = 3       # RODAS4, linearly implicit (stiff problems)
     METHOD_DOP853 = 4      # Dormand-Prince 8(5,3), explicit, high order
+    METHOD_RADAU = 5       # Radau IIA of order 5 (RADAU5), implicit (stiff problems; ABI 9)
 
 # run status codes
 cdef enum:
@@ -48,7 +49,7 @@ cdef struct Record:
     # one row per recorded point: [t, y (ns), f (ns), extra (n_extra x ns)]; f is
     # the slope there (left limit at the end of an interval), `extra` the higher
     # dense-output terms of the step that starts at the point (dense.pxd): none for
-    # the cubic Hermite interpolant (RK4, the thesis scheme, RODAS4), one for DP54's
+    # the cubic Hermite interpolant (RK4, the thesis scheme, RODAS4, RADAU5), one for DP54's
     # quartic, four for DOP853's degree-7 extension (ABI 8).
     # `mode` holds the modes in force from the point on.
     Py_ssize_t n
@@ -76,6 +77,8 @@ cdef struct Run:
     long n_rejected
     long n_rhs
     long n_events          # events located and applied
+    long n_jac             # Jacobians evaluated by the implicit methods (ABI 9)
+    long n_lu              # LU factorizations of their iteration matrices (ABI 9)
     long max_events
     double t_fail
     double err_old
@@ -138,7 +141,8 @@ cdef inline int extra_terms(int method) noexcept nogil:
 
 
 cdef inline bint adaptive_method(int method) noexcept nogil:
-    return method == METHOD_DP54 or method == METHOD_RODAS or method == METHOD_DOP853
+    return (method == METHOD_DP54 or method == METHOD_RODAS or method == METHOD_DOP853
+            or method == METHOD_RADAU)
 
 
 cdef inline long fixed_steps(double a, double b, double h) noexcept nogil:

@@ -29,12 +29,14 @@ import numpy as np
 from camdyn.runtime.engine.abi cimport *
 from camdyn.runtime.engine.dense cimport dense_component
 from camdyn.runtime.engine.dop853 cimport D8_A, D8_C, D8_D, D8_E3, D8_E5
+from camdyn.runtime.engine.radau cimport *
 
 RK4 = METHOD_RK4
 DP54 = METHOD_DP54
 KOSTER = METHOD_KOSTER
 RODAS = METHOD_RODAS
 DOP853 = METHOD_DOP853
+RADAU = METHOD_RADAU
 
 cdef class RunRecord:
     """What Integrator.run returns: the status (STATUS_TEXT), the record (``rows``: t, states and
@@ -52,7 +54,7 @@ cdef class RunRecord:
     cdef readonly int status
     cdef readonly object rows, modes
     cdef readonly Py_ssize_t n
-    cdef readonly long n_steps, n_rejected, n_rhs, n_events, n_checks
+    cdef readonly long n_steps, n_rejected, n_rhs, n_events, n_checks, n_jac, n_lu
     cdef readonly double t_fail, seconds, t_stiff, stab_ratio, stab_t, stab_rho, stab_b
 
     def __repr__(self):
@@ -370,6 +372,8 @@ cdef class Integrator:
         run.stab_rho = NAN
         run.stab_b = NAN
         run.n_checks = 0
+        run.n_jac = 0
+        run.n_lu = 0
         run.exact = self.exact
         cdef int status
         cdef timespec c0, c1
@@ -409,6 +413,8 @@ cdef class Integrator:
         out.stab_rho = run.stab_rho
         out.stab_b = run.stab_b
         out.n_checks = run.n_checks
+        out.n_jac = run.n_jac
+        out.n_lu = run.n_lu
         return out
 
 
@@ -430,6 +436,17 @@ def dop853_tableau():
         e5[j] = D8_E5[j]
         e3[j] = D8_E3[j]
     return {"c": c, "A": A, "e5": e5, "e3": e3, "d": d}
+
+
+def radau_constants():
+    """The constants the RADAU5 loop runs (radau.pxd): c (3), gamma, alpha, beta, T and TI
+    (3 x 3), dd (3), and the Newton sweeps nit."""
+    T = np.array([[RA_T11, RA_T12, RA_T13], [RA_T21, RA_T22, RA_T23], [RA_T31, 1.0, 0.0]])
+    TI = np.array([[RA_TI11, RA_TI12, RA_TI13], [RA_TI21, RA_TI22, RA_TI23],
+                   [RA_TI31, RA_TI32, RA_TI33]])
+    return {"c": np.array([RA_C1, RA_C2, 1.0]), "gamma": RA_GAMMA, "alpha": RA_ALPHA,
+            "beta": RA_BETA, "T": T, "TI": TI, "dd": np.array([RA_DD1, RA_DD2, RA_DD3]),
+            "nit": RA_NIT}
 
 
 # -- evaluation helpers (vectorized, compiled) ------------------------------------

@@ -936,6 +936,8 @@ cdef int _chunk_run(Chunk* c, const double* p, const double* y0, const double* s
     c.run.stab_work = NULL
     c.run.stab_ratio = -1.0
     c.run.n_checks = 0
+    c.run.n_jac = 0
+    c.run.n_lu = 0
     c.run.exact = c.exact
     status = m.run(&c.run)
     # keep the (possibly grown) buffers for the next run

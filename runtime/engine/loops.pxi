@@ -1,5 +1,6 @@
 # The integration loops of camdyn: classical RK4, Dormand-Prince 5(4) and 8(5,3), RODAS4,
-# and the thesis's CAMSHAFT-1 scheme (4.23)-(4.31), written once here.
+# Radau IIA of order 5 (RADAU5), and the thesis's CAMSHAFT-1 scheme (4.23)-(4.31), written once
+# here.
 #
 # Every generated model module includes this file after defining its inline
 # `rhs`, `update_modes` and `prepare` (see camdyn/derive/templates/model.pyx.j2),
@@ -15,7 +16,7 @@
 #
 # Dense output.  Every point stores its slope f and the step starting there its
 # extras, the terms of Hairer's continuous extension beyond the cubic Hermite
-# interpolant (dense.pxd): none for RK4, the thesis scheme and RODAS4, DP54's
+# interpolant (dense.pxd): none for RK4, the thesis scheme, RODAS4 and RADAU5, DP54's
 # fourth-order term, DOP853's four terms of its seventh-order extension.
 
 from libc.math cimport NAN, cos, fabs, fmax, fmin, isfinite, isnan, pow, sin, sqrt
@@ -25,6 +26,7 @@ from libc.string cimport memcpy, memset
 from camdyn.runtime.engine.dense cimport dense_component, fit_extras, fit_matrix
 from camdyn.runtime.engine.dop853 cimport D8_A, D8_C, D8_D, D8_E3, D8_E5
 from camdyn.runtime.engine.linalg cimport lu_factor, lu_solve
+from camdyn.runtime.engine.radau cimport *
 
 
 cdef int _rec_grow(Record* r) noexcept nogil:
@@ -1289,8 +1291,8 @@ cdef extern from *:
 
 cdef int _jacobian(Run* run, Ctx* ctx, double t, const double* y, const double* f0, double span,
                    const double* ymag, double h, double* J, double* ft) noexcept nogil:
-    """J = df/dy (row-major: J[i * _NS + j] = df_i/dy_j) and ft = df/dt at (t, y); returns
-    the right-hand-side calls spent (they count in n_rhs).
+    """J = df/dy (row-major: J[i * _NS + j] = df_i/dy_j) and ft = df/dt at (t, y) unless ft is
+    NULL; returns the right-hand-side calls spent (they count in n_rhs).
 
     The model's generated Jacobian where it is symbolic (_JAC_SYMBOLIC, set by the template);
     else central differences, increment eps^(1/3) times the state's size: a Rosenbrock method is
@@ -1319,7 +1321,7 @@ cdef int _jacobian(Run* run, Ctx* ctx, double t, const double* y, const double* 
         # the model's generated Jacobian (derived symbolically with the equations): exact, and
         # no rhs calls; its manifest says "symbolic"; df/dt with it where derived
         jacobian(t, y, J, ft if _FT_SYMBOLIC else NULL, ctx)
-        if _FT_SYMBOLIC:
+        if _FT_SYMBOLIC or ft == NULL:
             return 0
     else:
         memcpy(yp, y, sizeof(yp))
@@ -1341,6 +1343,8 @@ cdef int _jacobian(Run* run, Ctx* ctx, double t, const double* y, const double* 
                 J[i * _NS + j] = (fp[i] - fm[i]) / (2.0 * d)
             yp[j] = yj
         calls = 2 * _NS
+    if ft == NULL:
+        return calls     # an implicit Runge-Kutta method needs no df/dt
     # the cam inputs make f depend on t; the increment scales with the interval when t ~ 0.
     # (Only where df/dt is not derived: a kink of f in t near the trajectory, a unilateral
     # contact, spoils this quotient and with it the method's order.)
@@ -1413,12 +1417,14 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
         tn = b if last else t + h
         if not have_jac:
             n_rhs += _jacobian(run, ctx, t, y, f0, b - a, ymag, h, J, ft)
+            run.n_jac += 1
             have_jac = True
         hinv = 1.0 / h
         for i in range(_NS * _NS):
             W[i] = -J[i]
         for i in range(_NS):
             W[i * _NS + i] += hinv / RO4_GAMMA
+        run.n_lu += 1
         if lu_factor(_NS, W, piv) != 0:
             # 1/(h gamma) is an eigenvalue of J: any other step avoids it
             h *= 0.5
@@ -1516,6 +1522,351 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
             h *= fmax(0.2, 0.9 * pow(err, -0.25))
             n_rej += 1
             rejected = True
+    free(J)
+    memcpy(run.y, y, sizeof(y))
+    run.n_steps = n_steps
+    run.n_rejected = n_rej
+    run.n_rhs += n_rhs
+    if status != STATUS_OK:
+        run.t_fail = t
+    return status
+
+
+# -- RADAU5: Radau IIA of order 5 (Hairer & Wanner II, sec. IV.8) -----------------------
+#
+# The three-stage collocation method at the right Radau points c = (4 - sqrt 6)/10,
+# (4 + sqrt 6)/10, 1, as in Hairer & Wanner's code RADAU5 (Solving ODEs II, sec. IV.8).  The
+# stage increments Z = (z1, z2, z3), z_i = Y_i - y, solve Z = h (A x I) F(Z); the simplified
+# Newton iteration transforms them with T (TI = T^-1) to W = (TI x I) Z, which turns A^-1
+# into diag(gamma, [[alpha, -beta], [beta, alpha]]) and the iteration matrix into one real
+# system (gamma/h - J) and one complex one ((alpha + i beta)/h - J).  The complex one is
+# solved here as the equivalent real system of twice the size,
+#
+#     [[alpha/h - J, -beta/h], [beta/h, alpha/h - J]] (w2, w3) = (r2, r3),
+#
+# with the LU of linalg.pxd: twice the flops of a complex LU, but the factors serve many steps
+# (they are renewed only when h changes or the Jacobian does), and one LU routine stays the
+# only one.  The error estimate is RADAU5's (sec. IV.8, "Error estimation"): (gamma/h - J)^-1
+# (f(y) + (e1 z1 + e2 z2 + e3 z3)/h), one more solve with the real factors, and after a
+# rejected or a first step that once more with f at y + err, which removes the estimate's
+# O(1) error on very stiff components.  The constants: radau.pxd.
+
+cdef int _radau_matrices(const double* J, double h, double* E1, int* piv1, double* E2,
+                         int* piv2) noexcept nogil:
+    """Factor gamma/h - J (E1, n x n) and the real form of (alpha + i beta)/h - J (E2, 2n x 2n);
+    nonzero when one is singular."""
+    cdef int i, j, m = 2 * _NS
+    cdef double g = RA_GAMMA / h, al = RA_ALPHA / h, be = RA_BETA / h
+    memset(E2, 0, m * m * sizeof(double))
+    for i in range(_NS):
+        for j in range(_NS):
+            E1[i * _NS + j] = -J[i * _NS + j]
+            E2[i * m + j] = -J[i * _NS + j]
+            E2[(i + _NS) * m + j + _NS] = -J[i * _NS + j]
+        E1[i * _NS + i] += g
+        E2[i * m + i] += al
+        E2[(i + _NS) * m + i + _NS] += al
+        E2[i * m + i + _NS] = -be
+        E2[(i + _NS) * m + i] = be
+    if lu_factor(_NS, E1, piv1) != 0:
+        return 1
+    return lu_factor(m, E2, piv2)
+
+
+cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
+    """RADAU5 over [a, b]: simplified Newton iterations with a Jacobian kept while they converge
+    fast and LU factors kept while h stays, Gustafsson's predictive step control, the DP54
+    loop's breakpoint, event and failure handling (the rules and constants of Hairer's
+    RADAU5, subroutine RADCOR)."""
+    cdef Ctx local_ctx = run.ctx[0]
+    cdef Ctx* ctx = &local_ctx
+    cdef int i, hit, newt, status = STATUS_OK
+    cdef double y[_NS]
+    cdef double f0[_NS]
+    cdef double z1[_NS]
+    cdef double z2[_NS]
+    cdef double z3[_NS]
+    cdef double w1[_NS]
+    cdef double w2[_NS]
+    cdef double w3[_NS]
+    cdef double k1[_NS]
+    cdef double k2[_NS]
+    cdef double k3[_NS]
+    cdef double r23[2 * _NS]
+    cdef double ak1[_NS]     # the last step's collocation polynomial (RADAU5's CONT), for the
+    cdef double ak2[_NS]     # Newton iteration's starting values
+    cdef double ak3[_NS]
+    cdef double ys[_NS]
+    cdef double yn[_NS]
+    cdef double fn[_NS]
+    cdef double ev[_NS]
+    cdef double wt[_NS]     # 1/(atol + rtol |y|): the Newton iteration's error weights
+    cdef double ymag[_NS]   # largest |y_j| of the interval so far: the Jacobian's increments
+    cdef int piv1[_NS]
+    cdef int piv2[2 * _NS]
+    cdef double g0[_NE1]
+    cdef double g1[_NE1]
+    cdef double t = a, tn, h, h_lu = 0.0, hold = 0.0, hnew, hacc = 0.0, erracc = 0.0
+    cdef double err, fac, quot, facgus, s_hit, rtol = run.rtol
+    cdef double theta, thq, thqold = 0.0, dyno, dynold = 0.0, dyth, faccon = 1.0, x
+    cdef double c1q, c2q, c3q, a1, a2, a3
+    cdef const double* atol = run.atol
+    cdef long n_steps = run.n_steps, n_rej = run.n_rejected, n_rhs = 0, max_steps = run.max_steps
+    cdef long n_acc = 0         # steps accepted since the interval's start or the last event
+    cdef bint last, rejected = False, first = True, need_jac = True, fresh_jac = False
+    cdef bint have_cont = False, converged, slow
+    # Hairer's `thet`: the Jacobian is kept after a step whose Newton iteration contracted by
+    # at least this much a sweep.  0.001, RADAU5's default for small systems, where the
+    # Jacobian is generated (a few products); 0.1, the value RADAU5's notes give for costly
+    # ones, where it is differenced (2 n_states right-hand-side calls)
+    cdef double thet = 0.001 if _JAC_SYMBOLIC else 0.1
+    # Newton's tolerance in units of the error weights (SciPy's Radau and RADAU5: at most 0.03)
+    cdef double fnewt = fmax(10.0 * 2.220446049250313e-16 / rtol, fmin(0.03, sqrt(rtol)))
+    cdef double cfac = RA_SAFE * (1 + 2 * RA_NIT)
+    # heap, not stack: _NS^2 grows fast for models built from user files
+    cdef double* J = <double*> malloc(6 * _NS * _NS * sizeof(double))
+    cdef double* E1
+    cdef double* E2
+    if J == NULL:
+        return STATUS_NO_MEMORY
+    E1 = J + _NS * _NS
+    E2 = E1 + _NS * _NS
+    memcpy(y, run.y, sizeof(y))
+    for i in range(_NS):
+        ymag[i] = fabs(y[i])
+    # slopes jump at a breakpoint: every interval starts afresh
+    rhs(t, y, f0, ctx)
+    n_rhs += 1
+    if _rec_point(run, t, y, f0) != 0:
+        free(J)
+        return STATUS_NO_MEMORY
+    if _NE > 0:
+        events(t, y, g0, ctx)
+    if run.h <= 0.0:
+        run.h = _dp_first_step(run, t, y, f0, fmin(b - a, run.h_max), 5.0)
+    h = fmin(run.h, run.h_max)
+    while t < b:
+        if n_steps + n_rej >= max_steps:
+            status = STATUS_MAX_STEPS
+            break
+        if h < 16.0 * 2.220446049250313e-16 * fabs(t):   # where t + h no longer moves t
+            status = STATUS_STEP_UNDERFLOW
+            break
+        last = t + 1.01 * h >= b
+        if last:
+            h = b - t
+        # one time for the last stage and the new point (the model caches cam values by t)
+        tn = b if last else t + h
+        if need_jac:
+            n_rhs += _jacobian(run, ctx, t, y, f0, b - a, ymag, h, J, NULL)
+            run.n_jac += 1
+            need_jac = False
+            fresh_jac = True
+            h_lu = 0.0
+        if h != h_lu:
+            run.n_lu += 1
+            if _radau_matrices(J, h, E1, piv1, E2, piv2) != 0:
+                # gamma/h or (alpha + i beta)/h is an eigenvalue of J: any other step avoids it
+                h *= 0.5
+                n_rej += 1
+                rejected = True
+                continue
+            h_lu = h
+        for i in range(_NS):
+            wt[i] = 1.0 / (atol[i] + rtol * fabs(y[i]))
+        # starting values: the last step's collocation polynomial extrapolated to the stages
+        if have_cont:
+            c3q = h / hold
+            c1q = RA_C1 * c3q
+            c2q = RA_C2 * c3q
+            for i in range(_NS):
+                z1[i] = c1q * (ak1[i] + (c1q - RA_C2M1) * (ak2[i] + (c1q - RA_C1M1) * ak3[i]))
+                z2[i] = c2q * (ak1[i] + (c2q - RA_C2M1) * (ak2[i] + (c2q - RA_C1M1) * ak3[i]))
+                z3[i] = c3q * (ak1[i] + (c3q - RA_C2M1) * (ak2[i] + (c3q - RA_C1M1) * ak3[i]))
+                w1[i] = RA_TI11 * z1[i] + RA_TI12 * z2[i] + RA_TI13 * z3[i]
+                w2[i] = RA_TI21 * z1[i] + RA_TI22 * z2[i] + RA_TI23 * z3[i]
+                w3[i] = RA_TI31 * z1[i] + RA_TI32 * z2[i] + RA_TI33 * z3[i]
+        else:
+            memset(z1, 0, sizeof(z1))
+            memset(z2, 0, sizeof(z2))
+            memset(z3, 0, sizeof(z3))
+            memset(w1, 0, sizeof(w1))
+            memset(w2, 0, sizeof(w2))
+            memset(w3, 0, sizeof(w3))
+        # the simplified Newton iteration (RADAU5's loop 40): theta, its contraction rate,
+        # predicts whether it converges within RA_NIT sweeps; if not, a smaller step at once
+        faccon = pow(fmax(faccon, 2.220446049250313e-16), 0.8)
+        theta = thet
+        newt = 0
+        converged = False
+        slow = False
+        while newt < RA_NIT:
+            for i in range(_NS):
+                ys[i] = y[i] + z1[i]
+            rhs(t + RA_C1 * h, ys, k1, ctx)
+            for i in range(_NS):
+                ys[i] = y[i] + z2[i]
+            rhs(t + RA_C2 * h, ys, k2, ctx)
+            for i in range(_NS):
+                ys[i] = y[i] + z3[i]
+            rhs(tn, ys, k3, ctx)
+            n_rhs += 3
+            for i in range(_NS):
+                a1 = RA_TI11 * k1[i] + RA_TI12 * k2[i] + RA_TI13 * k3[i]
+                a2 = RA_TI21 * k1[i] + RA_TI22 * k2[i] + RA_TI23 * k3[i]
+                a3 = RA_TI31 * k1[i] + RA_TI32 * k2[i] + RA_TI33 * k3[i]
+                k1[i] = a1 - w1[i] * RA_GAMMA / h
+                r23[i] = a2 - (RA_ALPHA * w2[i] - RA_BETA * w3[i]) / h
+                r23[i + _NS] = a3 - (RA_ALPHA * w3[i] + RA_BETA * w2[i]) / h
+            lu_solve(_NS, E1, piv1, k1)
+            lu_solve(2 * _NS, E2, piv2, r23)
+            newt += 1
+            dyno = 0.0
+            for i in range(_NS):
+                x = k1[i] * wt[i]
+                dyno += x * x
+                x = r23[i] * wt[i]
+                dyno += x * x
+                x = r23[i + _NS] * wt[i]
+                dyno += x * x
+            dyno = sqrt(dyno / (3 * _NS))
+            if not isfinite(dyno):
+                break
+            if newt > 1 and newt < RA_NIT:
+                thq = dyno / dynold
+                theta = thq if newt == 2 else sqrt(thq * thqold)
+                thqold = thq
+                if theta >= 0.99:
+                    break
+                faccon = theta / (1.0 - theta)
+                dyth = faccon * dyno / fnewt
+                for i in range(RA_NIT - 1 - newt):
+                    dyth *= theta
+                if dyth >= 1.0:
+                    # would not converge in the sweeps left: a step it converges on
+                    h *= 0.8 * pow(fmax(1e-4, fmin(20.0, dyth)), -1.0 / (4 + RA_NIT - 1 - newt))
+                    slow = True
+                    break
+            dynold = fmax(dyno, 2.220446049250313e-16)
+            for i in range(_NS):
+                w1[i] += k1[i]
+                w2[i] += r23[i]
+                w3[i] += r23[i + _NS]
+                z1[i] = RA_T11 * w1[i] + RA_T12 * w2[i] + RA_T13 * w3[i]
+                z2[i] = RA_T21 * w1[i] + RA_T22 * w2[i] + RA_T23 * w3[i]
+                z3[i] = RA_T31 * w1[i] + w2[i]
+            if faccon * dyno <= fnewt:
+                converged = True
+                break
+        err = 0.0
+        if converged:
+            # the error estimate (8.19), refined by (8.20) after a first or rejected step
+            for i in range(_NS):
+                k2[i] = (RA_DD1 * z1[i] + RA_DD2 * z2[i] + RA_DD3 * z3[i]) / h
+                ev[i] = k2[i] + f0[i]
+            lu_solve(_NS, E1, piv1, ev)
+            for i in range(_NS):
+                yn[i] = y[i] + z3[i]
+            err = fmax(_rms(ev, y, yn, rtol, atol), 1e-10)
+            if err >= 1.0 and (first or rejected):
+                for i in range(_NS):
+                    ys[i] = y[i] + ev[i]
+                rhs(t, ys, k1, ctx)
+                n_rhs += 1
+                for i in range(_NS):
+                    ev[i] = k1[i] + k2[i]
+                lu_solve(_NS, E1, piv1, ev)
+                err = fmax(_rms(ev, y, yn, rtol, atol), 1e-10)
+            converged = isfinite(err)
+        if not converged:
+            if not _finite(_NS, y):
+                status = STATUS_NOT_FINITE
+                break
+            # diverging, too slow or a NaN in a stage: RADAU5's unexpected rejection, a new
+            # Jacobian unless this one is fresh
+            if not slow:
+                h *= 0.5
+            n_rej += 1
+            rejected = True
+            if not fresh_jac:
+                need_jac = True
+            continue
+        fac = fmin(RA_SAFE, cfac / (newt + 2 * RA_NIT))
+        quot = fmax(RA_FACR, fmin(RA_FACL, sqrt(sqrt(err)) / fac))
+        hnew = h / quot
+        if err < 1.0:
+            first = False
+            if n_acc > 0:
+                # Gustafsson's predictive controller (RADAU5's PRED)
+                facgus = (hacc / h) * sqrt(sqrt(err * err / erracc)) / RA_SAFE
+                quot = fmax(quot, fmax(RA_FACR, fmin(RA_FACL, facgus)))
+                hnew = h / quot
+            hacc = h
+            erracc = fmax(1e-2, err)
+            n_acc += 1
+            n_steps += 1
+            rhs(tn, yn, fn, ctx)   # slope at the new point: recorded, and the next step's f0
+            n_rhs += 1
+            # the collocation polynomial of the step, for the next step's starting values
+            for i in range(_NS):
+                ak1[i] = (z2[i] - z3[i]) / RA_C2M1
+                x = (z1[i] - z2[i]) / RA_C1MC2
+                ak2[i] = (x - ak1[i]) / RA_C1M1
+                ak3[i] = ak2[i] - (x - z1[i] / RA_C1) / RA_C2
+            if _NE > 0:
+                hit = _event_in_step(run, t, h, y, yn, f0, fn, NULL, 0, g0, g1, &s_hit)
+                if hit >= 0:
+                    # cut the step at the crossing: state from the step's cubic Hermite extension
+                    _dense(s_hit, h, y, yn, f0, fn, NULL, 0, ys)
+                    t = t + s_hit * h
+                    memcpy(y, ys, sizeof(y))
+                    rhs(t, y, f0, ctx)
+                    n_rhs += 1
+                    status = _apply_event(run, hit, t, y, f0, g0)
+                    if status != STATUS_OK:
+                        break
+                    # the event refreshed run.ctx (the rhs variant of the new cam segments):
+                    # a new Jacobian, and nothing to extrapolate from
+                    local_ctx = run.ctx[0]
+                    rejected = False
+                    first = True
+                    need_jac = True
+                    have_cont = False
+                    n_acc = 0
+                    continue
+                memcpy(g0, g1, sizeof(g0))
+            hold = h
+            have_cont = True
+            t = tn
+            memcpy(y, yn, sizeof(y))
+            memcpy(f0, fn, sizeof(f0))
+            for i in range(_NS):
+                ymag[i] = fmax(ymag[i], fabs(y[i]))
+            if _rec_point(run, t, y, f0) != 0:
+                status = STATUS_NO_MEMORY
+                break
+            if not last:
+                run.h = h
+            hnew = fmin(hnew, run.h_max)
+            if rejected:
+                hnew = fmin(hnew, h)
+            rejected = False
+            fresh_jac = False
+            # keep h, and with it the LU factors, when the Newton iteration converged fast and
+            # the new step would be at most 20 % longer (RADAU5's QUOT1, QUOT2)
+            if not (theta <= thet and RA_QUOT1 <= hnew / h <= RA_QUOT2):
+                h = hnew
+            if theta > thet:
+                need_jac = True
+        else:
+            n_rej += 1
+            if first:
+                h *= 0.1
+            else:
+                h = hnew
+            rejected = True
+            if not fresh_jac:
+                need_jac = True
     free(J)
     memcpy(run.y, y, sizeof(y))
     run.n_steps = n_steps
@@ -1790,6 +2141,8 @@ cdef int run_loops(Run* run) noexcept nogil:
             status = _loop_dop853(run, a, b)
         elif run.method == METHOD_RODAS:
             status = _loop_rodas(run, a, b)
+        elif run.method == METHOD_RADAU:
+            status = _loop_radau(run, a, b)
         else:
             status = _loop_fixed(run, a, b)
         if status != STATUS_OK:
