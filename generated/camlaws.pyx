@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a470ebab39b8cf255daccfa068fea318a6a1dd1d8f4e31991e0409627d155aec
-# Text hash: sha256:599a6587d75f4322bd09067cea271808fe04f41b606ad5df613a49fe6d8b5f8e
+# Derivation key: sha256:f7370b1e4ee9d89b41173c7d9cc777d01e1d33c500598e931198b92972c50c87
+# Text hash: sha256:ef4728107f35b27cde073ae807117a18da4b5298c10eb0fb3bf403561f1df1ce
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

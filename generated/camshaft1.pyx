@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b0340bdb9ab172e9e046a475305da4518ee3e8bd2ff73498dbb138da08d75996
-# Text hash: sha256:3da83693fe5b668f4a4d9ef73d1ddb40fe1f6f16b7a063a330668a3d11c23430
+# Derivation key: sha256:abc2b1fffe784aff908aae7ccdc77d252378d8e5d86b2f643b8f2bc80f3f1cf2
+# Text hash: sha256:78b27ab3cdfee5eda2331f5008e0ae0afda6332c5da4a324fa9716a6961c0df4
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233
@@ -48,6 +48,7 @@ cdef enum:
     _NE1 = 1
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -211,6 +212,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -250,6 +256,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:efab2415d6493dbcb79592970e75ac8ce9c4cb17709ff048a721d6b2139d3d8d
-# Text hash: sha256:2de180dfd76dc7c3dd8edcbcd14f9572d57cba01b578411cda5240031a610cc2
+# Derivation key: sha256:35b91f9144e6889ca19b07d34320a9b51505cce6be6daa9544f38e28151d2f33
+# Text hash: sha256:191e61088ca30b46e4eba65ee0c34dc29fd3fa757d180235e8c3eed218689ee4
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a
@@ -49,6 +49,7 @@ cdef enum:
     _NE1 = 2
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi
@@ -303,6 +304,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -344,6 +350,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

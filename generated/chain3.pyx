@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6f0ce5bedde8398de00f314df37cbf1223173273a3d692123bea07da16757fd4
-# Text hash: sha256:58cd57c10a04747ec2a0e51522f40d7e1f197ca497bc6496403544f3add28772
+# Derivation key: sha256:813990da486a8a4914a956ee3c3ac4101298febadaff7732119b037e03dd6764
+# Text hash: sha256:1ddfd1903c5f4bb42072d9072f9f665ca5d5653131f3a5ae0f39565bc67e1591
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f
@@ -44,6 +44,7 @@ cdef enum:
     _NE1 = 1
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -315,6 +316,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -364,6 +370,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

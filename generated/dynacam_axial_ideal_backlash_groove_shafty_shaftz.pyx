@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:af364af0a2933d5bd913b24c9ad9f7fc5e5eab15ac5c9bcb539d576daaa613c4
-# Text hash: sha256:52c8d0b36b9678af684680275cdbcf4b4076487e2c59ac1ccda1698585dcd8da
+# Derivation key: sha256:cf86a0da1543f7865990965898ed7ee7a02493a457e4283514efbde527aa390e
+# Text hash: sha256:cdc42aa4da57182429f7b0e92f52ba78ac0c57079457325b4fc756476faaea28
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc
@@ -81,6 +81,7 @@ cdef enum:
     _NE1 = 10
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # gear_lift_drive
@@ -983,6 +984,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -1056,6 +1062,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

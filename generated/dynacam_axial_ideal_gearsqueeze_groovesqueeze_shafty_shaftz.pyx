@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:396d1cc86005d04e7b0a2ba2e5d336befcf969f573d96735d56970b4c01327ea
-# Text hash: sha256:1920187b65524842d189dddaaba5eea4dc18af37760dc6244a2459f907779d3e
+# Derivation key: sha256:67ba6e85c2c43a5bced5d9586a6d051c86ce0fcf3bdb918e9741586e63b1e5c5
+# Text hash: sha256:bd56e49bdfa83d07cd1ededbb5e182d973b96301cd92b113e9cf683009575f80
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:244320aa74994aa9e669e9639536961ba92c6b1c23be07561292a0c9dea13c5c
@@ -81,6 +81,7 @@ cdef enum:
     _NE1 = 2
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi
@@ -2640,6 +2641,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -2717,6 +2723,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:66d26ad8504bcf0f8e60436a042bc0ecd6466b9d6b7a24ab7c68a76da1bf0374
-# Text hash: sha256:461f50022c896d4e275a915f87a200e63b881e3cbe46ab753a6bfa6a26d3d76b
+# Derivation key: sha256:695b41302de2dc255d2cd8b43915bf72ec3b805bd083b2e4adf63cae18e4991a
+# Text hash: sha256:b996f80d971336f21afa46d68988381031366a1ec89ab822ac12ee0f9b2d3874
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e
@@ -81,6 +81,7 @@ cdef enum:
     _NE1 = 2
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi
@@ -1407,6 +1408,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -1476,6 +1482,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

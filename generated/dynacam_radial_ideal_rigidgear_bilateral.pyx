@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:52bc8f41c0002c9f4b96f3244b61c097cc12f56dfeb3e44def9a84ace0c9a14a
-# Text hash: sha256:50cc65c9c99671c542cf9f995bdcb37a8e8bfd2d82c80f4039a0886cca535986
+# Derivation key: sha256:35bbf1bb874d56b74a00fb483c5328a990e9f093ebac062889d273266addaff3
+# Text hash: sha256:f8ea55cd4100f1a65add2580269cb4d8023d79852355f03e02bb1c83046e9869
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:747e34dbea18a7d307dc7101158b4419fb0642de73f52917507a7d1b1d7004c3
@@ -81,6 +81,7 @@ cdef enum:
     _NE1 = 2
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # cam0_hi
@@ -678,6 +679,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -735,6 +741,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:66a29a4d81378caa26f5b7bac33ff09952d3f2d07bac9f15d0cae98648f5f469
-# Text hash: sha256:e63ed38b5134a21c6656c22cda884b66b15edaf96bc7fc6a36265e94d8b62502
+# Derivation key: sha256:f635c9998f286aa19827bb0d850a8de5a7dd207da35a786a9fccd6f86f6273df
+# Text hash: sha256:c1bba92f0e3a36550e3d7721be27a737d1ab8a0efc839d305810a577d44553df
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7df6f3da3414231df3e2e1f7adc385d77f7cfc0e35b975f115056fce8cb53bba
@@ -81,6 +81,7 @@ cdef enum:
     _NE1 = 10
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # roller_lift
@@ -1409,6 +1410,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -1486,6 +1492,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

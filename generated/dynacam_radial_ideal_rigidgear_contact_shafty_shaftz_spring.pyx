@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8b65ff794ea6b30855e776bc7a107c6a7326226d2704494b9db17e5f911b00d8
-# Text hash: sha256:b52da6f891fdb4240626ed14bc16004da770a51aa89414ddfc2c5fb47dbac248
+# Derivation key: sha256:c27408d41f51b85fcf241910a2c742744f988d56d28f233a47cf4c43e0d58028
+# Text hash: sha256:c05b543dd6fd6eb939b6e020db61067dd5d0f8bbaf6370db8d8a6f277a3c50ac
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1
@@ -81,6 +81,7 @@ cdef enum:
     _NE1 = 4
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # roller_lift
@@ -1096,6 +1097,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -1169,6 +1175,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

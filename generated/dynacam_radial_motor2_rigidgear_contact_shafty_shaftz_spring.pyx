@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:13480ffa0d0023165d87f5a69bf928d6b732714ffe2947648ce739c9921d661c
-# Text hash: sha256:95a6e7e970a0d19fd17320649524a6248a97ad9e2da30b50af1f14c8d021dadf
+# Derivation key: sha256:5e0526f99648f1f1f3dc75ac722d7a93fa1a119408e6b228af464be96d07396c
+# Text hash: sha256:fe347ce9273f4e8b8bdd013279f640e58cf215d0a1ce8d12e90d614ee330d400
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:775dc74d7dd69da69bafb1940d40799b0a663f4cd304542cf146150dfdb0178d
@@ -81,6 +81,7 @@ cdef enum:
     _NE1 = 6
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # roller_lift
@@ -1291,6 +1292,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -1374,6 +1380,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

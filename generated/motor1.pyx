@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:41f9c7d7fcad5849c0ba7c9efb7322e4ee0a80db7a90a667020af358f9efdace
-# Text hash: sha256:e84589ff57318d21f8dd7c749ab5d85e779a60f5bcd8e81c4c2f3284b4efba60
+# Derivation key: sha256:f926c92b512e651a26fd71f6966363e9d4f35d46f2a81b1aa133b66a5a943615
+# Text hash: sha256:f776997178c7ae752ce3337567298e4bcc975e8a077e5c4c2adab09b2a6002ef
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68
@@ -46,6 +46,7 @@ cdef enum:
     _NE1 = 1
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -206,6 +207,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -249,6 +255,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0809cfa53ca313bca428e882566f4c100b3383315fbbc76fb3e5c647cce8cba1
-# Text hash: sha256:d02076d26c0e1886b314c2be5bfb03992d280d4393f0776a7945a89b8206019e
+# Derivation key: sha256:1a36f3ccb0a8e199be06283aeb8ea44550fd5b889dcc424ddf17f8e16879b952
+# Text hash: sha256:4926a6831dd12c13832061e1f9ae7a1f1de6756d3ac8b48f940ca633f2294dd3
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71
@@ -46,6 +46,7 @@ cdef enum:
     _NE1 = 1
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -233,6 +234,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -278,6 +284,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8797b9a8fe662f8c1f8ef253842649b2613eeaad077495763698377eeae8a811
-# Text hash: sha256:9627a47b03c78f2f5f1db0c1e7bd4ad56ab0d38cc13053d8fd55d2b6fb58d698
+# Derivation key: sha256:9f69aee88dd9289a4751ff8c84c26e4c6c7245e68713d120bd1c32d38e6c51b4
+# Text hash: sha256:d7a0847402543012a7878c9a0c02dbd211bb8f7eaed97bb67cf00ecf9a1ab912
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073
@@ -45,6 +45,7 @@ cdef enum:
     _NE1 = 1
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -213,6 +214,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -252,6 +258,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:27b0cfbf1eb27f3ac3dcce06462dca0ae8552b52e26df03ee3eadf8ec36de6e7
-# Text hash: sha256:17a02469bceb45b194dafd8e318eacd1eed7e76ee99f1b726dcef93ab8e1c28a
+# Derivation key: sha256:a18dd5e8ecd01aa86fc33e6306b893e47689f3d39956adb41fb9723ec4b46438
+# Text hash: sha256:d349342c26b418e85c977eb372533348e44c249f48bf03b4ec12036053ebc8e9
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27
@@ -68,6 +68,7 @@ cdef enum:
     _NE1 = 4
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = -1  # contact_open_lower
@@ -543,6 +544,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -594,6 +600,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

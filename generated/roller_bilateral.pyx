@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e02658720d7bfba1f89c89876c44b79bac2857e25aa3d73f5c6ef22c12b90170
-# Text hash: sha256:d77679fea1577e5f62963ad574716256bee4798d3bd24ec4db0f54ac9dd993c7
+# Derivation key: sha256:8f302dddf0242458bd1eccff63996a70bfaadc9204d34dfeb1c9eb5f3f984359
+# Text hash: sha256:00cb7cce3fcc5429c6ac2534f6beae1ec78ae1561ff5f0f08bab7c191168ad6c
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360
@@ -34,6 +34,7 @@ cdef enum:
     _NE1 = 1
     _JAC_SYMBOLIC = 1           # jacobian() is derived symbolically: the implicit loops use it
     _FT_SYMBOLIC = 1            # jacobian() also gives df/dt
+    _PROJECTS = 0               # no constraints: nothing to project after a step (project())
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -333,6 +334,11 @@ cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept no
     rhs(t, _y, _dy, ctx)
 
 
+cdef inline int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """No constraints to project onto (ModelC.project is NULL)."""
+    return 0
+
+
 # the integration loops of camdyn.runtime, compiled here with rhs() inlined
 include "camdyn/runtime/engine/loops.pxi"
 
@@ -378,6 +384,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = NULL
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)

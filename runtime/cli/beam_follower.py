@@ -69,8 +69,10 @@ def add(sub):
                    help=f"roller moment of inertia J_r, kg m^2, >= 0 (default: uniform disc "
                         f"m_r r_r^2/2 = {disc:g}); 0 ignores the roller's rotation")
     b.add_argument("--formulation", choices=tuple(FORMULATIONS),
-                   help=f"augmented (multipliers, Baumgarte) or partitioned (coordinate "
-                        f"partitioning, paper (21)-(27)); default {dflt['formulation']}")
+                   help=f"augmented (multipliers, Baumgarte), partitioned (coordinate "
+                        f"partitioning, paper (21)-(27)) or projection (multipliers, the "
+                        f"state projected onto the constraints after every step); default "
+                        f"{dflt['formulation']}")
     b.add_argument("--method", choices=ADAPTIVE,
                    help=f"integration method (default {dflt['method']}); rodas4, the stiff "
                         f"solver, suits stiff rods (large E, many modes)")
