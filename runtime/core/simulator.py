@@ -313,9 +313,10 @@ class Simulator:
         fault = diagnosis.explain(m, p, self.law_codes, self.law_pars, out)
         if fault is not None and fault.at_start:     # the input, not the run
             raise CamdynInputError(f"{m.name}: {fault.text}")
+        why = (driver.PROJECTION_TEXT if out.status == driver.NO_CONVERGENCE
+               and self.method.name != "koster" else driver.STATUS_TEXT[out.status])
         raise SimulationError(f"{m.name} with {self.method.name}: " + (
-            fault.text if fault else
-            f"{driver.STATUS_TEXT[out.status]} at {tname} = {out.t_fail:.6g}"))
+            fault.text if fault else f"{why} at {tname} = {out.t_fail:.6g}"))
 
     def _consistent(self, p, y):
         """A constrained model's initial state on its constraints: the dependent coordinates

@@ -76,6 +76,12 @@ STATUS_TEXT = {
     STATUS_UNSTABLE: "the step is beyond the method's stability boundary; use a smaller step",
 }
 UNSTABLE = STATUS_UNSTABLE
+NO_CONVERGENCE = STATUS_NO_CONVERGENCE
+PROJECTION_TEXT = ("the projection onto the constraints did not converge (formulation 2: no "
+                   "configuration on them near the step's end, or Phi_Q losing rank there); "
+                   "try a tighter rtol or formulation 0")
+"""What STATUS_NO_CONVERGENCE means in every method but the thesis scheme: a constrained
+model's project() failed after an accepted step (loops.pxi, _project_accepted)."""
 CHECK_OFF, CHECK_ESTIMATE, CHECK_STOP = 0, 1, 2
 
 # Integrator.run allocates its record with these, called positionally: looking up np.empty
