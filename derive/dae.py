@@ -191,7 +191,7 @@ def constrained_context(eq: Equations) -> dict:
 def _cam_order(symbol: sp.Symbol):
     """(instance, order) of a plain cam symbol ``_cam<i>_<k>``, or None."""
     m = _CAM_SYMBOL.fullmatch(symbol.name)
-    return None if m is None else (int(m.group(1)), int(m.group(2)))
+    return None if m is None else tuple(int(g) for g in m.groups())
 
 
 def _jacobian_parts(eq: Equations, plain, Phi_t: sp.Matrix) -> dict:

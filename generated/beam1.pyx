@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1c0abe7a91e6272ee4f85c399d8aa86b9f62a04ef5f3fe0b1c2cbce866f28fd6
-# Text hash: sha256:27633c185abe5e2377e148d02cd4b5ed9d7e7007ea8a7f8f044a4fd5db3f71eb
+# Derivation key: sha256:b81bfd198d7a73ea8abcc782ae291a17c61c0dd92401588f023c9350f4286f4c
+# Text hash: sha256:35245ffb2eeba37ceb5b3cb2e12a43c583cb2f865a26892e1ca331b190260cd2
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:c16b3556f450993e2cc9f2fd4a99c60d51901b4ed16007df3788e4358514ae33
@@ -1986,8 +1986,8 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     iteration did not converge; 0 in the other formulations, which leave y alone.
 
     Positions: Gauss-Newton steps dQ minimizing dQ^T M dQ subject to Phi + Phi_Q dQ = 0,
-    i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step is at rounding
-    level; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
+    i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
+    coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
     the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
     it is independent of the coordinates' units (a beam's modal amplitudes in m beside a cam
     angle in rad) and removes the least kinetic energy from the rates, and its matrix is
@@ -1997,7 +1997,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _ph[_NC]
     cdef double _phd[_NC]
     cdef int i, it
-    cdef double step = 0.0
+    cdef double step = 0.0, prev = 1e300
     if _formulation(ctx) != 2:
         return 0
     for it in range(10):
@@ -2012,9 +2012,12 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
         for i in range(_NQ):
             _y[i] += _b[i]
             step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
-        if step < 1e-13:
+        # converged, or no longer shrinking: at the level of the augmented solve's rounding
+        # (a beam's modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        if step < 1e-13 or step > 0.5 * prev:
             break
-    if step >= 1e-10:   # not even at rounding level after 10 steps (quadratic convergence)
+        prev = step
+    if step >= 1e-6:    # diverging, or stuck far from the constraints
         return -1
     _system(t, _y, _A, _b, _ph, _phd, ctx)
     for i in range(_NQ):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:18ea8d79613d6e449083bc08531c0fe4449c0af904b6e760db29cc8c0b278d0c
-# Text hash: sha256:8e9db061eaa93f5ce2fbad65acde0c0d3e7b27c3126b5df4dd6106635f2cf998
+# Derivation key: sha256:dbd1fcdd1641dabd4587a0a4416be9ee7e946c7505e5e6aa6fbaf8131b8020b2
+# Text hash: sha256:160169f10d248a61cc4ee091a4ae3aa1ed6c1af793f1d6a9712314366edfee6a
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:a4c10ed1c7eeed79759d12da9812dfb2e08f6d7ceaf7defeb99a53905305f1ad
@@ -3680,8 +3680,8 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     iteration did not converge; 0 in the other formulations, which leave y alone.
 
     Positions: Gauss-Newton steps dQ minimizing dQ^T M dQ subject to Phi + Phi_Q dQ = 0,
-    i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step is at rounding
-    level; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
+    i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
+    coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
     the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
     it is independent of the coordinates' units (a beam's modal amplitudes in m beside a cam
     angle in rad) and removes the least kinetic energy from the rates, and its matrix is
@@ -3691,7 +3691,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _ph[_NC]
     cdef double _phd[_NC]
     cdef int i, it
-    cdef double step = 0.0
+    cdef double step = 0.0, prev = 1e300
     if _formulation(ctx) != 2:
         return 0
     for it in range(10):
@@ -3706,9 +3706,12 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
         for i in range(_NQ):
             _y[i] += _b[i]
             step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
-        if step < 1e-13:
+        # converged, or no longer shrinking: at the level of the augmented solve's rounding
+        # (a beam's modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        if step < 1e-13 or step > 0.5 * prev:
             break
-    if step >= 1e-10:   # not even at rounding level after 10 steps (quadratic convergence)
+        prev = step
+    if step >= 1e-6:    # diverging, or stuck far from the constraints
         return -1
     _system(t, _y, _A, _b, _ph, _phd, ctx)
     for i in range(_NQ):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:55f4a5c44d79b494822a074467990238f3f2fb900b4de408d47686c838eac501
-# Text hash: sha256:442a338c1192ba53989761113df824a6e0d40345a83280395b1a7ed3edae9d4a
+# Derivation key: sha256:5f92d537fc687f0a9b0b0421e57a3ccef037ebeeba34e3a6afb932af15251cad
+# Text hash: sha256:46456dcc43a9bb149a46c212dccf7baf5debe81c09099baa6a8a5504a09ab7a6
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:64a7efcd9334b75fa69119f83904c9f9c8d47957738123d27eab23d9cd1693f4
@@ -5043,8 +5043,8 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     iteration did not converge; 0 in the other formulations, which leave y alone.
 
     Positions: Gauss-Newton steps dQ minimizing dQ^T M dQ subject to Phi + Phi_Q dQ = 0,
-    i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step is at rounding
-    level; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
+    i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
+    coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
     the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
     it is independent of the coordinates' units (a beam's modal amplitudes in m beside a cam
     angle in rad) and removes the least kinetic energy from the rates, and its matrix is
@@ -5054,7 +5054,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _ph[_NC]
     cdef double _phd[_NC]
     cdef int i, it
-    cdef double step = 0.0
+    cdef double step = 0.0, prev = 1e300
     if _formulation(ctx) != 2:
         return 0
     for it in range(10):
@@ -5069,9 +5069,12 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
         for i in range(_NQ):
             _y[i] += _b[i]
             step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
-        if step < 1e-13:
+        # converged, or no longer shrinking: at the level of the augmented solve's rounding
+        # (a beam's modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        if step < 1e-13 or step > 0.5 * prev:
             break
-    if step >= 1e-10:   # not even at rounding level after 10 steps (quadratic convergence)
+        prev = step
+    if step >= 1e-6:    # diverging, or stuck far from the constraints
         return -1
     _system(t, _y, _A, _b, _ph, _phd, ctx)
     for i in range(_NQ):

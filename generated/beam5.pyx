@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4f570e5ecfb771e829a4e6a35034818d517502291ca15bf28bd6913786d98177
-# Text hash: sha256:5da539d1d3bc71a4c568adee6088378865a925b1e58b388e05cc85d5df54a55b
+# Derivation key: sha256:9f7fd1b6c28adc6d8629fa6c29e168d0f24b41e7898dab2d1d027e5025d17e07
+# Text hash: sha256:3722f042a58abd4355666e1939b693d28bd3ff53472b2483dfdcfcc98ddc36d6
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:611aaf7763e70cfb79e109e16ea0ebff594dfa47598c04509a2d122462a61666
@@ -6700,8 +6700,8 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     iteration did not converge; 0 in the other formulations, which leave y alone.
 
     Positions: Gauss-Newton steps dQ minimizing dQ^T M dQ subject to Phi + Phi_Q dQ = 0,
-    i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step is at rounding
-    level; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
+    i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
+    coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
     the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
     it is independent of the coordinates' units (a beam's modal amplitudes in m beside a cam
     angle in rad) and removes the least kinetic energy from the rates, and its matrix is
@@ -6711,7 +6711,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _ph[_NC]
     cdef double _phd[_NC]
     cdef int i, it
-    cdef double step = 0.0
+    cdef double step = 0.0, prev = 1e300
     if _formulation(ctx) != 2:
         return 0
     for it in range(10):
@@ -6726,9 +6726,12 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
         for i in range(_NQ):
             _y[i] += _b[i]
             step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
-        if step < 1e-13:
+        # converged, or no longer shrinking: at the level of the augmented solve's rounding
+        # (a beam's modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        if step < 1e-13 or step > 0.5 * prev:
             break
-    if step >= 1e-10:   # not even at rounding level after 10 steps (quadratic convergence)
+        prev = step
+    if step >= 1e-6:    # diverging, or stuck far from the constraints
         return -1
     _system(t, _y, _A, _b, _ph, _phd, ctx)
     for i in range(_NQ):

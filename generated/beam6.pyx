@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:60554412a14fec2cf7200f82af26602454c42aa9f5b56c68a6866c8c413b51cd
-# Text hash: sha256:3768dc4b51636ed0238225d2a030ac0cd00620f6df4b3d2c369cf3202edebbaf
+# Derivation key: sha256:08db4117f9a5c5799f5ca642790400f88bedcb76764b27c4fe0819a0d76ad3e5
+# Text hash: sha256:ad7371e5c13e5417f5bc438f019654f5fb64047f025663daa448df68a2ba0108
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:ba76292f91dfbbd6b8d39b0bd7d40b2000e3a575b4d3c5fd9aa69df4a2837883
@@ -8805,8 +8805,8 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     iteration did not converge; 0 in the other formulations, which leave y alone.
 
     Positions: Gauss-Newton steps dQ minimizing dQ^T M dQ subject to Phi + Phi_Q dQ = 0,
-    i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step is at rounding
-    level; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
+    i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
+    coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
     the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
     it is independent of the coordinates' units (a beam's modal amplitudes in m beside a cam
     angle in rad) and removes the least kinetic energy from the rates, and its matrix is
@@ -8816,7 +8816,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     cdef double _ph[_NC]
     cdef double _phd[_NC]
     cdef int i, it
-    cdef double step = 0.0
+    cdef double step = 0.0, prev = 1e300
     if _formulation(ctx) != 2:
         return 0
     for it in range(10):
@@ -8831,9 +8831,12 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
         for i in range(_NQ):
             _y[i] += _b[i]
             step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
-        if step < 1e-13:
+        # converged, or no longer shrinking: at the level of the augmented solve's rounding
+        # (a beam's modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        if step < 1e-13 or step > 0.5 * prev:
             break
-    if step >= 1e-10:   # not even at rounding level after 10 steps (quadratic convergence)
+        prev = step
+    if step >= 1e-6:    # diverging, or stuck far from the constraints
         return -1
     _system(t, _y, _A, _b, _ph, _phd, ctx)
     for i in range(_NQ):

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:abc2b1fffe784aff908aae7ccdc77d252378d8e5d86b2f643b8f2bc80f3f1cf2
-# Text hash: sha256:78b27ab3cdfee5eda2331f5008e0ae0afda6332c5da4a324fa9716a6961c0df4
+# Derivation key: sha256:5bcd0f23514b6728842b405d8a5b7f7a86afde23e34f717040d066b57ec0841d
+# Text hash: sha256:d9964b3c15e1a76c191714c77d484dd4f3c7e70acbbc3e0fbc39293bd6f44a66
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:35b91f9144e6889ca19b07d34320a9b51505cce6be6daa9544f38e28151d2f33
-# Text hash: sha256:191e61088ca30b46e4eba65ee0c34dc29fd3fa757d180235e8c3eed218689ee4
+# Derivation key: sha256:0de7f7771a249e8bdaff48d433dfad37b08357dc8e423851c8f4e7ff45aa87f9
+# Text hash: sha256:46fd40fcd5c4fcc1172b9acfa65f0c7047081000999a48a3997fe91a3a192a3f
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:cf86a0da1543f7865990965898ed7ee7a02493a457e4283514efbde527aa390e
-# Text hash: sha256:cdc42aa4da57182429f7b0e92f52ba78ac0c57079457325b4fc756476faaea28
+# Derivation key: sha256:781f752194ee53f3058ddf2c7ab758e8930e7f3081ff54ea104e2a5535a0592c
+# Text hash: sha256:753870eafa78e8d0aff96d4bdf5417462f534d840b1d49157e253824328f0214
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:695b41302de2dc255d2cd8b43915bf72ec3b805bd083b2e4adf63cae18e4991a
-# Text hash: sha256:b996f80d971336f21afa46d68988381031366a1ec89ab822ac12ee0f9b2d3874
+# Derivation key: sha256:6ab65cbd45ffcc6c7a557ba4bacaff1681605a772063588099c0f75c174a476d
+# Text hash: sha256:6edc61fce858fe78953a447d9ea388d4b7205fdfb28a12cb8d95d4395a4abc9f
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e

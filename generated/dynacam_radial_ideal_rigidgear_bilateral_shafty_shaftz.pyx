@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:818d099ecd553c1af0ccfc2d25a62719db0b9a932d2ea160458ac7b98a7778f2
-# Text hash: sha256:c506762d28abd6fca2b21752082e329248c1d6c6a143dbe81c88585287f28986
+# Derivation key: sha256:72d78ad3394c02344e01682aba64fe7def5bb7aa97df21aebd016b6a7d6c0e8f
+# Text hash: sha256:31bd6d66c25a11779071ac7649bf184c0ecddea932ec9bf49c7d793cc1768d1c
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:478faccf329f7294d2cd47f536ad5f78fa53fe5d590d1d87b6cb5079502bd98d

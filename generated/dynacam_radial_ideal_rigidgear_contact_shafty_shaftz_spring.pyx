@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c27408d41f51b85fcf241910a2c742744f988d56d28f233a47cf4c43e0d58028
-# Text hash: sha256:c05b543dd6fd6eb939b6e020db61067dd5d0f8bbaf6370db8d8a6f277a3c50ac
+# Derivation key: sha256:e37fb8a556479477a6f34b26fefe6193f9882da1a82d045f9eb55bfc47ab5133
+# Text hash: sha256:81149c382343bdf06f3c52e0ff2c54fbaacc7334c68a5e71633dde0f79740fa1
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1

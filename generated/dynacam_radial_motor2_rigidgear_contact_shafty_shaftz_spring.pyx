@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:5e0526f99648f1f1f3dc75ac722d7a93fa1a119408e6b228af464be96d07396c
-# Text hash: sha256:fe347ce9273f4e8b8bdd013279f640e58cf215d0a1ce8d12e90d614ee330d400
+# Derivation key: sha256:4a5e172dbeb190c61f12334baf01aa9111f92331f4aaa0aee3e312296e770e37
+# Text hash: sha256:2b864b090f9a87c77cb2ed728068653fff712e7de37fc9c47e23207c28d96d85
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:775dc74d7dd69da69bafb1940d40799b0a663f4cd304542cf146150dfdb0178d

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f926c92b512e651a26fd71f6966363e9d4f35d46f2a81b1aa133b66a5a943615
-# Text hash: sha256:f776997178c7ae752ce3337567298e4bcc975e8a077e5c4c2adab09b2a6002ef
+# Derivation key: sha256:28830a1eabd85a09444f270d3bdd441129238eafc907f38ee3021828f3f9b7f8
+# Text hash: sha256:5687bdf6664484c165dc4d6f0d775aeef4ee440134b7cbc25ee72eb7d3897fff
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1a36f3ccb0a8e199be06283aeb8ea44550fd5b889dcc424ddf17f8e16879b952
-# Text hash: sha256:4926a6831dd12c13832061e1f9ae7a1f1de6756d3ac8b48f940ca633f2294dd3
+# Derivation key: sha256:6c5fdba034240a3c704b6cf9d58936c67f21ab4da440c3c22aa6369102782ab2
+# Text hash: sha256:480d8032b11cdbd3e5e1857d6351e13f372cb48399d987ea08af1fe710d83881
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71

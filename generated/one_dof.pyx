@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:9f69aee88dd9289a4751ff8c84c26e4c6c7245e68713d120bd1c32d38e6c51b4
-# Text hash: sha256:d7a0847402543012a7878c9a0c02dbd211bb8f7eaed97bb67cf00ecf9a1ab912
+# Derivation key: sha256:778fb150c1f307cd24620fc2b4ee398a525e688e92fa8e45ad33db990bcfed37
+# Text hash: sha256:468cff59152fec36b3309003edd3084f10a2855cfe64716a5a8eeca62046302c
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8f302dddf0242458bd1eccff63996a70bfaadc9204d34dfeb1c9eb5f3f984359
-# Text hash: sha256:00cb7cce3fcc5429c6ac2534f6beae1ec78ae1561ff5f0f08bab7c191168ad6c
+# Derivation key: sha256:6b5883518d4dd6507be4a248a5eb4ff8b15dc892f0122f24e7e302053cd37957
+# Text hash: sha256:1d90c205c21b15ceec5e608aa6f938b57a0a657b2dfaff935c4adf8774ac88ca
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360
