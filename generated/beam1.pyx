@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b81bfd198d7a73ea8abcc782ae291a17c61c0dd92401588f023c9350f4286f4c
-# Text hash: sha256:35245ffb2eeba37ceb5b3cb2e12a43c583cb2f865a26892e1ca331b190260cd2
+# Derivation key: sha256:48d5ea172de3ae7a3000bdf450205e30b75ad78b0b99bf1b5448d2d618cbe22b
+# Text hash: sha256:2fdc933e4878d97d6a3b0b72e5734a140475a1377e53bebef68c22269fe93a11
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:c16b3556f450993e2cc9f2fd4a99c60d51901b4ed16007df3788e4358514ae33
@@ -1989,7 +1989,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
     coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
     the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
-    it is independent of the coordinates' units (a beam's modal amplitudes in m beside a cam
+    it is independent of the coordinates' units (modal amplitudes in m beside a cam
     angle in rad) and removes the least kinetic energy from the rates, and its matrix is
     the augmented system the right-hand side already forms."""
     cdef double _A[_NA * _NA]
@@ -2013,7 +2013,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
             _y[i] += _b[i]
             step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
         # converged, or no longer shrinking: at the level of the augmented solve's rounding
-        # (a beam's modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        # (modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
         if step < 1e-13 or step > 0.5 * prev:
             break
         prev = step

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c3ae6e17a6adc057052929ad384d37211d651c9e140b423453a75a712588f437
-# Text hash: sha256:2ca2af8dda80ce876818f39a67cc90f4db5b2941f33107d924be5be87058993d
+# Derivation key: sha256:6439556bac21cab244c56727734a32b2b3c4eb8c1bd4458a77a5c3f66436c17c
+# Text hash: sha256:b83c8ae80f63f597acb3afc3a99fb32735b5d28c7b316f6bf024176612e78f4f
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
 # Source hash: sha256:e6f5b38d9e7b1dd5f920d6438c12a96321d776db2c76dee854114e82adf9e94d
@@ -2607,7 +2607,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
     coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
     the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
-    it is independent of the coordinates' units (a beam's modal amplitudes in m beside a cam
+    it is independent of the coordinates' units (modal amplitudes in m beside a cam
     angle in rad) and removes the least kinetic energy from the rates, and its matrix is
     the augmented system the right-hand side already forms."""
     cdef double _A[_NA * _NA]
@@ -2631,7 +2631,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
             _y[i] += _b[i]
             step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
         # converged, or no longer shrinking: at the level of the augmented solve's rounding
-        # (a beam's modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        # (modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
         if step < 1e-13 or step > 0.5 * prev:
             break
         prev = step

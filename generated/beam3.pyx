@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:dbd1fcdd1641dabd4587a0a4416be9ee7e946c7505e5e6aa6fbaf8131b8020b2
-# Text hash: sha256:160169f10d248a61cc4ee091a4ae3aa1ed6c1af793f1d6a9712314366edfee6a
+# Derivation key: sha256:4e10db1d764602e37b78154f250d92f985f233c18eb0aff1b25caaf9f341fb8f
+# Text hash: sha256:823e205e37d0d02090c3e3c71e741a753538ffa933b4448e414bfc815e75df15
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:a4c10ed1c7eeed79759d12da9812dfb2e08f6d7ceaf7defeb99a53905305f1ad
@@ -3683,7 +3683,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
     coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
     the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
-    it is independent of the coordinates' units (a beam's modal amplitudes in m beside a cam
+    it is independent of the coordinates' units (modal amplitudes in m beside a cam
     angle in rad) and removes the least kinetic energy from the rates, and its matrix is
     the augmented system the right-hand side already forms."""
     cdef double _A[_NA * _NA]
@@ -3707,7 +3707,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
             _y[i] += _b[i]
             step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
         # converged, or no longer shrinking: at the level of the augmented solve's rounding
-        # (a beam's modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        # (modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
         if step < 1e-13 or step > 0.5 * prev:
             break
         prev = step

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:5f92d537fc687f0a9b0b0421e57a3ccef037ebeeba34e3a6afb932af15251cad
-# Text hash: sha256:46456dcc43a9bb149a46c212dccf7baf5debe81c09099baa6a8a5504a09ab7a6
+# Derivation key: sha256:9538df038ef8a94c9a365d6c26f0b3be701cc74a315a7e9f63fe66eec87dce95
+# Text hash: sha256:a59c4070ccc63e3a6dffaacd8927e73bc3167172153bc60462234ff2d6f254cd
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:64a7efcd9334b75fa69119f83904c9f9c8d47957738123d27eab23d9cd1693f4
@@ -5046,7 +5046,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
     coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
     the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
-    it is independent of the coordinates' units (a beam's modal amplitudes in m beside a cam
+    it is independent of the coordinates' units (modal amplitudes in m beside a cam
     angle in rad) and removes the least kinetic energy from the rates, and its matrix is
     the augmented system the right-hand side already forms."""
     cdef double _A[_NA * _NA]
@@ -5070,7 +5070,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
             _y[i] += _b[i]
             step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
         # converged, or no longer shrinking: at the level of the augmented solve's rounding
-        # (a beam's modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        # (modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
         if step < 1e-13 or step > 0.5 * prev:
             break
         prev = step

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:9f7fd1b6c28adc6d8629fa6c29e168d0f24b41e7898dab2d1d027e5025d17e07
-# Text hash: sha256:3722f042a58abd4355666e1939b693d28bd3ff53472b2483dfdcfcc98ddc36d6
+# Derivation key: sha256:61ecaecea2f8e276cd384845f6dd9bbb98e872afab32eb349e6cea7488147f81
+# Text hash: sha256:61de1775d59ec4cde3ec7f4e5b0cc9aea93ae315322a13c64f0c9c887bddc577
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:611aaf7763e70cfb79e109e16ea0ebff594dfa47598c04509a2d122462a61666
@@ -6703,7 +6703,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
     coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
     the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
-    it is independent of the coordinates' units (a beam's modal amplitudes in m beside a cam
+    it is independent of the coordinates' units (modal amplitudes in m beside a cam
     angle in rad) and removes the least kinetic energy from the rates, and its matrix is
     the augmented system the right-hand side already forms."""
     cdef double _A[_NA * _NA]
@@ -6727,7 +6727,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
             _y[i] += _b[i]
             step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
         # converged, or no longer shrinking: at the level of the augmented solve's rounding
-        # (a beam's modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        # (modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
         if step < 1e-13 or step > 0.5 * prev:
             break
         prev = step

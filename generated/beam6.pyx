@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:08db4117f9a5c5799f5ca642790400f88bedcb76764b27c4fe0819a0d76ad3e5
-# Text hash: sha256:ad7371e5c13e5417f5bc438f019654f5fb64047f025663daa448df68a2ba0108
+# Derivation key: sha256:ac381835c167d4b8ba14830202e0762920d0396924095fec5ff2d64f73a23041
+# Text hash: sha256:a1a2afccbe2455d3ce1f274ef54c1800a11356a9e6e5247873f4f43d4e5e77a6
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:ba76292f91dfbbd6b8d39b0bd7d40b2000e3a575b4d3c5fd9aa69df4a2837883
@@ -8808,7 +8808,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
     coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
     the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
-    it is independent of the coordinates' units (a beam's modal amplitudes in m beside a cam
+    it is independent of the coordinates' units (modal amplitudes in m beside a cam
     angle in rad) and removes the least kinetic energy from the rates, and its matrix is
     the augmented system the right-hand side already forms."""
     cdef double _A[_NA * _NA]
@@ -8832,7 +8832,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
             _y[i] += _b[i]
             step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
         # converged, or no longer shrinking: at the level of the augmented solve's rounding
-        # (a beam's modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        # (modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
         if step < 1e-13 or step > 0.5 * prev:
             break
         prev = step

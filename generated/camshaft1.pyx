@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:5bcd0f23514b6728842b405d8a5b7f7a86afde23e34f717040d066b57ec0841d
-# Text hash: sha256:d9964b3c15e1a76c191714c77d484dd4f3c7e70acbbc3e0fbc39293bd6f44a66
+# Derivation key: sha256:51ec268f26ec86afa1a4e8dabbb54a6d0fd4da1b28b2d216823310259df74c24
+# Text hash: sha256:0ef1329865ab35c290748326a263ecae36ff7c5e14acaef9fb51c0c0b2d38c3e
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233

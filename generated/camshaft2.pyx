@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0de7f7771a249e8bdaff48d433dfad37b08357dc8e423851c8f4e7ff45aa87f9
-# Text hash: sha256:46fd40fcd5c4fcc1172b9acfa65f0c7047081000999a48a3997fe91a3a192a3f
+# Derivation key: sha256:5cfaff23bfadbfd2cd72b7e61f171e67b1916f3ba42572ab8074db3f95d97e62
+# Text hash: sha256:24fcee79c5a6c516564c7d94948030ba1c0aeed797ad5e67b8929d6249400735
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4e8b42a3b4056af72941409266ca3597f018bce001d5dbc1d5737455a77bc31b
-# Text hash: sha256:09768bebb4182781ca9de3d6eb8946164629da56312ac87010e1f0d6aee42f54
+# Derivation key: sha256:0f14cf149bb5c4a53fd0bb7c9dec8f08e3e67d97dbce04b9318ef01bdf17127c
+# Text hash: sha256:a73de74dc3ee781facb168253dd411a16f9d00d9342256777e83828152f35aa9
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:781f752194ee53f3058ddf2c7ab758e8930e7f3081ff54ea104e2a5535a0592c
-# Text hash: sha256:753870eafa78e8d0aff96d4bdf5417462f534d840b1d49157e253824328f0214
+# Derivation key: sha256:30267c0a08db7c6a99a91dd2d7d7e019ee748fbd5e0c70f36e6946ed6da7d50c
+# Text hash: sha256:e6cf9f8972d7f36af0c24f251ea3986b47f71489afc79d1d8e136e08bcd186e5
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1a2adf9aa257f2413143a6c8185af4ca5415e226346dc93dd64caf9593415b56
-# Text hash: sha256:1807c2eb74de22b3caa1f568a25b47ef4f5b71d8b705d3c875a82933c2356f1e
+# Derivation key: sha256:ef4b5b843466943047cf4f3f52a7735a1c19d76adcff89e0cd2a9e5b63bc7c1c
+# Text hash: sha256:8eea2efcb74d14447c8a83cfc384e8c6932f55575dd114f11b78831baac65de0
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:244320aa74994aa9e669e9639536961ba92c6b1c23be07561292a0c9dea13c5c

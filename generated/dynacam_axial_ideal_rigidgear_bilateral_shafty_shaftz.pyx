@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6ab65cbd45ffcc6c7a557ba4bacaff1681605a772063588099c0f75c174a476d
-# Text hash: sha256:6edc61fce858fe78953a447d9ea388d4b7205fdfb28a12cb8d95d4395a4abc9f
+# Derivation key: sha256:a252a30ef51d9f927a19fa6695b77328ecf6c4fa174325975d7f3a058c39323c
+# Text hash: sha256:0169fefd9953c1038f230fc8801b05d36595a3a69aad4af2123b992e5e320ae8
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:60c627f0a6c7aaf3d0b23a95d9ada1295aad77d4cc15698a22fe0373ef65af0e
-# Text hash: sha256:2c688f1f39ab4285d5d56837f41a9b2b1144591703dd9a8ffc6d56fcda5d3d76
+# Derivation key: sha256:63ccbde8414596efe406e388d612db59200817facd2e5e4661e41cabf76d5e94
+# Text hash: sha256:27e3dd530eebd4f6b8976f781aa63307e5cf22b9ec9f84ae126511c485e12eea
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:747e34dbea18a7d307dc7101158b4419fb0642de73f52917507a7d1b1d7004c3

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:72d78ad3394c02344e01682aba64fe7def5bb7aa97df21aebd016b6a7d6c0e8f
-# Text hash: sha256:31bd6d66c25a11779071ac7649bf184c0ecddea932ec9bf49c7d793cc1768d1c
+# Derivation key: sha256:e17b72f222b73de9844bec5afca9b3415537b0464a46fe42c3925ec12f3475a2
+# Text hash: sha256:37737c78fb825441046a7697cde6bce68e92329a4e46faf3a873099720871682
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:478faccf329f7294d2cd47f536ad5f78fa53fe5d590d1d87b6cb5079502bd98d

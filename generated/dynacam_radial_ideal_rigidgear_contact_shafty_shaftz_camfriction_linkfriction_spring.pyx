@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ddb58487914f34191b6771746cd265771d3d13a0eb8139bd868c137cba5f1af8
-# Text hash: sha256:40dffa161d1239ea98d3ecc1a33cffe02906ffd03d9a942fa70c7285c34f781f
+# Derivation key: sha256:d651344d05617d05d353b9ac4291569c432bee5ae5071e8a6bca4cd283897cf2
+# Text hash: sha256:70d227a1706430cb3ab792c881bd285aa07c777192e6a19a1c99baf4a10ba119
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7df6f3da3414231df3e2e1f7adc385d77f7cfc0e35b975f115056fce8cb53bba

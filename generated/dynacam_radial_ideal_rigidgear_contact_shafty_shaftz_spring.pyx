@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e37fb8a556479477a6f34b26fefe6193f9882da1a82d045f9eb55bfc47ab5133
-# Text hash: sha256:81149c382343bdf06f3c52e0ff2c54fbaacc7334c68a5e71633dde0f79740fa1
+# Derivation key: sha256:de03ed9bdc7d999b5c5d7658ecc5d257ceb5f15b3fdd2ee0aa0a5bae04ba8345
+# Text hash: sha256:7525d6e779095a9c09a8508b1c42794c0cb4e52b951a9f434aa94da21f8511b0
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1

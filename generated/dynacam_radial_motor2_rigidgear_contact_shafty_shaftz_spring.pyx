@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4a5e172dbeb190c61f12334baf01aa9111f92331f4aaa0aee3e312296e770e37
-# Text hash: sha256:2b864b090f9a87c77cb2ed728068653fff712e7de37fc9c47e23207c28d96d85
+# Derivation key: sha256:56eed3e5b7693eea0b728fde7adf703f43bf116516eba43c68e150e36f83c998
+# Text hash: sha256:d25a7394d005352e656bcb220116cfcf31471fc2690779199d0d8f6a09948a1a
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:775dc74d7dd69da69bafb1940d40799b0a663f4cd304542cf146150dfdb0178d

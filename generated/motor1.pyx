@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:28830a1eabd85a09444f270d3bdd441129238eafc907f38ee3021828f3f9b7f8
-# Text hash: sha256:5687bdf6664484c165dc4d6f0d775aeef4ee440134b7cbc25ee72eb7d3897fff
+# Derivation key: sha256:5f4bd534a62b1973a052b77090bfc8c778b30bcc7a341658c09e22170009b47d
+# Text hash: sha256:b11e9ce62c3443b228e507d3a66476d76edc8f90f3545a8681c2621abdca1cd1
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6c5fdba034240a3c704b6cf9d58936c67f21ab4da440c3c22aa6369102782ab2
-# Text hash: sha256:480d8032b11cdbd3e5e1857d6351e13f372cb48399d987ea08af1fe710d83881
+# Derivation key: sha256:cf39686973e1e2278e7837b2d452ec43d9a184a2c357dd8da0e42ef07134bbb3
+# Text hash: sha256:1578c2415bf0d8846a4b83e6844770aa0282124dcb31b037f65fb011a5d527b3
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71

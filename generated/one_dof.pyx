@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:778fb150c1f307cd24620fc2b4ee398a525e688e92fa8e45ad33db990bcfed37
-# Text hash: sha256:468cff59152fec36b3309003edd3084f10a2855cfe64716a5a8eeca62046302c
+# Derivation key: sha256:d3ffd28665cc0eb5490666c2cfd0b3665fb52119a59f5ae4cb35879f3f941ace
+# Text hash: sha256:ae230756b8ce857fa92d281d75628b03ae7765fdbf7eb93a816b68573473ff52
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:43bd866f09795f3a34a8e74e706f09803c3d058c99e6ad8b6bd160cc8fb68d70
-# Text hash: sha256:a16c1dcf04cd64c4537794945f333b692f62aae0310020cb87c9c5963dc44e35
+# Derivation key: sha256:2c1fc0f3c406c3de95d2f48d70bc798c3f87c75e53334ce26a8837bb5359306b
+# Text hash: sha256:6493eb0626bd3a43dbd85e00491ad02798c321bad5f5aa3a09723244afe8f4ba
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:161a1c58ca2d37fcefd956520d1151d5da9a8e1578200587452bf241fc0d81e3
@@ -486,7 +486,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
     i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
     coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
     the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
-    it is independent of the coordinates' units (a beam's modal amplitudes in m beside a cam
+    it is independent of the coordinates' units (modal amplitudes in m beside a cam
     angle in rad) and removes the least kinetic energy from the rates, and its matrix is
     the augmented system the right-hand side already forms."""
     cdef double _A[_NA * _NA]
@@ -510,7 +510,7 @@ cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
             _y[i] += _b[i]
             step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
         # converged, or no longer shrinking: at the level of the augmented solve's rounding
-        # (a beam's modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        # (modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
         if step < 1e-13 or step > 0.5 * prev:
             break
         prev = step

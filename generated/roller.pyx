@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6c7b098435d1f8ce6b702c61e049c5ccc8912a082458682dce5f9e5d1a1512ef
-# Text hash: sha256:5b756e8929834245fb738a1479c1ddf2a74f514535a34471fae7c304ea5959a5
+# Derivation key: sha256:cca9f10eb2f10ca2d55c3a2ea3d3563acb80d02ecff6f176714c8bffbeada2e3
+# Text hash: sha256:41da8fe3f6e2657fe72e71ba0c6403015c44e1d5321faab1dcaa6d5f07ae531d
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27

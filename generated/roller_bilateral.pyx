@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6b5883518d4dd6507be4a248a5eb4ff8b15dc892f0122f24e7e302053cd37957
-# Text hash: sha256:1d90c205c21b15ceec5e608aa6f938b57a0a657b2dfaff935c4adf8774ac88ca
+# Derivation key: sha256:44aaa645ee1dc804e81841cb458a127832270bf81b509fa6c53e2cf600a4f4b1
+# Text hash: sha256:80ae0ae1561de5aacaa70ba35edf154c0dadc552f582f79c1f95860f58611b4e
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360
