@@ -2,7 +2,7 @@
 :mod:`camdyn.derive.camlaws` (thesis App. 2 and the usual industrial laws).
 
 Each law is printed segment by segment, H and its first three derivatives with common
-subexpressions eliminated; compiled models cimport the .pxd and evaluate their cam inputs
+subexpressions eliminated (and the fourth apart, ``camlaw_d4``); compiled models cimport the .pxd and evaluate their cam inputs
 through it.
 """
 from __future__ import annotations
@@ -30,7 +30,12 @@ def camlaws_context() -> dict:
         for k in range(law.n_segments):
             exprs = [law.segment_exprs(order)[k] for order in range(4)]
             lines, code, _ = cse_block(exprs, names, prefix="c", functions=LAW_TRIG)
-            segs.append({"index": k, "lines": lines, "code": code})
+            # the fourth derivative on its own: only the exact Jacobian of a constrained
+            # model whose equations carry H''' asks for it (camlaw_d4)
+            lines4, code4, _ = cse_block([law.segment_exprs(4)[k]], names, prefix="c",
+                                         functions=LAW_TRIG)
+            segs.append({"index": k, "lines": lines, "code": code, "lines4": lines4,
+                         "code4": code4[0]})
         laws.append({
             "key": law.key,
             "code": law.code,

@@ -2,7 +2,7 @@
 
 The generated module has the same C interface as every other model (runtime/engine/abi.pxd), so
 the compiled integrators of runtime/engine/loops.pxi run it unchanged; what differs is how its
-right-hand side finds Q'' (template ``constrained.pyx.j2``), in one of two formulations
+right-hand side finds Q'' (template ``constrained.pyx.j2``), in one of three formulations
 chosen at run time by the parameter the model's :class:`~camdyn.derive.model.ConstraintSolver`
 names as ``formulation``:
 
@@ -10,11 +10,18 @@ names as ``formulation``:
    gamma_B = gamma - 2 w Phi' - w^2 Phi (Baumgarte stabilization with the critically
    damped rate w, the solver's ``baumgarte_rate``), one dense LU with partial pivoting per
    evaluation;
-1. partitioned: the last n_c coordinates are dependent; at every evaluation they are
-   recovered from the independent ones by Newton's method on Phi = 0 (started from the
-   values carried in the state), their rates from Phi_Q Q' = -Phi_t, and the same
-   augmented system then gives Q'' (eliminating lambda and the dependent accelerations
-   from it gives the ODE in the independent coordinates).
+1. partitioned: the solver's ``dependent`` coordinates (by default the last n_c) are
+   recovered from the independent ones at every evaluation by Newton's method on Phi = 0
+   (started from the values carried in the state), their rates from Phi_Q Q' = -Phi_t,
+   and the same augmented system then gives Q'' (eliminating lambda and the dependent
+   accelerations from it gives the ODE in the independent coordinates);
+2. projection: the augmented system without Baumgarte's terms, and after every accepted step
+   the integration loops call the module's ``project`` (ModelC.project), which moves the
+   state back onto Phi = 0 and Phi_Q Q' = -Phi_t in the mass metric: no rate to tune.
+
+The Jacobian d(dy/dt)/dy (and df/dt) is exact in each: A^-1 d(b - A x)/dy at fixed
+x = [Q''; lambda] (:func:`_jacobian_parts`), with the chain rule through the recovery when
+partitioned, so the implicit methods keep their order and pay no right-hand-side calls for it.
 
 Everything model-specific comes from the declaration: the multipliers are outputs named by
 the :class:`~camdyn.derive.model.Constraint` s, after the model's own outputs; a model with a
@@ -25,12 +32,13 @@ ends are the model's events, pure breakpoints: nothing switches, the step just e
 from __future__ import annotations
 
 import json
+import re
 
 import sympy as sp
 
 from .emit import (doc_lines, manifest_common, math_imports, option_entries, plainer,
                    render as render_template, state_entries, with_source_hash)
-from .lagrange import Equations, derive
+from .lagrange import Equations, derive, generic_rank
 from .model import Model
 from .optimize import ConstantTable
 from .printer import CythonPrinter, cse_block
@@ -75,7 +83,10 @@ def constrained_context(eq: Equations) -> dict:
     qdd = {sp.Symbol(c.name + "dd", real=True): f"_acc[{i}]" for i, c in enumerate(m.coordinates)}
     outs = prep([o.expr for o in m.outputs])
     gs = prep([e.g for e in m.events])
+    jac = _jacobian_parts(eq, plain, Phi_t)
+    jac_exprs = prep(jac["exprs"])
     names = dict(plain.names)
+    names.update(jac["names"])
     # a profile is evaluated into _cam0[k] by _profile() (see the template)
     names.update({k: k.name for k, _ in consts.items})
     used = set()
@@ -84,6 +95,8 @@ def constrained_context(eq: Equations) -> dict:
     phi_lines, phi_code, u = cse_block(phi_part, names, prefix="_p")
     used |= u
     out_lines, out_code, u = cse_block(outs, names | qdd, prefix="_o")
+    used |= u
+    jac_lines, jac_code, u = cse_block(jac_exprs, names | qdd, prefix="_j")
     used |= u
     const_lines, const_code, u = cse_block([e for _, e in consts.items], names, prefix="_c")
     used |= u
@@ -105,13 +118,20 @@ def constrained_context(eq: Equations) -> dict:
     params = [p.name for p in m.parameters]
     solver = {role: params.index(getattr(m.solver, role).name)
               for role in ("baumgarte_rate", "formulation")}
+    dependent = m.solver.dependent_indices(m)
+    independent = [j for j in range(n) if j not in dependent]
+    if generic_rank(eq.Phi_q.extract(list(range(nc)), dependent)) < nc:
+        chosen = ", ".join(m.coordinates[j].name for j in dependent)
+        raise ValueError(f"{m.name}: the constraints cannot be solved for the dependent "
+                         f"coordinates {chosen} (Phi_Q restricted to them is singular at a "
+                         "generic point); name others in ConstraintSolver(dependent=...)")
 
     outputs = [{"name": o.name, "unit": o.unit, "doc": o.doc} for o in m.outputs]
     outputs += [{"name": c.multiplier, "unit": c.unit, "doc": c.doc} for c in m.constraints]
     manifest = {
         **manifest_common(m),
         "n_constraints": nc,
-        "dependent": [c.name for c in m.coordinates[n - nc:]],
+        "dependent": [m.coordinates[j].name for j in dependent],
         "states": state_entries(m),
         "outputs": outputs,
         "constraints": [{"name": c.name, "multiplier": c.multiplier} for c in m.constraints],
@@ -123,9 +143,9 @@ def constrained_context(eq: Equations) -> dict:
         "events": [e.name for e in m.events],
         "residual": None,
         "options": option_entries(m),
-        # d(dy/dt)/dy (ModelC.jac): central differences of the compiled rhs (template)
-        "jacobian": "finite-difference",
-        "time_derivative": "finite-difference",
+        # d(dy/dt)/dy and df/dt (ModelC.jac): A^-1 d(b - A x)/dy at fixed x (template)
+        "jacobian": "symbolic",
+        "time_derivative": "symbolic",
     }
     with_source_hash(manifest, {"M": sp.srepr(eq.M), "f": sp.srepr(eq.f), "Phi": sp.srepr(eq.Phi),
                                 "events": [sp.srepr(e.g) for e in m.events],
@@ -151,6 +171,11 @@ def constrained_context(eq: Equations) -> dict:
         "phi_lines": phi_lines,
         "phi_code": phi_code,
         "out_lines": out_lines,
+        "jac_lines": jac_lines,
+        "jac_code": jac_code,
+        "fourth": jac["fourth"],
+        "dependent": dependent,
+        "independent": independent,
         "out_code": out_code,
         "events": events,
         "profile": profile,
@@ -161,6 +186,61 @@ def constrained_context(eq: Equations) -> dict:
         "manifest_json": json.dumps(manifest, indent=1, sort_keys=True),
         "source_hash": manifest["source_hash"],
     }
+
+
+def _cam_order(symbol: sp.Symbol):
+    """(instance, order) of a plain cam symbol ``_cam<i>_<k>``, or None."""
+    m = _CAM_SYMBOL.fullmatch(symbol.name)
+    return None if m is None else tuple(int(g) for g in m.groups())
+
+
+def _jacobian_parts(eq: Equations, plain, Phi_t: sp.Matrix) -> dict:
+    """What the exact Jacobian of the generated right-hand side is computed from.
+
+    The right-hand side solves A(y) x = b(y) for x = [Q''; lambda] (y = [Q, Q']); so
+    dx/dy = A^-1 d(b - A x)/dy with x held fixed, and dx/dt likewise: no symbolic inverse,
+    the LU of A is the one the right-hand side factors.  Printed here, in plain symbols with
+    x as the symbols Q''_j (``_acc[j]``) and ``_lam<k>`` (``_acc[n + k]``): d(b - A x)/dy
+    (row-major, (n + n_c) x 2n), d(b - A x)/dt, and of the velocity constraint
+    C = Phi_Q Q' + Phi_t its dC/dQ (n_c x n) and dC/dt, from which the template adds
+    Baumgarte's terms and the chain rule of coordinate partitioning.  Cam inputs enter
+    through the chain rule dH^(k)(a)/dv = H^(k+1)(a) da/dv; the fourth derivative this may
+    ask of a cam profile comes from the cam-law library's ``camlaw_d4``.
+    """
+    m = eq.model
+    t = m.time
+    n, nc = len(m.coordinates), eq.Phi.rows
+    Q = [sp.Symbol(c.name, real=True) for c in m.coordinates]
+    V = [sp.Symbol(c.name + "d", real=True) for c in m.coordinates]
+    acc = sp.Matrix([sp.Symbol(c.name + "dd", real=True) for c in m.coordinates])
+    lam = sp.Matrix([sp.Symbol(f"_lam{k}", real=True) for k in range(nc)])
+    M, f, Phi_q, gamma = (plain(x) for x in (eq.M, eq.f, eq.Phi_q, eq.gamma))
+    r = list(f - M * acc - Phi_q.T * lam) + list(gamma - Phi_q * acc)
+    C = list(Phi_q * sp.Matrix(V) + plain(Phi_t))
+    args = [a for _, a in plain.instances]
+    fourth = False
+
+    def d(e, v):
+        nonlocal fourth
+        out = sp.diff(e, v)
+        for s in sorted(e.free_symbols, key=sp.default_sort_key):
+            io = _cam_order(s)
+            if io is None:
+                continue
+            da = sp.diff(args[io[0]], v)
+            if da != 0:
+                fourth |= io[1] + 1 >= 4
+                out += sp.diff(e, s) * sp.Symbol(f"_cam{io[0]}_{io[1] + 1}", real=True) * da
+        return out
+
+    exprs = [d(e, v) for e in r for v in Q + V] + [d(e, t) for e in r]
+    exprs += [d(e, v) for e in C for v in Q] + [d(e, t) for e in C]
+    names = {sp.Symbol(f"_lam{k}", real=True): f"_acc[{n + k}]" for k in range(nc)}
+    names.update({sp.Symbol(f"_cam{i}_4", real=True): f"_cam{i}[4]" for i in range(len(args))})
+    return {"exprs": exprs, "names": names, "fourth": fourth}
+
+
+_CAM_SYMBOL = re.compile(r"_cam(\d+)_(\d+)")
 
 
 def render(model: Model, source: str) -> str:

@@ -314,20 +314,38 @@ class RDFDProfile:
 
 @dataclass(frozen=True)
 class ConstraintSolver:
-    """How the generated code solves a constrained model: two of its parameters, read at run time.
+    """How the generated code solves a constrained model: two of its parameters, read at run
+    time, and which coordinates are dependent.
 
-    ``formulation`` < 0.5 selects the augmented index-1 system [[M, Phi_Q^T], [Phi_Q, 0]]
-    [Q''; lambda] = [f; gamma - 2 w Phi' - w^2 Phi], stabilized by Baumgarte's terms with
-    the critically damped rate w = ``baumgarte_rate`` (w = 0: no stabilization, the residual
-    drifts); > 0.5 selects coordinate partitioning: the last n_c coordinates are dependent,
-    recovered from the others by Newton's method on Phi = 0 at every evaluation, their
-    rates from Phi_Q Q' = -Phi_t; the same augmented system (without Baumgarte's terms) then
-    gives Q''.  Both are parameter symbols of the model, so a run chooses without
-    regenerating.
+    ``formulation`` (a parameter, so a run chooses without regenerating; README "Constrained
+    models"):
+
+    0. augmented: the index-1 system [[M, Phi_Q^T], [Phi_Q, 0]] [Q''; lambda] =
+       [f; gamma - 2 w Phi' - w^2 Phi], stabilized by Baumgarte's terms with the critically
+       damped rate w = ``baumgarte_rate`` (w = 0: no stabilization, the residual drifts);
+    1. partitioned: the ``dependent`` coordinates are recovered from the others by Newton's
+       method on Phi = 0 at every evaluation, their rates from Phi_Q Q' = -Phi_t; the same
+       augmented system (without Baumgarte's terms) then gives Q'';
+    2. projection: the augmented system without Baumgarte's terms, and after every accepted
+       step the state projected back onto Phi = 0 and Phi_Q Q' = -Phi_t (the template's
+       ``project``): no rate to tune.
+
+    ``dependent`` names the n_c dependent coordinates (partitioning, and the consistent
+    initial values of every formulation: they are computed from the others); empty means
+    the last n_c declared.  Phi_Q restricted to them must be invertible along the motion.
     """
 
     baumgarte_rate: sp.Symbol
     formulation: sp.Symbol
+    dependent: tuple = ()
+
+    def dependent_indices(self, model: "Model") -> list:
+        """Indices of the dependent coordinates of ``model``, in the order named."""
+        names = [c.name for c in model.coordinates]
+        nc = len(model.constraints)
+        if not self.dependent:
+            return list(range(len(names) - nc, len(names)))
+        return [names.index(d) for d in self.dependent]
 
 
 @dataclass(frozen=True)
@@ -415,6 +433,13 @@ class Model:
             if not isinstance(sym, sp.Symbol) or sym.name not in params:
                 raise ValueError(f"model {self.name}: solver {role}={sym!r} is not one of its "
                                  f"parameters ({', '.join(sorted(params))})")
+        coords = [c.name for c in self.coordinates]
+        dep = list(self.solver.dependent)
+        if dep and (len(dep) != len(self.constraints) or len(set(dep)) != len(dep)
+                    or not set(dep) <= set(coords)):
+            raise ValueError(f"model {self.name}: solver dependent={tuple(dep)} must name "
+                             f"{len(self.constraints)} distinct coordinates among "
+                             f"{', '.join(coords)} (one per constraint)")
         if self.profile is not None and not sp.sympify(self.profile.rise).free_symbols <= {
                 p.symbol for p in self.parameters}:
             raise ValueError(f"model {self.name}: profile rise {self.profile.rise} is not an "

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:3db264703c04e984daf7a0d1478b2c6195623bec8409265362d1cfc8a38334d3
-# Text hash: sha256:d51373b1f851537b0564fe86f72ada8f95efba3145271fcf0d4dd142d493f577
+# Derivation key: sha256:100b927786197ac6377e79a8a9d0216fe60c9f8099e523fa66d13e85bb2613a5
+# Text hash: sha256:6e48dae733dedb558bf62ed8bfad29d07a80f17a6b7c0aba34d779b0e792def8
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),
@@ -698,3 +698,125 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             out[0] = out[1] = out[2] = out[3] = 0.0
     else:
         out[0] = out[1] = out[2] = out[3] = 0.0
+
+
+cdef inline double camlaw_d4(int law, double par, int seg, double T) noexcept nogil:
+    """d^4 H/dT^4 with the formula of segment `seg`: what the exact Jacobian of a model whose
+    equations carry H''' needs (a constrained model's cam profile, camdyn.derive.dae)."""
+    cdef int k, j, kind
+    cdef double r
+    cdef const double* q
+    if law != 1000:
+        return _plain_d4(law, par, seg, T)
+    if seg <= 0:
+        return 0.0
+    q = &camlaw_turns[<int>par][0]
+    kind = _turn_piece(q, seg, &k, &j)
+    T -= k * q[4]
+    if kind == 1:
+        return _plain_d4(<int>q[0], q[1], j, T)
+    if kind == 3:
+        # the return law run backwards, as in _turn_eval
+        r = q[7]
+        return -_plain_d4(<int>q[2], q[3], j, (T - q[6]) / r) / (r * r * r * r)
+    return 0.0
+
+
+cdef inline double _plain_d4(int law, double par, int seg, double T) noexcept nogil:
+    cdef double c0, c1, c2
+    if law == 0:  # cycloidal
+        if seg == 0:
+            return 0.0
+        elif seg == 1:
+            return -248.05021344239856*camlaw_sin(6.283185307179586*T)
+        elif seg == 2:
+            return 0.0
+    elif law == 1:  # modified-sine
+        if seg == 0:
+            return 0.0
+        elif seg == 1:
+            return -12.176136379250305*camlaw_sin(1.5707963267948966*T/par)/((par*par)*(-4.0*par + 3.141592653589793*par + 1.0))
+        elif seg == 2:
+            c0 = 2.0*par - 1.0
+            return -48.70454551700122*camlaw_cos(3.141592653589793*(T - par)/c0)/((c0*c0)*(-4.0*par + 3.141592653589793*par + 1.0))
+        elif seg == 3:
+            return 12.176136379250305*camlaw_sin(1.5707963267948966*(T + 2.0*par - 1.0)/par)/((par*par)*(-4.0*par + 3.141592653589793*par + 1.0))
+        elif seg == 4:
+            return 0.0
+    elif law == 2:  # 3-4-5
+        if seg == 0:
+            return 0.0
+        elif seg == 1:
+            return 360.0*(2.0*T - 1.0)
+        elif seg == 2:
+            return 0.0
+    elif law == 3:  # simple-harmonic
+        if seg == 0:
+            return 0.0
+        elif seg == 1:
+            return -48.70454551700122*camlaw_cos(3.141592653589793*T)
+        elif seg == 2:
+            return 0.0
+    elif law == 4:  # parabolic
+        if seg == 0:
+            return 0.0
+        elif seg == 1:
+            return 0.0
+        elif seg == 2:
+            return 0.0
+        elif seg == 3:
+            return 0.0
+    elif law == 5:  # 4-5-6-7
+        if seg == 0:
+            return 0.0
+        elif seg == 1:
+            c0 = 4.0*T
+            c1 = (T*T)
+            return -1680.0*(T*T*T) - 840.0*c0*(-5.0*T + 3.0*c1 + 2.0) - 840.0*c0 - 840.0*c1*(6.0*T - 5.0) + 4200.0*c1 + 840.0
+        elif seg == 2:
+            return 0.0
+    elif law == 6:  # modified-trapezoid
+        if seg == 0:
+            return 0.0
+        elif seg == 1:
+            return -771.9015648404994*camlaw_sin(12.566370614359172*T)
+        elif seg == 2:
+            return 0.0
+        elif seg == 3:
+            return -771.9015648404994*camlaw_cos(3.141592653589793*(4.0*T - 3.0/2.0))
+        elif seg == 4:
+            return 0.0
+        elif seg == 5:
+            return 771.9015648404994*camlaw_cos(3.141592653589793*(4.0*T - 7.0/2.0))
+        elif seg == 6:
+            return 0.0
+    elif law == 7:  # uniform
+        if seg == 0:
+            return 0.0
+        elif seg == 1:
+            return 0.0
+        elif seg == 2:
+            return 0.0
+    elif law == 8:  # sine-constant-cosine
+        if seg == 0:
+            return 0.0
+        elif seg == 1:
+            c0 = (par*par)
+            c1 = (M_PI*M_PI)
+            return -12468.363652352313*camlaw_sin(12.566370614359172*T)/(3.0*par*c1 - 24.0*par - 2.0*c0*c1 + 16.0*c0 + 6.283185307179586 + 8.0)
+        elif seg == 2:
+            return 0.0
+        elif seg == 3:
+            c0 = par - 3.0/4.0
+            c1 = (par*par)
+            c2 = (M_PI*M_PI)
+            return -779.2727282720195*camlaw_cos(3.141592653589793*(-T + 0.5*par + 1.0/8.0)/c0)/((c0*c0)*(3.0*par*c2 - 24.0*par - 2.0*c1*c2 + 16.0*c1 + 6.283185307179586 + 8.0))
+        elif seg == 4:
+            return 0.0
+        elif seg == 5:
+            c0 = (par*par)
+            c1 = (M_PI*M_PI)
+            return 12468.363652352313*camlaw_cos(3.141592653589793*(4.0*T - 7.0/2.0))/(3.0*par*c1 - 24.0*par - 2.0*c0*c1 + 16.0*c0 + 6.283185307179586 + 8.0)
+        elif seg == 6:
+            return 0.0
+    return 0.0

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:3db264703c04e984daf7a0d1478b2c6195623bec8409265362d1cfc8a38334d3
-# Text hash: sha256:8cd125094e47b53d2e252b918e913de69fdff3a27c2a9b30b3d119ac0a398bf5
+# Derivation key: sha256:100b927786197ac6377e79a8a9d0216fe60c9f8099e523fa66d13e85bb2613a5
+# Text hash: sha256:9a41ac7128b212cf3a69771f4668141d4cb73205bda6db5f97aac26c233470e9
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

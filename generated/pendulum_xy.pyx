@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c519c277c2230e9a0a63d9857acec4637d86eb154c818fde60b81412d8fb39ac
-# Text hash: sha256:6043f6353e03119926a90827a6edc5e2850390b280ca27465b7e848cb52a3496
+# Derivation key: sha256:e1dc4e07290a7f9f20495a7846d8d8690ac06d698627bfccf3e1153053a8cd63
+# Text hash: sha256:14b1602be6bc957809a4b91eaf16d4dd3c96a6bc4bebc40625eafe4297776c90
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
-# Source hash: sha256:e017c1589554bffedb179ec1f3fe3f8fdb43bb82d0bdd5e3f88df9f352e7786a
+# Source hash: sha256:161a1c58ca2d37fcefd956520d1151d5da9a8e1578200587452bf241fc0d81e3
 #
 # A planar pendulum in Cartesian coordinates: the constraint layer's second model.
 #
@@ -38,7 +38,8 @@
 # coordinate, dependent: y is recovered from x by Newton's method on Phi = 0 (the branch of
 # the sign y carries), and y' = -x x'/y.  That fails near y = 0, the horizontal rod, where
 # Phi_y = 2 y vanishes: use the augmented form (formulation 0) for swings that reach the
-# horizontal (|theta0| >= pi/2).
+# horizontal (|theta0| >= pi/2); 2 is the augmented system without Baumgarte's terms, the
+# state projected back onto Phi = 0 and Phi' = 0 after every accepted step.
 
 import json
 
@@ -46,22 +47,28 @@ from cpython.pycapsule cimport PyCapsule_New
 from libc.math cimport atan2, cos, fabs, sin
 
 from camdyn.runtime.engine.abi cimport *
-from camdyn.runtime.engine.linalg cimport solve_inplace
+from camdyn.runtime.engine.linalg cimport lu_factor, lu_solve, solve_inplace
 
 # sizes, known when the integration loops (loops.pxi) are compiled into this module
 cdef enum:
     _NQ = 2                  # coordinates Q
     _NC = 1                  # constraints Phi
     _NA = 3                  # unknowns of the augmented system: Q'', lambda
-    _ND = 1                  # first dependent coordinate (the last _NC are dependent)
+    _ND = 1                  # independent coordinates (_IND), beside the _NC dependent ones (_DEP)
     _NS = 4                 # states: Q, Q'
     _NCAM = 0
     _NM = 0
     _NE = 0
     _NQ1 = 2
     _NE1 = 1
-    _JAC_SYMBOLIC = 0           # jacobian() differences rhs(): the implicit loops difference it themselves
-    _FT_SYMBOLIC = 0            # nor df/dt: jacobian() leaves _ft alone
+    _JAC_SYMBOLIC = 1           # jacobian() is exact: A^-1 d(b - A x)/dy at fixed x
+    _FT_SYMBOLIC = 1            # and so is its df/dt
+    _PROJECTS = 1               # the loops call project() after every accepted step
+
+cdef int _DEP[_NC]      # the dependent coordinates (ConstraintSolver.dependent)
+cdef int _IND[_ND]      # the independent ones
+_DEP[0] = 1  # y
+_IND[0] = 0  # x
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 
@@ -153,7 +160,8 @@ cdef inline void _constraints(double t, const double* _y, double* _g, double* _J
 cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noexcept nogil:
     """Coordinate partitioning: the state with its dependent coordinates recovered from the
     independent ones by Newton's method on Phi = 0, started from the values the state carries,
-    and their rates from Phi_Q Q' = -dPhi/dt.  0, or 1 without convergence."""
+    and their rates from Phi_Q Q' = -dPhi/dt.  0; 1 without convergence, 2 where Phi_Q
+    restricted to the dependent coordinates is singular."""
     cdef double _g[_NC]
     cdef double _J[_NC * _NQ]
     cdef double _gt[_NC]
@@ -167,13 +175,13 @@ cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noex
         for i in range(_NC):
             _g[i] = -_g[i]
             for j in range(_NC):
-                _D[i * _NC + j] = _J[i * _NQ + _ND + j]
+                _D[i * _NC + j] = _J[i * _NQ + _DEP[j]]
         if solve_inplace(_NC, _D, _g) != 0:
-            return 1
+            return 2
         step = 0.0
         for j in range(_NC):
-            _yc[_ND + j] += _g[j]
-            step = max(step, fabs(_g[j]) / (1.0 + fabs(_yc[_ND + j])))
+            _yc[_DEP[j]] += _g[j]
+            step = max(step, fabs(_g[j]) / (1.0 + fabs(_yc[_DEP[j]])))
         if step < 1e-15:
             break
     else:
@@ -182,35 +190,49 @@ cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noex
     for i in range(_NC):
         _g[i] = -_gt[i]
         for j in range(_ND):
-            _g[i] -= _J[i * _NQ + j] * _yc[_NQ + j]
+            _g[i] -= _J[i * _NQ + _IND[j]] * _yc[_NQ + _IND[j]]
         for j in range(_NC):
-            _D[i * _NC + j] = _J[i * _NQ + _ND + j]
+            _D[i * _NC + j] = _J[i * _NQ + _DEP[j]]
     if solve_inplace(_NC, _D, _g) != 0:
-        return 1
+        return 2
     for j in range(_NC):
-        _yc[_NQ + _ND + j] = _g[j]
+        _yc[_NQ + _DEP[j]] = _g[j]
     return 0
 
 
-cdef inline int _solve(double t, double* _yc, const double* _y, double* _acc, Ctx* ctx) noexcept nogil:
-    """Q'' and lambda into _acc, and in _yc the state they belong to: the state itself with
-    Baumgarte's terms (formulation 0), or its partitioned recovery (formulation 1)."""
-    cdef double _A[_NA * _NA]
+cdef inline int _formulation(Ctx* ctx) noexcept nogil:
+    """0 augmented with Baumgarte's terms, 1 partitioned, 2 projection (ConstraintSolver)."""
+    cdef double v = ctx.p[6]  # formulation
+    return 2 if v > 1.5 else 1 if v > 0.5 else 0
+
+
+cdef inline int _prepared(double t, double* _yc, const double* _y, double* _A, double* _acc,
+                          double* w, Ctx* ctx) noexcept nogil:
+    """The augmented system at the state the formulation solves it at (_yc: the state itself,
+    or its partitioned recovery), with Baumgarte's terms in the right side _acc where they
+    apply (formulation 0; their rate into w, else 0).  0, or 1 if the recovery failed."""
     cdef double _ph[_NC]
     cdef double _phd[_NC]
-    cdef double w = ctx.p[5]  # w_B
-    cdef int i
-    cdef bint partitioned = ctx.p[6] > 0.5  # formulation
-    if partitioned:
+    cdef int i, form = _formulation(ctx)
+    w[0] = ctx.p[5] if form == 0 else 0.0  # w_B
+    if form == 1:
         if _recover(t, _y, _yc, ctx) != 0:
             return 1
     else:
         for i in range(_NS):
             _yc[i] = _y[i]
     _system(t, _yc, _A, _acc, _ph, _phd, ctx)
-    if not partitioned:
-        for i in range(_NC):
-            _acc[_NQ + i] -= 2.0 * w * _phd[i] + w * w * _ph[i]
+    for i in range(_NC):
+        _acc[_NQ + i] -= 2.0 * w[0] * _phd[i] + w[0] * w[0] * _ph[i]
+    return 0
+
+
+cdef inline int _solve(double t, double* _yc, const double* _y, double* _acc, Ctx* ctx) noexcept nogil:
+    """Q'' and lambda into _acc, and in _yc the state they belong to (_prepared)."""
+    cdef double _A[_NA * _NA]
+    cdef double w
+    if _prepared(t, _yc, _y, _A, _acc, &w, ctx) != 0:
+        return 1
     return solve_inplace(_NA, _A, _acc)
 
 
@@ -278,48 +300,232 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
             _Km[i * _NQ + j] = 0.0 / 0.0
 
 
-cdef double _SCALE[_NS]  # typical magnitude of each state (manifest "scale"): the difference steps
+cdef double _SCALE[_NS]  # typical magnitude of each state (manifest "scale"): the projection's step test
 _SCALE[0] = 1.0
 _SCALE[1] = 1.0
 _SCALE[2] = 1.0
 _SCALE[3] = 1.0
 
 
+cdef inline void _jac_parts(double t, const double* _y, const double* _acc, double* _R,
+                            double* _Rt, double* _CQ, double* _Ct, Ctx* ctx) noexcept nogil:
+    """With x = [Q''; lambda] = _acc held fixed: d(b - A x)/dy (row-major _NA x _NS) and
+    d(b - A x)/dt, b without Baumgarte's terms; dC/dQ (_NC x _NQ) and dC/dt of the velocity
+    constraint C = Phi_Q Q' + Phi_t (camdyn.derive.dae._jacobian_parts)."""
+    cdef double m = ctx.p[0]
+    cdef double L = ctx.p[1]
+    cdef double g = ctx.p[2]
+    cdef double c = ctx.p[3]
+    cdef double theta0 = ctx.p[4]
+    cdef double w_B = ctx.p[5]
+    cdef double formulation = ctx.p[6]
+    cdef double _k0 = ctx.k[0]
+    cdef double _k1 = ctx.k[1]
+    cdef double _k2 = ctx.k[2]
+    cdef double _k3 = ctx.k[3]
+    cdef double _k4 = ctx.k[4]
+    cdef double _k5 = ctx.k[5]
+    cdef double x = _y[0]
+    cdef double y = _y[1]
+    cdef double xd = _y[2]
+    cdef double yd = _y[3]
+
+    cdef double _j0 = -2.0*_acc[2]
+    _R[0] = _j0
+    _R[1] = 0.0
+    _R[2] = _k0
+    _R[3] = 0.0
+    _R[4] = 0.0
+    _R[5] = _j0
+    _R[6] = 0.0
+    _R[7] = _k0
+    _R[8] = -2.0*_acc[0]
+    _R[9] = -2.0*_acc[1]
+    _R[10] = -4.0*xd
+    _R[11] = -4.0*yd
+    _Rt[0] = 0.0
+    _Rt[1] = 0.0
+    _Rt[2] = 0.0
+    _CQ[0] = 2.0*xd
+    _CQ[1] = 2.0*yd
+    _Ct[0] = 0.0
+
+
 cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx) noexcept nogil:
-    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, by central differences of rhs() in C (the
-    manifest says "finite-difference"), extrapolated (Richardson) from the steps h_j and h_j/2,
-    h_j = 1e-3 scale_j: truncation O(h^4), rounding O(eps |f|/h), both far below 1e-6 relative
-    where the right-hand side is smooth over the step (a step across a cam breakpoint sees its
-    kink).  The symbolic Jacobian of the augmented system (A^-1 (db/dy - dA/dy x)) is not
-    generated: it needs one derivative more of a cam profile than the cam-law library gives
-    (order 4), the partitioned formulation recovers the dependent coordinates by Newton's
-    method, and the systems are large; differences are what the implicit method's iteration
-    matrix needs."""
-    cdef double _yp[_NS]
-    cdef double _f1[_NS]
-    cdef double _f2[_NS]
-    cdef double _f3[_NS]
-    cdef double _f4[_NS]
-    cdef double _h, _a1, _b1, _a2, _b2
-    cdef int i, j
-    for i in range(_NS):
-        _yp[i] = _y[i]
-    for j in range(_NS):
-        _h = 1e-3 * _SCALE[j]
-        _a1, _b1 = _y[j] + _h, _y[j] - _h
-        _a2, _b2 = _y[j] + 0.5 * _h, _y[j] - 0.5 * _h
-        _yp[j] = _a1
-        rhs(t, _yp, _f1, ctx)
-        _yp[j] = _b1
-        rhs(t, _yp, _f2, ctx)
-        _yp[j] = _a2
-        rhs(t, _yp, _f3, ctx)
-        _yp[j] = _b2
-        rhs(t, _yp, _f4, ctx)
-        _yp[j] = _y[j]
+    """d(dy/dt)/dy at (t, y), row-major _NS x _NS, and df/dt into _ft unless NULL: exact (the
+    manifest says "symbolic").  The accelerations x = [Q''; lambda] solve A x = b, so
+    dx/dy = A^-1 d(b - A x)/dy at fixed x (_jac_parts), one LU of A for all columns, plus
+    Baumgarte's terms b_c -= 2 w C + w^2 Phi in formulation 0.  Partitioned (formulation 1),
+    the right-hand side is that of the recovered state, and the chain rule goes through the
+    recovery: dQ_d/dQ_i = Z = -Phi_d^-1 Phi_i, dQ'_d/dQ'_i = Z, dQ'_d/dQ_i = -Phi_d^-1 dC/dQ
+    [I; Z] (Phi_d, Phi_i: the columns of Phi_Q of the dependent and independent
+    coordinates); the dependent coordinates' own columns are zero, as they only start the
+    recovery's Newton iteration."""
+    cdef double _yc[_NS]
+    cdef double _acc[_NA]
+    cdef double _A[_NA * _NA]
+    cdef double _R[_NA * _NS]
+    cdef double _Rt[_NA]
+    cdef double _CQ[_NC * _NQ]
+    cdef double _Ct[_NC]
+    cdef double _g[_NC]
+    cdef double _P[_NC * _NQ]
+    cdef double _gt[_NC]
+    cdef double _G[_NQ * (_NS + 1)]   # dQ''/dy (columns 0.._NS-1) and dQ''/dt (column _NS)
+    cdef double _col[_NA]
+    cdef double _D[_NC * _NC]
+    cdef double _Z[_NC * _ND]         # dQ_d/dQ_i
+    cdef double _U[_NC * _ND]         # dQ'_d/dQ_i
+    cdef double _zt[_NC]              # dQ_d/dt
+    cdef double _ut[_NC]              # dQ'_d/dt
+    cdef int _piv[_NA]
+    cdef int _pd[_NC]
+    cdef int i, j, k, c, form = _formulation(ctx)
+    cdef double w, v
+    if _prepared(t, _yc, _y, _A, _acc, &w, ctx) != 0 or lu_factor(_NA, _A, _piv) != 0:
+        for i in range(_NS * _NS):
+            _J[i] = 0.0 / 0.0
+        if _ft != NULL:
+            for i in range(_NS):
+                _ft[i] = 0.0 / 0.0
+        return
+    lu_solve(_NA, _A, _piv, _acc)
+    _jac_parts(t, _yc, _acc, _R, _Rt, _CQ, _Ct, ctx)
+    _constraints(t, _yc, _g, _P, _gt, ctx)
+    if w != 0.0:
+        for k in range(_NC):
+            for j in range(_NQ):
+                _R[(_NQ + k) * _NS + j] -= 2.0 * w * _CQ[k * _NQ + j] + w * w * _P[k * _NQ + j]
+                _R[(_NQ + k) * _NS + _NQ + j] -= 2.0 * w * _P[k * _NQ + j]
+            _Rt[_NQ + k] -= 2.0 * w * _Ct[k] + w * w * _gt[k]
+    for c in range(_NS + 1):
+        for i in range(_NA):
+            _col[i] = _R[i * _NS + c] if c < _NS else _Rt[i]
+        lu_solve(_NA, _A, _piv, _col)
+        for i in range(_NQ):
+            _G[i * (_NS + 1) + c] = _col[i]
+    for i in range(_NS * _NS):
+        _J[i] = 0.0
+    if form != 1:
+        for i in range(_NQ):
+            _J[i * _NS + _NQ + i] = 1.0
+            for j in range(_NS):
+                _J[(_NQ + i) * _NS + j] = _G[i * (_NS + 1) + j]
+        if _ft != NULL:
+            for i in range(_NQ):
+                _ft[i] = 0.0
+                _ft[_NQ + i] = _G[i * (_NS + 1) + _NS]
+        return
+    # partitioned: Z, dQ_d/dt, then U and dQ'_d/dt through dC/dQ
+    for i in range(_NC):
+        for k in range(_NC):
+            _D[i * _NC + k] = _P[i * _NQ + _DEP[k]]
+    if lu_factor(_NC, _D, _pd) != 0:
+        for i in range(_NS * _NS):
+            _J[i] = 0.0 / 0.0
+        return
+    for j in range(_ND):
+        for i in range(_NC):
+            _col[i] = -_P[i * _NQ + _IND[j]]
+        lu_solve(_NC, _D, _pd, _col)
+        for k in range(_NC):
+            _Z[k * _ND + j] = _col[k]
+    for i in range(_NC):
+        _zt[i] = -_gt[i]
+    lu_solve(_NC, _D, _pd, _zt)
+    for j in range(_ND):
+        for i in range(_NC):
+            v = _CQ[i * _NQ + _IND[j]]
+            for k in range(_NC):
+                v += _CQ[i * _NQ + _DEP[k]] * _Z[k * _ND + j]
+            _col[i] = -v
+        lu_solve(_NC, _D, _pd, _col)
+        for k in range(_NC):
+            _U[k * _ND + j] = _col[k]
+    for i in range(_NC):
+        v = _Ct[i]
+        for k in range(_NC):
+            v += _CQ[i * _NQ + _DEP[k]] * _zt[k]
+        _ut[i] = -v
+    lu_solve(_NC, _D, _pd, _ut)
+    for j in range(_ND):
+        _J[_IND[j] * _NS + _NQ + _IND[j]] = 1.0
+        for k in range(_NC):
+            _J[_DEP[k] * _NS + _IND[j]] = _U[k * _ND + j]
+            _J[_DEP[k] * _NS + _NQ + _IND[j]] = _Z[k * _ND + j]
+    for i in range(_NQ):
+        for j in range(_ND):
+            # through Q_i itself, Q_d (Z) and Q'_d (U); and for Q'_i through Q'_d (Z)
+            v = _G[i * (_NS + 1) + _IND[j]]
+            for k in range(_NC):
+                v += (_G[i * (_NS + 1) + _DEP[k]] * _Z[k * _ND + j]
+                      + _G[i * (_NS + 1) + _NQ + _DEP[k]] * _U[k * _ND + j])
+            _J[(_NQ + i) * _NS + _IND[j]] = v
+            v = _G[i * (_NS + 1) + _NQ + _IND[j]]
+            for k in range(_NC):
+                v += _G[i * (_NS + 1) + _NQ + _DEP[k]] * _Z[k * _ND + j]
+            _J[(_NQ + i) * _NS + _NQ + _IND[j]] = v
+    if _ft != NULL:
         for i in range(_NS):
-            _J[i * _NS + j] = (4.0 * (_f3[i] - _f4[i]) / (_a2 - _b2)
-                               - (_f1[i] - _f2[i]) / (_a1 - _b1)) / 3.0
+            _ft[i] = 0.0
+        for k in range(_NC):
+            _ft[_DEP[k]] = _ut[k]
+        for i in range(_NQ):
+            v = _G[i * (_NS + 1) + _NS]
+            for k in range(_NC):
+                v += (_G[i * (_NS + 1) + _DEP[k]] * _zt[k]
+                      + _G[i * (_NS + 1) + _NQ + _DEP[k]] * _ut[k])
+            _ft[_NQ + i] = v
+
+
+cdef int project(double t, double* _y, Ctx* ctx) noexcept nogil:
+    """Formulation 2: the state y projected onto the constraints, in place; 1, or -1 if the
+    iteration did not converge; 0 in the other formulations, which leave y alone.
+
+    Positions: Gauss-Newton steps dQ minimizing dQ^T M dQ subject to Phi + Phi_Q dQ = 0,
+    i.e. [[M, Phi_Q^T], [Phi_Q, 0]] [dQ; mu] = [0; -Phi], until the step (relative to each
+    coordinate's scale and size) is below 1e-13 or stops shrinking; then the rates: dQ' minimizing dQ'^T M dQ' subject to Phi_Q (Q' + dQ') = -Phi_t,
+    the same matrix with [0; -(Phi_Q Q' + Phi_t)].  The mass metric, not the Euclidean one:
+    it is independent of the coordinates' units (modal amplitudes in m beside a cam
+    angle in rad) and removes the least kinetic energy from the rates, and its matrix is
+    the augmented system the right-hand side already forms."""
+    cdef double _A[_NA * _NA]
+    cdef double _b[_NA]
+    cdef double _ph[_NC]
+    cdef double _phd[_NC]
+    cdef int i, it
+    cdef double step = 0.0, prev = 1e300
+    if _formulation(ctx) != 2:
+        return 0
+    for it in range(10):
+        _system(t, _y, _A, _b, _ph, _phd, ctx)
+        for i in range(_NQ):
+            _b[i] = 0.0
+        for i in range(_NC):
+            _b[_NQ + i] = -_ph[i]
+        if solve_inplace(_NA, _A, _b) != 0:
+            return -1
+        step = 0.0
+        for i in range(_NQ):
+            _y[i] += _b[i]
+            step = max(step, fabs(_b[i]) / (_SCALE[i] + fabs(_y[i])))
+        # converged, or no longer shrinking: at the level of the augmented solve's rounding
+        # (modal amplitudes: 1e-10 of their scale), where Newton's steps are noise
+        if step < 1e-13 or step > 0.5 * prev:
+            break
+        prev = step
+    if step >= 1e-6:    # diverging, or stuck far from the constraints
+        return -1
+    _system(t, _y, _A, _b, _ph, _phd, ctx)
+    for i in range(_NQ):
+        _b[i] = 0.0
+    for i in range(_NC):
+        _b[_NQ + i] = -_phd[i]
+    if solve_inplace(_NA, _A, _b) != 0:
+        return -1
+    for i in range(_NQ):
+        _y[_NQ + i] += _b[i]
+    return 1
 
 
 cdef void refresh(Ctx* ctx) noexcept nogil:
@@ -343,6 +549,10 @@ cdef void on_event(int _e, double t, double* _y, Ctx* ctx) noexcept nogil:
 
 cdef void rhs_ptr(double t, const double* _y, double* _dy, Ctx* ctx) noexcept nogil:
     rhs(t, _y, _dy, ctx)
+
+
+cdef int project_ptr(double t, double* _y, Ctx* ctx) noexcept nogil:
+    return project(t, _y, ctx)
 
 
 cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
@@ -374,9 +584,10 @@ def cam_time_affine(p):
 
 def consistent_state(double[::1] p, double[::1] k, int[::1] law, double[::1] law_par,
                      int[::1] mode, double t, double[::1] y, double[::1] out):
-    """The state y with its dependent coordinates (the last _NC) and their rates recovered
-    from the independent ones (Newton's method on Phi = 0, then Phi_Q Q' = -dPhi/dt), into
-    out; returns (0 or 1 without convergence, the largest |Phi| and |Phi'| of y itself).
+    """The state y with its dependent coordinates (_DEP) and their rates recovered from the
+    independent ones (Newton's method on Phi = 0, then Phi_Q Q' = -dPhi/dt), into out;
+    returns (_recover's status: 0, 1 without convergence, 2 singular; the largest |Phi| and
+    |Phi'| of y itself).
     ``k``: n_const + n_cache + 1 doubles of scratch, ``mode``: the modes buffer."""
     cdef Ctx ctx
     cdef double _g[_NC]
@@ -425,6 +636,7 @@ _model.events = events
 _model.on_event = on_event
 _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
+_model.project = project_ptr
 _model.run = run_loops
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
@@ -445,7 +657,7 @@ _MANIFEST_JSON = """
   "y"
  ],
  "events": [],
- "jacobian": "finite-difference",
+ "jacobian": "symbolic",
  "modes": [],
  "n_constraints": 1,
  "n_q": 2,
@@ -547,13 +759,13 @@ _MANIFEST_JSON = """
   },
   {
    "default": 0.0,
-   "doc": "0: augmented index-1 system with Baumgarte stabilization; 1: coordinate partitioning with y dependent (not near the horizontal rod, y = 0)",
-   "high": 1.0,
+   "doc": "0: augmented index-1 system with Baumgarte stabilization; 1: coordinate partitioning with y dependent (not near the horizontal rod, y = 0); 2: augmented system, projected onto the constraint after every step",
+   "high": 2.0,
    "low": 0.0,
    "name": "formulation",
    "open_high": false,
    "open_low": false,
-   "range": "0 <= formulation <= 1",
+   "range": "0 <= formulation <= 2",
    "unit": "1"
   }
  ],
@@ -563,7 +775,7 @@ _MANIFEST_JSON = """
   "baumgarte_rate": "w_B",
   "formulation": "formulation"
  },
- "source_hash": "sha256:e017c1589554bffedb179ec1f3fe3f8fdb43bb82d0bdd5e3f88df9f352e7786a",
+ "source_hash": "sha256:161a1c58ca2d37fcefd956520d1151d5da9a8e1578200587452bf241fc0d81e3",
  "states": [
   {
    "doc": "horizontal position of the bob",
@@ -598,7 +810,7 @@ _MANIFEST_JSON = """
   "name": "t",
   "unit": "s"
  },
- "time_derivative": "finite-difference",
+ "time_derivative": "symbolic",
  "title": "Planar pendulum in Cartesian coordinates with its length constraint"
 }
 """

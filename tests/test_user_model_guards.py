@@ -16,8 +16,10 @@ physics:
   the run stops naming the non-finite component and the state, x > 1 (exit 1);
 * the pendulum (pendulum_xy) released from x = 0.5 with y left at -L cos(theta0): the run
   starts from y = -(L^2 - x^2)^(1/2), says so, in both formulations, and follows the exact
-  pendulum from there (energy conserved to 1e-8);
-* two constraints where one is the other doubled: refused when the model is derived.
+  pendulum from there (energy conserved to 1e-8), in every formulation;
+* two constraints where one is the other doubled: refused when the model is derived;
+* a dependent coordinate the constraints do not involve, or one that is not a coordinate:
+  refused when the model is declared or derived, naming it.
 """
 import json
 import math
@@ -110,7 +112,7 @@ def test_a_right_hand_side_that_is_not_finite_names_the_state_that_made_it(folde
     assert x > 1.0, last
 
 
-@pytest.mark.parametrize("formulation", ["0", "1"])
+@pytest.mark.parametrize("formulation", ["0", "1", "2"])
 def test_initial_values_off_the_constraint_start_on_it(folder, formulation):
     """The pendulum of length 1 with x(0) = 0.5 and y(0) left at -cos(1): y is recovered,
     y = -(1 - 0.25)^(1/2), the run says so in a warning, and its energy stays that of the
@@ -157,3 +159,40 @@ def test_dependent_constraints_are_refused_when_derived():
                   solver=ConstraintSolver(baumgarte_rate=w.symbol, formulation=form.symbol))
     with pytest.raises(ValueError, match="dependent or contradict each other .* rank 1 "):
         derive(model)
+
+
+def _plane_bob(dependent):
+    """A bob in a plane on a rod (x, y) with a third coordinate u that the rod does not involve
+    (a free mass on a spring), its dependent coordinate chosen by ``dependent``."""
+    import sympy as sp
+
+    from camdyn.derive.model import (Constraint, ConstraintSolver, Coordinate, Model, Parameter,
+                                     time)
+
+    t = time("t")
+    m = Parameter("m", 1.0, "kg", "bob", low=0.0, open_low=True)
+    w, form = (Parameter("w_B", 10.0, "rad/s", "Baumgarte rate", low=0.0),
+               Parameter("formulation", 0.0, "1", "formulation", low=0.0, high=2.0))
+    q = [Coordinate(n, "m", n, initial=v) for n, v in (("x", 0.0), ("y", -1.0), ("u", 0.0))]
+    x, y, u = (c(t) for c in q)
+    return Model(name="bob_u", title="bob", reference="test", doc="", time=t, time_unit="s",
+                 coordinates=tuple(q),
+                 kinetic=m.symbol * sum(c.diff(t) ** 2 for c in (x, y, u)) / 2,
+                 potential=u**2 / 2, parameters=(m, w, form), outputs=(),
+                 constraints=(Constraint("rod", x**2 + y**2 - 1, "lam", "N/m", "rod"),),
+                 solver=ConstraintSolver(baumgarte_rate=w.symbol, formulation=form.symbol,
+                                         dependent=dependent))
+
+
+def test_a_dependent_coordinate_the_constraints_cannot_fix_is_refused():
+    """u as the dependent coordinate: Phi_u = 0, so the constraint cannot be solved for it;
+    refused when derived, naming u.  A name that is no coordinate: refused when declared."""
+    from camdyn.derive.dae import constrained_context
+    from camdyn.derive.lagrange import derive
+
+    with pytest.raises(ValueError, match=r"cannot be solved for the dependent coordinates u "):
+        constrained_context(derive(_plane_bob(("u",))))
+    with pytest.raises(ValueError, match=r"dependent=\('z',\) must name 1 distinct "
+                                         r"coordinates among x, y, u"):
+        _plane_bob(("z",))
+    assert constrained_context(derive(_plane_bob(("x",))))["dependent"] == [0]

@@ -56,8 +56,9 @@ Modelling choices the paper leaves open (each a parameter where it can be):
   library), declared as the model's RDFDProfile with the rise beta_r.  The segment ends are
   located as events.
 
-How the constraints are solved (augmented with Baumgarte's rate w_B, paper (20), or
-partitioned, the last two coordinates x_E and theta dependent, paper (21)-(27)) is the
+How the constraints are solved (augmented with Baumgarte's rate w_B, paper (20),
+partitioned, the last two coordinates x_E and theta dependent, paper (21)-(27), or projected
+after every step) is the
 parameter ``formulation``, declared as the model's ConstraintSolver; the multipliers are the
 outputs lambda1 (transverse, (6)) and lambda2 (axial, (7)), in N.
 """
@@ -102,8 +103,9 @@ L_g = _p("L_g", 0.0, "m", "length of rod inside the guide carried axially (0: fr
 w_B = _p("w_B", 2.0e3, "rad/s", "Baumgarte rate: Phi'' + 2 w_B Phi' + w_B^2 Phi = 0 (augmented form)",
          open_low=False)
 formulation = _p("formulation", 0.0, "1", "0: augmented index-1 system with Baumgarte "
-                 "stabilization; 1: coordinate partitioning with Newton on (x_E, theta)",
-                 open_low=False, high=1.0)
+                 "stabilization; 1: coordinate partitioning with Newton on (x_E, theta); 2: "
+                 "augmented system, projected onto the constraints after every step",
+                 open_low=False, high=2.0)
 
 PARAMETERS = (Omega, d, r_b, r_r, S_T, beta_r, a_rod, E, rho, m_r, J_r, rayleigh, L_g, w_B, formulation)
 

@@ -28,7 +28,8 @@ Baumgarte's stabilization at the rate w_B; 1 is coordinate partitioning with y, 
 coordinate, dependent: y is recovered from x by Newton's method on Phi = 0 (the branch of
 the sign y carries), and y' = -x x'/y.  That fails near y = 0, the horizontal rod, where
 Phi_y = 2 y vanishes: use the augmented form (formulation 0) for swings that reach the
-horizontal (|theta0| >= pi/2).
+horizontal (|theta0| >= pi/2); 2 is the augmented system without Baumgarte's terms, the
+state projected back onto Phi = 0 and Phi' = 0 after every accepted step.
 """
 from __future__ import annotations
 
@@ -51,7 +52,8 @@ w_B = Parameter("w_B", 10.0, "rad/s", "Baumgarte rate: Phi'' + 2 w_B Phi' + w_B^
                 "(augmented form)", low=0.0)
 formulation = Parameter("formulation", 0.0, "1", "0: augmented index-1 system with Baumgarte "
                         "stabilization; 1: coordinate partitioning with y dependent (not "
-                        "near the horizontal rod, y = 0)", low=0.0, high=1.0)
+                        "near the horizontal rod, y = 0); 2: augmented system, projected onto "
+                        "the constraint after every step", low=0.0, high=2.0)
 
 PARAMETERS = (m, L, g, c, theta0, w_B, formulation)
 

@@ -69,12 +69,14 @@ def add(sub):
                    help=f"roller moment of inertia J_r, kg m^2, >= 0 (default: uniform disc "
                         f"m_r r_r^2/2 = {disc:g}); 0 ignores the roller's rotation")
     b.add_argument("--formulation", choices=tuple(FORMULATIONS),
-                   help=f"augmented (multipliers, Baumgarte) or partitioned (coordinate "
-                        f"partitioning, paper (21)-(27)); default {dflt['formulation']}")
+                   help=f"augmented (multipliers, Baumgarte), partitioned (coordinate "
+                        f"partitioning, paper (21)-(27)) or projection (multipliers, the "
+                        f"state projected onto the constraints after every step); default "
+                        f"{dflt['formulation']}")
     b.add_argument("--method", choices=ADAPTIVE, default="dop853",
                    help="integration method (default dop853, whose order 8 suits rtol 1e-9 and "
-                        "the higher modes' stiffness); rodas4, the stiff solver, suits stiff "
-                        "rods (large E)")
+                        "the higher modes' stiffness); rodas4 or radau5, the stiff solvers, "
+                        "suit stiff rods (large E)")
     b.add_argument("--rtol", type=float, metavar="RTOL",
                    help=f"relative tolerance of the method, 1e-14 <= rtol < 1 (default "
                         f"{dflt['rtol']:g}; the error estimate runs again at rtol/10)")

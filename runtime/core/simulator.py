@@ -358,26 +358,39 @@ class Simulator:
         fault = diagnosis.explain(m, p, self.law_codes, self.law_pars, out)
         if fault is not None and fault.at_start:     # the input, not the run
             raise CamdynInputError(f"{m.name}: {fault.text}")
+        why = (driver.PROJECTION_TEXT if out.status == driver.NO_CONVERGENCE
+               and self.method.name != "koster" else driver.STATUS_TEXT[out.status])
         raise SimulationError(f"{m.name} with {self.method.name}: " + (
-            fault.text if fault else
-            f"{driver.STATUS_TEXT[out.status]} at {tname} = {out.t_fail:.6g}"))
+            fault.text if fault else f"{why} at {tname} = {out.t_fail:.6g}"))
 
     def _consistent(self, p, y):
         """A constrained model's initial state on its constraints: the dependent coordinates
-        (the last ones declared) and their rates recovered from the independent ones, in
-        every formulation, with a note when that moved them (the run starts, and its record
-        reports, the consistent state); a CamdynInputError when no consistent state is found."""
+        (the manifest's "dependent", as the model's ConstraintSolver names them) and their
+        rates recovered from the independent ones, in every formulation, with a note when
+        that moved them (the run starts, and its record reports, the consistent state); a
+        CamdynInputError naming the dependent coordinates when no consistent state is found
+        or they cannot be solved for there."""
         m = self.model
         y = np.ascontiguousarray(y, dtype=float)
+        dep = m.manifest.get("dependent", [])
         try:
             yc, phi, phid = driver.consistent_state(
                 m.capsule, m.module, p, self.law_codes, self.law_pars, self.t0, y,
                 np.array(self.modes0, dtype=np.intc) if self.modes0 else None)
-        except ValueError:
+        except ValueError as e:
+            skip = set(dep) | {n + "d" for n in dep}
+            given = ", ".join(f"{n} = {v:.6g}" for n, v in zip(m.state_names, y)
+                              if n not in skip)
+            if str(e) == "singular":
+                raise CamdynInputError(
+                    f"{m.name}: the constraints cannot be solved for the dependent coordinates "
+                    f"{', '.join(dep)} at the initial state (Phi_Q restricted to them is "
+                    "singular there); give other initial values or declare other dependent "
+                    "coordinates (ConstraintSolver(dependent=...))") from None
             raise CamdynInputError(
-                f"{m.name}: no state satisfies the constraints near the initial one "
-                f"({', '.join(f'{n} = {v:.6g}' for n, v in zip(m.state_names, y))}); give "
-                "initial values closer to them") from None
+                f"{m.name}: Newton's method found no {', '.join(dep)} on the constraints from "
+                f"the independent coordinates ({given}); give initial values closer to "
+                "them") from None
         moved = np.abs(yc - y) > 1e-10 * (np.abs(y) + m.state_scales())
         if not moved.any():
             return y, None

@@ -12,7 +12,7 @@
 # a module at run time.
 
 cdef enum:
-    CAMDYN_ABI = 9
+    CAMDYN_ABI = 10
 
 # method codes
 cdef enum:
@@ -107,6 +107,7 @@ ctypedef void (*event_fn)(double t, const double* y, double* g, Ctx* ctx) noexce
 ctypedef void (*action_fn)(int k, double t, double* y, Ctx* ctx) noexcept nogil
 ctypedef void (*ms_fn)(double t, const double* y, double* M, double* K, Ctx* ctx) noexcept nogil
 ctypedef void (*jac_fn)(double t, const double* y, double* J, double* ft, Ctx* ctx) noexcept nogil
+ctypedef int (*proj_fn)(double t, double* y, Ctx* ctx) noexcept nogil
 
 cdef struct ModelC:
     int abi_version        # CAMDYN_ABI; checked before any call
@@ -133,6 +134,10 @@ cdef struct ModelC:
                            # and df/dt into ft unless NULL where the manifest's
                            # "time_derivative" is "symbolic" (ABI 5)
     run_fn run             # the integration loops (loops.pxi) with this model's rhs inlined
+    proj_fn project        # a constrained model's projection of y onto its constraints, in
+                           # place (1; -1 without convergence; 0, y untouched, unless its
+                           # formulation is 2), which the loops call after every accepted
+                           # step; NULL for unconstrained models (ABI 10)
 
 
 cdef inline int extra_terms(int method) noexcept nogil:

@@ -78,6 +78,12 @@ STATUS_TEXT = {
     STATUS_UNSTABLE: "the step is beyond the method's stability boundary; use a smaller step",
 }
 UNSTABLE = STATUS_UNSTABLE
+NO_CONVERGENCE = STATUS_NO_CONVERGENCE
+PROJECTION_TEXT = ("the projection onto the constraints did not converge (formulation 2: no "
+                   "configuration on them near the step's end, or Phi_Q losing rank there); "
+                   "try a tighter rtol or formulation 0")
+"""What STATUS_NO_CONVERGENCE means in every method but the thesis scheme: a constrained
+model's project() failed after an accepted step (loops.pxi, _project_accepted)."""
 CHECK_OFF, CHECK_ESTIMATE, CHECK_STOP = 0, 1, 2
 
 # Integrator.run allocates its record with these, called positionally: looking up np.empty
@@ -704,7 +710,8 @@ def consistent_state(object capsule, object module, double[::1] p, int[::1] law,
                      double[::1] law_par, double t, double[::1] y, element_modes=None):
     """(y with its dependent coordinates and their rates recovered from the independent ones,
     the largest |Phi| and |Phi'| of y) of a constrained model (its module's
-    consistent_state); a SimulationError-free ValueError when Newton's method fails."""
+    consistent_state); a ValueError when Newton's method fails: its text "singular" where
+    Phi_Q restricted to the dependent coordinates is, else "no convergence"."""
     cdef ModelC* m = model_pointer(capsule)
     cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
     cdef int[::1] md = _mode_buffer(m, element_modes)
@@ -713,7 +720,7 @@ def consistent_state(object capsule, object module, double[::1] p, int[::1] law,
     out = np.empty(m.n_states)
     status, phi, phid = module.consistent_state(p, k, law, law_par, md, t, y, out)
     if status:
-        raise ValueError("Newton's method on the constraints did not converge")
+        raise ValueError("singular" if status == 2 else "no convergence")
     return out, phi, phid
 
 

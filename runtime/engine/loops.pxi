@@ -169,6 +169,26 @@ cdef int _event_in_step(Run* run, double t, double h, const double* y0, const do
     return hit
 
 
+cdef inline int _project_accepted(Ctx* ctx, double t, double* y, double* f, double* g,
+                                  long* n_rhs) noexcept nogil:
+    """A constrained model's projection of an accepted state onto its constraints (the model's
+    project(), its formulation 2), with the slope f and the event functions g (unless NULL)
+    at the projected state: so the record, whose rows are the dense output's end points and
+    slopes, and the next step both start from it.  STATUS_OK, or STATUS_NO_CONVERGENCE."""
+    cdef int r
+    if not _PROJECTS:
+        return STATUS_OK
+    r = project(t, y, ctx)
+    if r < 0:
+        return STATUS_NO_CONVERGENCE
+    if r > 0:
+        rhs(t, y, f, ctx)
+        n_rhs[0] += 1
+        if _NE > 0 and g != NULL:
+            events(t, y, g, ctx)
+    return STATUS_OK
+
+
 cdef int _apply_event(Run* run, int k, double t, double* y, double* f, double* g0) noexcept nogil:
     """Record the left limit at an event, apply it, record the right limit; f becomes the
     new slope and g0 the event functions in the new modes."""
@@ -178,6 +198,8 @@ cdef int _apply_event(Run* run, int k, double t, double* y, double* f, double* g
     if _rec_point(run, t, y, f) != 0:
         return STATUS_NO_MEMORY
     on_event(k, t, y, run.ctx)
+    if _PROJECTS and project(t, y, run.ctx) < 0:   # the right limit on the constraints too
+        return STATUS_NO_CONVERGENCE
     rhs(t, y, f, run.ctx)
     run.n_rhs += 1
     if _rec_point(run, t, y, f) != 0:
@@ -718,6 +740,9 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
         memcpy(y, yn, sizeof(y))
         memcpy(k1, fn, sizeof(k1))
         k += 1
+        status = _project_accepted(ctx, t, y, k1, g0, &n_rhs)
+        if status != STATUS_OK:
+            break
         if _rec_point(run, t, y, k1) != 0:
             status = STATUS_NO_MEMORY
             break
@@ -1036,6 +1061,9 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
             t = b if last else t + h
             memcpy(y, yn, sizeof(y))
             memcpy(k1, k7, sizeof(k1))
+            status = _project_accepted(ctx, t, y, k1, g0, &n_rhs)
+            if status != STATUS_OK:
+                break
             if _rec_point(run, t, y, k1) != 0:
                 status = STATUS_NO_MEMORY
                 break
@@ -1184,6 +1212,9 @@ cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
             t = b if last else t + h
             memcpy(y, yn, sizeof(y))
             memcpy(K, K + 12 * _NS, _NS * sizeof(double))
+            status = _project_accepted(ctx, t, y, K, g0, &n_rhs)
+            if status != STATUS_OK:
+                break
             if _rec_point(run, t, y, K) != 0:
                 status = STATUS_NO_MEMORY
                 break
@@ -1509,6 +1540,9 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
             t = tn
             memcpy(y, yn, sizeof(y))
             memcpy(f0, fn, sizeof(f0))
+            status = _project_accepted(ctx, t, y, f0, g0, &n_rhs)
+            if status != STATUS_OK:
+                break
             for i in range(_NS):
                 ymag[i] = fmax(ymag[i], fabs(y[i]))
             if _rec_point(run, t, y, f0) != 0:

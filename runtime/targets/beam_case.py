@@ -14,7 +14,7 @@ from camdyn import generated
 from ..core.errors import CamdynInputError
 from ..core.laws import choose
 
-FORMULATIONS = {"augmented": 0.0, "partitioned": 1.0}
+FORMULATIONS = {"augmented": 0.0, "partitioned": 1.0, "projection": 2.0}
 """How the constraints are solved: the model's parameter ``formulation`` for each name."""
 
 N_MAX = max(int(m.name[4:]) for m in pkgutil.iter_modules(generated.__path__)
