@@ -282,11 +282,17 @@ def _ivp(run: PeerRun, calls: _Calls, y, t, stops, atol) -> None:
                 run.status, run.message = "failed", f"{sol.message} (at t = {sol.t[-1]:.6g})"
                 return
             run.n_steps += len(sol.t) - 1
-            run.pieces.append((float(t), float(sol.t[-1]), sol.sol, sol.t))
             t_new, y = float(sol.t[-1]), sol.y[:, -1].copy()
             if sol.status == 1 and t_new <= t:   # an event at the start: cannot make progress
                 run.status, run.message = "failed", f"event at t = {t:.6g} repeats at its start"
                 return
+            # a piece a few ulps long is the last event found again: its root left the state
+            # on the old side of the segment's bound by rounding; it joins the next piece
+            if not (sol.status == 1 and t_new - t <= 1e-12 * max(1.0, abs(t))):
+                run.pieces.append((float(t), t_new, sol.sol, sol.t))
+            elif run.pieces:
+                a, _, s_prev, ts_prev = run.pieces[-1]
+                run.pieces[-1] = (a, t_new, s_prev, ts_prev)
             t = t_new
     run.y_end = y
 
