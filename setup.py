@@ -26,7 +26,11 @@ INCLUDE = ROOT / "build" / "cython_include"
 PACKAGE_DIR = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["package-dir"]
 COMPILED = ("camdyn.runtime.engine", "camdyn.generated")   # the packages with .pyx modules
 # -fno-math-errno: sqrt becomes an instruction; nothing here reads errno
-COMPILE_ARGS = ["-O3", "-fno-math-errno"]
+# --param=inline-unit-growth=400: every model's module holds all the loops (loops.pxi); past
+# gcc's default unit growth (40 %) it stopped inlining the model's rhs into the RK4 loop,
+# which then took twice the time of the hand-written loop of bench/ (the call and the cam
+# values no longer shared between stages)
+COMPILE_ARGS = ["-O3", "-fno-math-errno", "--param=inline-unit-growth=400"]
 
 
 def _folder(package: str) -> Path:

@@ -39,7 +39,8 @@ names = sys.argv[1:]
 sys.argv[1:] = ["build_ext", "--inplace", "-q"]
 setup(script_args=sys.argv[1:], ext_modules=cythonize(
     [Extension("camdyn." + n.replace("/", "."), ["camdyn/" + n + ".pyx"],
-               extra_compile_args=["-O3", "-fno-math-errno"]) for n in names],
+               extra_compile_args=["-O3", "-fno-math-errno",
+                                                   "--param=inline-unit-growth=400"]) for n in names],
     include_path=["."], compiler_directives={"language_level": 3}, quiet=True))
 """
 
