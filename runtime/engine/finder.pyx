@@ -423,16 +423,23 @@ cdef Py_ssize_t _walk(Rec* r, double a, double b, int per_step, int which, int k
     return k
 
 
+cdef inline void _pair_in(Rec* r, double tq, Py_ssize_t i, int w1, int w2, double* v1,
+                          double* v2) noexcept nogil:
+    """Figures w1 and w2 (states, then outputs) at tq through step i, from one evaluation of
+    the model's outputs."""
+    _value_in(r, tq, i, w1 if w1 >= w2 else w2)
+    v1[0] = r.y[w1] if w1 < r.ns else r.out[w1 - r.ns]
+    v2[0] = r.y[w2] if w2 < r.ns else r.out[w2 - r.ns]
+
+
 cdef inline Py_ssize_t _sample(Rec* r, double tq, Py_ssize_t i, int which, int kind, Scan* S,
                                double* out, Py_ssize_t cap, int w1, int w2,
                                Py_ssize_t k) noexcept nogil:
     if S != NULL:
         _take(S, tq, _score(r, tq, i, which, kind))
     elif k < cap:
-        _value_in(r, tq, i, w1 if w1 >= w2 else w2)
         out[k] = tq
-        out[cap + k] = r.y[w1] if w1 < r.ns else r.out[w1 - r.ns]
-        out[2 * cap + k] = r.y[w2] if w2 < r.ns else r.out[w2 - r.ns]
+        _pair_in(r, tq, i, w1, w2, out + cap + k, out + 2 * cap + k)
     return k + 1
 
 
@@ -555,16 +562,12 @@ cdef void _fill_cache(Rec* r, int w1, int w2, double* c1, double* c2, int stride
     """Figures w1 and w2 at every recorded point j > 0 as the dense output gives them there
     (step j - 1 at its end), from one evaluation of the outputs per point."""
     cdef Py_ssize_t j
-    cdef int ns = r.ns
-    cdef int w = w1 if w1 >= w2 else w2
     c1[0] = NAN
     c2[0] = NAN
     j = stride
     while j < r.n:
         if _t(r, j) > _t(r, j - 1):
-            _value_in(r, _t(r, j), j - 1, w)
-            c1[j] = r.y[w1] if w1 < ns else r.out[w1 - ns]
-            c2[j] = r.y[w2] if w2 < ns else r.out[w2 - ns]
+            _pair_in(r, _t(r, j), j - 1, w1, w2, c1 + j, c2 + j)
         j += stride
 
 

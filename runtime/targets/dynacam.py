@@ -161,13 +161,14 @@ def prepare(scene: DynacamScene, method=None, progress=None) -> Prepared:
     sim = Simulator(model, t_end, method, law=law, modes=scene.modes, max_steps=MAX_STEPS)
     p = model.parameter_vector(params)
     y0 = equilibrium(model, p, sim)
-    sim = simulator_from(scene, model, y0, method)
+    sim = simulator_from(scene, model, y0, t_end, method)
     return Prepared(model, params, ch, sim, y0, ch["t_m"], t_end)
 
 
-def simulator_from(scene: DynacamScene, model, y0, method=None) -> Simulator:
-    """The Simulator of the scene's run from y0 (its equilibrium, :func:`equilibrium`)."""
-    return Simulator(model, placed(scene)[2], scene_method(scene) if method is None else method,
+def simulator_from(scene: DynacamScene, model, y0, t_end: float, method=None) -> Simulator:
+    """The Simulator of the scene's run from y0 (its equilibrium, :func:`equilibrium`) to t_end
+    (:func:`placed`)."""
+    return Simulator(model, t_end, scene_method(scene) if method is None else method,
                      law=scene.cam_law(), modes=scene.modes, max_steps=MAX_STEPS, y0=y0)
 
 

@@ -207,8 +207,8 @@ class DynacamTarget(Target):
                     ab[j, k] = sp[key].a, sp[key].b
         contact = self.scene.options.roller == "contact"
         # each point's own absolute tolerances, as its single run takes them from its start
-        atol = np.array([dynacam.simulator_from(sc, model, y0, sim.method).atol
-                         for sc, y0 in zip(scenes, Y0)])
+        atol = np.array([dynacam.simulator_from(sc, model, y0, end, sim.method).atol
+                         for sc, y0, end in zip(scenes, Y0, t_end)])
         runs = batch.run_batch(sim, P, Y0, t_end, tuple(wanted.values()), ab,
                                mode=("roller", "free") if contact else None, atol=atol)
         self._check_runs(runs, names, points)
