@@ -50,6 +50,30 @@ def test_an_estimate_wider_than_the_band_is_flagged():
     assert checks.run(still).estimate is None
 
 
+def test_an_estimate_that_cannot_be_made_says_why(capsys):
+    """A value whose tighter run fails keeps its value; the estimate is None and the reason
+    is carried to the JSON and to a warning under the table."""
+    from camdyn.runtime.cli import check as cli_check
+    from camdyn.runtime.core import methods
+
+    def value():
+        if methods.notches():
+            raise RuntimeError("max_steps=10 reached at T = 0.25\nsecond line")
+        return 2.0
+
+    c = checks.Check("fails-tighter", "x", "x", "2", value, rule="rel:0.1")
+    out = checks.run(c, estimate=True)
+    assert out.passed and out.estimate is None
+    assert out.estimate_why == "max_steps=10 reached at T = 0.25"
+    assert out.as_dict()["estimate_unavailable"] == "max_steps=10 reached at T = 0.25"
+    assert "estimate_unavailable" not in checks.run(c).as_dict()
+    cli_check._print_table([out])
+    text = capsys.readouterr().out
+    assert "2 (estimate unavailable)" in text
+    assert ("warning fails-tighter: estimate unavailable: max_steps=10 reached at T = 0.25; "
+            "the figures are the run's, without an error estimate") in text
+
+
 def test_rules():
     c = checks.Check("x", "x", "x", "2", lambda: 2.1, rule="rel:0.1")
     assert checks.run(c).passed

@@ -159,7 +159,10 @@ def test_a_trend_shows_each_number_with_its_estimate():
     t = Trend("peaks {:.4g}, {:.4g} mm; {:.1e} relative", (0.21951, 0.2193, 3e-4), True)
     assert t.shown() == "peaks 0.2195, 0.2193 mm; 3.0e-04 relative"
     assert t.shown((3.3e-10, 1.8e-12, None)) == ("peaks 0.2195 ± 3.3e-10, 0.2193 ± 1.8e-12 mm; "
-                                                 "3.0e-04 (no estimate) relative")
+                                                 "3.0e-04 (estimate unavailable) relative")
+    assert t.shown((1e-3, 1e-3, None), "no tighter run") == (
+        "peaks 0.2195 ± 0.001, 0.2193 ± 0.001 mm; 3.0e-04 (estimate unavailable: no tighter "
+        "run) relative")
 
 
 def test_fig8_6_curve_has_the_inertia_limit():

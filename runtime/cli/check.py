@@ -5,6 +5,7 @@ import json
 import sys
 
 from ..core.errors import CamdynInputError
+from ..measure.contract import UNAVAILABLE, unavailable
 from .common import add_estimate_option, fail, fmt
 
 
@@ -65,15 +66,18 @@ def _print_table(outcomes) -> None:
         print(f"  warning {o.check.key}: the estimate {o.estimate:.2g} exceeds the band the "
               f"rule accepts ({o.check.rule}): the runs do not resolve the agreement")
     for o in outcomes:
+        if o.estimate_why:
+            print(f"  warning {o.check.key}: {unavailable(o.estimate_why)}")
+    for o in outcomes:
         if o.check.errata and o.check.note:
             print(f"  errata {o.check.key}: {o.check.note}")
 
 
 def _estimate(o) -> str:
-    """" ± e", " (exact)", " (no estimate)" beside a derived value, or "" when none was asked
-    for."""
+    """" ± e", " (exact)", " (estimate unavailable)" (the reason in a warning below the table)
+    beside a derived value, or "" when none was asked for."""
     if not o.estimated or o.check.rule == "identity":
         return ""
     if o.exact:
         return " (exact)"
-    return " (no estimate)" if o.estimate is None else f" ± {o.estimate:.2g}"
+    return f" ({UNAVAILABLE})" if o.estimate is None else f" ± {o.estimate:.2g}"

@@ -78,6 +78,7 @@ class Outcome:
     expected_agrees: bool = True
     estimate: float | None = None   # the derived value's error estimate (0 where exact)
     estimated: bool = False         # whether one was asked for (run(..., estimate=True))
+    estimate_why: str = ""          # why an estimate asked for could not be made
 
     @property
     def exact(self) -> bool:
@@ -115,7 +116,8 @@ class Outcome:
                 "derived": _plain(self.derived), "rel_diff": self.rel_diff, "rule": c.rule,
                 "status": self.status, "passed": self.passed, "note": c.note,
                 "errata": c.errata, "expected": c.expected, "expected_rule": c.expected_rule or None,
-                "derived_error": self.estimate, "error": self.error, "seconds": self.seconds}
+                "derived_error": self.estimate, "error": self.error, "seconds": self.seconds,
+                **({"estimate_unavailable": self.estimate_why} if self.estimate_why else {})}
 
 
 def _plain(value):
@@ -188,9 +190,10 @@ def run(check: Check, estimate: bool = False) -> Outcome:
     except Exception as exc:  # a check that cannot run is a failure, reported, not a crash
         return Outcome(check, None, None, False, time.perf_counter() - t0,
                        error=f"{type(exc).__name__}: {exc}")
-    e = error_estimate(check, derived) if estimate else None
+    e, why = error_estimate(check, derived) if estimate else (None, "")
     return Outcome(check, derived, rel, agrees, time.perf_counter() - t0,
-                   expected_agrees=expected_agrees, estimate=e, estimated=estimate)
+                   expected_agrees=expected_agrees, estimate=e, estimated=estimate,
+                   estimate_why=why)
 
 
 def is_exact(check: Check) -> bool:
@@ -198,21 +201,22 @@ def is_exact(check: Check) -> bool:
     return check.exact or check.rule == "identity"
 
 
-def error_estimate(check: Check, derived) -> float | None:
-    """The error estimate of ``derived`` (module doc): 0 for an exact value; the check's own
-    estimate where its runs carry one; else |derived - derived one notch tighter| times the
-    method's factor.  None where no estimate can be made (a run already at the tightest rtol,
-    a tighter run that fails): shown as such beside the value."""
+def error_estimate(check: Check, derived) -> tuple[float | None, str]:
+    """(the error estimate of ``derived`` (module doc), ""): 0 for an exact value; the check's
+    own estimate where its runs carry one; else |derived - derived one notch tighter| times
+    the method's factor.  (None, why) where no estimate can be made (a run already at the
+    tightest rtol, a tighter run that fails): shown as such beside the value, the reason in a
+    warning."""
     if is_exact(check):
-        return 0.0
+        return 0.0, ""
     try:
         if check.estimate is not None:
-            return float(check.estimate())
+            return float(check.estimate()), ""
         with tightened():
             tight = check.compute()
-        return abs(float(derived) - float(tight)) * estimate_factor(check.method)
-    except Exception:            # no estimate is shown as such, beside the value
-        return None
+        return abs(float(derived) - float(tight)) * estimate_factor(check.method), ""
+    except Exception as exc:     # no estimate is shown as such, beside the value
+        return None, (str(exc).splitlines() or [type(exc).__name__])[0]
 
 
 def tolerance(check: Check) -> float | None:

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Callable
 
+from camdyn.runtime.measure.contract import UNAVAILABLE
 from camdyn.thesis.checks.check import Check
 
 GROUPS = (("thesis", "Thesis figures (Koster, Vibrations of cam mechanisms)"),
@@ -31,7 +32,7 @@ class Trend:
     holds: bool
     method: str = "dp54"    # the method of the runs behind the values, for their estimates
 
-    def shown(self, estimates=None) -> str:
+    def shown(self, estimates=None, why: str = "") -> str:
         """The text with the numbers filled in, each followed by "± its estimate" when
         ``estimates`` (one per number) are given."""
         out = []
@@ -43,13 +44,15 @@ class Trend:
             i = next(fields)
             out.append(format(self.values[i], spec))
             if estimates is not None:
-                out.append(plus_minus(estimates[i]))
+                out.append(plus_minus(estimates[i], why))
         return "".join(out)
 
 
-def plus_minus(estimate) -> str:
-    """" ± e" for an estimate, " (no estimate)" without one."""
-    return " (no estimate)" if estimate is None else f" ± {estimate:.2g}"
+def plus_minus(estimate, why: str = "") -> str:
+    """" ± e" for an estimate, " (estimate unavailable: why)" without one."""
+    if estimate is not None:
+        return f" ± {estimate:.2g}"
+    return f" ({UNAVAILABLE}: {why})" if why else f" ({UNAVAILABLE})"
 
 
 @dataclass(frozen=True)

@@ -33,7 +33,8 @@ def evaluate(claim: Claim, checks_by_key: dict) -> ClaimResult:
         return result
     if checks.is_exact(c):
         return replace(result, shown=f"{derived} (exact)", exact=True)
-    return replace(result, shown=derived + plus_minus(o.estimate), estimates=(o.estimate,))
+    return replace(result, shown=derived + plus_minus(o.estimate, o.estimate_why),
+                   estimates=(o.estimate,))
 
 
 def _trend(claim: Claim) -> ClaimResult:
@@ -48,10 +49,13 @@ def _trend(claim: Claim) -> ClaimResult:
             tight = claim.trend()
         es = tuple(abs(a - b) * estimate_factor(t.method)
                    for a, b in zip(t.values, tight.values))
-    except Exception:
+        why = ""
+    except Exception as exc:     # the values stand, without estimates, saying why
         es = (None,) * len(t.values)
+        why = (str(exc).splitlines() or [type(exc).__name__])[0]
     return ClaimResult(claim.text, claim.reference, "(trend)", t.shown(), "trend",
-                       "pass" if t.holds else "FAIL", t.holds, shown=t.shown(es), estimates=es)
+                       "pass" if t.holds else "FAIL", t.holds, shown=t.shown(es, why),
+                       estimates=es)
 
 
 def fmt(v) -> str:
