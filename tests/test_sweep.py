@@ -268,3 +268,18 @@ def test_turn_scene_sweep_adds_the_return(tmp_path):
     summary, _ = dynacam.run(scenes.load(str(path)))
     for key in ("U0", "Xdd_absmax_return", "U0dd_return", "U0_return"):
         assert res[key][0] == summary[key], key
+
+
+def test_default_chunks_grow_with_the_grid():
+    """About eight chunks a thread, never fewer points than the target's own chunk and at most
+    MAX_CHUNK: a large grid pays for fewer Python round trips, a small one keeps even shares."""
+    from types import SimpleNamespace
+
+    from camdyn.runtime.targets.grid import MAX_CHUNK, default_chunk
+
+    model = SimpleNamespace(chunk=32)
+    assert default_chunk(model, 2400, 1) == 300
+    assert default_chunk(model, 2400, 2) == 150
+    assert default_chunk(model, 100, 2) == 32
+    assert default_chunk(model, 10**6, 2) == MAX_CHUNK == 512
+    assert default_chunk(SimpleNamespace(chunk=1), 7, 1) == 1

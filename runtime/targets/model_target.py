@@ -170,7 +170,8 @@ class ModelTarget(Target):
 
     kind = "model"
     chunk = 32
-    """Grid points per compiled call: small enough for a live progress bar and even shares."""
+    """Grid points per compiled call at least (runtime/targets/grid.py default_chunk makes
+    them larger on a large grid)."""
 
     @classmethod
     def of(cls, name: str, params: dict | None = None, *, method: str = "dp54", rtol=None,
