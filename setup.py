@@ -13,6 +13,7 @@ sources in top-level folders (runtime/, generated/).  So the headers are copied 
 build/cython_include/camdyn/ first and that tree is put on Cython's include path.
 """
 import os
+import runpy
 import shutil
 import tomllib
 from pathlib import Path
@@ -25,12 +26,8 @@ ROOT = Path(__file__).parent.resolve()
 INCLUDE = ROOT / "build" / "cython_include"
 PACKAGE_DIR = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["package-dir"]
 COMPILED = ("camdyn.runtime.engine", "camdyn.generated")   # the packages with .pyx modules
-# -fno-math-errno: sqrt becomes an instruction; nothing here reads errno
-# --param=inline-unit-growth=400: every model's module holds all the loops (loops.pxi); past
-# gcc's default unit growth (40 %) it stopped inlining the model's rhs into the RK4 loop,
-# which then took twice the time of the hand-written loop of bench/ (the call and the cam
-# values no longer shared between stages)
-COMPILE_ARGS = ["-O3", "-fno-math-errno", "--param=inline-unit-growth=400"]
+# the flags say why in derive/flags.py, which the model files' builds read too
+COMPILE_ARGS = runpy.run_path(str(ROOT / "derive" / "flags.py"))["COMPILE_ARGS"]
 
 
 def _folder(package: str) -> Path:

@@ -29,9 +29,7 @@ import tempfile
 import time
 from pathlib import Path
 
-# setup.py's flags (it says why): sqrt becomes an instruction, nothing here reads errno, and
-# the model's rhs stays inlined into the loops
-COMPILE_ARGS = ["-O3", "-fno-math-errno", "--param=inline-unit-growth=400"]
+from .flags import COMPILE_ARGS
 
 
 class BuildError(Exception):

@@ -29,8 +29,10 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from run import HERE, ROOT, log, make_tree, pytest_command, tree_env  # noqa: E402
 
-# setup.py's compile flags; the scratch tree is a plain package, so its extensions are built
-# from their package paths with the tree itself on Cython's include path
+from camdyn.derive.flags import COMPILE_ARGS  # noqa: E402
+
+# the package's compile flags (derive/flags.py); the scratch tree is a plain package, so its
+# extensions are built from their package paths with the tree itself on Cython's include path
 BUILD = """
 import sys
 from Cython.Build import cythonize
@@ -39,10 +41,9 @@ names = sys.argv[1:]
 sys.argv[1:] = ["build_ext", "--inplace", "-q"]
 setup(script_args=sys.argv[1:], ext_modules=cythonize(
     [Extension("camdyn." + n.replace("/", "."), ["camdyn/" + n + ".pyx"],
-               extra_compile_args=["-O3", "-fno-math-errno",
-                                                   "--param=inline-unit-growth=400"]) for n in names],
+               extra_compile_args=%r) for n in names],
     include_path=["."], compiler_directives={"language_level": 3}, quiet=True))
-"""
+""" % (COMPILE_ARGS,)
 
 
 def apply(tree: Path, finding: dict) -> None:
