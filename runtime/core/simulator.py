@@ -110,6 +110,23 @@ def tolerance_scales(model: CompiledModel, p: np.ndarray, y0: np.ndarray) -> np.
     return scales
 
 
+def absolute_tolerances(model: CompiledModel, method, y0=None) -> np.ndarray:
+    """The absolute tolerance of every state of an adaptive ``method``'s run of ``model`` from
+    ``y0`` (None: the declared start): atol (default 1e-3 rtol) times the tolerance scales of
+    that start at the default parameters, so that a grid over the parameters keeps one
+    absolute tolerance for all its points, then ``state_atol``'s values."""
+    p_scale = model.parameter_vector()
+    y_scale = model.initial_state(p_scale) if y0 is None else y0
+    base = method.atol if method.atol is not None else 1e-3 * method.rtol
+    atol = np.ascontiguousarray(base * tolerance_scales(model, p_scale, y_scale), dtype=float)
+    for name, value in method.state_atol:
+        if name not in model.state_names:
+            raise CamdynInputError(f"state_atol: {model.name} has no state {name}; its states "
+                                   f"are {', '.join(model.state_names)}")
+        atol[model.state_names.index(name)] = value
+    return atol
+
+
 @dataclass(frozen=True)
 class BatchInputs:
     """What the compiled loops take to run many parameter sets of one Simulator (its
@@ -205,17 +222,7 @@ class Simulator:
             raise CamdynInputError(f"y0 must be {n} finite numbers ({', '.join(m.state_names)})")
         self._y_init = y_init
         if method.adaptive:
-            # the tolerance scales of the declared start at the default parameters (or of y0):
-            # a grid over the parameters keeps one absolute tolerance for all its points
-            p_scale = m.parameter_vector()
-            y_scale = y_init if self._y0_given else m.initial_state(p_scale)
-            base = method.atol if method.atol is not None else 1e-3 * method.rtol
-            atol = np.ascontiguousarray(base * tolerance_scales(m, p_scale, y_scale), dtype=float)
-            for name, value in method.state_atol:
-                if name not in m.state_names:
-                    raise CamdynInputError(f"state_atol: {m.name} has no state {name}; its states "
-                                           f"are {', '.join(m.state_names)}")
-                atol[m.state_names.index(name)] = value
+            atol = absolute_tolerances(m, method, y_init if self._y0_given else None)
             h, h_max, rtol = method.first_step or 0.0, min(method.max_step, t_end - t0), method.rtol
         else:
             if (t_end - t0) / method.step > max_steps:

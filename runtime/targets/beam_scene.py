@@ -17,6 +17,7 @@ import numpy as np
 from ..core.errors import CamdynInputError, SimulationError
 from ..core.methods import METHODS
 from ..core.compiled import load
+from ..core.simulator import absolute_tolerances
 from ..engine import driver
 from ..measure import batch
 from . import beam, scene_files
@@ -169,7 +170,9 @@ class BeamTarget(Target):
             starts = [sim.start(p, beam.initial_state(cases[j], model)) for j, p in zip(rows, P)]
             t_end = np.array([cases[j].revolutions * cases[j].period for j in rows])
             # each case's own absolute tolerances (they follow its cam speed, beam.integrator)
-            atol = np.array([beam.simulator(cases[j])[0].atol for j in rows])
+            atol = np.array([absolute_tolerances(model, beam.integrator(cases[j]),
+                                                 beam.initial_state(cases[j], model))
+                             for j in rows])
             runs = batch.run_batch(sim, P, np.array([y for y, _ in starts]), t_end, wanted,
                                    np.full((len(rows), len(wanted), 2), [-np.inf, np.inf]),
                                    atol=atol)

@@ -19,6 +19,7 @@ import numpy as np
 
 from ..core.errors import CamdynInputError, SimulationError
 from ..core.methods import ADAPTIVE, METHODS
+from ..core.simulator import absolute_tolerances
 from ..engine import driver
 from ..measure import batch
 from ..measure.modes import amplitude_bound, slowest_periods
@@ -207,8 +208,7 @@ class DynacamTarget(Target):
                     ab[j, k] = sp[key].a, sp[key].b
         contact = self.scene.options.roller == "contact"
         # each point's own absolute tolerances, as its single run takes them from its start
-        atol = np.array([dynacam.simulator_from(sc, model, y0, end, sim.method).atol
-                         for sc, y0, end in zip(scenes, Y0, t_end)])
+        atol = np.array([absolute_tolerances(model, sim.method, y0) for y0 in Y0])
         runs = batch.run_batch(sim, P, Y0, t_end, tuple(wanted.values()), ab,
                                mode=("roller", "free") if contact else None, atol=atol)
         self._check_runs(runs, names, points)
