@@ -88,5 +88,7 @@ setup(
         include_path=[str(INCLUDE)],
         compiler_directives={"language_level": 3},
         quiet=True,
+        # Cython translates a module on one core (the largest, beam6, takes 9 s): every core
+        nthreads=os.cpu_count() or 1,
     )
 )
