@@ -95,13 +95,13 @@ def test_design_graphs_are_single_runs_figures():
     sweep's scan (the default) within 1e-9 of the largest value of the window."""
     from camdyn.runtime.core.simulator import Simulator
     from camdyn.runtime.measure.residual import residual
-    from camdyn.thesis.design.graphs import RTOL, Graphs
+    from camdyn.thesis.design.graphs import METHOD, RTOL, Graphs
 
     for Fa in (0.0, 0.8):
         ref = Graphs("cycloidal", reference=True).samples(4.0, 6.0, Fa)
         fast = Graphs("cycloidal").samples(4.0, 6.0, Fa)
         for tau, U0, U2 in zip(*ref):
-            sim = Simulator("camshaft1", Graphs.t_end(tau), "dp54", rtol=RTOL, law="cycloidal")
+            sim = Simulator("camshaft1", Graphs.t_end(tau), METHOD, rtol=RTOL, law="cycloidal")
             r = residual(sim.run({"tau": float(tau), "Fa": Fa}))
             assert (U0, U2) == (r.U0, r.U0dd)
         assert np.array_equal(ref[0], fast[0])
