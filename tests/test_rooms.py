@@ -338,6 +338,12 @@ LOADS = {
                       "1e-4", "--no-check", "--quiet", "--out", "{tmp}/d"],
                      ["camdyn.generated.camlaws", "camdyn.generated.camshaft1", "matplotlib",
                       "numpy", "scipy"]),
+    "design-motor": (["design", "--stroke", "0.0309", "--tau", "0.1413", "--fa", "2.07",
+                      "--rise-time", "0.0877", "--mass", "1.46", "--accuracy", "1e-4",
+                      "--motor-rpm", "3000", "--spring", "--worm", "0.36", "0.05",
+                      "--slip-limit", "0.016", "--no-check", "--quiet"],
+                     ["camdyn.generated.camlaws", "camdyn.generated.camshaft1", "numpy",
+                      "scipy"]),
     "residual": (["residual", "--model", "camshaft1", "--tau", "0.15", "--fa", "2"],
                  ["camdyn.generated.camlaws", "camdyn.generated.camshaft1", "numpy"]),
 }
@@ -347,8 +353,9 @@ LOADS = {
 def test_a_command_loads_only_what_it_uses(name, tmp_path):
     """The command runs in a process of its own; afterwards the heavy libraries and compiled
     models loaded are exactly those it needs: `camdyn --help` none (a command's arguments are
-    read only for that command), `camdyn design` no matplotlib without --out and no other
-    model than CAMSHAFT-1, `camdyn residual` no SciPy (its figures are the compiled finder's)."""
+    read only for that command), `camdyn design` no matplotlib without --out, no other model
+    than CAMSHAFT-1 and no SymPy for a motor (the first-order motor is NumPy's),
+    `camdyn residual` no SciPy (its figures are the compiled finder's)."""
     argv, want = LOADS[name]
     args = [a.replace("{tmp}", str(tmp_path)) for a in argv]
     code = ("import contextlib, io, json, sys\nfrom camdyn.runtime import cli\n"
