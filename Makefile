@@ -97,6 +97,7 @@ bench: build
 	$(BIN)/python bench/derive_seeds.py --seeds 0 random random
 	$(BIN)/python bench/sweep.py
 	$(BIN)/python bench/atlas.py
+	$(BIN)/python bench/startup.py
 
 # every benchmark in miniature (seconds each), through the same code, reports and charts
 # written into temporary folders (bench/results/ untouched): CI runs it, so that no benchmark
@@ -111,6 +112,7 @@ bench-quick: build
 	$(BIN)/python bench/derive_seeds.py --quick
 	$(BIN)/python bench/sweep.py --quick
 	$(BIN)/python bench/atlas.py --quick
+	$(BIN)/python bench/startup.py --quick
 
 # every thesis and paper figure the models determine, with out/figures/index.html
 figures: build

@@ -99,6 +99,26 @@ def test_largest_Fa_meets_the_requirement_exactly(follower_design):
                                             rel=1e-12)
 
 
+@pytest.mark.parametrize("tau, stroke, accuracy", [(0.2, 0.02, 1e-4), (0.07944, 0.0981, 0.5e-3)])
+def test_largest_Fa_on_the_window_of_its_interval_is_that_on_the_widest(tau, stroke, accuracy):
+    """The largest Fa with the bracket read on each Fa's own window and the root on the window
+    of the interval's top equals, to within the two stated errors, the one with every Fa on
+    the widest window (FA_CAP's), which makes the ratio one function of Fa over the whole
+    search; the narrower windows take half the runs at small Fa.  (0.2, 0.02 m, 0.1 mm) and
+    App. 7's indexing mechanism (Fa_max 0.51 and 4.95)."""
+    from camdyn.thesis.design.graphs import phase_factor
+    from camdyn.thesis.design.limits import FA_CAP
+
+    g = Graphs("cycloidal")
+    req = Requirement(stroke, accuracy)
+    own = largest_Fa(g, tau, req, None)
+    runs = g.runs
+    widest = largest_Fa(g, tau, req, None, width=1.5 / phase_factor("cycloidal", None, FA_CAP))
+    assert abs(own["Fa_max"] - widest["Fa_max"]) <= own["Fa_max_error"] + widest["Fa_max_error"]
+    assert own["ratio_at"] == pytest.approx(1.0, abs=1e-6)
+    assert g.runs > 1.15 * runs          # the widest window ran samples the narrower did not
+
+
 def _closed_form_largest_tau(stroke=0.05, accuracy=1e-4):
     """The tau where the envelope through the maxima of (3.5) (each lobe's maximum by a bounded
     scalar search, log-linear between them, as sec. 3.5 draws it) gives u0 = accuracy."""

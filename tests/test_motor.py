@@ -186,6 +186,20 @@ def test_first_order_by_dsolve():
     assert sp.simplify(mt.dsolve_first_order() - mt.bracket_A5_33()) == 0
 
 
+@pytest.mark.parametrize("tau_m", [TAU_M, 0.1 * TAU_M, 0.02, 10.0])
+def test_numeric_first_order_is_the_printed_bracket(tau_m):
+    """(A.5.33) in NumPy (motor_rules, what camdyn design sizes a motor with, no SymPy)
+    against the printed bracket of motor_theory lambdified, on the rise; the cycloid's
+    M_max/Mc (A.2.14) likewise."""
+    from camdyn.thesis.theory import motor_rules
+
+    T = np.linspace(0.0, 1.0, 501)
+    printed = sp.lambdify((mt.T, mt.tau_m), mt.bracket_A5_33(), "numpy")(T, tau_m)
+    np.testing.assert_allclose(motor_rules.bracket_A5_33(T, tau_m), printed, rtol=0,
+                               atol=1e-14 * np.max(np.abs(printed)))
+    assert motor_rules.M_MAX == pytest.approx(float(mt.M_MAX_FACTOR), rel=1e-15)
+
+
 def test_second_order_tends_to_first_order():
     """T_el -> 0 (A.5.26): the difference falls in proportion to tau_el."""
     T = np.linspace(0.0, 2.0, 401)

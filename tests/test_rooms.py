@@ -322,3 +322,53 @@ def _private_reads():
 
 def test_no_module_reads_another_modules_private_names():
     assert _private_reads() == []
+
+
+HEAVY = ("numpy", "scipy", "matplotlib", "sympy", "dask", "distributed", "tqdm", "pyarrow",
+         "ezdxf", "jinja2", "camdyn.generated.")
+"""What a command may load only when it uses it: the libraries that take tenths of a second
+to import, and the compiled models (each a module of its own)."""
+
+LOADS = {
+    "help": (["--help"], []),
+    "design": (["design", "--stroke", "0.02", "--tau", "0.2", "--fa", "0.1", "--accuracy",
+                "1e-4", "--no-check", "--quiet"],
+               ["camdyn.generated.camlaws", "camdyn.generated.camshaft1", "numpy", "scipy"]),
+    "design-chart": (["design", "--stroke", "0.02", "--tau", "0.2", "--fa", "0.1", "--accuracy",
+                      "1e-4", "--no-check", "--quiet", "--out", "{tmp}/d"],
+                     ["camdyn.generated.camlaws", "camdyn.generated.camshaft1", "matplotlib",
+                      "numpy", "scipy"]),
+    "design-motor": (["design", "--stroke", "0.0309", "--tau", "0.1413", "--fa", "2.07",
+                      "--rise-time", "0.0877", "--mass", "1.46", "--accuracy", "1e-4",
+                      "--motor-rpm", "3000", "--spring", "--worm", "0.36", "0.05",
+                      "--slip-limit", "0.016", "--no-check", "--quiet"],
+                     ["camdyn.generated.camlaws", "camdyn.generated.camshaft1", "numpy",
+                      "scipy"]),
+    "residual": (["residual", "--model", "camshaft1", "--tau", "0.15", "--fa", "2"],
+                 ["camdyn.generated.camlaws", "camdyn.generated.camshaft1", "numpy"]),
+}
+
+
+@pytest.mark.parametrize("name", sorted(LOADS))
+def test_a_command_loads_only_what_it_uses(name, tmp_path):
+    """The command runs in a process of its own; afterwards the heavy libraries and compiled
+    models loaded are exactly those it needs: `camdyn --help` none (a command's arguments are
+    read only for that command), `camdyn design` no matplotlib without --out, no other model
+    than CAMSHAFT-1 and no SymPy for a motor (the first-order motor is NumPy's),
+    `camdyn residual` no SciPy (its figures are the compiled finder's)."""
+    argv, want = LOADS[name]
+    args = [a.replace("{tmp}", str(tmp_path)) for a in argv]
+    code = ("import contextlib, io, json, sys\nfrom camdyn.runtime import cli\n"
+            "with contextlib.redirect_stdout(io.StringIO()):\n"
+            "    try:\n"
+            f"        rc = cli.main({args!r})\n"
+            "    except SystemExit as exc:\n"
+            "        rc = exc.code\n"
+            f"heavy = {HEAVY!r}\n"
+            "loaded = sorted({m if m.startswith('camdyn.') else m.split('.')[0] for m in sys.modules\n"
+            "                 if m.startswith(heavy) or m.split('.')[0] in heavy})\n"
+            "print(json.dumps({'rc': rc, 'loaded': loaded}), file=sys.stderr)\n")
+    env = {**os.environ, "MPLBACKEND": "Agg"}
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, env=env,
+                       timeout=300, cwd=tmp_path)
+    assert json.loads(p.stderr.strip().splitlines()[-1]) == {"rc": 0, "loaded": want}, p.stderr

@@ -1,6 +1,7 @@
 """Every kind of target sweeps in compiled chunks (runtime/measure/batch.py,
 runtime/engine/finder.pyx sweep_extremes): a DYNACAM scene, the beam follower, a model that
-declares no rise (its states at t_end) and camdyn design's graphs.  A chunk runs the same
+declares no rise (its states at t_end), CAMSHAFT-2's extremes over the whole run and camdyn
+design's graphs.  A chunk runs the same
 compiled loops on the same numbers as single runs and finds each figure with the same scan,
 so its table must equal the one of single runs (base.Target.run_points: one run() per point)
 to the last bit: figures, sampling errors, steps and warnings."""
@@ -69,6 +70,27 @@ def test_states_at_t_end_chunk_equals_single_runs(name, grid):
     assert_same_batches(target.run_points(names, pts), target._points_one_by_one(names, pts))
 
 
+def test_camshaft2_chunk_finds_the_run_extremes_of_single_runs():
+    """CAMSHAFT-2's figures over the whole run (the cam's largest speed deviation and the
+    shaft's largest wind-up, sec. 5.5.5, fig. 5.6) come from the compiled chunk too: with the
+    scan of a single run every figure, sampling error and step count equals single runs', bit
+    for bit; with the sweep's scan (a grid's) the run extremes still do, and the residual
+    figures lie within 1e-9 of their largest value."""
+    from camdyn.runtime.targets.model_target import ModelTarget
+
+    names, pts = ("tau", "Fa"), np.array([[0.1, 0.5], [0.15, 1.0], [0.2, 2.0]])
+    target = ModelTarget.of("camshaft2", rtol=1e-8).fit_points(names, pts)
+    one = target._points_one_by_one(names, pts)
+    assert_same_batches(target.residual_points(names, pts, reference=True), one)
+    chunk = target.run_points(names, pts)
+    assert target.figure_names()[4:] == ("Bdot_dev_max", "windup_max")
+    assert np.array_equal(chunk.figures[:, 4:], one.figures[:, 4:])
+    assert np.array_equal(chunk.sampling[:, 4:], one.sampling[:, 4:])
+    for k in (0, 1, 2):
+        assert np.abs(chunk.figures[:, k] - one.figures[:, k]).max() \
+            <= 1e-9 * np.abs(one.figures[:, k]).max()
+
+
 def test_cli_sweeps_the_states_of_a_model_without_a_rise(tmp_path, capsys):
     """`camdyn sweep` of a model that declares no rise writes every state at t_end with its
     estimate, one row a point; without --t-end it is refused in one line (exit 2)."""
@@ -95,13 +117,13 @@ def test_design_graphs_are_single_runs_figures():
     sweep's scan (the default) within 1e-9 of the largest value of the window."""
     from camdyn.runtime.core.simulator import Simulator
     from camdyn.runtime.measure.residual import residual
-    from camdyn.thesis.design.graphs import RTOL, Graphs
+    from camdyn.thesis.design.graphs import METHOD, RTOL, Graphs
 
     for Fa in (0.0, 0.8):
         ref = Graphs("cycloidal", reference=True).samples(4.0, 6.0, Fa)
         fast = Graphs("cycloidal").samples(4.0, 6.0, Fa)
         for tau, U0, U2 in zip(*ref):
-            sim = Simulator("camshaft1", Graphs.t_end(tau), "dp54", rtol=RTOL, law="cycloidal")
+            sim = Simulator("camshaft1", Graphs.t_end(tau), METHOD, rtol=RTOL, law="cycloidal")
             r = residual(sim.run({"tau": float(tau), "Fa": Fa}))
             assert (U0, U2) == (r.U0, r.U0dd)
         assert np.array_equal(ref[0], fast[0])

@@ -16,7 +16,6 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
-from scipy.optimize import brentq
 
 from ..core.laws import LawChoice, choose
 
@@ -139,6 +138,8 @@ class Undercut:
 
 def failing_spans(th, bad, g):
     """theta intervals where bad is True, ends refined to the roots of g."""
+    from scipy.optimize import brentq
+
     out, i, n = [], 0, len(th)
     while i < n:
         if not bad[i]:

@@ -35,7 +35,6 @@ from functools import cached_property
 from pathlib import Path
 
 import numpy as np
-from scipy.optimize import minimize_scalar
 
 from ..core.errors import CamdynInputError
 from ..measure.contract import chart_note
@@ -254,6 +253,8 @@ class CamProfile:
         i = int(np.argmax(v))
         lo, hi = th[max(i - 1, 0)], th[min(i + 1, th.size - 1)]
         if hi > lo:
+            from scipy.optimize import minimize_scalar
+
             r = minimize_scalar(lambda x: -float(f(np.array([x]))[0]), bounds=(lo, hi),
                                 method="bounded", options={"xatol": 1e-12})
             if -r.fun > v[i]:

@@ -37,17 +37,28 @@ COMMANDS = ("derive", "residual", "check", "laws", "design", "run", "scenes", "i
 """The command modules, in the order of `camdyn --help`."""
 
 
-def build_parser() -> Parser:
+def build_parser(only: str | None = None) -> Parser:
+    """The parser of every command, or with ``only`` (a command's name, or "" for none) that
+    command's in full and the others' names and lines of help, which is all `camdyn --help`
+    and a mistyped command show: a command's arguments load what their choices and defaults
+    come from (the cam laws, the methods, the beam's case, so NumPy and compiled modules),
+    which a command that does not need them should not wait for."""
     top = Parser(prog="camdyn", description="Cam-mechanism dynamics: derive, generate, simulate, check.")
     sub = top.add_subparsers(dest="command", required=True, parser_class=Parser)
     for name in COMMANDS:
         module = importlib.import_module(f"{__name__}.{name}")
-        module.add(sub).set_defaults(func=module.run)
+        command = name.replace("_", "-")
+        if only is None or only == command:
+            module.add(sub).set_defaults(func=module.run)
+        else:
+            sub.add_parser(command, help=module.HELP)
     return top
 
 
 def main(argv=None) -> int:
-    args = build_parser().parse_args(argv)
+    argv = sys.argv[1:] if argv is None else list(argv)
+    # the command is the first word that is no option (camdyn itself takes only --help)
+    args = build_parser(only=next((a for a in argv if not a.startswith("-")), "")).parse_args(argv)
     prog = f"camdyn {args.command}" if getattr(args, "command", None) else "camdyn"
     out = getattr(args, "out", None)
     # every --out names a folder: a file in its place is refused here, in one line, rather

@@ -10,6 +10,9 @@ from ..core.outdir import out_folder
 from .common import (add_estimate_option, add_out_option, add_tolerance_options, fail,
                      report_health, run_failed, say_on_stderr, tolerance_argument, tolerances)
 
+HELP = "the Rayleigh-beam follower of the paper: tip response"
+"""The command's line in `camdyn --help`."""
+
 FLAGS = {"omega": "--omega", "modes": "--modes", "rod_radius": "--rod-radius",
                "distance": "--distance", "base_radius": "--base-radius", "rise": "--rise",
                "revolutions": "--revolutions", "rayleigh": "--rayleigh",
@@ -35,7 +38,7 @@ def add(sub):
     dflt = asdict(Case())
     disc = Case().J_r
     b = sub.add_parser(
-        "beam-follower", help="the Rayleigh-beam follower of the paper: tip response",
+        "beam-follower", help=HELP,
         description="Translating roller follower in the groove of a rigid disk cam (RDFD motion, "
                     "cycloidal rise and fall over 90 deg each), its rod a Rayleigh beam clamped in "
                     "the guide whose free length changes as the cam turns. Integrates whole cam "

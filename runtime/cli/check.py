@@ -8,9 +8,12 @@ from ..core.errors import CamdynInputError
 from ..measure.contract import UNAVAILABLE, unavailable
 from .common import add_estimate_option, fail, fmt
 
+HELP = "every comparison with the thesis, as a table"
+"""The command's line in `camdyn --help`."""
+
 
 def add(sub):
-    c = sub.add_parser("check", help="every comparison with the thesis, as a table")
+    c = sub.add_parser("check", help=HELP)
     c.add_argument("--json", action="store_true", help="one JSON object on stdout")
     c.add_argument("-k", default=None, help="only checks whose key contains this text")
     c.add_argument("--topic", action="append", help="only this topic (repeatable)")

@@ -6,9 +6,12 @@ from pathlib import Path
 
 from .common import fail
 
+HELP = "regenerate generated/ from the model declarations"
+"""The command's line in `camdyn --help`."""
+
 
 def add(sub):
-    d = sub.add_parser("derive", help="regenerate generated/ from the model declarations")
+    d = sub.add_parser("derive", help=HELP)
     d.add_argument("--check", action="store_true", help="exit 1 when generated/ is stale")
     d.add_argument("--out", help="target folder (default: generated/ of this checkout)")
     d.add_argument("--only", nargs="+", metavar="MODEL", help="only these registered models")

@@ -10,14 +10,16 @@ from ..core.outdir import out_folder
 from .common import add_out_option, fail, law_names as law_names_, run_failed
 from .residual import name_argument
 
+HELP = ("design by the thesis's rules: tau, Fa, the envelope, the largest Fa and smallest t_m "
+        "meeting a requirement, sec. 8.5's rules, the motor (sec. 8.3), a check run")
+"""The command's line in `camdyn --help`."""
+
 PROG = "camdyn design"
 
 
 def add(sub):
     law_names = law_names_()
-    ds = sub.add_parser("design", help="design by the thesis's rules: tau, Fa, the envelope, the "
-                                       "largest Fa and smallest t_m meeting a requirement, sec. 8.5's "
-                                       "rules, the motor (sec. 8.3), a check run")
+    ds = sub.add_parser("design", help=HELP)
     a = ds.add_argument
     a("--stroke", type=float, required=True, metavar="M", help="h_m', stroke of the output member (m)")
     a("--rise-time", type=float, default=None, metavar="S", help="t_m, cam rise time (s)")

@@ -5,12 +5,15 @@ from __future__ import annotations
 from ..core.errors import CamdynInputError
 from .common import add_out_option, fail
 
+HELP = "every thesis and paper figure the models determine, with an index page"
+"""The command's line in `camdyn --help`."""
+
 PROG = "camdyn figures"
 
 
 def add(sub):
     f = sub.add_parser(
-        "figures", help="every thesis and paper figure the models determine, with an index page",
+        "figures", help=HELP,
         description="Draw the thesis's figures (3.3 ... 8.6, A.5.7), the paper's figs 4-9 and "
                     "the design charts into --out, and write index.html showing each picture "
                     "beside its number, caption and the printed statements it reproduces, "

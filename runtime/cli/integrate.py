@@ -4,16 +4,17 @@ from __future__ import annotations
 import json
 
 from ..core.errors import CamdynInputError, SimulationError
-from ..measure.contract import missing_estimate, plus_minus
 from .common import (add_estimate_option, add_out_option, add_tolerance_options, assignments,
                      fail, law_names, method_names, report_health, run_failed, say_on_stderr,
                      tolerance_argument, tolerances)
 
+HELP = "any model: a model file (built on first use) or a built-in model, to t_end"
+"""The command's line in `camdyn --help`."""
+
 
 def add(sub):
     all_methods, _ = method_names()
-    ig = sub.add_parser("integrate", help="any model: a model file (built on first use) or a "
-                                          "built-in model, to t_end")
+    ig = sub.add_parser("integrate", help=HELP)
     ig.add_argument("model", metavar="MODEL",
                     help="a Python file defining build() -> Model, or a built-in model name")
     ig.add_argument("--set", action="append", metavar="NAME=VALUE",
@@ -67,7 +68,7 @@ def law_arg(args) -> tuple:
 
 
 def run(args) -> int:
-    from ..measure.contract import answer
+    from ..measure.contract import answer, missing_estimate, plus_minus
     from ..targets import resolve
     from ..targets.model_target import StateTarget
 

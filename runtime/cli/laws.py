@@ -7,15 +7,17 @@ import json
 import sys
 
 from ..core.errors import SimulationError
-from ..measure.contract import note
 from .common import add_out_option, fail, law_names, run_failed
 from .residual import name_argument
+
+HELP = "cam-law characteristics (thesis App. 2), derived symbolically"
+"""The command's line in `camdyn --help`."""
 
 PROG = "camdyn laws"
 
 
 def add(sub):
-    lw = sub.add_parser("laws", help="cam-law characteristics (thesis App. 2), derived symbolically")
+    lw = sub.add_parser("laws", help=HELP)
     lw.add_argument("--theta", type=float, default=None,
                     help="modified sine's theta, 0 < theta < 0.5 (default 0.1; not with --sweep)")
     lw.add_argument("--json", action="store_true", help="one JSON array on stdout")
@@ -142,6 +144,8 @@ def _num(v) -> str:
 
 def _cell(row: dict, key: str) -> str:
     """A selection cell: the value, "± e" beside it where it has an estimate."""
+    from ..measure.contract import note
+
     v = row.get(key)
     if v is None:
         return "-"

@@ -9,11 +9,14 @@ from ..core.errors import CamdynInputError, SimulationError
 from ..core.outdir import out_folder
 from .common import add_out_option, assignments, fail, method_names, run_failed
 
+HELP = ("work-precision chart: error against CPU time of every method over a ladder of "
+        "tolerances, SciPy's beside")
+"""The command's line in `camdyn --help`."""
+
 
 def add(sub):
     all_methods, _ = method_names()
-    pr = sub.add_parser("precision", help="work-precision chart: error against CPU time of every "
-                                          "method over a ladder of tolerances, SciPy's beside")
+    pr = sub.add_parser("precision", help=HELP)
     pr.add_argument("target", metavar="SCENE_OR_MODEL",
                     help="a scene (.toml or built-in), a model file (.py) or a built-in model")
     pr.add_argument("--set", action="append", metavar="NAME=VALUE", help="a parameter (repeatable)")

@@ -6,15 +6,17 @@ import sys
 
 from ..core.errors import CamdynInputError
 from ..core.outdir import out_folder, write_text
-from ..measure.contract import plus_minus
 from .common import add_out_option, fail, law_names
+
+HELP = ("the cam itself: pitch curve and profile(s) of a disk cam for a translating roller "
+        "follower, as CSV, DXF and PNG")
+"""The command's line in `camdyn --help`."""
 
 
 def add(sub):
     names = law_names()
     p = sub.add_parser(
-        "profile", help="the cam itself: pitch curve and profile(s) of a disk cam for a "
-                        "translating roller follower, as CSV, DXF and PNG",
+        "profile", help=HELP,
         description="A radial disk cam for a translating roller follower over a full turn "
                     "(rise, upper dwell, return with the same law mirrored, lower dwell): the "
                     "pitch curve and the profile (open cam) or both walls (--groove), with the "
@@ -56,6 +58,7 @@ def add(sub):
 
 def run(args) -> int:
     from ..cam.profile import CamProfile
+    from ..measure.contract import plus_minus
 
     prog = "camdyn profile"
     try:

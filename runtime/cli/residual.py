@@ -4,9 +4,11 @@ from __future__ import annotations
 import json
 
 from ..core.errors import CamdynInputError, SimulationError
-from ..measure.contract import with_errors
 from .common import (add_estimate_option, add_tolerance_options, fail, law_names, method_names,
                      report_health, run_failed, tolerance_argument, tolerances)
+
+HELP = "residual vibration after one rise (thesis ch. 3-5)"
+"""The command's line in `camdyn --help`."""
 
 MODELS = {"one-dof": "one_dof", "camshaft1": "camshaft1", "camshaft2": "camshaft2"}
 """The thesis's residual-vibration models by their command-line names (chs 3, 4, 5)."""
@@ -21,7 +23,7 @@ RESIDUAL_RTOL = 1e-10
 
 def add(sub):
     all_methods, _ = method_names()
-    r = sub.add_parser("residual", help="residual vibration after one rise (thesis ch. 3-5)")
+    r = sub.add_parser("residual", help=HELP)
     r.add_argument("--model", required=True, choices=sorted(MODELS))
     r.add_argument("--tau", required=True, type=float, help="T_e/t_m (3.3), (4.12)")
     r.add_argument("--fa", type=float, default=None,
@@ -105,7 +107,7 @@ def target(args):
 
 
 def run(args) -> int:
-    from ..measure.contract import answer
+    from ..measure.contract import answer, with_errors
 
     prog = "camdyn residual"
     try:

@@ -9,11 +9,13 @@ from .common import (add_estimate_option, add_out_option, add_tolerance_options,
                      method_names, report_health, run_failed, say_on_stderr, tolerance_argument,
                      tolerances)
 
+HELP = "any scene: the CAMSHAFT-1 study (default), a DYNACAM mechanism, the beam follower"
+"""The command's line in `camdyn --help`."""
+
 
 def add(sub):
     _, adaptive = method_names()
-    m = sub.add_parser("run", help="any scene: the CAMSHAFT-1 study (default), a DYNACAM mechanism, "
-                                   "the beam follower")
+    m = sub.add_parser("run", help=HELP)
     m.add_argument("scene", nargs="?", default=None,
                    help="scene TOML or a built-in scene name (camdyn scenes); default: the "
                         "embedded CAMSHAFT-1 study")

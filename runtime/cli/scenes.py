@@ -3,9 +3,12 @@ from __future__ import annotations
 
 import json
 
+HELP = "the built-in scenes with their kinds and titles"
+"""The command's line in `camdyn --help`."""
+
 
 def add(sub):
-    ls = sub.add_parser("scenes", help="the built-in scenes with their kinds and titles")
+    ls = sub.add_parser("scenes", help=HELP)
     ls.add_argument("--json", action="store_true", help="one JSON array on stdout")
     return ls
 

@@ -8,12 +8,14 @@ from ..core.outdir import out_folder
 from .common import (add_estimate_option, add_out_option, add_tolerance_options, fail, fmt,
                      method_names, report_health, run_failed, tolerance_argument, tolerances)
 from .common import say_on_stderr
-from ..measure.contract import missing_estimate, plus_minus
+
+HELP = "a DYNACAM scene (thesis ch. 6, 7): summary and diagrams"
+"""The command's line in `camdyn --help`."""
 
 
 def add(sub):
     _, adaptive = method_names()
-    sm = sub.add_parser("simulate", help="a DYNACAM scene (thesis ch. 6, 7): summary and diagrams")
+    sm = sub.add_parser("simulate", help=HELP)
     sm.add_argument("scene", help="scene TOML, or a built-in DYNACAM scene: indexing, "
                                    "indexing_squeeze, spring_loaded, fig8_1a, fig8_1b")
     sm.add_argument("--json", action="store_true", help="one JSON object on stdout")
@@ -39,7 +41,7 @@ def add(sub):
 
 
 def run(args) -> int:
-    from ..measure.contract import answer
+    from ..measure.contract import answer, missing_estimate, plus_minus
     from ..targets.dynacam_scene import DynacamTarget
     from ..targets import scene_files
 

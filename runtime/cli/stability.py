@@ -8,11 +8,13 @@ from ..core.errors import CamdynInputError, SimulationError
 from ..core.outdir import out_folder
 from .common import add_out_option, assignments, fail, law_names, method_names, run_failed
 
+HELP = "stability map: each method over a grid of step (or rtol) x a stiffness parameter"
+"""The command's line in `camdyn --help`."""
+
 
 def add(sub):
     all_methods, _ = method_names()
-    st = sub.add_parser("stability", help="stability map: each method over a grid of step (or "
-                                          "rtol) x a stiffness parameter")
+    st = sub.add_parser("stability", help=HELP)
     st.add_argument("model", metavar="MODEL", help="a built-in model (one_dof, camshaft1, roller, "
                     "motor1, ...), a model file, or beam-follower (--param E=... or N=...)")
     st.add_argument("--param", metavar="NAME=START:STOP:N[:log]",

@@ -8,12 +8,15 @@ from ..core.outdir import out_folder
 from .common import (add_estimate_option, add_out_option, add_tolerance_options, fail, law_names,
                      method_names, run_failed, tolerance_argument, tolerances)
 
+HELP = ("headline figures over a grid of parameters: table (CSV, Parquet) and a chart per figure,"
+        " on every core or a Dask cluster")
+"""The command's line in `camdyn --help`."""
+
 
 def add(sub):
     all_methods, _ = method_names()
     names = law_names()
-    sw = sub.add_parser("sweep", help="headline figures over a grid of parameters: table (CSV, "
-                        "Parquet) and a chart per figure, on every core or a Dask cluster")
+    sw = sub.add_parser("sweep", help=HELP)
     sw.add_argument("target", metavar="SCENE_OR_MODEL",
                     help="a model (camshaft1, camshaft2, one_dof, ...), a model file (.py) or a "
                          "scene (built-in name or TOML: default, indexing, beam_paper, ...)")

@@ -988,7 +988,8 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
                    int i_error, int i_acc, double rise_end, int i_rise, int per_step, int n_cand,
                    double[:, ::1] figures, long[:, ::1] stats, double[::1] seconds,
                    Py_ssize_t start, Py_ssize_t stop, Py_ssize_t cap=4096, int stride=1,
-                   bint figures_too=True, bint exact=False):
+                   bint figures_too=True, bint exact=False, const int[::1] run_which=None,
+                   const int[::1] run_kind=None, double[:, ::1] run_figures=None):
     """Run parameter sets start..stop-1 (rows of P, initial states Y0, stop times) and write
     the FIGURE_COLUMNS of each into ``figures`` and the STAT_COLUMNS into ``stats``; seconds[j]:
     wall time of run j with its figures.  i_error, i_acc: the error and acceleration outputs
@@ -998,7 +999,10 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
     ``figures_too`` False: integrate only (bench/sweep.py splits the cost with it).  ``exact``:
     intervals where the model is linear and time invariant are stepped over exactly
     (runtime/engine/loops.pxi, _loop_exact), as Simulator(exact_segments=True) does.
-    No GIL is held while it runs.
+    ``run_which``, ``run_kind``: extremes over the whole run besides (state or output, score
+    as :func:`sweep_extremes` takes them), found as :func:`extreme` finds them on a recorded
+    run (12 samples a step, the best refined: the same bits); value and sampling error of
+    extreme k into run_figures[g, 2k] and [g, 2k + 1].  No GIL is held while it runs.
 
     A run that fails leaves its status (runtime/driver.STATUS_TEXT) and NaN figures; a run
     whose span does not cover the rise and part of the dwell after it, status -1."""
@@ -1009,6 +1013,11 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
         raise ValueError(f"per_step >= 1, stride >= 1 and 1 <= n_cand <= {MAX_CAND}")
     if per_step > 1:
         stride = 1
+    cdef int n_run = 0 if run_which is None else run_which.shape[0]
+    if n_run and (run_kind is None or run_kind.shape[0] != n_run or run_figures is None
+                  or run_figures.shape[1] != 2 * n_run or run_figures.shape[0] < stop):
+        raise ValueError("run_kind (one per run_which) and run_figures (two columns each) "
+                         "are needed with run_which")
     cdef Chunk c
     if _chunk_open(&c, m, method, &law[0], &law_par[0], t0, h, rtol, &atol[0], max_steps,
                    &modes0[0] if modes0.shape[0] else NULL, max_events, exact, cap) != 0:
@@ -1035,6 +1044,8 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
             stats[g, 4] = c.run.rec.n
             for j in range(8):
                 figures[g, j] = NAN
+            for j in range(2 * n_run):
+                run_figures[g, j] = NAN
             if status == STATUS_OK and c.run.rec.n > 0 and figures_too:
                 _chunk_record(&c, &rec)
                 rows = c.rows
@@ -1095,6 +1106,11 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
                     figures[g, 2] = v
                     figures[g, 3] = at
                     figures[g, 7] = samp
+                    for j in range(n_run):
+                        _extreme(&rec, run_which[j], rows[0], t_end, run_kind[j], 12, 1, NULL,
+                                 1, &v, &at, &samp)
+                        run_figures[g, 2 * j] = v
+                        run_figures[g, 2 * j + 1] = samp
             clock_gettime(CLOCK_MONOTONIC, &c1)
             seconds[g] = (c1.tv_sec - c0.tv_sec) + 1e-9 * (c1.tv_nsec - c0.tv_nsec)
     cap = c.cap

@@ -12,7 +12,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq, minimize_scalar
 
 from ..core.errors import CamdynInputError
 from ..core.result import Result
@@ -120,6 +119,8 @@ def extreme_reference(result, name: str, a: float, b: float, *, absolute: bool,
 
     best_t, best = grid[k], score[k]
     if hi > lo:
+        from scipy.optimize import minimize_scalar
+
         opt = minimize_scalar(f, bounds=(lo, hi), method="bounded",
                               options={"xatol": 1e-12 * max(1.0, abs(hi))})
         val = opt.fun if minimum else -opt.fun
@@ -140,6 +141,8 @@ def crossing_time(result, name: str, level: float) -> float:
     a, b = result.t[k - 1], result.t[k]
     if a == b:
         return float(a)
+    from scipy.optimize import brentq
+
     return float(brentq(lambda t: result.sample([t])[name][0] - level, a, b, xtol=1e-14))
 
 

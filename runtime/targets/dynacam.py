@@ -15,7 +15,6 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import least_squares
 
 from ..engine import driver
 from ..core.errors import CamdynInputError, SimulationError
@@ -113,6 +112,8 @@ def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
                                 element_modes=modes)[0]
         r = np.concatenate([f[n_q:2 * n_q], [f[k] for k in free if k >= 2 * n_q]])
         return r
+
+    from scipy.optimize import least_squares
 
     r0 = np.abs(resid(y[free] / scale)) + 1.0
     sol = least_squares(lambda u: resid(u) / r0, y[free] / scale, xtol=1e-15, ftol=1e-15,

@@ -41,6 +41,10 @@ RUN_EXTREMES = (
            "fig. 5.6)", output="windup", dwell=True),
 )
 """Figures over the whole run, for a model that has their output (CAMSHAFT-2)."""
+RUN_WANTED = {"Bdot_dev_max": batch.Wanted("Bdot_dev", absolute=True, minimum=False),
+              "windup_max": batch.Wanted("windup", absolute=False, minimum=False)}
+"""How each of RUN_EXTREMES is found: the largest |B' - 1| and T - B, scanned as a single run's
+extremes are (12 samples a step, the best refined), in a run and in a grid's chunk alike."""
 
 SAMPLES = 20.0
 CANDIDATES = 4
@@ -368,8 +372,9 @@ class ModelTarget(Target):
         sampling = dict(fig.sampling)
         t0, t1 = float(res.t[0]), float(res.t[-1])
         for f in self.figures()[4:]:
-            e = extreme(res, f.output, t0, t1, absolute=f.name == "Bdot_dev_max",
-                        minimum=False)
+            w = RUN_WANTED[f.name]
+            e = extreme(res, w.name, t0, t1, absolute=w.absolute, minimum=w.minimum,
+                        per_step=w.per_step, candidates=w.candidates)
             figures[f.name] = e.value
             sampling[f.name] = e.sampling_error
         stats = {k: int(v) for k, v in res.stats.items() if k != "seconds"} \
@@ -422,16 +427,16 @@ class ModelTarget(Target):
     def run_points(self, names: tuple, points: np.ndarray) -> Batch:
         sim = self.simulator
         # constrained models start from their projected initial state (Simulator.run)
-        if not sim.method.adaptive or len(self.figures()) > len(RESIDUAL_FIGURES) \
-                or hasattr(self.model.module, "consistent_state") \
+        if not sim.method.adaptive or hasattr(self.model.module, "consistent_state") \
                 or self.spec.get("rise_state") and \
                 self.spec["rise_state"] not in self.model.state_names:
             return self._points_one_by_one(names, points)
         return self.residual_points(names, points)
 
     def _points_one_by_one(self, names, points) -> Batch:
-        """Fixed-step methods (their stability check lives in Simulator.run) and models with
-        figures the compiled chunk does not find: one run at a time, one Simulator."""
+        """Fixed-step methods (their stability check lives in Simulator.run) and constrained
+        models or rises the compiled chunk does not handle: one run at a time, one
+        Simulator."""
         figs = self.figure_names()
         out = np.full((len(points), len(figs)), np.nan)
         samp = np.zeros_like(out)
@@ -449,7 +454,9 @@ class ModelTarget(Target):
         rise ends at a time or at a state's crossing) in one compiled call holding no GIL: the
         sweep's scan (:func:`scan_density`, the CANDIDATES best peaks refined), or with
         ``reference`` the scan of a single run (runtime/measure/residual.py: 12 samples a
-        step, the best refined), whose figures equal a single run's bit for bit."""
+        step, the best refined), whose figures equal a single run's bit for bit; and the
+        extremes over the whole run (RUN_EXTREMES, CAMSHAFT-2's) as :meth:`read` finds them
+        on a single run, bit for bit."""
         model, sim, spec = self.model, self.simulator, self.spec
         b = sim.batch_inputs(self._grid_parameters(names, points))
         n, ns = len(points), len(model.state_names)
@@ -461,12 +468,17 @@ class ModelTarget(Target):
         figures = np.empty((n, len(finder.FIGURE_COLUMNS)))
         stats = np.empty((n, len(finder.STAT_COLUMNS)), dtype=np.int64)
         secs = np.empty(n)
+        extra = self.figures()[len(RESIDUAL_FIGURES):]
+        run_figures = np.empty((n, 2 * len(extra)))
         finder.sweep_residual(
             model.capsule, b.method, b.law_codes, b.law_pars, b.P, b.Y0, b.stops, b.n_stops,
             b.t0, b.first_step, b.h_max, b.rtol, b.atol, b.max_steps, b.modes0, b.max_events,
             index[spec["error"]], index[spec["acceleration"]], float(spec["rise_end"]), i_rise,
             per_step, candidates, figures, stats, secs, 0, n, 4096, stride,
-            exact=sim.exact_segments)
+            exact=sim.exact_segments,
+            run_which=np.array([index[RUN_WANTED[f.name].name] for f in extra], dtype=np.intc),
+            run_kind=np.array([RUN_WANTED[f.name].kind for f in extra], dtype=np.intc),
+            run_figures=run_figures)
         bad = np.flatnonzero(stats[:, 0] != 0)
         if bad.size:
             j = int(bad[0])
@@ -481,11 +493,12 @@ class ModelTarget(Target):
                 why = str(exc).split(": ", 1)[-1]
             raise SimulationError(f"{model.name} with {sim.method.name} at {at}: {why}")
         col = {c: k for k, c in enumerate(finder.FIGURE_COLUMNS)}
-        samp = np.zeros((n, 4))
+        samp = np.zeros((n, 4 + len(extra)))
         for k, f in enumerate(RESIDUAL_FIGURES[:3]):     # the extremes; the last is a place
             samp[:, k] = figures[:, col[f + "_sampling"]]
-        return Batch(figures[:, :4].copy(), samp, [[] for _ in range(n)],
-                     stats[:, 1].astype(float))
+        samp[:, 4:] = run_figures[:, 1::2]
+        return Batch(np.hstack([figures[:, :4], run_figures[:, 0::2]]), samp,
+                     [[] for _ in range(n)], stats[:, 1].astype(float))
 
     # -- other studies -------------------------------------------------------------------
 

@@ -6,9 +6,10 @@ least c_c = m (2 pi/T_e)^2); sec. 3.3 turns U0, U0'' into u0 = U0 h_m', u0'' = U
 Solving on the envelope.  "Largest Fa that still meets the requirement" is taken as the
 first crossing: the envelope ratio r(Fa) = max(u0_env/accuracy, u0''_env/acceleration) is
 evaluated on the bracket Fa = 0, 0.1, 0.2, 0.4, ... (doubling, up to :data:`FA_CAP`) until
-it exceeds 1, and the root in the last interval is found by Brent's method.  Every Fa uses
-the same tau samples (a window of +-1.5 dip spacings of the largest Fa around tau, in
-1/tau), so r(Fa) is one function of Fa.  The largest tau is found the same way on one
+it exceeds 1, each Fa on a window of +-1.5 of its dip spacings around tau (in 1/tau), and
+the root in the last interval is found by Brent's method, every Fa there on one window, that
+of the interval's top (its dips lie furthest apart), so that r(Fa) is one function of Fa.
+The largest tau is found the same way on one
 envelope in tau (samples on a lattice in 1/tau, extended until the first crossing lies
 inside them with a window to spare).  Both use 12 samples per dip; the root is then moved
 by secant steps onto the envelope with 24 samples per dip, which is the answer, and the
@@ -40,14 +41,15 @@ class Requirement:
     accuracy: float | None = None
     acceleration: float | None = None
 
-    def ratio(self, U0: float, U0dd: float, t_m: float | None) -> float:
+    def ratio(self, U0, U0dd, t_m):
         """The largest of u0/accuracy and u0''/acceleration (sec. 3.3: u0 = U0 h_m',
-        u0'' = U0'' h_m'/t_m^2); <= 1 meets the requirement."""
+        u0'' = U0'' h_m'/t_m^2); <= 1 meets the requirement.  Element by element for arrays
+        of points."""
         r = 0.0
         if self.accuracy is not None:
-            r = max(r, U0 * self.stroke / self.accuracy)
+            r = np.maximum(r, U0 * self.stroke / self.accuracy)
         if self.acceleration is not None:
-            r = max(r, U0dd * self.stroke / t_m**2 / self.acceleration)
+            r = np.maximum(r, U0dd * self.stroke / t_m**2 / self.acceleration)
         return r
 
     def which(self, U0, U0dd, t_m) -> str:
@@ -56,12 +58,13 @@ class Requirement:
         return "accuracy" if a >= b else "residual acceleration"
 
 
-def largest_Fa(graphs: Graphs, tau: float, req: Requirement, t_m: float | None) -> dict:
-    """The largest Fa at this tau whose envelope still meets ``req`` (module doc)."""
-    width = 1.5 / phase_factor(graphs.law, graphs.theta, FA_CAP)
+def largest_Fa(graphs: Graphs, tau: float, req: Requirement, t_m: float | None,
+               width: float | None = None) -> dict:
+    """The largest Fa at this tau whose envelope still meets ``req`` (module doc); with
+    ``width`` every Fa on the one window of that half-width in 1/tau."""
 
-    def r(Fa):
-        return req.ratio(*graphs.at(tau, Fa, width=width), t_m)
+    def r(Fa, w=None, per_dip=None):
+        return req.ratio(*graphs.at(tau, Fa, per_dip=per_dip, width=w or width), t_m)
 
     prev, r_prev = 0.0, r(0.0)
     if r_prev > 1.0:
@@ -77,38 +80,54 @@ def largest_Fa(graphs: Graphs, tau: float, req: Requirement, t_m: float | None) 
             return {"Fa_max": None, "reason": f"met for every Fa up to {FA_CAP:g} (the search "
                     f"range); ratio {r_Fa:.3g} there"}
         Fa = min(2 * Fa, FA_CAP)
-    Fa_c = brentq(lambda f: r(f) - 1.0, prev, Fa, xtol=1e-10, rtol=1e-9)
-    slope = (r(Fa_c * (1 + 1e-3)) - r(Fa_c)) / (1e-3 * Fa_c)
+    w = width or 1.5 / phase_factor(graphs.law, graphs.theta, Fa)
+    if not r(prev, w) <= 1.0 < r(Fa, w):
+        # the wider window moved the envelope across the requirement at an end of the
+        # interval (a maximum it adds beyond those bracketing tau): search again, every Fa
+        # on the window of the largest
+        return largest_Fa(graphs, tau, req, t_m, 1.5 / phase_factor(graphs.law, graphs.theta,
+                                                                    FA_CAP))
+    Fa_c = brentq(lambda f: r(f, w) - 1.0, prev, Fa, xtol=1e-10, rtol=1e-9)
+    r_beyond = r(Fa_c * (1 + 1e-3), w)
+    slope = (r_beyond - r(Fa_c, w)) / (1e-3 * Fa_c)
+    return polish("Fa_max", Fa_c, slope, lambda f: r(f, w, 2 * graphs.per_dip),
+                  lambda f: graphs.at(tau, f, width=w, per_dip=2 * graphs.per_dip), req,
+                  lambda f: t_m, r_beyond) | {"bracket": [prev, Fa]}
 
-    def r_fine(f):
-        return req.ratio(*graphs.at(tau, f, per_dip=2 * graphs.per_dip, width=width), t_m)
 
-    return polish("Fa_max", Fa_c, slope, r_fine, lambda f: graphs.at(tau, f, width=width,
-                   per_dip=2 * graphs.per_dip), req, lambda f: t_m) | {"bracket": [prev, Fa]}
+ERROR_FLOOR = 1e-9
+"""The least relative error a limit is stated with; a secant step a tenth of it is not
+taken (a step to a new Fa costs a window of runs)."""
 
 
-def polish(name, x_c, slope, r_fine, envelopes_at, req, t_m_of) -> dict:
+def polish(name, x_c, slope, r_fine, envelopes_at, req, t_m_of, r_beyond=None) -> dict:
     """The answer x_c found on the envelope with PER_DIP samples per dip, moved by secant
     steps onto the envelope with twice as many: the answer reported; |the move| is its error
     estimate (the finer envelope's own error is some four times smaller, the parabolas through
     the maxima and the spline between samples being second order or better).  ``ratio_at``
-    and ``ratio_beyond`` are the finer envelope's ratio at the answer and 0.1 % beyond."""
+    is the finer envelope's ratio at the answer, ``ratio_beyond`` its ratio 0.1 % beyond, or
+    ``r_beyond`` where given (the coarser envelope's there, already read for its slope)."""
     if not slope > 0:
         raise SimulationError(f"the envelope does not grow through the crossing at {name} = "
                               f"{x_c:.6g}: no single limit to report")
     # secant steps on the finer envelope, the first with the coarse slope
-    x0, r0 = x_c, r_fine(x_c)
-    x = x0 - (r0 - 1.0) / slope
+    x, r = x_c, r_fine(x_c)
+    step = -(r - 1.0) / slope
     for _ in range(8):
-        r1 = r_fine(x)
-        if abs(r1 - 1.0) < 1e-10 or r1 == r0:
+        if abs(r - 1.0) < 1e-10 or abs(step) <= 0.1 * ERROR_FLOOR * abs(x):
             break
-        x0, r0, x = x, r1, x - (r1 - 1.0) * (x - x0) / (r1 - r0)
+        x_new = x + step
+        r_new = r_fine(x_new)
+        if r_new == r:
+            x = x_new
+            break
+        step = -(r_new - 1.0) * step / (r_new - r)
+        x, r = x_new, r_new
     U0, U2 = envelopes_at(x)
-    return {name: x, f"{name}_error": max(abs(x - x_c), 1e-9 * x),
+    return {name: x, f"{name}_error": max(abs(x - x_c), ERROR_FLOOR * x),
             "ratio_at": float(req.ratio(U0, U2, t_m_of(x))),
-            "ratio_beyond": float(r_fine(x * (1 + 1e-3))), "U0_envelope": U0, "U0dd_envelope": U2,
-            "limited_by": req.which(U0, U2, t_m_of(x))}
+            "ratio_beyond": float(r_fine(x * (1 + 1e-3)) if r_beyond is None else r_beyond),
+            "U0_envelope": U0, "U0dd_envelope": U2, "limited_by": req.which(U0, U2, t_m_of(x))}
 
 
 def largest_tau(graphs: Graphs, Fa: float, tau0: float, req: Requirement,
@@ -121,13 +140,14 @@ def largest_tau(graphs: Graphs, Fa: float, tau0: float, req: Requirement,
                                "--cam-angle with --speed) to turn U0'' into m/s^2")
 
     def t_m_of(t):
-        return t_m if T_e is None else T_e / t
+        return t_m if T_e is None else T_e / np.asarray(t)
     w = 1.5 / phase_factor(graphs.law, graphs.theta, Fa)
     # a machine below TAU_MIN starts the search at TAU_MIN (an empty bracket otherwise)
     lo, hi = max(tau0 / 1.5, TAU_MIN), min(max(tau0, TAU_MIN) * 1.5, TAU_CAP)
 
     def ratio_on(taus, e0, e2):
-        return np.array([req.ratio(e0(t), e2(t), t_m_of(t)) for t in taus])
+        taus = np.asarray(taus, float)
+        return req.ratio(e0(taus), e2(taus), t_m_of(taus))
 
     while True:
         x_hi_samples = 1.0 / lo + w

@@ -31,7 +31,7 @@ from camdyn.runtime.measure.contract import chart_note
 from camdyn.thesis.theory import examples as ex
 
 from .check_run import check_run, least_model
-from .graphs import PER_DIP, Graphs, Upper, phase_factor
+from .graphs import PER_DIP, Graphs, Upper, phase_factor, run_errors
 from .limits import Requirement, largest_Fa, largest_tau
 from .machine import Machine, machine, positive
 from .motor_sizing import motor
@@ -78,9 +78,10 @@ def design(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None,
     U0f, U2f = graphs.at(M.tau, M.Fa, per_dip=2 * per_dip)      # reported; U0e for its error
     U00, U20 = graphs.at(M.tau, 0.0)
     # the envelope's accuracy: twice the samples per dip; no less than the graph runs' own
-    # error (rtol 1e-9: about 1e-8 relative, measured against rtol 1e-11)
-    env = {"U0": U0f, "U0_error": max(abs(U0f - U0e), 1e-8 * U0f), "U0dd": U2f,
-           "U0dd_error": max(abs(U2f - U2e), 1e-8 * U2f),
+    # error (graphs.RUN_ERROR)
+    e0, e2 = run_errors(U0f, U2f)
+    env = {"U0": U0f, "U0_error": max(abs(U0f - U0e), e0), "U0dd": U2f,
+           "U0dd_error": max(abs(U2f - U2e), e2),
            "U0_Fa0": U00, "U0dd_Fa0": U20, "u0": U0f * M.stroke,
            "u0dd": None if M.t_m is None else U2f * M.stroke / M.t_m**2,
            # (8.5) is (3.5)'s envelope for small tau: the cycloid's only

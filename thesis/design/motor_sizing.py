@@ -1,6 +1,7 @@
 """The motor by sec. 8.3: tau_m = T_m/t_m, the peak slip of fig. 8.6, the overdimensioning P
 (8.1), the rated torque (8.2) and power (8.3), and (8.4); the formulas are the theory's
-(thesis/theory/motor_theory.py)."""
+(thesis/theory/motor_rules.py, in NumPy; with an electrical time constant the second-order
+motor of thesis/theory/motor_theory.py, SymPy's)."""
 from __future__ import annotations
 
 import math
@@ -22,13 +23,18 @@ def motor(*, t_m, T_m, delta_n, delta_lim, eta_g=1.0, spring=False, T_el=None, m
     sec. 8.3 says; second order (A.5.25) with T_el), P (8.1), M_ena (8.2), N_n (8.3), (8.4);
     the torque and power need the mass (at the output member, with the stroke h_m' there),
     the torque also the shaft speed."""
-    from camdyn.thesis.theory import motor_theory as mt   # SymPy's: only a design with a motor
+    from camdyn.thesis.theory import motor_rules as mt
 
     tau_m = T_m / t_m
-    tau_el = None if T_el is None else T_el / t_m
-    rel, T_peak = mt.relative_slip_peak(tau_m, tau_el)
+    tau_el = speed = None
+    if T_el is not None:
+        from camdyn.thesis.theory.motor_theory import second_order   # SymPy's: only with T_el
+
+        tau_el = T_el / t_m
+        speed = second_order(tau_el)
+    rel, T_peak = mt.relative_slip_peak(tau_m, speed)
     P = mt.required_overdimensioning(tau_m, delta_n, delta_lim, eta_g=eta_g, spring=spring,
-                                     tau_el=tau_el)
+                                     speed=speed)
     out = {"T_m": T_m, "tau_m": tau_m, "tau_el": tau_el, "delta_n": delta_n,
            "delta_lim": delta_lim, "eta_g": eta_g, "v_v": 5 if spring else 1,
            "slip_peak_rel": rel, "T_slip_peak": T_peak, "P": P,
@@ -85,7 +91,7 @@ def settings(*, motor_rpm=None, motor_tm=None, slip_limit=None, rated_slip=None,
         if not (0 < alpha < math.pi / 2 and 0 <= mu and alpha + mu < math.pi / 2):
             raise CamdynInputError(f"argument --worm: alpha={alpha:g}, mu={mu:g} rad out of "
                                    "range: 0 < alpha, 0 <= mu, alpha + mu < pi/2")
-        from camdyn.thesis.theory import motor_theory as mt
+        from camdyn.thesis.theory import motor_rules as mt
 
         eta = mt.worm_gear_efficiency(alpha, mu)       # motor driving (6.72), (A.5.34)
     T_el = positive("T_el", "--motor-tel", motor_tel, "s, electrical time constant (A.5.3)")

@@ -35,9 +35,13 @@ from camdyn.runtime.targets.grid import run_grid
 from camdyn.runtime.targets.model_target import ModelTarget
 from camdyn.thesis.theory import lawtable
 
-from .graphs import LATTICE_CAP, PER_DIP, RTOL, phase_factor
+from .graphs import LATTICE_CAP, PER_DIP, phase_factor
 
 SIX23 = 6 ** (2 / 3)
+
+RTOL = 1e-9
+"""Tolerance of the envelope runs (DP54), each with its own estimate (the run one notch
+tighter), which the envelope's error carries."""
 
 
 def impact_sensitivity(jerk) -> float:

@@ -37,6 +37,8 @@ Thesis formulas and where they live
     (A.5.16)               right-hand side with w_s delta_n/T_m -> :func:`equation_A5_16_prefactor`
     (A.5.18)-(A.5.25)      second-order solution             -> :data:`A5_25`, :func:`speed_second_order`
     (A.5.26)-(A.5.33)      first-order solution              -> :data:`A5_33`, :func:`speed_first_order`
+                           (in NumPy, with the functions below down to (8.4) and
+                           worm_gear_efficiency: :mod:`.motor_rules`)
     the same, derived again with SymPy                       -> :func:`derive_second_order`,
                                                                 :func:`derive_first_order`
     both in SI for the generated models                      -> :func:`speed_deviation`
@@ -107,6 +109,11 @@ from functools import lru_cache
 
 import numpy as np
 import sympy as sp
+
+from . import motor_rules as _rules
+# the numeric half, without SymPy (what camdyn design needs), offered here under this name too
+from .motor_rules import (M_MAX, required_power, required_torque, slip_within_rated,  # noqa: F401
+                          speed_first_order, worm_gear_efficiency)
 
 # --------------------------------------------------------------------- thesis data
 
@@ -224,7 +231,8 @@ def electromagnetic_torque(dw, G_p, T_el):
 # --------------------------------------------------------------------- the load
 
 M_MAX_FACTOR = 3 * sp.sqrt(3) * pi / 2
-"""M_max/Mc of the cycloid, at T = 1/3 (A.2.14); 8.162, printed 8.2 in (8.2)."""
+"""M_max/Mc of the cycloid, at T = 1/3 (A.2.14); 8.162, printed 8.2 in (8.2) (its value
+motor_rules.M_MAX)."""
 
 
 def load_nominal() -> sp.Expr:
@@ -444,18 +452,15 @@ _r1, _r2 = sp.symbols("r1 r2")
 
 
 @lru_cache(maxsize=None)
-def _lambdified(order: int):
-    if order == 2:
-        # exp(-T/(2 tau_el)) exp(+-s T) as exp(r T), r = -1/(2 tau_el) +- s: the same function,
-        # but without overflow when s T is large (tau_el -> 0)
-        c = A5_25
-        v = (c["A"] * sp.exp(_r1 * T) + c["B"] * sp.exp(_r2 * T)
-             + c["C"] * sp.sin(2 * pi * T) + c["D"] * sp.sin(4 * pi * T)
-             + c["E"] * sp.cos(2 * pi * T) + c["F"] * sp.cos(4 * pi * T))
-        args = (T, tau_m, tau_el, s_, _r1, _r2)
-    else:
-        v = bracket_A5_33()
-        args = (T, tau_m)
+def _lambdified():
+    """(A.5.25) and its derivative as NumPy functions.  exp(-T/(2 tau_el)) exp(+-s T) as
+    exp(r T), r = -1/(2 tau_el) +- s: the same function, but without overflow when s T is
+    large (tau_el -> 0)."""
+    c = A5_25
+    v = (c["A"] * sp.exp(_r1 * T) + c["B"] * sp.exp(_r2 * T)
+         + c["C"] * sp.sin(2 * pi * T) + c["D"] * sp.sin(4 * pi * T)
+         + c["E"] * sp.cos(2 * pi * T) + c["F"] * sp.cos(4 * pi * T))
+    args = (T, tau_m, tau_el, s_, _r1, _r2)
     return sp.lambdify(args, v, "numpy"), sp.lambdify(args, v.diff(T), "numpy")
 
 
@@ -493,7 +498,7 @@ def speed_second_order(Tq, tau_m: float, tau_el: float) -> np.ndarray:
     from the state at T = 1.  In SI, dw = (2 pi Mc/G_a) u (:func:`speed_deviation`).
     """
     Tq = np.asarray(Tq, dtype=float)
-    f, df = _lambdified(2)
+    f, df = _lambdified()
     args = (complex(tau_m), complex(tau_el), *_roots(tau_m, tau_el))
     scale = 1.0 / (tau_el * tau_m)
     Tr = np.clip(Tq, 0.0, 1.0)
@@ -507,22 +512,34 @@ def speed_second_order(Tq, tau_m: float, tau_el: float) -> np.ndarray:
     return u
 
 
-def speed_first_order(Tq, tau_m: float) -> np.ndarray:
-    """u(T) = dw/(k w_s) of the first-order motor (A.5.33), k = 4 delta_n/(3^(3/2) P).
+def second_order(tau_el: float | None):
+    """u(T, tau_m) of the second-order motor (A.5.25) at this tau_el, for the functions of
+    :mod:`.motor_rules`; None (their first-order motor) without one."""
+    if not tau_el:
+        return None
+    return lambda Tq, tau_m: speed_second_order(Tq, tau_m, tau_el)
 
-    u = (bracket of (A.5.33))/tau_m during the rise; for T > 1 the decay u(1) exp(-(T - 1)/tau_m)
-    of (A.5.28).
-    """
-    Tq = np.asarray(Tq, dtype=float)
-    f, _ = _lambdified(1)
-    Tr = np.clip(Tq, 0.0, 1.0)
-    u = np.asarray(f(Tr, tau_m), dtype=float) / tau_m
-    late = Tq > 1.0
-    if np.any(late):
-        u1 = float(f(1.0, tau_m)) / tau_m
-        u = np.array(u, dtype=float)
-        u[late] = u1 * np.exp(-(Tq[late] - 1.0) / tau_m)
-    return u
+
+def slip(Tq, tau_m: float, *, delta_n: float, P: float, eta_g: float = 1.0,
+         tau_el: float | None = None) -> np.ndarray:
+    """delta(T) = -dw/w_s for the nominal load of the cycloid, (A.5.25) with tau_el or (A.5.33)
+    (motor_rules.slip)."""
+    return _rules.slip(Tq, tau_m, delta_n=delta_n, P=P, eta_g=eta_g, speed=second_order(tau_el))
+
+
+def relative_slip_peak(tau_m: float, tau_el: float | None = None) -> tuple[float, float]:
+    """(delta_max/delta_n, T at the maximum) at P = 1, the curve of fig. 8.6: first order
+    (A.5.33) unless tau_el is given (motor_rules.relative_slip_peak)."""
+    return _rules.relative_slip_peak(tau_m, second_order(tau_el))
+
+
+def required_overdimensioning(tau_m: float, delta_n: float, delta_lim: float, *,
+                              eta_g: float = 1.0, spring: bool = False,
+                              tau_el: float | None = None) -> float:
+    """P (8.1), first order unless tau_el is given (motor_rules.required_overdimensioning,
+    where its reading is)."""
+    return _rules.required_overdimensioning(tau_m, delta_n, delta_lim, eta_g=eta_g,
+                                            spring=spring, speed=second_order(tau_el))
 
 
 def speed_deviation(t_s, *, J_ma: float, G_a: float, t_m: float, Mc: float, T_el: float = 0.0) -> np.ndarray:
@@ -538,77 +555,7 @@ def speed_deviation(t_s, *, J_ma: float, G_a: float, t_m: float, Mc: float, T_el
     return 2 * math.pi * Mc / G_a * u
 
 
-def slip(Tq, tau_m: float, *, delta_n: float, P: float, eta_g: float = 1.0,
-         tau_el: float | None = None) -> np.ndarray:
-    """delta(T) = -dw/w_s for the nominal load of the cycloid, (A.5.25) or (A.5.33).
-
-    Proportional to delta_n/P (A.5.33) and, with the motor driving through a gear of
-    efficiency eta_g, to 1/eta_g (sec. A.5.4.3.2: the motor supplies M_ma/eta_g).
-    """
-    u = speed_first_order(Tq, tau_m) if not tau_el else speed_second_order(Tq, tau_m, tau_el)
-    return -4 * delta_n / (3 ** 1.5 * P * eta_g) * u
-
-
-def relative_slip_peak(tau_m: float, tau_el: float | None = None) -> tuple[float, float]:
-    """(delta_max/delta_n, T at the maximum) at P = 1: the curve of fig. 8.6 (reading in the
-    module docstring); first order (A.5.33) unless tau_el is given.
-
-    Limits: 1 for tau_m -> 0 (static slip at peak torque, delta_n/P), and
-    4/(3^(3/2) pi tau_m) for tau_m -> infinity (the inertia integrates the load up to T = 1/2).
-    """
-    from scipy.optimize import minimize_scalar
-
-    def g(x):
-        return float(slip(np.array([x]), tau_m, delta_n=1.0, P=1.0, tau_el=tau_el)[0])
-
-    grid = np.linspace(0.0, 2.0, 801)
-    vals = slip(grid, tau_m, delta_n=1.0, P=1.0, tau_el=tau_el)
-    k = int(np.argmax(vals))
-    lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
-    r = minimize_scalar(lambda x: -g(x), bounds=(lo, hi), method="bounded",
-                        options={"xatol": 1e-10})
-    best = max((vals[k], grid[k]), (-r.fun, r.x))
-    return float(best[0]), float(best[1])
-
-
 # ----------------------------------------------------------- motor selection (sec. 8.3)
-
-
-def required_overdimensioning(tau_m: float, delta_n: float, delta_lim: float, *,
-                              eta_g: float = 1.0, spring: bool = False,
-                              tau_el: float | None = None) -> float:
-    """P = v_v (delta_max/delta_n)(tau_m) delta_n/(eta_g delta_lim) (8.1).
-
-    Reading ((8.1) itself is lost): the slip is inversely proportional to P (A.5.33) and to
-    eta_g (sec. A.5.4.3.2) and grows by a factor v_v = 5 with a follower spring
-    (sec. A.5.4.3.3, v_v = 1 without), fig. 8.6 giving delta_max/delta_n at P = 1.
-    """
-    v_v = 5.0 if spring else 1.0
-    rel, _ = relative_slip_peak(tau_m, tau_el)
-    return v_v * rel * delta_n / (eta_g * delta_lim)
-
-
-def required_torque(m: float, h_m: float, w_s: float, t_m: float, P: float) -> float:
-    """Rated motor torque reduced to the camshaft, M_ena = 8.2 m h_m'^2 P/(w_s t_m^3) (8.2).
-
-    8.2 is M_max/Mc = 3^(3/2) pi/2 = 8.162 of the cycloid (A.2.14); the exact factor is used.
-    """
-    return float(M_MAX_FACTOR) * m * h_m**2 * P / (w_s * t_m**3)
-
-
-def required_power(m: float, h_m: float, t_m: float, P: float) -> float:
-    """Rated power N_n = M_ena w_s = 8.2 m h_m'^2 P/t_m^3 ((8.3) with w_n ~ w_s; reading).
-
-    With P from (8.1): N_n = 8.2 m h_m'^2 v_v (delta_max/delta_n) delta_n/(eta_g delta_lim t_m^3),
-    independent of the shaft speed.
-    """
-    return float(M_MAX_FACTOR) * m * h_m**2 * P / t_m**3
-
-
-def slip_within_rated(delta_lim: float, delta_n: float) -> bool:
-    """(8.4), reading: "to prevent overload, slip should not exceed the nominal slip",
-    delta_lim <= delta_n."""
-    return delta_lim <= delta_n
 
 
 # ------------------------------------------------------------------ worm gear (sec. 6.7)
@@ -648,11 +595,3 @@ def worm_gear_torque(M_ma, alpha: float, mu: float):
     M = np.where(M_ma > 0, M_ma * ta / math.tan(alpha + mu),
                  np.where(M_ma < 0, M_ma * ta / math.tan(alpha - mu) if alpha > mu else 0.0, 0.0))
     return float(M) if M.ndim == 0 else M
-
-
-def worm_gear_efficiency(alpha: float, mu: float, driving: bool = True) -> float:
-    """Power out over power in: tan(alpha)/tan(alpha + mu) driving (A.5.34), tan(alpha - mu)/tan(alpha)
-    driven (zero or less: self-locking)."""
-    if driving:
-        return math.tan(alpha) / math.tan(alpha + mu)
-    return math.tan(alpha - mu) / math.tan(alpha)
