@@ -1,3 +1,4 @@
+# cython: cdivision=True
 # Small dense linear algebra for generated right-hand sides (inline, nogil).
 #
 # The integration loops call the LU routines with the model's state count, a compile-time
@@ -6,6 +7,9 @@
 # compiler unrolls the factorization and the solves completely (the Radau and Rosenbrock steps
 # of a four-state model spent about half their time in the loops' bookkeeping otherwise).  Above
 # it they run over the triangle only, the condition always true.
+#
+# C division (the directive above): the routines test their pivots themselves, and Python's
+# zero-division checks put a call that may raise into every factorization.
 
 from libc.math cimport fabs, sqrt
 
