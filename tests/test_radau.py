@@ -70,6 +70,29 @@ def test_error_weights_annihilate_low_degrees():
             assert abs(r) > 1e-3, (deg, r)
 
 
+@pytest.mark.parametrize("n", [1, 4, 6, 9])
+@pytest.mark.parametrize("kind", ["real", "complex"])
+def test_small_lu_against_numpy(n, kind):
+    """The LU routines of linalg.pxd the implicit loops factor with (the real one for RODAS4 and
+    RADAU5's gamma/h - J, the complex one for RADAU5's (alpha + i beta)/h - J), on both sides of
+    LA_SMALL = 6 (loops over the whole square, unrolled, up to it; over the triangle above it):
+    the solution of numpy.linalg.solve to 1e-12 relative (measured 4e-16), on matrices whose
+    leading entries vanish so that every row must be pivoted; a singular one (a zero column) is
+    refused."""
+    rng = np.random.default_rng(n)
+    A = rng.standard_normal((n, n)) + (1j * rng.standard_normal((n, n)) if kind == "complex" else 0)
+    A[:, 0] *= 1e-3
+    A[0, 0] = 0.0
+    A += 3.0 * np.eye(n)[::-1]          # well conditioned, the large entries off the diagonal
+    b = rng.standard_normal(n) + (1j * rng.standard_normal(n) if kind == "complex" else 0)
+    x = driver.solve_lu(A, b)
+    assert np.iscomplexobj(x) == (kind == "complex")
+    ref = np.linalg.solve(A, b)
+    assert np.max(np.abs(x - ref)) <= 1e-12 * np.max(np.abs(ref))
+    A[:, -1] = 0.0
+    assert driver.solve_lu(A, b) is None
+
+
 def test_fixed_step_ladder_shows_order_five():
     """The one-DOF dwell (linear: the simplified Newton iteration is exact there) from T = 1
     with steps held at h (first step = max step = h, a tolerance that accepts every step):

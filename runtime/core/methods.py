@@ -229,8 +229,8 @@ class RADAU5(DP54):
     iteration that would not converge shortens the step at once.  Error estimate: RADAU5's
     embedded one of order 3 (one more solve with the factors, refined after a first or rejected
     step); Gustafsson's predictive step control.  The real and complex transformed systems of
-    the three stages (one real n x n, one complex n x n) are factored, the complex one as a
-    real system of size 2n.  Dense output and event location: the cubic Hermite interpolant of
+    the three stages (one real n x n, one complex n x n) are factored, the complex one in
+    complex arithmetic (half the flops of its real form of size 2n).  Dense output and event location: the cubic Hermite interpolant of
     the recorded points and slopes, O(h^4) like the collocation polynomial (which RADAU5's
     CONTR5 interpolates), to which it is equal in order.  rtol is used as given (RADAU5 itself
     maps it to 0.1 rtol^(2/3)); options, breakpoints, events, state_atol and error estimates

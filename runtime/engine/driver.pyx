@@ -29,6 +29,7 @@ import numpy as np
 from camdyn.runtime.engine.abi cimport *
 from camdyn.runtime.engine.dense cimport dense_component
 from camdyn.runtime.engine.dop853 cimport D8_A, D8_C, D8_D, D8_E3, D8_E5
+from camdyn.runtime.engine.linalg cimport clu_factor, clu_solve, lu_factor, lu_solve
 from camdyn.runtime.engine.radau cimport *
 
 RK4 = METHOD_RK4
@@ -453,6 +454,31 @@ def radau_constants():
     return {"c": np.array([RA_C1, RA_C2, 1.0]), "gamma": RA_GAMMA, "alpha": RA_ALPHA,
             "beta": RA_BETA, "T": T, "TI": TI, "dd": np.array([RA_DD1, RA_DD2, RA_DD3]),
             "nit": RA_NIT}
+
+
+def solve_lu(A, b):
+    """x with A x = b by the LU routines the implicit loops factor with (linalg.pxd): lu_factor
+    and lu_solve for a real A and b, clu_factor and clu_solve where either is complex; None
+    where a pivot vanishes (A singular)."""
+    A, b = np.asarray(A), np.asarray(b)
+    cdef int n = A.shape[0]
+    if A.shape != (n, n) or b.shape != (n,) or n < 1:
+        raise ValueError("A must be n x n and b of length n >= 1")
+    cdef int[::1] piv = np.empty(n, dtype=np.intc)
+    cdef double[::1] ar = np.array(A.real, dtype=float).ravel()
+    cdef double[::1] br = np.array(b.real, dtype=float)
+    cdef double[::1] ai, bi
+    if np.iscomplexobj(A) or np.iscomplexobj(b):
+        ai = np.array(A.imag, dtype=float).ravel()
+        bi = np.array(b.imag, dtype=float)
+        if clu_factor(n, &ar[0], &ai[0], &piv[0]) != 0:
+            return None
+        clu_solve(n, &ar[0], &ai[0], &piv[0], &br[0], &bi[0])
+        return np.asarray(br) + 1j * np.asarray(bi)
+    if lu_factor(n, &ar[0], &piv[0]) != 0:
+        return None
+    lu_solve(n, &ar[0], &piv[0], &br[0])
+    return np.asarray(br)
 
 
 # -- evaluation helpers (vectorized, compiled) ------------------------------------

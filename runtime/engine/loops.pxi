@@ -19,13 +19,13 @@
 # interpolant (dense.pxd): none for RK4, the thesis scheme, RODAS4 and RADAU5, DP54's
 # fourth-order term, DOP853's four terms of its seventh-order extension.
 
-from libc.math cimport NAN, cos, fabs, fmax, fmin, isfinite, isnan, pow, sin, sqrt
+from libc.math cimport NAN, cos, exp, fabs, fmax, fmin, isfinite, isnan, log, pow, sin, sqrt
 from libc.stdlib cimport free, malloc
 from libc.string cimport memcpy, memset
 
 from camdyn.runtime.engine.dense cimport dense_component, fit_extras, fit_matrix
 from camdyn.runtime.engine.dop853 cimport D8_A, D8_C, D8_D, D8_E3, D8_E5
-from camdyn.runtime.engine.linalg cimport lu_factor, lu_solve
+from camdyn.runtime.engine.linalg cimport clu_factor, clu_solve, lu_factor, lu_solve
 from camdyn.runtime.engine.radau cimport *
 
 
@@ -1513,7 +1513,8 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
             continue
         if err <= 1.0:
             # standard controller for the embedded order 3 (err ~ h^4), limits as in RODAS
-            fac = 6.0 if err == 0.0 else fmin(6.0, fmax(0.2, 0.9 * pow(err, -0.25)))
+            # err^(-1/4) as two square roots: a pow a step cost RODAS4 a tenth of its step
+            fac = 6.0 if err == 0.0 else fmin(6.0, fmax(0.2, 0.9 / sqrt(sqrt(err))))
             if rejected:
                 fac = fmin(fac, 1.0)
             rhs(tn, yn, fn, ctx)   # slope at the new point: recorded, and the next step's f0
@@ -1553,7 +1554,7 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
             h = fmin(h * fac, run.h_max)
             rejected = False
         else:
-            h *= fmax(0.2, 0.9 * pow(err, -0.25))
+            h *= fmax(0.2, 0.9 / sqrt(sqrt(err)))
             n_rej += 1
             rejected = True
     free(J)
@@ -1573,38 +1574,31 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
 # stage increments Z = (z1, z2, z3), z_i = Y_i - y, solve Z = h (A x I) F(Z); the simplified
 # Newton iteration transforms them with T (TI = T^-1) to W = (TI x I) Z, which turns A^-1
 # into diag(gamma, [[alpha, -beta], [beta, alpha]]) and the iteration matrix into one real
-# system (gamma/h - J) and one complex one ((alpha + i beta)/h - J).  The complex one is
-# solved here as the equivalent real system of twice the size,
-#
-#     [[alpha/h - J, -beta/h], [beta/h, alpha/h - J]] (w2, w3) = (r2, r3),
-#
-# with the LU of linalg.pxd: twice the flops of a complex LU, but the factors serve many steps
-# (they are renewed only when h changes or the Jacobian does), and one LU routine stays the
-# only one.  The error estimate is RADAU5's (sec. IV.8, "Error estimation"): (gamma/h - J)^-1
+# system (gamma/h - J) and one complex one ((alpha + i beta)/h - J) (w2 + i w3) = r2 + i r3,
+# each factored by an LU of linalg.pxd (the complex one in complex arithmetic, its real and
+# imaginary parts apart: half the flops of the equivalent real system of size 2n, and half its
+# rows to sweep in every solve), the factors kept while h and the Jacobian stay.  The error estimate is RADAU5's (sec. IV.8, "Error estimation"): (gamma/h - J)^-1
 # (f(y) + (e1 z1 + e2 z2 + e3 z3)/h), one more solve with the real factors, and after a
 # rejected or a first step that once more with f at y + err, which removes the estimate's
 # O(1) error on very stiff components.  The constants: radau.pxd.
 
-cdef int _radau_matrices(const double* J, double h, double* E1, int* piv1, double* E2,
-                         int* piv2) noexcept nogil:
-    """Factor gamma/h - J (E1, n x n) and the real form of (alpha + i beta)/h - J (E2, 2n x 2n);
-    nonzero when one is singular."""
-    cdef int i, j, m = 2 * _NS
+cdef int _radau_matrices(const double* J, double h, double* E1, int* piv1, double* E2r,
+                         double* E2i, int* piv2) noexcept nogil:
+    """Factor gamma/h - J (E1) and (alpha + i beta)/h - J (E2r + i E2i), both n x n; nonzero
+    when one is singular."""
+    cdef int i
     cdef double g = RA_GAMMA / h, al = RA_ALPHA / h, be = RA_BETA / h
-    memset(E2, 0, m * m * sizeof(double))
+    memset(E2i, 0, _NS * _NS * sizeof(double))
+    for i in range(_NS * _NS):
+        E1[i] = -J[i]
+        E2r[i] = -J[i]
     for i in range(_NS):
-        for j in range(_NS):
-            E1[i * _NS + j] = -J[i * _NS + j]
-            E2[i * m + j] = -J[i * _NS + j]
-            E2[(i + _NS) * m + j + _NS] = -J[i * _NS + j]
         E1[i * _NS + i] += g
-        E2[i * m + i] += al
-        E2[(i + _NS) * m + i + _NS] += al
-        E2[i * m + i + _NS] = -be
-        E2[(i + _NS) * m + i] = be
+        E2r[i * _NS + i] += al
+        E2i[i * _NS + i] = be
     if lu_factor(_NS, E1, piv1) != 0:
         return 1
-    return lu_factor(m, E2, piv2)
+    return clu_factor(_NS, E2r, E2i, piv2)
 
 
 cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
@@ -1626,7 +1620,8 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
     cdef double k1[_NS]
     cdef double k2[_NS]
     cdef double k3[_NS]
-    cdef double r23[2 * _NS]
+    cdef double r2[_NS]     # the complex system's right-hand side r2 + i r3, then its solution
+    cdef double r3[_NS]
     cdef double ak1[_NS]     # the last step's collocation polynomial (RADAU5's CONT), for the
     cdef double ak2[_NS]     # Newton iteration's starting values
     cdef double ak3[_NS]
@@ -1637,12 +1632,17 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
     cdef double wt[_NS]     # 1/(atol + rtol |y|): the Newton iteration's error weights
     cdef double ymag[_NS]   # largest |y_j| of the interval so far: the Jacobian's increments
     cdef int piv1[_NS]
-    cdef int piv2[2 * _NS]
+    cdef int piv2[_NS]
     cdef double g0[_NE1]
     cdef double g1[_NE1]
     cdef double t = a, tn, h, h_lu = 0.0, hold = 0.0, hnew, hacc = 0.0, erracc = 0.0
     cdef double err, fac, quot, facgus, s_hit, rtol = run.rtol
     cdef double theta, thq, thqold = 0.0, dyno, dynold = 0.0, dyth, faccon = 1.0, x
+    # log(faccon): RADAU5 raises faccon to the power 0.8 every step (towards 1, so that a
+    # fast contraction measured long ago stops vouching for a one-sweep convergence); in
+    # logarithms that is a product, and one exp a step replaces a pow
+    cdef double lfac = 0.0
+    cdef double hinv, gh, ah, bh
     cdef double c1q, c2q, c3q, a1, a2, a3
     cdef const double* atol = run.atol
     cdef long n_steps = run.n_steps, n_rej = run.n_rejected, n_rhs = 0, max_steps = run.max_steps
@@ -1658,13 +1658,15 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
     cdef double fnewt = fmax(10.0 * 2.220446049250313e-16 / rtol, fmin(0.03, sqrt(rtol)))
     cdef double cfac = RA_SAFE * (1 + 2 * RA_NIT)
     # heap, not stack: _NS^2 grows fast for models built from user files
-    cdef double* J = <double*> malloc(6 * _NS * _NS * sizeof(double))
+    cdef double* J = <double*> malloc(4 * _NS * _NS * sizeof(double))
     cdef double* E1
-    cdef double* E2
+    cdef double* E2r
+    cdef double* E2i
     if J == NULL:
         return STATUS_NO_MEMORY
     E1 = J + _NS * _NS
-    E2 = E1 + _NS * _NS
+    E2r = E1 + _NS * _NS
+    E2i = E2r + _NS * _NS
     memcpy(y, run.y, sizeof(y))
     for i in range(_NS):
         ymag[i] = fabs(y[i])
@@ -1699,7 +1701,7 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
             h_lu = 0.0
         if h != h_lu:
             run.n_lu += 1
-            if _radau_matrices(J, h, E1, piv1, E2, piv2) != 0:
+            if _radau_matrices(J, h, E1, piv1, E2r, E2i, piv2) != 0:
                 # gamma/h or (alpha + i beta)/h is an eigenvalue of J: any other step avoids it
                 h *= 0.5
                 n_rej += 1
@@ -1729,7 +1731,12 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
             memset(w3, 0, sizeof(w3))
         # the simplified Newton iteration (RADAU5's loop 40): theta, its contraction rate,
         # predicts whether it converges within RA_NIT sweeps; if not, a smaller step at once
-        faccon = pow(fmax(faccon, 2.220446049250313e-16), 0.8)
+        lfac = 0.8 * fmax(lfac, -36.04365338911715)     # log(2.220446049250313e-16)
+        faccon = exp(lfac)
+        hinv = 1.0 / h
+        gh = RA_GAMMA * hinv
+        ah = RA_ALPHA * hinv
+        bh = RA_BETA * hinv
         theta = thet
         newt = 0
         converged = False
@@ -1749,19 +1756,19 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
                 a1 = RA_TI11 * k1[i] + RA_TI12 * k2[i] + RA_TI13 * k3[i]
                 a2 = RA_TI21 * k1[i] + RA_TI22 * k2[i] + RA_TI23 * k3[i]
                 a3 = RA_TI31 * k1[i] + RA_TI32 * k2[i] + RA_TI33 * k3[i]
-                k1[i] = a1 - w1[i] * RA_GAMMA / h
-                r23[i] = a2 - (RA_ALPHA * w2[i] - RA_BETA * w3[i]) / h
-                r23[i + _NS] = a3 - (RA_ALPHA * w3[i] + RA_BETA * w2[i]) / h
+                k1[i] = a1 - gh * w1[i]
+                r2[i] = a2 - (ah * w2[i] - bh * w3[i])
+                r3[i] = a3 - (ah * w3[i] + bh * w2[i])
             lu_solve(_NS, E1, piv1, k1)
-            lu_solve(2 * _NS, E2, piv2, r23)
+            clu_solve(_NS, E2r, E2i, piv2, r2, r3)
             newt += 1
             dyno = 0.0
             for i in range(_NS):
                 x = k1[i] * wt[i]
                 dyno += x * x
-                x = r23[i] * wt[i]
+                x = r2[i] * wt[i]
                 dyno += x * x
-                x = r23[i + _NS] * wt[i]
+                x = r3[i] * wt[i]
                 dyno += x * x
             dyno = sqrt(dyno / (3 * _NS))
             if not isfinite(dyno):
@@ -1773,6 +1780,7 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
                 if theta >= 0.99:
                     break
                 faccon = theta / (1.0 - theta)
+                lfac = log(faccon)
                 dyth = faccon * dyno / fnewt
                 for i in range(RA_NIT - 1 - newt):
                     dyth *= theta
@@ -1784,8 +1792,8 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
             dynold = fmax(dyno, 2.220446049250313e-16)
             for i in range(_NS):
                 w1[i] += k1[i]
-                w2[i] += r23[i]
-                w3[i] += r23[i + _NS]
+                w2[i] += r2[i]
+                w3[i] += r3[i]
                 z1[i] = RA_T11 * w1[i] + RA_T12 * w2[i] + RA_T13 * w3[i]
                 z2[i] = RA_T21 * w1[i] + RA_T22 * w2[i] + RA_T23 * w3[i]
                 z3[i] = RA_T31 * w1[i] + w2[i]
@@ -1796,7 +1804,7 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
         if converged:
             # the error estimate (8.19), refined by (8.20) after a first or rejected step
             for i in range(_NS):
-                k2[i] = (RA_DD1 * z1[i] + RA_DD2 * z2[i] + RA_DD3 * z3[i]) / h
+                k2[i] = (RA_DD1 * z1[i] + RA_DD2 * z2[i] + RA_DD3 * z3[i]) * hinv
                 ev[i] = k2[i] + f0[i]
             lu_solve(_NS, E1, piv1, ev)
             for i in range(_NS):
@@ -1843,10 +1851,10 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
             n_rhs += 1
             # the collocation polynomial of the step, for the next step's starting values
             for i in range(_NS):
-                ak1[i] = (z2[i] - z3[i]) / RA_C2M1
-                x = (z1[i] - z2[i]) / RA_C1MC2
-                ak2[i] = (x - ak1[i]) / RA_C1M1
-                ak3[i] = ak2[i] - (x - z1[i] / RA_C1) / RA_C2
+                ak1[i] = (z2[i] - z3[i]) * RA_IC2M1
+                x = (z1[i] - z2[i]) * RA_IC1MC2
+                ak2[i] = (x - ak1[i]) * RA_IC1M1
+                ak3[i] = ak2[i] - (x - z1[i] * RA_IC1) * RA_IC2
             if _NE > 0:
                 hit = _event_in_step(run, t, h, y, yn, f0, fn, NULL, 0, g0, g1, &s_hit)
                 if hit >= 0:

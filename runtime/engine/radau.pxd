@@ -1,7 +1,8 @@
 # The constants of Radau IIA of order 5 as Hairer & Wanner's code RADAU5 uses them (Solving
 # Ordinary Differential Equations II, sec. IV.8; subroutine RADCOR), to 20 digits, for the loop
 # in loops.pxi and for driver.radau_constants (tests/test_radau.py checks them against the
-# Butcher tableau): the nodes RA_C1, RA_C2 (and 1); the eigenvalues of A^-1, gamma and
+# Butcher tableau): the nodes RA_C1, RA_C2 (and 1) and the reciprocals RA_IC* the loop multiplies
+# by (a division stalls it); the eigenvalues of A^-1, gamma and
 # alpha +- i beta; T, whose columns transform A^-1 to diag(gamma, [[alpha, -beta], [beta,
 # alpha]]) (T32 = 1, T33 = 0), and its inverse TI; the error estimator's weights RA_DD; the
 # Newton iteration's sweeps, safety factor, step-ratio limits and the window of step ratios
@@ -13,6 +14,11 @@ cdef extern from *:
     #define RA_C1M1 (RA_C1 - 1.0)
     #define RA_C2M1 (RA_C2 - 1.0)
     #define RA_C1MC2 (RA_C1 - RA_C2)
+    #define RA_IC1 (1.0 / RA_C1)
+    #define RA_IC2 (1.0 / RA_C2)
+    #define RA_IC1M1 (1.0 / RA_C1M1)
+    #define RA_IC2M1 (1.0 / RA_C2M1)
+    #define RA_IC1MC2 (1.0 / RA_C1MC2)
     #define RA_GAMMA 3.6378342527444957322
     #define RA_ALPHA 2.6810828736277521339
     #define RA_BETA 3.0504301992474105694
@@ -47,6 +53,11 @@ cdef extern from *:
     const double RA_C1M1
     const double RA_C2M1
     const double RA_C1MC2
+    const double RA_IC1
+    const double RA_IC2
+    const double RA_IC1M1
+    const double RA_IC2M1
+    const double RA_IC1MC2
     const double RA_GAMMA
     const double RA_ALPHA
     const double RA_BETA
