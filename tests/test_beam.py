@@ -650,3 +650,141 @@ def test_initial_state_is_consistent_with_the_constraints():
     yp[:n] += h * y[n:]
     ym[:n] -= h * y[n:]
     assert np.abs((phi(h, yp) - phi(-h, ym)) / (2 * h)).max() < 1e-9
+
+
+# -- 6. stepping: the fastest mode and the mode tolerance -------------------------------------
+
+def cantilever_tip_mass_roots(r, count):
+    """The lowest ``count`` roots beta L of 1 + cos z cosh z + r z (cos z sinh z - sin z cosh z)
+    = 0 (Euler-Bernoulli cantilever, tip mass ratio r), bracketed on a fine grid."""
+    from scipy.optimize import brentq
+
+    def g(z):
+        return 1 + math.cos(z) * math.cosh(z) + r * z * (math.cos(z) * math.sinh(z)
+                                                          - math.sin(z) * math.cosh(z))
+
+    grid = np.linspace(0.1, 4 * count, 40 * count)
+    vals = [g(z) for z in grid]
+    roots = [brentq(g, a, b, xtol=1e-14) for a, b, ga, gb in
+             zip(grid[:-1], grid[1:], vals[:-1], vals[1:]) if ga * gb < 0]
+    return np.array(roots[:count])
+
+
+def test_fastest_frequency_is_the_ritz_top_and_not_the_rod_s():
+    """The highest frozen frequency of N = 6 at the outer dwell (Euler-Bernoulli rod, J_r = 0):
+    beam.fastest_frequency against the top eigenvalue of NumPy's Rayleigh-Ritz with the model's
+    six polynomials, 307.35 kHz (measured 8e-8, asserted 1e-6).  It is the basis's, not the
+    rod's: the sixth root of the cantilever with its tip mass gives 129.30 kHz (the Ritz value
+    of a top mode overshoots; measured ratio 2.38, asserted > 2), while the lowest three agree
+    with the roots within 2.8e-4 (asserted 1e-3).  This frequency, not the rod's, bounds an
+    explicit method's step."""
+    c = replace(DEFAULT, modes=6, rayleigh=False, roller_inertia=0.0)
+    rho_A, I = rod(c)
+    L = c.free_length_raised
+    r = c.roller_mass / (rho_A * L)
+    a = np.arange(2, 8, dtype=float)
+    M = 1.0 / (a[:, None] + a[None, :] + 1) + r
+    K = np.outer(a * (a - 1), a * (a - 1)) / (a[:, None] + a[None, :] - 3)
+    z = sla.eigh(K, M, eigvals_only=True) ** 0.25
+    scale = math.sqrt(c.E * I / rho_A) / (2 * math.pi * L**2)
+    ritz = z**2 * scale
+    f = beam.dwell_frequencies(c)
+    assert beam.fastest_frequency(c) == f[-1]
+    assert f[-1] == pytest.approx(ritz[-1], rel=1e-6)
+    exact = cantilever_tip_mass_roots(r, 6) ** 2 * scale
+    assert exact[0] == pytest.approx(beam.cantilever_tip_mass_frequency(c.E, I, rho_A, L,
+                                                                        c.roller_mass), rel=1e-10)
+    assert np.all(np.abs(f[:3] / exact[:3] - 1) < 1e-3)
+    assert f[-1] / exact[-1] > 2
+
+
+def dop853_imaginary_boundary():
+    """The largest y with |R(i y')| <= 1 for all y' <= y, R the stability function of the
+    tableau the DOP853 loop runs: R(z) = 1 + z b^T (I - z A)^-1 1 (5.96)."""
+    tab = driver.dop853_tableau()
+    A, b = tab["A"][:12, :12], tab["A"][12, :12]
+
+    def amp(y):
+        z = 1j * y
+        return abs(1 + z * b @ np.linalg.solve(np.eye(12) - z * A, np.ones(12)))
+
+    ys = np.arange(0.01, 8.0, 0.01)
+    return ys[np.argmax([amp(y) > 1 + 1e-12 for y in ys]) - 1]
+
+
+def test_mode_tolerance_lets_dop853_step_at_its_stability_limit():
+    """N = 6, one revolution at rtol 1e-6 with the command's mode tolerance (MODE_ATOL, the
+    rates' times w_N): DOP853's mean step times w_N, the fastest frozen frequency, lies within
+    the method's stability interval on the imaginary axis (0, 5.96] and above half of it
+    (measured 4.1, 9,633 steps; with the rates' tolerance times Omega instead, 1.2 and 32,051
+    steps): the step is held by the fastest mode's stability, not by resolving its ringing.
+    max |v_E| (refined on the dense output) against DOP853 at rtol 1e-10 with the amplitudes to
+    1.4e-10 m and their rates to that times Omega: measured 1.9e-7, asserted 1e-6, below the
+    mode tolerance's own scale (1.4e-9 m = 6.6e-6 of the figure)."""
+    from camdyn.runtime.targets.beam_case import MODE_ATOL
+
+    c = replace(DEFAULT, modes=6, method="dop853", rtol=1e-6, mode_atol=MODE_ATOL)
+    res = simulate(c)
+    w_n = 2 * math.pi * beam.fastest_frequency(c)
+    boundary = dop853_imaginary_boundary()
+    assert boundary == pytest.approx(5.96, abs=0.01)
+    h_w = c.period / res.stats["n_steps"] * w_n
+    assert boundary / 2 < h_w < boundary
+    tol = 0.1 * MODE_ATOL * beam.deflection_scale(c)
+    pairs = tuple((f"b{i}{s}", tol * (c.omega if s else 1.0))
+                  for i in range(1, 7) for s in ("", "d"))
+    ref = simulate(replace(c, rtol=1e-10, mode_atol=None, state_atol=pairs))
+    v, v_ref = beam.tip_max(res), beam.tip_max(ref)
+    assert abs(v - v_ref) < 1e-6 * v_ref
+
+
+@pytest.mark.parametrize("method", ["rodas4", "radau5"])
+def test_rigid_limit_with_six_modes_by_an_implicit_method(method):
+    """E x 1e6, N = 6, J_r = 0, rtol 1e-6 with the command's mode tolerance: an L-stable method
+    steps over the rod's modes (fastest frozen frequency 2.4e8 Hz; DOP853 would need some 7e6
+    steps at its stability limit): measured 452 (rodas4) and 527 (radau5) steps, asserted below
+    10,000.  The kinematics are the rigid follower's (x_E = d - r(Omega t) within 2.9e-9 d and
+    4.6e-10 d, theta = Omega t within 3.4e-9 and 5.8e-10 of a revolution; asserted 1e-6 as for
+    N = 1 and 3) and lambda1 = tan(phi) lambda2 within 5.4e-8 and 1.1e-8 of |lambda1| (asserted
+    1e-5)."""
+    from camdyn.runtime.targets.beam_case import MODE_ATOL
+
+    c = replace(DEFAULT, modes=6, E=DEFAULT.E * 1e6, roller_inertia=0.0, rtol=1e-6,
+                method=method, mode_atol=MODE_ATOL)
+    res = simulate(c)
+    assert res.stats["n_steps"] < 10_000
+    t = np.array(res["t"])
+    assert t[-1] == pytest.approx(c.period, rel=1e-12)
+    x_rigid = c.distance - c.base_radius - c.roller_radius - c.rise * rdfd(c.omega * t)[0]
+    assert np.abs(np.array(res["xE"]) - x_rigid).max() < 1e-6 * c.distance
+    assert np.abs(np.array(res["theta"]) - c.omega * t).max() < 1e-6 * 2 * np.pi
+    l1, l2 = np.array(res["lambda1"]), np.array(res["lambda2"])
+    assert np.abs(l1 - np.tan(np.array(res["pressure_angle"])) * l2).max() < 1e-5 * np.abs(l1).max()
+    assert np.abs(tip(res, c)).max() < 3e-4 * 2.19e-4
+
+
+def test_rigid_limit_with_the_roller_s_inertia_and_a_jerk_free_law():
+    """E x 1e6, N = 6, the roller's inertia on (a uniform disc), rtol 1e-6, the command's mode
+    tolerance, the 4-5-6-7 law (H = 35 T^4 - 84 T^5 + 70 T^6 - 20 T^7, no jerk at the segment
+    ends): RADAU5 steps over the modes, measured 581 steps, asserted below 10,000 (with the
+    cycloidal law, whose jerk jumps at the segment ends, the roller's rotation term (12) turns
+    the jump into a step of force through phi'(theta), which rings every mode: 7,100 steps in
+    the sixteenth of a revolution after the rise's start and as many after the fall's at
+    mode_atol 1e-3, and more than the step budget at the default).  x_E = d - r(Omega t) with r
+    from that law typed here: measured 6.6e-10 d, asserted 1e-6 d; theta = Omega t within
+    7.6e-10 of a revolution, asserted 1e-6."""
+    from camdyn.runtime.targets.beam_case import MODE_ATOL
+
+    c = replace(DEFAULT, modes=6, E=DEFAULT.E * 1e6, rtol=1e-6, method="radau5",
+                mode_atol=MODE_ATOL, law="4-5-6-7")
+    res = simulate(c)
+    assert res.stats["n_steps"] < 10_000
+    t = np.array(res["t"])
+    u = np.mod(c.omega * t, 2 * np.pi)
+    fall = u >= np.pi
+    T = np.clip(np.where(fall, u - np.pi, u) / BETA, 0.0, 1.0)
+    H = 35 * T**4 - 84 * T**5 + 70 * T**6 - 20 * T**7
+    S = c.rise * np.where(fall, 1 - H, H)
+    x_rigid = c.distance - c.base_radius - c.roller_radius - S
+    assert np.abs(np.array(res["xE"]) - x_rigid).max() < 1e-6 * c.distance
+    assert np.abs(np.array(res["theta"]) - c.omega * t).max() < 1e-6 * 2 * np.pi

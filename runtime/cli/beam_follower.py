@@ -87,8 +87,8 @@ def add(sub):
     b.add_argument("--mode-atol", type=float, default=MODE_ATOL, metavar="F",
                    help=f"absolute tolerance of the mode amplitudes b_i as a fraction of the "
                         f"rod's deflection scale S_T Omega^2/w_1^2 (default {MODE_ATOL:g}: "
-                        f"1.4e-9 m for the paper's data; their rates': times Omega); not with "
-                        f"--atol, and under --state-atol")
+                        f"1.4e-9 m for the paper's data; their rates': times the highest frozen "
+                        f"frequency w_N); not with --atol, and under --state-atol")
     b.add_argument("--json", action="store_true", help="one JSON object on stdout")
     add_estimate_option(b)
     add_out_option(b, default=None, metavar="DIR",

@@ -37,14 +37,17 @@ MODE_ATOL = 3e-5
 """`camdyn beam-follower`'s absolute tolerance of the mode amplitudes b_i (``Case.mode_atol``),
 as a fraction of the rod's deflection scale S_T Omega^2/w_1^2 (the cam's acceleration over the
 square of the lowest frozen frequency w_1: 4.8e-5 m for the paper's data, whose tip deflection
-is 2.2e-4 m; 4.8e-9 m for a rod 1e4 times stiffer), 1.4e-9 m there; a rate's is that times
-Omega.  The default of every other run, 1e-3 rtol of the amplitudes' declared scale (1e-5 m),
-holds the higher modes, which ring at 1e-12 m and less, to 1e-17 m at rtol 1e-9: N = 6 then
-takes 30 times the steps its stability needs (DOP853, one revolution: 952,227 steps at rtol
-1e-8; 39,785 at rtol 1e-9 with this tolerance), and did not finish with DP54.  The run one
+is 2.2e-4 m; 4.8e-11 m for a rod 1e6 times stiffer), 1.4e-9 m there; a rate's is that times
+the highest frozen frequency w_N (beam.integrator: the fastest mode's rate held as its
+amplitude is).  The default of every other run, 1e-3 rtol of the amplitudes' declared scale
+(1e-5 m), holds the higher modes, which ring at 1e-12 m and less, to 1e-17 m at rtol 1e-9:
+N = 6 then took 100 times the steps its stability needs (DOP853, one revolution: 952,227
+steps at rtol 1e-8), and did not finish with DP54.  With this tolerance DOP853 steps at its
+stability limit for w_N at N = 6 (one revolution, rtol 1e-6 or 1e-9: 9,700 steps, max |v_E|
+within 5e-8 of itself; rates held to tol Omega instead: 32,000 to 40,000 steps).  The run one
 notch tighter of the error estimate takes a tenth of it, so what it leaves shows in the
-estimate (N = 3, one revolution: max |v_E| 2.8e-8 of itself from a tight reference,
-estimated 3.0e-8)."""
+estimate (N = 3, rtol 1e-9: max |v_E| 1.5e-7 of itself from a tight reference, estimated
+1.4e-7)."""
 
 
 @dataclass(frozen=True)
