@@ -82,29 +82,30 @@ def test_an_interrupted_command_names_the_files_it_kept(tmp_path, capsys, monkey
 def test_a_sweep_stopped_midway_resumes_to_the_uninterrupted_table(tmp_path, capsys,
                                                                    monkeypatch, clean):
     """SIGTERM after the second chunk's rows (in this process, through the real handler):
-    exit 143, one line with the rows kept; the table holds 64 whole rows with their
-    estimates and warnings; --resume runs the other 536 points and ends with the clean
-    sweep's sweep.csv byte for byte (and its Parquet table)."""
+    exit 143, one line with the rows kept; the table holds two chunks' whole rows (75 points
+    each: 600 points on one thread, default_chunk) with their estimates and warnings;
+    --resume runs the other 450 points and ends with the clean sweep's sweep.csv byte for
+    byte (and its Parquet table)."""
     from camdyn.runtime.studies import sweep as sw
 
     add = sw._Table.add
 
     def add_then_stop(self, columns):
         add(self, columns)
-        if self.kept >= 64:
+        if self.kept >= 150:
             os.kill(os.getpid(), signal.SIGTERM)
 
     monkeypatch.setattr(sw._Table, "add", add_then_stop)
     out = tmp_path / "sweep"
     assert main(_sweep(out, "--jobs", "1")) == 143
     assert _last_line(capsys.readouterr().err) == (
-        f"camdyn sweep: interrupted; 64 of 600 points kept in {out / 'sweep.csv'} "
+        f"camdyn sweep: interrupted; 150 of 600 points kept in {out / 'sweep.csv'} "
         "(--resume continues)")
     clean_lines = (clean / "sweep.csv").read_text().splitlines(keepends=True)
-    assert (out / "sweep.csv").read_text() == "".join(clean_lines[:65])
+    assert (out / "sweep.csv").read_text() == "".join(clean_lines[:151])
     monkeypatch.setattr(sw._Table, "add", add)
     assert main(_sweep(out, "--resume")) == 0
-    assert "600 points (64 kept from the table, 536 run now)" in capsys.readouterr().out
+    assert "600 points (150 kept from the table, 450 run now)" in capsys.readouterr().out
     _same_tables(out, clean)
 
 

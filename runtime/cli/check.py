@@ -5,7 +5,6 @@ import json
 import sys
 
 from ..core.errors import CamdynInputError
-from ..measure.contract import UNAVAILABLE, unavailable
 from .common import add_estimate_option, fail, fmt
 
 HELP = "every comparison with the thesis, as a table"
@@ -68,6 +67,8 @@ def _print_table(outcomes) -> None:
     for o in wide:
         print(f"  warning {o.check.key}: the estimate {o.estimate:.2g} exceeds the band the "
               f"rule accepts ({o.check.rule}): the runs do not resolve the agreement")
+    from ..measure.contract import unavailable
+
     for o in outcomes:
         if o.estimate_why:
             print(f"  warning {o.check.key}: {unavailable(o.estimate_why)}")
@@ -79,6 +80,8 @@ def _print_table(outcomes) -> None:
 def _estimate(o) -> str:
     """" ± e", " (exact)", " (estimate unavailable)" (the reason in a warning below the table)
     beside a derived value, or "" when none was asked for."""
+    from ..measure.contract import UNAVAILABLE
+
     if not o.estimated or o.check.rule == "identity":
         return ""
     if o.exact:
