@@ -41,8 +41,8 @@ RUN_EXTREMES = (
            "fig. 5.6)", output="windup", dwell=True),
 )
 """Figures over the whole run, for a model that has their output (CAMSHAFT-2)."""
-RUN_WANTED = {"Bdot_dev_max": batch.Wanted("Bdot_dev", absolute=True, minimum=False),
-              "windup_max": batch.Wanted("windup", absolute=False, minimum=False)}
+RUN_WANTED = {f.name: batch.Wanted(f.output, absolute=f.name == "Bdot_dev_max", minimum=False)
+              for f in RUN_EXTREMES}
 """How each of RUN_EXTREMES is found: the largest |B' - 1| and T - B, scanned as a single run's
 extremes are (12 samples a step, the best refined), in a run and in a grid's chunk alike."""
 
