@@ -216,7 +216,13 @@ def error_estimate(check: Check, derived) -> tuple[float | None, str]:
             tight = check.compute()
         return abs(float(derived) - float(tight)) * estimate_factor(check.method), ""
     except Exception as exc:     # no estimate is shown as such, beside the value
-        return None, (str(exc).splitlines() or [type(exc).__name__])[0]
+        return None, failure_reason(exc)
+
+
+def failure_reason(exc: Exception) -> str:
+    """Why a computation failed, in one line: the first line of its message, else the kind of
+    failure."""
+    return (str(exc).splitlines() or [type(exc).__name__])[0]
 
 
 def tolerance(check: Check) -> float | None:

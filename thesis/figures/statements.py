@@ -52,7 +52,7 @@ def _trend(claim: Claim) -> ClaimResult:
         why = ""
     except Exception as exc:     # the values stand, without estimates, saying why
         es = (None,) * len(t.values)
-        why = (str(exc).splitlines() or [type(exc).__name__])[0]
+        why = checks.failure_reason(exc)
     return ClaimResult(claim.text, claim.reference, "(trend)", t.shown(), "trend",
                        "pass" if t.holds else "FAIL", t.holds, shown=t.shown(es, why),
                        estimates=es)
