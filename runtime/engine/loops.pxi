@@ -1577,7 +1577,8 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
 # system (gamma/h - J) and one complex one ((alpha + i beta)/h - J) (w2 + i w3) = r2 + i r3,
 # each factored by an LU of linalg.pxd (the complex one in complex arithmetic, its real and
 # imaginary parts apart: half the flops of the equivalent real system of size 2n, and half its
-# rows to sweep in every solve), the factors kept while h and the Jacobian stay.  The error estimate is RADAU5's (sec. IV.8, "Error estimation"): (gamma/h - J)^-1
+# rows to sweep in every solve), the factors kept while h and the Jacobian stay.  The error
+# estimate is RADAU5's (sec. IV.8, "Error estimation"): (gamma/h - J)^-1
 # (f(y) + (e1 z1 + e2 z2 + e3 z3)/h), one more solve with the real factors, and after a
 # rejected or a first step that once more with f at y + err, which removes the estimate's
 # O(1) error on very stiff components.  The constants: radau.pxd.
