@@ -87,8 +87,9 @@ class Result:
 
     @property
     def n_extra(self) -> int:
-        """Dense-output terms beyond the cubic Hermite interpolant in each row: 0, 1 (DP54) or 4
-        (DOP853) (camdyn/runtime/engine/dense.pxd)."""
+        """Dense-output terms beyond the cubic Hermite interpolant in each row: 1 for DP54, 4 for
+        DOP853 and for every adaptive method that stepped over a linear segment exactly, else
+        0 (camdyn/runtime/engine/abi.pxd, extra_terms; dense.pxd)."""
         return self._extra.shape[1] // len(self.state_names) if self._extra.shape[0] else 0
 
     @cached_property

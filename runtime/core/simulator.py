@@ -173,16 +173,20 @@ class Simulator:
     exact_segments
             Where the model is linear and time invariant (every cam input in a dwell, no
             contact or friction: the free vibration after a rise of one-DOF, CAMSHAFT-1, the
-            chain), step over the interval with its exact propagator e^(A h) instead of the
-            method (runtime/engine/loops.pxi, _loop_exact), recorded at the method's step
-            (RK4) or as densely as the dense output needs at rtol (DP54, DOP853, RODAS4, RADAU5).
-            Default: True for RK4, whose dwell then costs a matrix-vector product a step and
-            carries no error, and for DOP853, whose degree-7 dense output through the exact
-            state needs a point every ~(10^8 rtol)^(1/8)/w (w the highest frequency); False for
-            DP54, RODAS4 and RADAU5 (their figures are read off a record whose density their
-            own step control sets) and for the thesis scheme, which is run as the thesis ran it; False
-            with check_stability=False too, whose runs are made to see what the method's step
-            does, the dwell included (the stability map).
+            chain, a roller held on its contact spring), step over the interval with its exact
+            propagator e^(A h) instead of the method (runtime/engine/loops.pxi, _loop_exact).
+            RK4's record takes its own steps there, each a matrix-vector product without
+            error.  An adaptive method's record there holds a degree-7 extension through the
+            exact state whose steps lengthen as the content fades (each checked against the
+            exact state at rtol and atol), so a stiff mode that has rung out no longer sets
+            them.  Default: True for RK4 and DOP853.  False for DP54 (the thesis's figures and
+            their estimates are read off DP54's own record), for the thesis scheme, which is
+            run as the thesis ran it, and for RODAS4 and RADAU5, whose own steps damp a stiff
+            mode that does not decay (a stiff spring without damping) where the exact record
+            must follow it; give True to them where the stiff mode is damped (a contact
+            with damping: the roller's dwell then costs a few dozen points instead of
+            hundreds of steps).  False with check_stability=False too, whose runs are made to
+            see what the method's step does, the dwell included (the stability map).
     """
 
     def __init__(self, model, t_end: float = 3.0, method="dp54", *, rtol: float | None = None,

@@ -140,14 +140,20 @@ cdef struct ModelC:
                            # step; NULL for unconstrained models (ABI 10)
 
 
-cdef inline int extra_terms(int method) noexcept nogil:
-    """Dense-output terms beyond the cubic Hermite interpolant a method records per step."""
-    return 1 if method == METHOD_DP54 else 4 if method == METHOD_DOP853 else 0
-
-
 cdef inline bint adaptive_method(int method) noexcept nogil:
     return (method == METHOD_DP54 or method == METHOD_RODAS or method == METHOD_DOP853
             or method == METHOD_RADAU)
+
+
+cdef inline int extra_terms(int method, bint exact) noexcept nogil:
+    """Dense-output terms beyond the cubic Hermite interpolant a record holds per step: DOP853's
+    four, DP54's one, none for the others; four for every adaptive method that steps over
+    linear segments exactly, whose record there is a degree-7 extension through the exact
+    state (loops.pxi, _loop_exact).  A method's own steps leave the terms it lacks zero, which
+    is its own interpolant (dense.pxd)."""
+    if method == METHOD_DOP853 or (exact and adaptive_method(method)):
+        return 4
+    return 1 if method == METHOD_DP54 else 0
 
 
 cdef inline long fixed_steps(double a, double b, double h) noexcept nogil:

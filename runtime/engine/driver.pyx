@@ -264,7 +264,7 @@ cdef class Integrator:
         self.exact = exact
         self.stab_bound = stab_bound.copy() if stab_mode else np.ones(1)
         self.n_states = ns
-        self.width = 1 + (2 + extra_terms(method)) * ns
+        self.width = 1 + (2 + extra_terms(method, exact)) * ns
 
     def run(self, p, stops, Py_ssize_t cap, y0=None):
         cdef int nm = self.m.n_modes
@@ -348,7 +348,7 @@ cdef class Integrator:
         run.rec.n = 0
         run.rec.cap = cap
         run.rec.width = self.width
-        run.rec.n_extra = extra_terms(self.method)
+        run.rec.n_extra = extra_terms(self.method, self.exact)
         run.rec.owned = False
         run.rec.rows = rows
         run.rec.mode = modes if nm else NULL

@@ -868,7 +868,7 @@ cdef int _chunk_open(Chunk* c, ModelC* m, int method, const int* law, const doub
     c.max_events = max_events
     c.modes0 = modes0
     c.exact = exact
-    c.width = 1 + (2 + extra_terms(method)) * ns
+    c.width = 1 + (2 + extra_terms(method, exact)) * ns
     c.cap = cap if cap >= 64 else 64
     c.rows = <double*> malloc(c.cap * c.width * sizeof(double))
     c.rmode = <int*> malloc(c.cap * (nm if nm > 0 else 1) * sizeof(int))
@@ -911,7 +911,7 @@ cdef int _chunk_run(Chunk* c, const double* p, const double* y0, const double* s
     c.run.rec.n = 0
     c.run.rec.cap = c.cap
     c.run.rec.width = c.width
-    c.run.rec.n_extra = extra_terms(c.method)
+    c.run.rec.n_extra = extra_terms(c.method, c.exact)
     c.run.rec.owned = True       # ours (malloc): the loops may grow and free it
     c.run.rec.rows = c.rows
     c.run.rec.mode = c.rmode
@@ -962,7 +962,7 @@ cdef void _chunk_record(Chunk* c, Rec* rec) noexcept nogil:
     rec.ns = ns
     rec.nm = m.n_modes
     rec.width = c.width
-    rec.nx = extra_terms(c.method)
+    rec.nx = extra_terms(c.method, c.exact)
     rec.y = c.scratch + ns + m.n_const + m.n_cache
     rec.out = rec.y + ns
 

@@ -2039,38 +2039,95 @@ cdef double _lti_rate(const double* A) noexcept nogil:
     return bound
 
 
+cdef inline void _exact_sizes(int nx, long* level) noexcept nogil:
+    # a level's block: the propagators (Phi, Gam) to s_j H, j = 1 .. nx + 1, then the extras'
+    # affine map X (nx _NS x _NS) and x0 (nx _NS)
+    level[0] = (2 * nx + 1) * (_NS * _NS + _NS)
+
+
+cdef int _exact_level(int nx, const double* W, double H, const double* A, const double* c,
+                      double* L) noexcept nogil:
+    """Complete a level's block L whose first propagator pair (to H/(nx + 1)) is in place:
+    its powers to the other nodes and the step's end, and the extras of a step of length H
+    as an affine map of the step's starting state; -1 when out of memory."""
+    cdef double* P = L
+    cdef double* G = L + (nx + 1) * _NS * _NS
+    cdef double* X = G + (nx + 1) * _NS
+    cdef double* x0 = X + nx * _NS * _NS
+    cdef double ys[_NS]
+    cdef double yn[_NS]
+    cdef double fs[_NS]
+    cdef double fn[_NS]
+    cdef double vals[8 * _NS]
+    cdef double ex[8 * _NS]
+    cdef int i, j
+    for j in range(1, nx + 1):
+        _matmul(_NS, P, P + (j - 1) * _NS * _NS, P + j * _NS * _NS)
+        _affine(P, G + (j - 1) * _NS, G, G + j * _NS)
+    if nx == 0:
+        return 0
+    # every input of fit_extras is affine in the step's starting state, so are the extras:
+    # X y + x0, fitted once from the zero state and the unit states
+    for i in range(_NS + 1):
+        memset(ys, 0, sizeof(ys))
+        if i < _NS:
+            ys[i] = 1.0
+        _affine(P + nx * _NS * _NS, ys, G + nx * _NS, yn)
+        _affine(A, ys, c, fs)
+        _affine(A, yn, c, fn)
+        for j in range(nx):
+            _affine(P + j * _NS * _NS, ys, G + j * _NS, vals + j * _NS)
+        fit_extras(nx, _NS, W, H, ys, yn, fs, fn, vals, x0 if i == _NS else ex)
+        if i < _NS:
+            for j in range(nx * _NS):
+                X[j * _NS + i] = ex[j]
+    for i in range(_NS):
+        for j in range(nx * _NS):
+            X[j * _NS + i] -= x0[j]
+    return 0
+
+
 cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
-    """[a, b] in exact steps, the model being linear and time invariant there (see above)."""
+    """[a, b] in exact steps, the model being linear and time invariant there (see above).
+
+    A fixed-step method's record takes its steps.  An adaptive method's record takes steps on
+    a dyadic ladder H_k = h0 2^k, h0 = (b - a)/2^K within the bound that the highest rate of
+    A sets for the interpolant (see above), and climbs it as the content fades: every step
+    compares its interpolant with the exact state at s = 1/(2 (n_extra + 1)) (the first node
+    of the level below, where the interpolant's error is near its largest), in the step
+    control's norm; a step whose error exceeds the tolerance is taken again one rung lower
+    (the lowest one always holds), and the next step is one rung higher when 2^p times the
+    error would still be within half of it (p = 4 + n_extra, the interpolant's order) and the
+    position is on that rung's grid.  A damped fast mode (a stiff contact) then sets the
+    record's density only while it rings."""
     cdef Ctx* ctx = run.ctx
     cdef Record* r = &run.rec
-    cdef int nx = r.n_extra, i, j, status = STATUS_OK
-    cdef double t = a, h, rate
+    cdef int nx = r.n_extra, i, j, k = 0, K = 0, kmax, built = -1, status = STATUS_OK
+    cdef bint adaptive = adaptive_method(run.method)
+    cdef double t = a, h, h0, H, rate, err = 0.0, grow
     cdef double y[_NS]
     cdef double yn[_NS]
     cdef double f[_NS]
     cdef double fn[_NS]
     cdef double c[_NS]
-    cdef double vals[8 * _NS]
+    cdef double yt[_NS]
+    cdef double yi[_NS]
+    cdef double ex[8 * _NS]
     cdef double W[64]
-    # A, then (Phi, Gam) at s_j h for j = 1 .. nx + 1 (the last: the whole step)
-    cdef double* A = <double*> malloc((nx + 2) * (_NS * _NS + _NS) * sizeof(double))
-    cdef double* P
-    cdef double* G
+    cdef double* A
+    cdef double* root          # the propagator pair to h0/(2 (nx + 1)): level 0's test
+    cdef double* levels
+    cdef double* L
+    cdef double* T
     cdef double* row
-    cdef double* X = NULL
-    cdef double* x0 = NULL
-    cdef double ys[_NS]
-    cdef double fs[_NS]
-    cdef double ex[4 * _NS]
-    cdef double sc
-    cdef long k, nstep, done = 0
+    cdef long size, idx = 0, n0, stride, done = 0
+    _exact_sizes(nx, &size)
+    if fit_matrix(nx, W) != 0:
+        return STATUS_BAD_MODEL
+    A = <double*> malloc((_NS * _NS + _NS * _NS + _NS) * sizeof(double))
     if A == NULL:
         return STATUS_NO_MEMORY
-    if fit_matrix(nx, W) != 0:
-        free(A)
-        return STATUS_BAD_MODEL
-    P = A + _NS * _NS
-    G = P + (nx + 1) * _NS * _NS
+    root = A + _NS * _NS
     memcpy(y, run.y, sizeof(y))
     rhs(t, y, f, ctx)
     jacobian(t, y, A, NULL, ctx)
@@ -2079,7 +2136,11 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
         c[i] = f[i]
         for j in range(_NS):
             c[i] -= A[i * _NS + j] * y[j]
-    if adaptive_method(run.method):
+    if not _finite(_NS, f):
+        run.t_fail = t
+        free(A)
+        return STATUS_NOT_FINITE
+    if adaptive:
         rate = _lti_rate(A)
         h = (pow(1e8 * fmax(run.rtol, 1e-14), 0.125) if nx == 4 else
              pow(1e4 * fmax(run.rtol, 1e-14), 0.2) if nx == 1 else
@@ -2087,77 +2148,92 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
         h = h / rate if rate > 0.0 else b - a
         if run.h_max > 0.0:
             h = fmin(h, run.h_max)
+        while K < 40 and (b - a) / (<double> (1L << K)) > h:
+            K += 1
+        n0 = 1L << K
+        kmax = K
+        while run.h_max > 0.0 and kmax > 0 and (b - a) / (<double> (1L << (K - kmax))) > run.h_max:
+            kmax -= 1
     else:
-        h = run.h
-    nstep = fixed_steps(a, b, h) if h < b - a else 1
-    if run.n_steps + nstep > run.max_steps:
-        run.t_fail = t
-        free(A)
-        return STATUS_MAX_STEPS
-    h = (b - a) / nstep
-    # the first node's propagator, its powers to the others and to the step's end: one
-    # matrix-vector product carries the state from point to point
-    if _expm_affine(A, c, h / (nx + 1), P, G) != 0 or not _finite(_NS, f):
-        run.t_fail = t
-        free(A)
-        return STATUS_NOT_FINITE
-    for j in range(1, nx + 1):
-        _matmul(_NS, P, P + (j - 1) * _NS * _NS, P + j * _NS * _NS)
-        _affine(P, G + (j - 1) * _NS, G, G + j * _NS)
-    if nx:
-        # the extras are affine in the step's starting state too (every input of fit_extras
-        # is): X y + x0, X and x0 fitted once from the zero state and the unit states, so a
-        # step costs matrix-vector products only
-        X = <double*> malloc((nx * _NS * _NS + nx * _NS) * sizeof(double))
-        if X == NULL:
+        n0 = fixed_steps(a, b, run.h) if run.h < b - a else 1
+        kmax = 0
+        if run.n_steps + n0 > run.max_steps:
+            run.t_fail = t
             free(A)
-            return STATUS_NO_MEMORY
-        x0 = X + nx * _NS * _NS
-        for i in range(_NS + 1):
-            memset(ys, 0, sizeof(ys))
-            if i < _NS:
-                ys[i] = 1.0
-            _affine(P + nx * _NS * _NS, ys, G + nx * _NS, yn)
-            _affine(A, ys, c, fs)
-            _affine(A, yn, c, fn)
-            for j in range(nx):
-                _affine(P + j * _NS * _NS, ys, G + j * _NS, vals + j * _NS)
-            fit_extras(nx, _NS, W, h, ys, yn, fs, fn, vals, x0 if i == _NS else ex)
-            if i < _NS:
-                for j in range(nx * _NS):
-                    X[j * _NS + i] = ex[j]
-        for i in range(_NS):
-            for j in range(nx * _NS):
-                X[j * _NS + i] -= x0[j]
+            return STATUS_MAX_STEPS
+    h0 = (b - a) / n0
+    levels = <double*> malloc((kmax + 1) * size * sizeof(double))
+    if levels == NULL:
+        free(A)
+        return STATUS_NO_MEMORY
+    if _expm_affine(A, c, 0.5 * h0 / (nx + 1), root, root + _NS * _NS) != 0:
+        run.t_fail = t
+        free(A)
+        free(levels)
+        return STATUS_NOT_FINITE
     if _rec_point(run, t, y, f) != 0:
         free(A)
-        free(X)
+        free(levels)
         return STATUS_NO_MEMORY
-    for k in range(nstep):
-        _affine(P + nx * _NS * _NS, y, G + nx * _NS, yn)
+    while idx < n0:
+        if k > built:
+            # the rung's first pair is the square of the test pair, the first pair one rung down
+            T = root if k == 0 else levels + (k - 1) * size
+            L = levels + k * size
+            _matmul(_NS, T, T, L)
+            _affine(T, T + (nx + 1 if k > 0 else 1) * _NS * _NS, T + (nx + 1 if k > 0 else 1) * _NS * _NS,
+                    L + (nx + 1) * _NS * _NS)
+            _exact_level(nx, W, h0 * (1L << k), A, c, L)
+            built = k
+        L = levels + k * size
+        stride = 1L << k
+        H = h0 * stride
+        _affine(L + nx * _NS * _NS, y, L + (nx + 1) * _NS * _NS + nx * _NS, yn)
         _affine(A, yn, c, fn)
-        t = a + (k + 1) * h if k + 1 < nstep else b
+        if nx:     # the step's extras, X y + x0
+            row = L + (nx + 1) * (_NS * _NS + _NS)
+            for j in range(nx * _NS):
+                H = row[nx * _NS * _NS + j]
+                for i in range(_NS):
+                    H += row[j * _NS + i] * y[i]
+                ex[j] = H
+            H = h0 * stride
+        if adaptive:
+            T = root if k == 0 else levels + (k - 1) * size
+            _affine(T, y, T + (nx + 1 if k > 0 else 1) * _NS * _NS, yt)
+            _dense(0.5 / (nx + 1), H, y, yn, f, fn, ex, nx, yi)
+            for i in range(_NS):
+                yi[i] -= yt[i]
+            err = _rms(yi, y, yn, run.rtol, run.atol)
+            if err > 1.0 and k > 0:
+                k -= 1
+                continue
+        t = a + (idx + stride) * h0 if idx + stride < n0 else b
         if not _finite(_NS, yn):
             run.t_fail = t
             status = STATUS_NOT_FINITE
             break
         if nx:     # the extras of the step from the last recorded point
-            row = r.rows + (r.n - 1) * r.width + 1 + 2 * _NS
-            for j in range(nx * _NS):
-                sc = x0[j]
-                for i in range(_NS):
-                    sc += X[j * _NS + i] * y[i]
-                row[j] = sc
+            memcpy(r.rows + (r.n - 1) * r.width + 1 + 2 * _NS, ex, nx * _NS * sizeof(double))
         memcpy(y, yn, sizeof(y))
         memcpy(f, fn, sizeof(f))
         if _rec_point(run, t, y, f) != 0:
             status = STATUS_NO_MEMORY
             break
+        idx += stride
         done += 1
+        if adaptive:
+            if run.n_steps + done >= run.max_steps and idx < n0:
+                run.t_fail = t
+                status = STATUS_MAX_STEPS
+                break
+            grow = err * (1L << (4 + nx))
+            if k < kmax and grow <= 0.5 and idx % (2 * stride) == 0:
+                k += 1
     run.n_steps += done
     memcpy(run.y, y, sizeof(y))
     free(A)
-    free(X)
+    free(levels)
     return status
 
 
