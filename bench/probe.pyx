@@ -85,6 +85,7 @@ def rk4_model(object capsule, double[::1] p, int[::1] law, double[::1] law_par, 
     ctx.k = kconst
     ctx.cache = kconst + m.n_const
     ctx.variant = 0
+    ctx.part = NULL
     if m.n_const + m.n_cache > 128:
         raise ValueError("too many parameter constants for the probe")
     m.prepare(&ctx)

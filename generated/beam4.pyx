@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0a052e31380f917b7daa6fae04d38fb612f9ae1f9184f2bad4818ed5763a7a53
-# Text hash: sha256:1536dcc993369b3314f5dfde1295c99b383a0a04a3d9a6216eab17d264108599
+# Derivation key: sha256:6e25ea9a93afa04809abea1bb9273779145819faee4fee24437a8e6e4b61362a
+# Text hash: sha256:4307a27cb895d79dfaf44bff70b0985765ff86ebd8a5cb26f39fb95b18ddc8db
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:64a7efcd9334b75fa69119f83904c9f9c8d47957738123d27eab23d9cd1693f4
@@ -86,7 +86,7 @@ cdef enum:
     _NQ = 6                  # coordinates Q
     _NC = 2                  # constraints Phi
     _NA = 8                  # unknowns of the augmented system: Q'', lambda
-    _ND = 4                  # independent coordinates (_IND), beside the _NC dependent ones (_DEP)
+    _ND = 4                  # independent coordinates, beside the _NC dependent ones (_partition)
     _NS = 12                 # states: Q, Q'
     _NCAM = 0
     _NM = 0
@@ -97,14 +97,15 @@ cdef enum:
     _FT_SYMBOLIC = 1            # and so is its df/dt
     _PROJECTS = 1               # the loops call project() after every accepted step
 
-cdef int _DEP[_NC]      # the dependent coordinates (ConstraintSolver.dependent)
-cdef int _IND[_ND]      # the independent ones
-_DEP[0] = 4  # xE
-_DEP[1] = 5  # theta
-_IND[0] = 0  # b1
-_IND[1] = 1  # b2
-_IND[2] = 2  # b3
-_IND[3] = 3  # b4
+# the declared coordinate partition (ConstraintSolver.dependent): the dependent coordinates,
+# then the independent ones; a run may choose another (Ctx.part, _partition)
+cdef int _PART[_NQ]
+_PART[0] = 4  # xE, dependent
+_PART[1] = 5  # theta, dependent
+_PART[2] = 0  # b1
+_PART[3] = 1  # b2
+_PART[4] = 2  # b3
+_PART[5] = 3  # b4
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up
@@ -2759,6 +2760,12 @@ cdef inline void _constraints(double t, const double* _y, double* _g, double* _J
     _gt[1] = _k340*_p9
 
 
+cdef inline const int* _partition(Ctx* ctx) noexcept nogil:
+    """The run's coordinate partition: _NC dependent coordinates, then _ND independent ones
+    (Ctx.part), or the declared one."""
+    return ctx.part if ctx.part != NULL else _PART
+
+
 cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noexcept nogil:
     """Coordinate partitioning: the state with its dependent coordinates recovered from the
     independent ones by Newton's method on Phi = 0, started from the values the state carries,
@@ -2768,6 +2775,8 @@ cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noex
     cdef double _J[_NC * _NQ]
     cdef double _gt[_NC]
     cdef double _D[_NC * _NC]
+    cdef const int* _dep = _partition(ctx)
+    cdef const int* _ind = _dep + _NC
     cdef int i, j, it
     cdef double step
     for i in range(_NS):
@@ -2777,13 +2786,13 @@ cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noex
         for i in range(_NC):
             _g[i] = -_g[i]
             for j in range(_NC):
-                _D[i * _NC + j] = _J[i * _NQ + _DEP[j]]
+                _D[i * _NC + j] = _J[i * _NQ + _dep[j]]
         if solve_inplace(_NC, _D, _g) != 0:
             return 2
         step = 0.0
         for j in range(_NC):
-            _yc[_DEP[j]] += _g[j]
-            step = max(step, fabs(_g[j]) / (1.0 + fabs(_yc[_DEP[j]])))
+            _yc[_dep[j]] += _g[j]
+            step = max(step, fabs(_g[j]) / (1.0 + fabs(_yc[_dep[j]])))
         if step < 1e-15:
             break
     else:
@@ -2792,13 +2801,13 @@ cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noex
     for i in range(_NC):
         _g[i] = -_gt[i]
         for j in range(_ND):
-            _g[i] -= _J[i * _NQ + _IND[j]] * _yc[_NQ + _IND[j]]
+            _g[i] -= _J[i * _NQ + _ind[j]] * _yc[_NQ + _ind[j]]
         for j in range(_NC):
-            _D[i * _NC + j] = _J[i * _NQ + _DEP[j]]
+            _D[i * _NC + j] = _J[i * _NQ + _dep[j]]
     if solve_inplace(_NC, _D, _g) != 0:
         return 2
     for j in range(_NC):
-        _yc[_NQ + _DEP[j]] = _g[j]
+        _yc[_NQ + _dep[j]] = _g[j]
     return 0
 
 
@@ -4940,6 +4949,8 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _ut[_NC]              # dQ'_d/dt
     cdef int _piv[_NA]
     cdef int _pd[_NC]
+    cdef const int* _dep = _partition(ctx)
+    cdef const int* _ind = _dep + _NC
     cdef int i, j, k, c, form = _formulation(ctx)
     cdef double w, v
     if _prepared(t, _yc, _y, _A, _acc, &w, ctx) != 0 or lu_factor(_NA, _A, _piv) != 0:
@@ -4979,14 +4990,14 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     # partitioned: Z, dQ_d/dt, then U and dQ'_d/dt through dC/dQ
     for i in range(_NC):
         for k in range(_NC):
-            _D[i * _NC + k] = _P[i * _NQ + _DEP[k]]
+            _D[i * _NC + k] = _P[i * _NQ + _dep[k]]
     if lu_factor(_NC, _D, _pd) != 0:
         for i in range(_NS * _NS):
             _J[i] = 0.0 / 0.0
         return
     for j in range(_ND):
         for i in range(_NC):
-            _col[i] = -_P[i * _NQ + _IND[j]]
+            _col[i] = -_P[i * _NQ + _ind[j]]
         lu_solve(_NC, _D, _pd, _col)
         for k in range(_NC):
             _Z[k * _ND + j] = _col[k]
@@ -4995,9 +5006,9 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     lu_solve(_NC, _D, _pd, _zt)
     for j in range(_ND):
         for i in range(_NC):
-            v = _CQ[i * _NQ + _IND[j]]
+            v = _CQ[i * _NQ + _ind[j]]
             for k in range(_NC):
-                v += _CQ[i * _NQ + _DEP[k]] * _Z[k * _ND + j]
+                v += _CQ[i * _NQ + _dep[k]] * _Z[k * _ND + j]
             _col[i] = -v
         lu_solve(_NC, _D, _pd, _col)
         for k in range(_NC):
@@ -5005,36 +5016,36 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     for i in range(_NC):
         v = _Ct[i]
         for k in range(_NC):
-            v += _CQ[i * _NQ + _DEP[k]] * _zt[k]
+            v += _CQ[i * _NQ + _dep[k]] * _zt[k]
         _ut[i] = -v
     lu_solve(_NC, _D, _pd, _ut)
     for j in range(_ND):
-        _J[_IND[j] * _NS + _NQ + _IND[j]] = 1.0
+        _J[_ind[j] * _NS + _NQ + _ind[j]] = 1.0
         for k in range(_NC):
-            _J[_DEP[k] * _NS + _IND[j]] = _U[k * _ND + j]
-            _J[_DEP[k] * _NS + _NQ + _IND[j]] = _Z[k * _ND + j]
+            _J[_dep[k] * _NS + _ind[j]] = _U[k * _ND + j]
+            _J[_dep[k] * _NS + _NQ + _ind[j]] = _Z[k * _ND + j]
     for i in range(_NQ):
         for j in range(_ND):
             # through Q_i itself, Q_d (Z) and Q'_d (U); and for Q'_i through Q'_d (Z)
-            v = _G[i * (_NS + 1) + _IND[j]]
+            v = _G[i * (_NS + 1) + _ind[j]]
             for k in range(_NC):
-                v += (_G[i * (_NS + 1) + _DEP[k]] * _Z[k * _ND + j]
-                      + _G[i * (_NS + 1) + _NQ + _DEP[k]] * _U[k * _ND + j])
-            _J[(_NQ + i) * _NS + _IND[j]] = v
-            v = _G[i * (_NS + 1) + _NQ + _IND[j]]
+                v += (_G[i * (_NS + 1) + _dep[k]] * _Z[k * _ND + j]
+                      + _G[i * (_NS + 1) + _NQ + _dep[k]] * _U[k * _ND + j])
+            _J[(_NQ + i) * _NS + _ind[j]] = v
+            v = _G[i * (_NS + 1) + _NQ + _ind[j]]
             for k in range(_NC):
-                v += _G[i * (_NS + 1) + _NQ + _DEP[k]] * _Z[k * _ND + j]
-            _J[(_NQ + i) * _NS + _NQ + _IND[j]] = v
+                v += _G[i * (_NS + 1) + _NQ + _dep[k]] * _Z[k * _ND + j]
+            _J[(_NQ + i) * _NS + _NQ + _ind[j]] = v
     if _ft != NULL:
         for i in range(_NS):
             _ft[i] = 0.0
         for k in range(_NC):
-            _ft[_DEP[k]] = _ut[k]
+            _ft[_dep[k]] = _ut[k]
         for i in range(_NQ):
             v = _G[i * (_NS + 1) + _NS]
             for k in range(_NC):
-                v += (_G[i * (_NS + 1) + _DEP[k]] * _zt[k]
-                      + _G[i * (_NS + 1) + _NQ + _DEP[k]] * _ut[k])
+                v += (_G[i * (_NS + 1) + _dep[k]] * _zt[k]
+                      + _G[i * (_NS + 1) + _NQ + _dep[k]] * _ut[k])
             _ft[_NQ + i] = v
 
 
@@ -5835,12 +5846,14 @@ def cam_time_affine(p):
 
 
 def consistent_state(double[::1] p, double[::1] k, int[::1] law, double[::1] law_par,
-                     int[::1] mode, double t, double[::1] y, double[::1] out):
-    """The state y with its dependent coordinates (_DEP) and their rates recovered from the
+                     int[::1] mode, double t, double[::1] y, double[::1] out,
+                     const int[::1] part=None):
+    """The state y with its dependent coordinates and their rates recovered from the
     independent ones (Newton's method on Phi = 0, then Phi_Q Q' = -dPhi/dt), into out;
     returns (_recover's status: 0, 1 without convergence, 2 singular; the largest |Phi| and
     |Phi'| of y itself).
-    ``k``: n_const + n_cache + 1 doubles of scratch, ``mode``: the modes buffer."""
+    ``k``: n_const + n_cache + 1 doubles of scratch, ``mode``: the modes buffer, ``part``:
+    the coordinate partition (Ctx.part, checked by the caller), None for the declared one."""
     cdef Ctx ctx
     cdef double _g[_NC]
     cdef double _J[_NC * _NQ]
@@ -5854,6 +5867,7 @@ def consistent_state(double[::1] p, double[::1] k, int[::1] law, double[::1] law
     ctx.law_par = &law_par[0]
     ctx.mode = &mode[0]
     ctx.variant = 0
+    ctx.part = NULL if part is None else &part[0]
     prepare(&ctx)
     update_modes(t, &y[0], &ctx)
     _constraints(t, &y[0], _g, _J, _gt, &ctx)

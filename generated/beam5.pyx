@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a784e3c4103544d2e4f9ad9cb1bfc9c32e1dbaa0902f310e592fa35a01e2834b
-# Text hash: sha256:c8e546f99a88dbf69cbdd49757c73f7ddb1b64c233426aa41913bd12154b7b33
+# Derivation key: sha256:f1c813b20f02791c81dc0a6dfc13b53bb8e2542010624241984fa4169f6f7708
+# Text hash: sha256:0acc7976828e18365f3c49de8719df08b0ad008f8df758d7487ddf4108f3d5d5
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:611aaf7763e70cfb79e109e16ea0ebff594dfa47598c04509a2d122462a61666
@@ -86,7 +86,7 @@ cdef enum:
     _NQ = 7                  # coordinates Q
     _NC = 2                  # constraints Phi
     _NA = 9                  # unknowns of the augmented system: Q'', lambda
-    _ND = 5                  # independent coordinates (_IND), beside the _NC dependent ones (_DEP)
+    _ND = 5                  # independent coordinates, beside the _NC dependent ones (_partition)
     _NS = 14                 # states: Q, Q'
     _NCAM = 0
     _NM = 0
@@ -97,15 +97,16 @@ cdef enum:
     _FT_SYMBOLIC = 1            # and so is its df/dt
     _PROJECTS = 1               # the loops call project() after every accepted step
 
-cdef int _DEP[_NC]      # the dependent coordinates (ConstraintSolver.dependent)
-cdef int _IND[_ND]      # the independent ones
-_DEP[0] = 5  # xE
-_DEP[1] = 6  # theta
-_IND[0] = 0  # b1
-_IND[1] = 1  # b2
-_IND[2] = 2  # b3
-_IND[3] = 3  # b4
-_IND[4] = 4  # b5
+# the declared coordinate partition (ConstraintSolver.dependent): the dependent coordinates,
+# then the independent ones; a run may choose another (Ctx.part, _partition)
+cdef int _PART[_NQ]
+_PART[0] = 5  # xE, dependent
+_PART[1] = 6  # theta, dependent
+_PART[2] = 0  # b1
+_PART[3] = 1  # b2
+_PART[4] = 2  # b3
+_PART[5] = 3  # b4
+_PART[6] = 4  # b5
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up
@@ -3760,6 +3761,12 @@ cdef inline void _constraints(double t, const double* _y, double* _g, double* _J
     _gt[1] = _k481*_p11
 
 
+cdef inline const int* _partition(Ctx* ctx) noexcept nogil:
+    """The run's coordinate partition: _NC dependent coordinates, then _ND independent ones
+    (Ctx.part), or the declared one."""
+    return ctx.part if ctx.part != NULL else _PART
+
+
 cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noexcept nogil:
     """Coordinate partitioning: the state with its dependent coordinates recovered from the
     independent ones by Newton's method on Phi = 0, started from the values the state carries,
@@ -3769,6 +3776,8 @@ cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noex
     cdef double _J[_NC * _NQ]
     cdef double _gt[_NC]
     cdef double _D[_NC * _NC]
+    cdef const int* _dep = _partition(ctx)
+    cdef const int* _ind = _dep + _NC
     cdef int i, j, it
     cdef double step
     for i in range(_NS):
@@ -3778,13 +3787,13 @@ cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noex
         for i in range(_NC):
             _g[i] = -_g[i]
             for j in range(_NC):
-                _D[i * _NC + j] = _J[i * _NQ + _DEP[j]]
+                _D[i * _NC + j] = _J[i * _NQ + _dep[j]]
         if solve_inplace(_NC, _D, _g) != 0:
             return 2
         step = 0.0
         for j in range(_NC):
-            _yc[_DEP[j]] += _g[j]
-            step = max(step, fabs(_g[j]) / (1.0 + fabs(_yc[_DEP[j]])))
+            _yc[_dep[j]] += _g[j]
+            step = max(step, fabs(_g[j]) / (1.0 + fabs(_yc[_dep[j]])))
         if step < 1e-15:
             break
     else:
@@ -3793,13 +3802,13 @@ cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noex
     for i in range(_NC):
         _g[i] = -_gt[i]
         for j in range(_ND):
-            _g[i] -= _J[i * _NQ + _IND[j]] * _yc[_NQ + _IND[j]]
+            _g[i] -= _J[i * _NQ + _ind[j]] * _yc[_NQ + _ind[j]]
         for j in range(_NC):
-            _D[i * _NC + j] = _J[i * _NQ + _DEP[j]]
+            _D[i * _NC + j] = _J[i * _NQ + _dep[j]]
     if solve_inplace(_NC, _D, _g) != 0:
         return 2
     for j in range(_NC):
-        _yc[_NQ + _DEP[j]] = _g[j]
+        _yc[_NQ + _dep[j]] = _g[j]
     return 0
 
 
@@ -6597,6 +6606,8 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _ut[_NC]              # dQ'_d/dt
     cdef int _piv[_NA]
     cdef int _pd[_NC]
+    cdef const int* _dep = _partition(ctx)
+    cdef const int* _ind = _dep + _NC
     cdef int i, j, k, c, form = _formulation(ctx)
     cdef double w, v
     if _prepared(t, _yc, _y, _A, _acc, &w, ctx) != 0 or lu_factor(_NA, _A, _piv) != 0:
@@ -6636,14 +6647,14 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     # partitioned: Z, dQ_d/dt, then U and dQ'_d/dt through dC/dQ
     for i in range(_NC):
         for k in range(_NC):
-            _D[i * _NC + k] = _P[i * _NQ + _DEP[k]]
+            _D[i * _NC + k] = _P[i * _NQ + _dep[k]]
     if lu_factor(_NC, _D, _pd) != 0:
         for i in range(_NS * _NS):
             _J[i] = 0.0 / 0.0
         return
     for j in range(_ND):
         for i in range(_NC):
-            _col[i] = -_P[i * _NQ + _IND[j]]
+            _col[i] = -_P[i * _NQ + _ind[j]]
         lu_solve(_NC, _D, _pd, _col)
         for k in range(_NC):
             _Z[k * _ND + j] = _col[k]
@@ -6652,9 +6663,9 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     lu_solve(_NC, _D, _pd, _zt)
     for j in range(_ND):
         for i in range(_NC):
-            v = _CQ[i * _NQ + _IND[j]]
+            v = _CQ[i * _NQ + _ind[j]]
             for k in range(_NC):
-                v += _CQ[i * _NQ + _DEP[k]] * _Z[k * _ND + j]
+                v += _CQ[i * _NQ + _dep[k]] * _Z[k * _ND + j]
             _col[i] = -v
         lu_solve(_NC, _D, _pd, _col)
         for k in range(_NC):
@@ -6662,36 +6673,36 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     for i in range(_NC):
         v = _Ct[i]
         for k in range(_NC):
-            v += _CQ[i * _NQ + _DEP[k]] * _zt[k]
+            v += _CQ[i * _NQ + _dep[k]] * _zt[k]
         _ut[i] = -v
     lu_solve(_NC, _D, _pd, _ut)
     for j in range(_ND):
-        _J[_IND[j] * _NS + _NQ + _IND[j]] = 1.0
+        _J[_ind[j] * _NS + _NQ + _ind[j]] = 1.0
         for k in range(_NC):
-            _J[_DEP[k] * _NS + _IND[j]] = _U[k * _ND + j]
-            _J[_DEP[k] * _NS + _NQ + _IND[j]] = _Z[k * _ND + j]
+            _J[_dep[k] * _NS + _ind[j]] = _U[k * _ND + j]
+            _J[_dep[k] * _NS + _NQ + _ind[j]] = _Z[k * _ND + j]
     for i in range(_NQ):
         for j in range(_ND):
             # through Q_i itself, Q_d (Z) and Q'_d (U); and for Q'_i through Q'_d (Z)
-            v = _G[i * (_NS + 1) + _IND[j]]
+            v = _G[i * (_NS + 1) + _ind[j]]
             for k in range(_NC):
-                v += (_G[i * (_NS + 1) + _DEP[k]] * _Z[k * _ND + j]
-                      + _G[i * (_NS + 1) + _NQ + _DEP[k]] * _U[k * _ND + j])
-            _J[(_NQ + i) * _NS + _IND[j]] = v
-            v = _G[i * (_NS + 1) + _NQ + _IND[j]]
+                v += (_G[i * (_NS + 1) + _dep[k]] * _Z[k * _ND + j]
+                      + _G[i * (_NS + 1) + _NQ + _dep[k]] * _U[k * _ND + j])
+            _J[(_NQ + i) * _NS + _ind[j]] = v
+            v = _G[i * (_NS + 1) + _NQ + _ind[j]]
             for k in range(_NC):
-                v += _G[i * (_NS + 1) + _NQ + _DEP[k]] * _Z[k * _ND + j]
-            _J[(_NQ + i) * _NS + _NQ + _IND[j]] = v
+                v += _G[i * (_NS + 1) + _NQ + _dep[k]] * _Z[k * _ND + j]
+            _J[(_NQ + i) * _NS + _NQ + _ind[j]] = v
     if _ft != NULL:
         for i in range(_NS):
             _ft[i] = 0.0
         for k in range(_NC):
-            _ft[_DEP[k]] = _ut[k]
+            _ft[_dep[k]] = _ut[k]
         for i in range(_NQ):
             v = _G[i * (_NS + 1) + _NS]
             for k in range(_NC):
-                v += (_G[i * (_NS + 1) + _DEP[k]] * _zt[k]
-                      + _G[i * (_NS + 1) + _NQ + _DEP[k]] * _ut[k])
+                v += (_G[i * (_NS + 1) + _dep[k]] * _zt[k]
+                      + _G[i * (_NS + 1) + _NQ + _dep[k]] * _ut[k])
             _ft[_NQ + i] = v
 
 
@@ -7776,12 +7787,14 @@ def cam_time_affine(p):
 
 
 def consistent_state(double[::1] p, double[::1] k, int[::1] law, double[::1] law_par,
-                     int[::1] mode, double t, double[::1] y, double[::1] out):
-    """The state y with its dependent coordinates (_DEP) and their rates recovered from the
+                     int[::1] mode, double t, double[::1] y, double[::1] out,
+                     const int[::1] part=None):
+    """The state y with its dependent coordinates and their rates recovered from the
     independent ones (Newton's method on Phi = 0, then Phi_Q Q' = -dPhi/dt), into out;
     returns (_recover's status: 0, 1 without convergence, 2 singular; the largest |Phi| and
     |Phi'| of y itself).
-    ``k``: n_const + n_cache + 1 doubles of scratch, ``mode``: the modes buffer."""
+    ``k``: n_const + n_cache + 1 doubles of scratch, ``mode``: the modes buffer, ``part``:
+    the coordinate partition (Ctx.part, checked by the caller), None for the declared one."""
     cdef Ctx ctx
     cdef double _g[_NC]
     cdef double _J[_NC * _NQ]
@@ -7795,6 +7808,7 @@ def consistent_state(double[::1] p, double[::1] k, int[::1] law, double[::1] law
     ctx.law_par = &law_par[0]
     ctx.mode = &mode[0]
     ctx.variant = 0
+    ctx.part = NULL if part is None else &part[0]
     prepare(&ctx)
     update_modes(t, &y[0], &ctx)
     _constraints(t, &y[0], _g, _J, _gt, &ctx)

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b53c2b609692771e171cd4586345e182c3b4da361c118084d0e5703f473a90ae
-# Text hash: sha256:638b6edadb0df18bfe6c159e61e0065446aa81f642017c88ca380075629201af
+# Derivation key: sha256:2d58b09a371abe0e68fdb0eeb11c90fe0fff6e57e08e7e3a3f2a1c355b046d6d
+# Text hash: sha256:5e5af4565bef17b9a49812d104185d9397bec62bcd5687e8c15aca179187a524
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:ba76292f91dfbbd6b8d39b0bd7d40b2000e3a575b4d3c5fd9aa69df4a2837883
@@ -86,7 +86,7 @@ cdef enum:
     _NQ = 8                  # coordinates Q
     _NC = 2                  # constraints Phi
     _NA = 10                  # unknowns of the augmented system: Q'', lambda
-    _ND = 6                  # independent coordinates (_IND), beside the _NC dependent ones (_DEP)
+    _ND = 6                  # independent coordinates, beside the _NC dependent ones (_partition)
     _NS = 16                 # states: Q, Q'
     _NCAM = 0
     _NM = 0
@@ -97,16 +97,17 @@ cdef enum:
     _FT_SYMBOLIC = 1            # and so is its df/dt
     _PROJECTS = 1               # the loops call project() after every accepted step
 
-cdef int _DEP[_NC]      # the dependent coordinates (ConstraintSolver.dependent)
-cdef int _IND[_ND]      # the independent ones
-_DEP[0] = 6  # xE
-_DEP[1] = 7  # theta
-_IND[0] = 0  # b1
-_IND[1] = 1  # b2
-_IND[2] = 2  # b3
-_IND[3] = 3  # b4
-_IND[4] = 4  # b5
-_IND[5] = 5  # b6
+# the declared coordinate partition (ConstraintSolver.dependent): the dependent coordinates,
+# then the independent ones; a run may choose another (Ctx.part, _partition)
+cdef int _PART[_NQ]
+_PART[0] = 6  # xE, dependent
+_PART[1] = 7  # theta, dependent
+_PART[2] = 0  # b1
+_PART[3] = 1  # b2
+_PART[4] = 2  # b3
+_PART[5] = 3  # b4
+_PART[6] = 4  # b5
+_PART[7] = 5  # b6
 
 cdef int _EDIR[_NE1]    # crossing direction of each event: +1 upward, -1 downward
 _EDIR[0] = 1  # segment_up
@@ -4986,6 +4987,12 @@ cdef inline void _constraints(double t, const double* _y, double* _g, double* _J
     _gt[1] = _k657*_p13
 
 
+cdef inline const int* _partition(Ctx* ctx) noexcept nogil:
+    """The run's coordinate partition: _NC dependent coordinates, then _ND independent ones
+    (Ctx.part), or the declared one."""
+    return ctx.part if ctx.part != NULL else _PART
+
+
 cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noexcept nogil:
     """Coordinate partitioning: the state with its dependent coordinates recovered from the
     independent ones by Newton's method on Phi = 0, started from the values the state carries,
@@ -4995,6 +5002,8 @@ cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noex
     cdef double _J[_NC * _NQ]
     cdef double _gt[_NC]
     cdef double _D[_NC * _NC]
+    cdef const int* _dep = _partition(ctx)
+    cdef const int* _ind = _dep + _NC
     cdef int i, j, it
     cdef double step
     for i in range(_NS):
@@ -5004,13 +5013,13 @@ cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noex
         for i in range(_NC):
             _g[i] = -_g[i]
             for j in range(_NC):
-                _D[i * _NC + j] = _J[i * _NQ + _DEP[j]]
+                _D[i * _NC + j] = _J[i * _NQ + _dep[j]]
         if solve_inplace(_NC, _D, _g) != 0:
             return 2
         step = 0.0
         for j in range(_NC):
-            _yc[_DEP[j]] += _g[j]
-            step = max(step, fabs(_g[j]) / (1.0 + fabs(_yc[_DEP[j]])))
+            _yc[_dep[j]] += _g[j]
+            step = max(step, fabs(_g[j]) / (1.0 + fabs(_yc[_dep[j]])))
         if step < 1e-15:
             break
     else:
@@ -5019,13 +5028,13 @@ cdef inline int _recover(double t, const double* _y, double* _yc, Ctx* ctx) noex
     for i in range(_NC):
         _g[i] = -_gt[i]
         for j in range(_ND):
-            _g[i] -= _J[i * _NQ + _IND[j]] * _yc[_NQ + _IND[j]]
+            _g[i] -= _J[i * _NQ + _ind[j]] * _yc[_NQ + _ind[j]]
         for j in range(_NC):
-            _D[i * _NC + j] = _J[i * _NQ + _DEP[j]]
+            _D[i * _NC + j] = _J[i * _NQ + _dep[j]]
     if solve_inplace(_NC, _D, _g) != 0:
         return 2
     for j in range(_NC):
-        _yc[_NQ + _DEP[j]] = _g[j]
+        _yc[_NQ + _dep[j]] = _g[j]
     return 0
 
 
@@ -8702,6 +8711,8 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _ut[_NC]              # dQ'_d/dt
     cdef int _piv[_NA]
     cdef int _pd[_NC]
+    cdef const int* _dep = _partition(ctx)
+    cdef const int* _ind = _dep + _NC
     cdef int i, j, k, c, form = _formulation(ctx)
     cdef double w, v
     if _prepared(t, _yc, _y, _A, _acc, &w, ctx) != 0 or lu_factor(_NA, _A, _piv) != 0:
@@ -8741,14 +8752,14 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     # partitioned: Z, dQ_d/dt, then U and dQ'_d/dt through dC/dQ
     for i in range(_NC):
         for k in range(_NC):
-            _D[i * _NC + k] = _P[i * _NQ + _DEP[k]]
+            _D[i * _NC + k] = _P[i * _NQ + _dep[k]]
     if lu_factor(_NC, _D, _pd) != 0:
         for i in range(_NS * _NS):
             _J[i] = 0.0 / 0.0
         return
     for j in range(_ND):
         for i in range(_NC):
-            _col[i] = -_P[i * _NQ + _IND[j]]
+            _col[i] = -_P[i * _NQ + _ind[j]]
         lu_solve(_NC, _D, _pd, _col)
         for k in range(_NC):
             _Z[k * _ND + j] = _col[k]
@@ -8757,9 +8768,9 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     lu_solve(_NC, _D, _pd, _zt)
     for j in range(_ND):
         for i in range(_NC):
-            v = _CQ[i * _NQ + _IND[j]]
+            v = _CQ[i * _NQ + _ind[j]]
             for k in range(_NC):
-                v += _CQ[i * _NQ + _DEP[k]] * _Z[k * _ND + j]
+                v += _CQ[i * _NQ + _dep[k]] * _Z[k * _ND + j]
             _col[i] = -v
         lu_solve(_NC, _D, _pd, _col)
         for k in range(_NC):
@@ -8767,36 +8778,36 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     for i in range(_NC):
         v = _Ct[i]
         for k in range(_NC):
-            v += _CQ[i * _NQ + _DEP[k]] * _zt[k]
+            v += _CQ[i * _NQ + _dep[k]] * _zt[k]
         _ut[i] = -v
     lu_solve(_NC, _D, _pd, _ut)
     for j in range(_ND):
-        _J[_IND[j] * _NS + _NQ + _IND[j]] = 1.0
+        _J[_ind[j] * _NS + _NQ + _ind[j]] = 1.0
         for k in range(_NC):
-            _J[_DEP[k] * _NS + _IND[j]] = _U[k * _ND + j]
-            _J[_DEP[k] * _NS + _NQ + _IND[j]] = _Z[k * _ND + j]
+            _J[_dep[k] * _NS + _ind[j]] = _U[k * _ND + j]
+            _J[_dep[k] * _NS + _NQ + _ind[j]] = _Z[k * _ND + j]
     for i in range(_NQ):
         for j in range(_ND):
             # through Q_i itself, Q_d (Z) and Q'_d (U); and for Q'_i through Q'_d (Z)
-            v = _G[i * (_NS + 1) + _IND[j]]
+            v = _G[i * (_NS + 1) + _ind[j]]
             for k in range(_NC):
-                v += (_G[i * (_NS + 1) + _DEP[k]] * _Z[k * _ND + j]
-                      + _G[i * (_NS + 1) + _NQ + _DEP[k]] * _U[k * _ND + j])
-            _J[(_NQ + i) * _NS + _IND[j]] = v
-            v = _G[i * (_NS + 1) + _NQ + _IND[j]]
+                v += (_G[i * (_NS + 1) + _dep[k]] * _Z[k * _ND + j]
+                      + _G[i * (_NS + 1) + _NQ + _dep[k]] * _U[k * _ND + j])
+            _J[(_NQ + i) * _NS + _ind[j]] = v
+            v = _G[i * (_NS + 1) + _NQ + _ind[j]]
             for k in range(_NC):
-                v += _G[i * (_NS + 1) + _NQ + _DEP[k]] * _Z[k * _ND + j]
-            _J[(_NQ + i) * _NS + _NQ + _IND[j]] = v
+                v += _G[i * (_NS + 1) + _NQ + _dep[k]] * _Z[k * _ND + j]
+            _J[(_NQ + i) * _NS + _NQ + _ind[j]] = v
     if _ft != NULL:
         for i in range(_NS):
             _ft[i] = 0.0
         for k in range(_NC):
-            _ft[_DEP[k]] = _ut[k]
+            _ft[_dep[k]] = _ut[k]
         for i in range(_NQ):
             v = _G[i * (_NS + 1) + _NS]
             for k in range(_NC):
-                v += (_G[i * (_NS + 1) + _DEP[k]] * _zt[k]
-                      + _G[i * (_NS + 1) + _NQ + _DEP[k]] * _ut[k])
+                v += (_G[i * (_NS + 1) + _dep[k]] * _zt[k]
+                      + _G[i * (_NS + 1) + _NQ + _dep[k]] * _ut[k])
             _ft[_NQ + i] = v
 
 
@@ -10238,12 +10249,14 @@ def cam_time_affine(p):
 
 
 def consistent_state(double[::1] p, double[::1] k, int[::1] law, double[::1] law_par,
-                     int[::1] mode, double t, double[::1] y, double[::1] out):
-    """The state y with its dependent coordinates (_DEP) and their rates recovered from the
+                     int[::1] mode, double t, double[::1] y, double[::1] out,
+                     const int[::1] part=None):
+    """The state y with its dependent coordinates and their rates recovered from the
     independent ones (Newton's method on Phi = 0, then Phi_Q Q' = -dPhi/dt), into out;
     returns (_recover's status: 0, 1 without convergence, 2 singular; the largest |Phi| and
     |Phi'| of y itself).
-    ``k``: n_const + n_cache + 1 doubles of scratch, ``mode``: the modes buffer."""
+    ``k``: n_const + n_cache + 1 doubles of scratch, ``mode``: the modes buffer, ``part``:
+    the coordinate partition (Ctx.part, checked by the caller), None for the declared one."""
     cdef Ctx ctx
     cdef double _g[_NC]
     cdef double _J[_NC * _NQ]
@@ -10257,6 +10270,7 @@ def consistent_state(double[::1] p, double[::1] k, int[::1] law, double[::1] law
     ctx.law_par = &law_par[0]
     ctx.mode = &mode[0]
     ctx.variant = 0
+    ctx.part = NULL if part is None else &part[0]
     prepare(&ctx)
     update_modes(t, &y[0], &ctx)
     _constraints(t, &y[0], _g, _J, _gt, &ctx)

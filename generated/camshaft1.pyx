@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:cc5d2e598631341785457233f4d02d0d842be108285037da75fa62cf7584c29d
-# Text hash: sha256:d8c17c05c789280a18f4bc11a91f0f055bced86ed89ada6309652655a469f564
+# Derivation key: sha256:dec7f0f1081982f237dbf9d6052bad998ddb8c173491e9c0f0509211a88beccf
+# Text hash: sha256:27ae6094c17af85e86a1a84f02b9615577ccd1449495df5c07b547021cae15c2
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233

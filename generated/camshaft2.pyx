@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:3238f2e00f5b49bb5db51f5a20e5bd96d1e6b9263575e0ec48cb09c2c4cf83bd
-# Text hash: sha256:a4a0407d6f9d4be852269f8da27d805c9ea6f3094c331012621c1ef18f48f7e6
+# Derivation key: sha256:131a5ea5a834c6311a0600ba08682ab15ca21d9f6a7a4444e1400e12db1a1e60
+# Text hash: sha256:26d95bd98132ad7eb3a8c9f2b54fc4b32ff6d5b00f25028ddbc45ddc18675776
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a

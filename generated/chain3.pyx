@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:965e274768df1e17b3796c8038ccbce7cf399a0651ddd50b30bd99f3782a829b
-# Text hash: sha256:f061967fdc63ebb6e141fc90de418927d93b17114ad8863b39c86f3520f3bf96
+# Derivation key: sha256:6c1398cf1c883289a6998e6026b191324e22be301cecce1697e140412992227c
+# Text hash: sha256:569bcab3ec93320ef84e16937182ab656a2e99497a5b3fb4a1fa05354d1b84b2
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:39b0083110615af2c3dc858db1810ca600b7b3da574fe16f3fec6dd9e54f5fdf
-# Text hash: sha256:8831033e986839e1079ef02f6ee87a1926f440dd2f693d1fbd7a720b8b7f22d8
+# Derivation key: sha256:429131ed704a23cfe4ab69cd250bfc29a0212c8087616e051d43cea98786341d
+# Text hash: sha256:4537a5c70b34ec622334c87f11ab35112be850113c10dd7e29bc2a9c281b20c5
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:70040e466f97bc4eaa21195f33b07514bb89dc43aa25ab92b5a98c684e946450
-# Text hash: sha256:ab8d39f17b23f87d30453e7eaec301c08e97f77a66a07e507c4c3ae2bb20e914
+# Derivation key: sha256:d3690b7d4ee44532c18b53d34cdac167d516bd0c53206772811e0fc2f21a69e1
+# Text hash: sha256:9282e95e8365f56091fc53e8f4a4c1e842073ef09b6d9050eaf117d74277255c
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:244320aa74994aa9e669e9639536961ba92c6b1c23be07561292a0c9dea13c5c

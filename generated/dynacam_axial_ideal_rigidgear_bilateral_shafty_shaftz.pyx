@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a1ff024f52c9e265cd16b07bf29c64b946bbb4278558cbc105612e3b1235089a
-# Text hash: sha256:87f2f7c0f78307b502bb705b98e3e15c169b4712950a7227898b51a3c47c2d25
+# Derivation key: sha256:78730d12a5672c835a0053712bb1b12973117f37a06b46a58960171272426635
+# Text hash: sha256:3e8245b8bfff21eebeaebbb444c974c87af76d253f4b88a9514db08c4da725bd
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c635b4663215f71f8c14a94757471dae164be2481d8198c60712fbf66146cec4
-# Text hash: sha256:12ac97f5d4a92c95e00b965a7754b094d01ee468df083313fdb3cd9bfb6e9973
+# Derivation key: sha256:eaf279e1612d5adfdde68246308dedd6e5a68c833d453a89d5aa974b112e89a9
+# Text hash: sha256:34625721361e6783a73c773b97d319d25e452ea42225758c4696a2fea4d3ad90
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:747e34dbea18a7d307dc7101158b4419fb0642de73f52917507a7d1b1d7004c3

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0f6fb60fe41b692376ad29ff5a63dcff4bb88451c32880f814218be008eb8e5d
-# Text hash: sha256:735e6e816224a2a7d8b7f59647d49d2292b828b4491a45c582da952fc525fc26
+# Derivation key: sha256:6534d58377f2cf6ff127f48b35cc0eaebb10d231c11e4e00d655704646787195
+# Text hash: sha256:fdb6000e55e81655d5178eb0aea7cee36d20b8830a9a7ec14f8806ee6810b5d5
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:478faccf329f7294d2cd47f536ad5f78fa53fe5d590d1d87b6cb5079502bd98d

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:bcf00bf49e0f05016cdf8aad01c69b2bbe9b8deda1abaac2bc50e6da106debdc
-# Text hash: sha256:66455f179ad5779a1884c0e352701e7dbacc214a2405eeda5286a39ee5b5221d
+# Derivation key: sha256:a39cf7b66882c96f0988cc0b9bba0754e9a91db274df5a5136b1850667723da0
+# Text hash: sha256:09bced11525e04a9d559d80d17826ccfaddc8b945c39bcd5aa9bf29c312a9fd4
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7df6f3da3414231df3e2e1f7adc385d77f7cfc0e35b975f115056fce8cb53bba

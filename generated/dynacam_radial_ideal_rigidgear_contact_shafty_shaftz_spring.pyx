@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b2bbd4955715cd63855fc4c8f472af7b7b4920bcc93f06aed00fa9bd56c87f6b
-# Text hash: sha256:bbbf5b38c044997e04f96be79f9df786e427f02c8628efac6694b460715d6265
+# Derivation key: sha256:ff9434a1bbcaa382712b738d52c1919c6d40f44487388e8bac00650e79cad9e2
+# Text hash: sha256:fe0aa57147d0f4aadb56317241d332a81b9548e86fa098249aa957cdbf673b3b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1

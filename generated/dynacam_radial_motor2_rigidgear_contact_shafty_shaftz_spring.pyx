@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f74864ca610bdbaf949212993e9ed19dd434f0aeb022505a7169d6dad2791f52
-# Text hash: sha256:53f66da2166ca86f44bb1477a62727485d532bf5dfb9fe25b9ea38e7658280cc
+# Derivation key: sha256:c8e65312a38f3d27600ee628f74cbd99c27509980785a9561871cd502be9d2bf
+# Text hash: sha256:ca1284fd7865d64c3cc57071a1bcaa1a42213098396417e16f68123460b4bc21
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:775dc74d7dd69da69bafb1940d40799b0a663f4cd304542cf146150dfdb0178d

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:580e40403fc86e34c8930fe463f4e633195585ba625d8efe5d6c56ca73a91c0a
-# Text hash: sha256:8b9c62bcd9d8e035642ee5a202aaeeb6f270fb8df44f1f37660145cf94dcae35
+# Derivation key: sha256:762f24fd626796466cd737e36771709fbf58323e56c9d40864f1f08d495eafe4
+# Text hash: sha256:24f649597306a05a3afd02919ee625ed98de5d3ac54921c7009197c8d732ee14
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68

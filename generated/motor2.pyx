@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:cfc379b38f1e7bb90c851f4164732c007a8e6365b42c17d1d8b0f70799222be9
-# Text hash: sha256:e37187e9ab1a9a12a71edd2c3b13bb4a68f5ba721718252aaeb74c64c5d8dffd
+# Derivation key: sha256:8436a8e4d220e72c2756ce963638bbcb0c7e96b2a09c83a15bbf00ca63293266
+# Text hash: sha256:8fcf31aff6762166f40f1bdebb6ec86d781e5250d7eb6de3a7f892c5239fa304
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ee4a2ab06064396a135426a3d0ae9309cf67463f0e46aa080c96cc2bf7992838
-# Text hash: sha256:318e6ef877d8e574ba5687346b947a23d7e75bf26da6570edaf734d883adbc75
+# Derivation key: sha256:a4fac0b2d7d1ef4bef55b3ce584e33e9f3f1622829165db5d30eaebcf228b9e1
+# Text hash: sha256:aee47edfcaebc171093efca8d88d8aee3c9bf593586c77cf08b793363f8fda27
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fa1e1e38c7b32081f3e78935e99cd503657d6752e8135f6b38e9bdf7926c55fc
-# Text hash: sha256:f6483bdd2b96eabaf6aadb04ab8283de22ad7b6af4ad3027ad200ad1be52451e
+# Derivation key: sha256:eface2296b3c808e6eb2d83f91e048f25ef3966f93dc7aaccf79ef026556ea54
+# Text hash: sha256:4c559aab0aaee1b13c4856b505b2abe7bf3c0059d7792229ea99c85c33924bca
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27

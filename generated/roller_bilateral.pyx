@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a827943993f11b4d4a6ee47c7302d1046c1e1ce04e4a809e9eb994caf5793eb5
-# Text hash: sha256:b7da5c31f0e9bb7750ed3df5ecf4de8c8fee9a05eef1ddf1b0649656a2c78b51
+# Derivation key: sha256:13bb9d27843323ca8c12cb9ed007138475c443c7cf497462332af5d400477bd8
+# Text hash: sha256:87f6002527ce342a6e91c2f24128abc25a2e98f95caa43af29de8a4b32afd09a
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360

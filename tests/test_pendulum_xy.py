@@ -267,8 +267,8 @@ def test_integrate_command_runs_the_pendulum():
                             "values closer to them"),
     ([1.0, 0.0, 0.0, 0.0], "pendulum_xy: the constraints cannot be solved for the dependent "
                            "coordinates y at the initial state (Phi_Q restricted to them is "
-                           "singular there); give other initial values or declare other "
-                           "dependent coordinates (ConstraintSolver(dependent=...))"),
+                           "singular there); give other initial values or choose other "
+                           "dependent coordinates (dependent=..., --dependent NAMES)"),
 ])
 def test_an_impossible_start_is_refused_naming_the_dependent_coordinate(y0, words):
     """L = 1: x = 1.5 leaves no y with x^2 + y^2 = 1 (Newton's method cannot converge);

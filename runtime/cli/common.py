@@ -143,6 +143,20 @@ def tolerances(args) -> dict:
     return out
 
 
+DEPENDENT_HELP = ("a constrained model's dependent coordinates for this run, comma-separated, "
+                  "exactly as many as it has constraints (default: the ones its "
+                  "ConstraintSolver declares). Coordinate partitioning (Wehage and Haug 1982; "
+                  "formulation 1) solves them from Phi = 0 and Phi_Q Q' = -Phi_t at every "
+                  "evaluation and integrates the others; every formulation starts from the "
+                  "consistent state they are solved for from the others' values. Phi_Q "
+                  "restricted to them must stay invertible along the run")
+
+
+def add_dependent_option(parser) -> None:
+    """--dependent: a constrained model's dependent coordinates (Simulator's ``dependent``)."""
+    parser.add_argument("--dependent", default=None, metavar="NAMES", help=DEPENDENT_HELP)
+
+
 def tolerance_argument(message: str) -> str:
     """A library message about the tolerances (atol=..., state_atol...) with the flag it came
     from in front, as every other bad argument is named."""
@@ -150,4 +164,6 @@ def tolerance_argument(message: str) -> str:
         return f"argument --atol: {message}"
     if message.startswith("state_atol"):
         return f"argument --state-atol: {message.removeprefix('state_atol: ')}"
+    if message.startswith("dependent"):
+        return f"argument --dependent: {message}"
     return message

@@ -4,9 +4,9 @@ from __future__ import annotations
 import json
 
 from ..core.errors import CamdynInputError, SimulationError
-from .common import (add_estimate_option, add_out_option, add_tolerance_options, assignments,
-                     fail, law_names, method_names, report_health, run_failed, say_on_stderr,
-                     tolerance_argument, tolerances)
+from .common import (add_dependent_option, add_estimate_option, add_out_option,
+                     add_tolerance_options, assignments, fail, law_names, method_names,
+                     report_health, run_failed, say_on_stderr, tolerance_argument, tolerances)
 
 HELP = "any model: a model file (built on first use) or a built-in model, to t_end"
 """The command's line in `camdyn --help`."""
@@ -41,6 +41,7 @@ def add(sub):
                     help="with --turn: the law of the return (default: --law)")
     ig.add_argument("--return-theta", type=float, default=None,
                     help="with --return-law: its shape parameter (default: the law's own)")
+    add_dependent_option(ig)
     ig.add_argument("--json", action="store_true", help="one JSON object on stdout")
     add_estimate_option(ig)
     add_out_option(ig, default=None, help="folder for <model>.csv and <model>.png")
@@ -84,7 +85,7 @@ def run(args) -> int:
         t = resolve.model(args.model, StateTarget, say, params=params, method=args.method,
                           rtol=args.rtol, step=args.step, t_end=args.t_end, law=law,
                           theta=theta, initial=initial, max_steps=args.max_steps,
-                          **tolerances(args))
+                          dependent=args.dependent, **tolerances(args))
         if args.out:
             from ..core.outdir import out_folder
 

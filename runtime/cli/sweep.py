@@ -5,8 +5,9 @@ import sys
 
 from ..core.errors import CamdynInputError, SimulationError
 from ..core.outdir import out_folder
-from .common import (add_estimate_option, add_out_option, add_tolerance_options, fail, law_names,
-                     method_names, run_failed, tolerance_argument, tolerances)
+from .common import (add_dependent_option, add_estimate_option, add_out_option,
+                     add_tolerance_options, fail, law_names, method_names, run_failed,
+                     tolerance_argument, tolerances)
 
 HELP = ("headline figures over a grid of parameters: table (CSV, Parquet) and a chart per figure,"
         " on every core or a Dask cluster")
@@ -42,6 +43,7 @@ def add(sub):
                     help="step of a fixed-step method (rk4, koster; required there), in the "
                          "model's time unit; not with dp54/dop853/rodas4")
     add_tolerance_options(sw)
+    add_dependent_option(sw)
     sw.add_argument("--law", choices=names, default=None,
                     help="cam law of a model (default: the scene's, cycloidal)")
     sw.add_argument("--error-estimate", action="store_true",
@@ -69,7 +71,7 @@ def run(args) -> int:
                        progress=not args.quiet, t_end=args.t_end, method=args.method,
                        rtol=args.rtol, law=args.law, step=args.step,
                        estimate=not args.no_error_estimate, out=args.out, resume=args.resume,
-                       **tolerances(args))
+                       dependent=args.dependent, **tolerances(args))
     except CamdynInputError as exc:
         return fail("camdyn sweep", tolerance_argument(str(exc)))
     except SimulationError as exc:

@@ -92,17 +92,19 @@ def mass_fault(model, p, law_codes, law_pars, t: float, y: np.ndarray, modes=Non
             "the model declares (and their ranges)")
 
 
-def rhs_fault(model, p, law_codes, law_pars, t: float, y: np.ndarray, modes=None) -> str | None:
+def rhs_fault(model, p, law_codes, law_pars, t: float, y: np.ndarray, modes=None,
+              part=None) -> str | None:
     """The first right-hand side component that is not finite at (t, y), or along the path the
     next step would take from there (Euler steps of 1e-12 to 1e-3 of the time scale: the
-    state the rejected steps tried), in words, or None."""
+    state the rejected steps tried), in words, or None.  ``part``: a constrained model's
+    coordinate partition of the run (Simulator.part)."""
     y = np.ascontiguousarray(y, dtype=float)
     if not np.all(np.isfinite(y)):
         return None
 
     def rhs(tt, yy):
         return driver.eval_rhs(model.capsule, p, law_codes, law_pars, np.array([float(tt)]),
-                               yy[None, :], element_modes=modes)[0]
+                               yy[None, :], element_modes=modes, part=part)[0]
 
     f = rhs(t, y)
     if np.all(np.isfinite(f)):
@@ -131,9 +133,10 @@ class Fault:
     at_start: bool
 
 
-def explain(model, p, law_codes, law_pars, out, modes=None) -> Fault | None:
+def explain(model, p, law_codes, law_pars, out, modes=None, part=None) -> Fault | None:
     """The cause of the failed run ``out`` (driver.Integrator.run's record), found at the last
-    state it accepted, or None when neither the mass matrix nor the right-hand side shows one."""
+    state it accepted, or None when neither the mass matrix nor the right-hand side shows one;
+    ``part`` as :func:`rhs_fault` takes it."""
     if out.n < 1:
         return None
     row = out.rows[out.n - 1]
@@ -156,7 +159,7 @@ def explain(model, p, law_codes, law_pars, out, modes=None) -> Fault | None:
                  else None)
         for tt in times:
             text = (mass_fault(model, p, law_codes, law_pars, tt, y, element, start)
-                    or rhs_fault(model, p, law_codes, law_pars, tt, y, element))
+                    or rhs_fault(model, p, law_codes, law_pars, tt, y, element, part))
             if text:
                 break
     except (ValueError, ArithmeticError):       # a diagnosis must never hide the failure

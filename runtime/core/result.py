@@ -55,6 +55,16 @@ class Result:
     def law_pars(self) -> np.ndarray:
         return self._sim.law_pars
 
+    @property
+    def dependent(self) -> tuple:
+        """A constrained model's dependent coordinates in this run (Simulator's ``dependent``)."""
+        return self._sim.dependent
+
+    @property
+    def part(self):
+        """Their coordinate partition as the compiled code takes it (None: the declared one)."""
+        return self._sim.part
+
     @cached_property
     def stability(self):
         """Fixed-step methods: the stability check the compiled loop made as it ran
@@ -149,7 +159,7 @@ class Result:
     def outputs(self) -> dict:
         """Outputs at the recorded points (computed on first use, in C)."""
         out = driver.eval_outputs(self.model.capsule, self.p, self.law_codes, self.law_pars,
-                                      self.t, self.y, self.mode)
+                                      self.t, self.y, self.mode, part=self.part)
         return {name: out[:, k] for k, name in enumerate(self.output_names)}
 
     def __getitem__(self, name: str) -> np.ndarray:
@@ -171,7 +181,7 @@ class Result:
         Y, idx = driver.dense_eval(self.t, self.y, self.f, self._extra, tq)
         modes = np.ascontiguousarray(self.mode[idx]) if self.mode.shape[1] else None
         out = driver.eval_outputs(self.model.capsule, self.p, self.law_codes, self.law_pars,
-                                      tq, Y, modes)
+                                      tq, Y, modes, part=self.part)
         res = {"t": tq}
         res.update({name: Y[:, k] for k, name in enumerate(self.state_names)})
         res.update({name: out[:, k] for k, name in enumerate(self.output_names)})

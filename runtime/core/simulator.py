@@ -127,6 +127,40 @@ def absolute_tolerances(model: CompiledModel, method, y0=None) -> np.ndarray:
     return atol
 
 
+def partition(model: CompiledModel, dependent) -> tuple[tuple, np.ndarray | None]:
+    """(the dependent coordinates' names in force, the coordinate partition the compiled code
+    takes: their indices, then the independent ones' in declared order, or None for the
+    declared partition) of a constrained ``model`` run with ``dependent``: None (the model's
+    ConstraintSolver(dependent=...), the manifest's "dependent"), names of exactly n_c
+    distinct coordinates, or one string of them separated by commas (coordinate
+    partitioning: the dependent coordinates are solved from Phi = 0 and Phi_Q Q' = -Phi_t,
+    the independent ones integrated)."""
+    declared = tuple(model.manifest.get("dependent", ()))
+    if dependent is None:
+        return declared, None
+    nc = int(model.manifest.get("n_constraints", 0))
+    if not nc:
+        raise CamdynInputError(f"dependent: model {model.name} has no constraints; dependent "
+                               "coordinates are chosen for constrained models only")
+    coords = model.state_names[:int(model.manifest["n_q"])]
+    names = dependent.split(",") if isinstance(dependent, str) else dependent
+    try:
+        names = tuple(n.strip() if isinstance(n, str) else n for n in names)
+    except TypeError:
+        names = (dependent,)
+    if (len(names) != nc or len(set(names)) != nc
+            or not all(isinstance(n, str) and n in coords for n in names)):
+        shown = ",".join(str(n) for n in names)
+        raise CamdynInputError(
+            f"dependent={shown!r}: {model.name} takes {nc} distinct name{'s' * (nc > 1)} of "
+            f"its coordinates {', '.join(coords)} (declared: {','.join(declared)})")
+    if set(names) == set(declared):
+        return declared, None
+    dep = [coords.index(n) for n in names]
+    return names, np.array(dep + [j for j in range(len(coords)) if j not in dep],
+                           dtype=np.intc)
+
+
 @dataclass(frozen=True)
 class BatchInputs:
     """What the compiled loops take to run many parameter sets of one Simulator (its
@@ -148,6 +182,7 @@ class BatchInputs:
     max_steps: int
     modes0: np.ndarray
     max_events: int
+    part: np.ndarray | None = None     # a constrained model's coordinate partition (partition)
 
 
 class Simulator:
@@ -187,6 +222,14 @@ class Simulator:
             with damping: the roller's dwell then costs a few dozen points instead of
             hundreds of steps).  False with check_stability=False too, whose runs are made to
             see what the method's step does, the dwell included (the stability map).
+    dependent
+            A constrained model's dependent coordinates for these runs, instead of the ones
+            its ConstraintSolver declares (the manifest's "dependent"): exactly n_c distinct
+            coordinate names, as a sequence or one comma-separated string.  Coordinate
+            partitioning (formulation 1) solves them from the constraints at every
+            evaluation and integrates the others; every formulation starts from the
+            consistent state they are solved for (``consistent``).  Phi_Q restricted to
+            them must be invertible along the run.
     """
 
     def __init__(self, model, t_end: float = 3.0, method="dp54", *, rtol: float | None = None,
@@ -194,8 +237,9 @@ class Simulator:
                  theta: float | None = None, y0=None, t0: float = 0.0, max_steps: int = 5_000_000,
                  modes: dict | None = None, max_events: int = 1_000_000,
                  check_stability: bool = True, consistent: bool = True,
-                 exact_segments: bool | None = None):
+                 exact_segments: bool | None = None, dependent=None):
         m = model if isinstance(model, CompiledModel) else load(model)
+        self.dependent, self.part = partition(m, dependent)
         if isinstance(method, str):
             method = _methods.make(method, rtol=rtol, atol=atol, step=step)
         elif rtol is not None or atol is not None or step is not None:
@@ -248,7 +292,8 @@ class Simulator:
         self.integrator = driver.Integrator(
             m.capsule, method.code, self.law_codes, self.law_pars, y_init, t0, h, h_max, rtol, atol,
             max_steps, np.array(self.modes0, dtype=np.intc), int(max_events), stab,
-            None if method.adaptive else _stability.loop_boundary(method.name), exact_segments)
+            None if method.adaptive else _stability.loop_boundary(method.name), exact_segments,
+            self.part)
         self._stops: dict = {}
         self._cap = 256
         # what run() reads on every call, looked up once here
@@ -289,7 +334,7 @@ class Simulator:
                            atol=np.ascontiguousarray(self.atol, dtype=float),
                            max_steps=self.max_steps,
                            modes0=np.array(self.modes0, dtype=np.intc),
-                           max_events=self.max_events)
+                           max_events=self.max_events, part=self.part)
 
     def start(self, p: np.ndarray, y0=None) -> tuple[np.ndarray, str | None]:
         """(the state a run with parameters p starts from, the note that the constraints
@@ -366,7 +411,7 @@ class Simulator:
             est = _stability.from_loop(self.method.name, self.method.step, out)
             raise UnstableStep(_stability.refusal(m.name, tname, est), est)
         # the integrator's words say what it saw; the model's state says why
-        fault = diagnosis.explain(m, p, self.law_codes, self.law_pars, out)
+        fault = diagnosis.explain(m, p, self.law_codes, self.law_pars, out, part=self.part)
         if fault is not None and fault.at_start:     # the input, not the run
             raise CamdynInputError(f"{m.name}: {fault.text}")
         why = (driver.PROJECTION_TEXT if out.status == driver.NO_CONVERGENCE
@@ -376,18 +421,18 @@ class Simulator:
 
     def _consistent(self, p, y):
         """A constrained model's initial state on its constraints: the dependent coordinates
-        (the manifest's "dependent", as the model's ConstraintSolver names them) and their
-        rates recovered from the independent ones, in every formulation, with a note when
-        that moved them (the run starts, and its record reports, the consistent state); a
+        (``dependent``, else as the model's ConstraintSolver names them) and their rates
+        recovered from the independent ones, in every formulation, with a note when that
+        moved them (the run starts, and its record reports, the consistent state); a
         CamdynInputError naming the dependent coordinates when no consistent state is found
         or they cannot be solved for there."""
         m = self.model
         y = np.ascontiguousarray(y, dtype=float)
-        dep = m.manifest.get("dependent", [])
+        dep = self.dependent
         try:
             yc, phi, phid = driver.consistent_state(
                 m.capsule, m.module, p, self.law_codes, self.law_pars, self.t0, y,
-                np.array(self.modes0, dtype=np.intc) if self.modes0 else None)
+                np.array(self.modes0, dtype=np.intc) if self.modes0 else None, self.part)
         except ValueError as e:
             skip = set(dep) | {n + "d" for n in dep}
             given = ", ".join(f"{n} = {v:.6g}" for n, v in zip(m.state_names, y)
@@ -396,8 +441,8 @@ class Simulator:
                 raise CamdynInputError(
                     f"{m.name}: the constraints cannot be solved for the dependent coordinates "
                     f"{', '.join(dep)} at the initial state (Phi_Q restricted to them is "
-                    "singular there); give other initial values or declare other dependent "
-                    "coordinates (ConstraintSolver(dependent=...))") from None
+                    "singular there); give other initial values or choose other dependent "
+                    "coordinates (dependent=..., --dependent NAMES)") from None
             raise CamdynInputError(
                 f"{m.name}: Newton's method found no {', '.join(dep)} on the constraints from "
                 f"the independent coordinates ({given}); give initial values closer to "
@@ -414,18 +459,19 @@ class Simulator:
 
 @lru_cache(maxsize=32)
 def _prepared(model, t_end, method, rtol, atol, step, law, theta, y0, t0, max_steps, modes,
-              exact_segments, notches) -> Simulator:
+              exact_segments, dependent, notches) -> Simulator:
     return Simulator(model, t_end, method, rtol=rtol, atol=atol, step=step,
                      law=dict(law) if isinstance(law, tuple) else law,
                      theta=theta, y0=y0, t0=t0, max_steps=max_steps,
-                     modes=dict(modes) if modes else None, exact_segments=exact_segments)
+                     modes=dict(modes) if modes else None, exact_segments=exact_segments,
+                     dependent=dependent)
 
 
 def simulate(model, params: dict | None = None, t_end: float = 3.0, method="dp54", *,
              rtol: float | None = None, atol: float | None = None, step: float | None = None,
              law="cycloidal", theta: float | None = None, y0=None, t0: float = 0.0,
              max_steps: int = 5_000_000, modes: dict | None = None,
-             exact_segments: bool | None = None) -> Result:
+             exact_segments: bool | None = None, dependent=None) -> Result:
     """Integrate ``model`` from t0 to t_end with ``params`` (see :class:`Simulator`).
 
     The prepared Simulator is kept for the next call with the same settings.
@@ -433,11 +479,13 @@ def simulate(model, params: dict | None = None, t_end: float = 3.0, method="dp54
     key_law = tuple(sorted(law.items())) if isinstance(law, dict) else law
     key_y0 = None if y0 is None else tuple(np.asarray(y0, dtype=float).ravel().tolist())
     key_modes = tuple(sorted(modes.items())) if modes else None
+    # the names as given, in order: a list is keyed as its tuple, a string as itself
+    key_dep = dependent if dependent is None or isinstance(dependent, str) else tuple(dependent)
     try:
         sim = _prepared(model, t_end, method, rtol, atol, step, key_law, theta, key_y0, t0,
-                        max_steps, key_modes, exact_segments, _methods.notches())
+                        max_steps, key_modes, exact_segments, key_dep, _methods.notches())
     except TypeError:  # unhashable settings: prepare without the cache
         sim = Simulator(model, t_end, method, rtol=rtol, atol=atol, step=step, law=law,
                         theta=theta, y0=y0, t0=t0, max_steps=max_steps, modes=modes,
-                        exact_segments=exact_segments)
+                        exact_segments=exact_segments, dependent=dependent)
     return sim.run(params)

@@ -12,7 +12,7 @@
 # a module at run time.
 
 cdef enum:
-    CAMDYN_ABI = 10
+    CAMDYN_ABI = 11
 
 # method codes
 cdef enum:
@@ -44,6 +44,10 @@ cdef struct Ctx:
     int variant            # bit i set: cam instance i sits in a dwell (set by update_modes)
     double* cache          # per cam instance [argument, H, H', H'', H''']: the last evaluation;
                            # in a dwell H holds the dwell value (n_cache doubles)
+    const int* part        # a constrained model's coordinate partition for this run: the n_c
+                           # dependent coordinates' indices, then the n_q - n_c independent
+                           # ones'; NULL for the model's declared one (ABI 11).  Per run, not
+                           # per module, so that runs on other threads may choose otherwise
 
 cdef struct Record:
     # one row per recorded point: [t, y (ns), f (ns), extra (n_extra x ns)]; f is
@@ -138,6 +142,21 @@ cdef struct ModelC:
                            # place (1; -1 without convergence; 0, y untouched, unless its
                            # formulation is 2), which the loops call after every accepted
                            # step; NULL for unconstrained models (ABI 10)
+
+
+cdef inline bint partition_ok(const ModelC* m, const int* part, Py_ssize_t n) noexcept nogil:
+    """``part`` (n entries) is a coordinate partition of the constrained model m (Ctx.part):
+    each of its n_q coordinates once.  The generated code indexes with it unchecked."""
+    cdef Py_ssize_t i, j
+    if m.project == NULL or n != m.n_q:
+        return False
+    for i in range(n):
+        if not 0 <= part[i] < n:
+            return False
+        for j in range(i):
+            if part[j] == part[i]:
+                return False
+    return True
 
 
 cdef inline bint adaptive_method(int method) noexcept nogil:

@@ -153,6 +153,16 @@ cdef ModelC* model_pointer(object capsule) except NULL:
     return m
 
 
+cdef int _check_partition(ModelC* m, const int[::1] part) except -1:
+    """A ValueError unless ``part`` is None (the declared partition) or a coordinate partition
+    of the constrained model m (Ctx.part)."""
+    if part is not None and not partition_ok(m, &part[0] if part.shape[0] else NULL,
+                                             part.shape[0]):
+        raise ValueError(f"a coordinate partition is {m.n_q} distinct coordinate indices of a "
+                         "constrained model, the dependent ones first")
+    return 0
+
+
 cdef class ParameterTable:
     """A model's parameters (names, defaults, ranges) for CompiledModel.parameter_vector's
     common case, checked in C: every value given an exact float, finite and in its range.
@@ -232,6 +242,7 @@ cdef class Integrator:
     cdef long max_steps, max_events
     cdef double[::1] y0, atol, law_par, stab_bound
     cdef int[::1] law, modes0
+    cdef const int[::1] part
     cdef int stab_mode
     cdef bint exact
     cdef readonly int width, n_states
@@ -240,8 +251,11 @@ cdef class Integrator:
     def __init__(self, object capsule, int method, int[::1] law, double[::1] law_par,
                  double[::1] y0, double t0, double h, double h_max, double rtol,
                  double[::1] atol, long max_steps, int[::1] modes0=None, long max_events=1000000,
-                 int stab_mode=0, double[::1] stab_bound=None, bint exact=False):
+                 int stab_mode=0, double[::1] stab_bound=None, bint exact=False,
+                 const int[::1] part=None):
         self.m = model_pointer(capsule)
+        _check_partition(self.m, part)
+        self.part = None if part is None else np.array(part, dtype=np.intc)
         self.capsule = capsule
         cdef int ns = self.m.n_states, ne = self.m.n_modes - self.m.n_instances
         if y0.shape[0] != ns or atol.shape[0] != ns:
@@ -343,6 +357,7 @@ cdef class Integrator:
         ctx.law_par = &self.law_par[0]
         ctx.mode = mode
         ctx.variant = 0
+        ctx.part = NULL if self.part is None else &self.part[0]
         cdef Run run
         run.ctx = &ctx
         run.rec.n = 0
@@ -531,9 +546,12 @@ def dense_eval(const double[:] t, const double[:, :] y, const double[:, :] f,
     return Y, idx
 
 
-cdef void _ctx_init(Ctx* ctx, ModelC* m, double[::1] p, double[::1] k, int[::1] law,
-                    double[::1] law_par, int[::1] mode) noexcept:
-    """Point ctx at the arrays; k holds the constants, then the cam cache."""
+cdef int _ctx_init(Ctx* ctx, ModelC* m, double[::1] p, double[::1] k, int[::1] law,
+                   double[::1] law_par, int[::1] mode, const int[::1] part=None) except -1:
+    """Point ctx at the arrays; k holds the constants, then the cam cache; ``part`` the
+    coordinate partition (checked), None for the declared one."""
+    _check_partition(m, part)
+    ctx.part = NULL if part is None else &part[0]
     ctx.p = &p[0]
     ctx.k = &k[0]
     ctx.cache = &k[m.n_const]
@@ -542,6 +560,7 @@ cdef void _ctx_init(Ctx* ctx, ModelC* m, double[::1] p, double[::1] k, int[::1] 
     ctx.mode = &mode[0]
     ctx.variant = 0
     m.prepare(ctx)
+    return 0
 
 
 cdef int[::1] _mode_buffer(ModelC* m, element_modes):
@@ -563,9 +582,11 @@ def _rows_contiguous(y):
 
 
 def eval_outputs(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
-                 const double[:] t, y_in, mode=None, element_modes=None):
+                 const double[:] t, y_in, mode=None, element_modes=None,
+                 const int[::1] part=None):
     """Outputs at the points (t, y).  ``mode``: all modes per point (as recorded); else
-    the cam segments are looked up and the force elements take ``element_modes``."""
+    the cam segments are looked up and the force elements take ``element_modes``.  ``part``:
+    a constrained model's coordinate partition (Ctx.part), None for the declared one."""
     cdef const double[:, :] y = _rows_contiguous(y_in)
     cdef ModelC* m = model_pointer(capsule)
     cdef Py_ssize_t n = t.shape[0], j
@@ -581,7 +602,7 @@ def eval_outputs(object capsule, double[::1] p, int[::1] law, double[::1] law_pa
     if have:
         given = np.ascontiguousarray(mode, dtype=np.intc)
     cdef Ctx ctx
-    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    _ctx_init(&ctx, m, p, k, law, law_par, md, part)
     for j in range(n):
         if have:
             memcpy(&md[0], &given[j, 0], nm * sizeof(int))
@@ -593,8 +614,9 @@ def eval_outputs(object capsule, double[::1] p, int[::1] law, double[::1] law_pa
 
 
 def eval_rhs(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
-             const double[:] t, y_in, element_modes=None):
-    """dy/dt at the points (t, y), cam segments looked up per point."""
+             const double[:] t, y_in, element_modes=None, const int[::1] part=None):
+    """dy/dt at the points (t, y), cam segments looked up per point; ``part`` as
+    :func:`eval_outputs` takes it."""
     cdef const double[:, :] y = _rows_contiguous(y_in)
     cdef ModelC* m = model_pointer(capsule)
     cdef Py_ssize_t n = t.shape[0], j
@@ -605,7 +627,7 @@ def eval_rhs(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
     cdef int[::1] md = _mode_buffer(m, element_modes)
     cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
     cdef Ctx ctx
-    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    _ctx_init(&ctx, m, p, k, law, law_par, md, part)
     for j in range(n):
         m.update_modes(t[j], &y[j, 0], &ctx)
         m.rhs(t[j], &y[j, 0], &o[j, 0], &ctx)
@@ -613,14 +635,16 @@ def eval_rhs(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
 
 
 def eval_jacobian_fd(object capsule, double[::1] p, int[::1] law, double[::1] law_par,
-                  const double[:] t, y_in, const double[::1] scale, mode=None, element_modes=None):
+                  const double[:] t, y_in, const double[::1] scale, mode=None, element_modes=None,
+                  const int[::1] part=None):
     """Jacobians df/dy of the first-order right-hand side at the points (t, y), by central
     differences of the compiled rhs (steps 1e-6 max(|y_i|, scale_i)); shape (n, ns, ns).
 
     ``mode``: all modes per point (as recorded), held fixed while the state is perturbed, as
     the integration loops hold them within a step; else the cam segments are looked up at each
     point and the force elements take ``element_modes``.  For stability estimates
-    (camdyn.runtime.core.stability); it does not depend on a generated Jacobian."""
+    (camdyn.runtime.core.stability); it does not depend on a generated Jacobian.  ``part``
+    as :func:`eval_outputs` takes it."""
     cdef const double[:, :] y = _rows_contiguous(y_in)
     cdef ModelC* m = model_pointer(capsule)
     cdef Py_ssize_t n = t.shape[0], j
@@ -638,7 +662,7 @@ def eval_jacobian_fd(object capsule, double[::1] p, int[::1] law, double[::1] la
     if have:
         given = np.ascontiguousarray(mode, dtype=np.intc)
     cdef Ctx ctx
-    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    _ctx_init(&ctx, m, p, k, law, law_par, md, part)
     for j in range(n):
         if have:
             memcpy(&md[0], &given[j, 0], nm * sizeof(int))
@@ -663,13 +687,15 @@ def eval_jacobian_fd(object capsule, double[::1] p, int[::1] law, double[::1] la
 
 def linearize(object capsule, const double[:, ::1] P, int[::1] law, double[::1] law_par,
               const double[::1] t, const double[:, ::1] Y, const double[::1] scale,
-              const int[::1] outputs, element_modes=None):
+              const int[::1] outputs, element_modes=None, const int[::1] part=None):
     """The frozen linear system at n points, each with its own parameters: J[j] = df/dy at
     (t[j], Y[j]) with parameters P[j], and G[j, i] = d(output outputs[i])/dy there, both by
     central differences (steps 1e-6 max(|y_c|, scale_c)), the force elements in
     ``element_modes``; shapes (n, ns, ns) and (n, len(outputs), ns).  One call for a whole
-    grid of parameter sets: what camdyn.runtime.measure.modes reads the dwell's modes from."""
+    grid of parameter sets: what camdyn.runtime.measure.modes reads the dwell's modes from.
+    ``part`` as :func:`eval_outputs` takes it."""
     cdef ModelC* m = model_pointer(capsule)
+    _check_partition(m, part)
     cdef Py_ssize_t n = P.shape[0], j
     cdef int ns = m.n_states, no = outputs.shape[0], r, c, i
     if P.shape[1] != m.n_params or Y.shape[0] != n or Y.shape[1] != ns or t.shape[0] != n \
@@ -693,6 +719,7 @@ def linearize(object capsule, const double[:, ::1] P, int[::1] law, double[::1] 
     ctx.law_par = &law_par[0]
     ctx.mode = &md[0]
     ctx.variant = 0
+    ctx.part = NULL if part is None else &part[0]
     for j in range(n):
         ctx.p = &P[j, 0]
         m.prepare(&ctx)
@@ -733,18 +760,22 @@ def eval_events(object capsule, double[::1] p, int[::1] law, double[::1] law_par
 
 
 def consistent_state(object capsule, object module, double[::1] p, int[::1] law,
-                     double[::1] law_par, double t, double[::1] y, element_modes=None):
+                     double[::1] law_par, double t, double[::1] y, element_modes=None,
+                     const int[::1] part=None):
     """(y with its dependent coordinates and their rates recovered from the independent ones,
     the largest |Phi| and |Phi'| of y) of a constrained model (its module's
-    consistent_state); a ValueError when Newton's method fails: its text "singular" where
-    Phi_Q restricted to the dependent coordinates is, else "no convergence"."""
+    consistent_state), the coordinates partitioned by ``part`` (Ctx.part; None: as
+    declared); a ValueError when Newton's method fails: its text "singular" where Phi_Q
+    restricted to the dependent coordinates is, else "no convergence"."""
     cdef ModelC* m = model_pointer(capsule)
+    _check_partition(m, part)
     cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
     cdef int[::1] md = _mode_buffer(m, element_modes)
     if y.shape[0] != m.n_states:
         raise ValueError("state vector of the wrong length")
     out = np.empty(m.n_states)
-    status, phi, phid = module.consistent_state(p, k, law, law_par, md, t, y, out)
+    status, phi, phid = module.consistent_state(p, k, law, law_par, md, t, y, out,
+                                                None if part is None else np.asarray(part))
     if status:
         raise ValueError("singular" if status == 2 else "no convergence")
     return out, phi, phid
@@ -771,12 +802,13 @@ def eval_mass_stiffness(object capsule, double[::1] p, int[::1] law, double[::1]
 
 
 def eval_jacobian(object capsule, double[::1] p, int[::1] law, double[::1] law_par, double t,
-                  double[::1] y, element_modes=None, bint with_time=False):
+                  double[::1] y, element_modes=None, bint with_time=False,
+                  const int[::1] part=None):
     """J = d(dy/dt)/dy at one point (n_states x n_states), cam segments looked up as by
     eval_rhs, the force elements in ``element_modes``: the Jacobian of the current modes.
     How the model forms it (symbolically or by differences in C) is its manifest's
     "jacobian".  ``with_time``: (J, df/dt), for a model whose manifest's "time_derivative"
-    is "symbolic" (else df/dt comes back NaN)."""
+    is "symbolic" (else df/dt comes back NaN).  ``part`` as :func:`eval_outputs` takes it."""
     cdef ModelC* m = model_pointer(capsule)
     cdef int ns = m.n_states
     J = np.zeros((ns, ns))
@@ -788,7 +820,7 @@ def eval_jacobian(object capsule, double[::1] p, int[::1] law, double[::1] law_p
     cdef Ctx ctx
     if y.shape[0] != ns:
         raise ValueError("state vector of the wrong length")
-    _ctx_init(&ctx, m, p, k, law, law_par, md)
+    _ctx_init(&ctx, m, p, k, law, law_par, md, part)
     m.update_modes(t, &y[0], &ctx)
     if ns:
         m.jac(t, &y[0], &Jv[0, 0], &ftv[0] if with_time else NULL, &ctx)

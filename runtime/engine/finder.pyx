@@ -74,6 +74,16 @@ cdef ModelC* _model(object capsule) except NULL:
     return m
 
 
+cdef int _check_partition(ModelC* m, const int[::1] part) except -1:
+    """A ValueError unless ``part`` is None (the declared partition) or a coordinate partition
+    of the constrained model m (Ctx.part)."""
+    if part is not None and not partition_ok(m, &part[0] if part.shape[0] else NULL,
+                                             part.shape[0]):
+        raise ValueError(f"a coordinate partition is {m.n_q} distinct coordinate indices of a "
+                         "constrained model, the dependent ones first")
+    return 0
+
+
 cdef inline double _t(Rec* r, Py_ssize_t i) noexcept nogil:
     return r.rows[i * r.width]
 
@@ -742,12 +752,15 @@ cdef class _View:
     cdef object keep
     cdef double[::1] p, k, law_par, y, out
     cdef int[::1] law, mode
+    cdef const int[::1] part
     cdef const double[:, ::1] rows
     cdef const int[:, ::1] modes
 
     def __init__(self, object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows,
-                 modes, int ns, int nx):
+                 modes, int ns, int nx, part=None):
         cdef ModelC* m = _model(capsule)
+        self.part = None if part is None else np.array(part, dtype=np.intc)
+        _check_partition(m, self.part)
         self.keep = capsule
         self.rows = np.ascontiguousarray(rows, dtype=float)
         nm = m.n_modes
@@ -765,6 +778,7 @@ cdef class _View:
         self.ctx.law_par = &self.law_par[0]
         self.ctx.mode = &self.mode[0]
         self.ctx.variant = 0
+        self.ctx.part = NULL if self.part is None else &self.part[0]
         m.prepare(&self.ctx)
         if nm and self.modes.shape[0]:
             memcpy(&self.mode[0], &self.modes[0, 0], nm * sizeof(int))
@@ -783,13 +797,14 @@ cdef class _View:
 
 def extreme(object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows, modes,
             int ns, int nx, int which, double a, double b, bint absolute, bint minimum,
-            int per_step=12, int n_cand=1):
+            int per_step=12, int n_cand=1, part=None):
     """(value, time, sampling error) of the extreme of state/output ``which`` (outputs after
     the ns states) on [a, b] of a recorded run (rows as Result keeps them); see the module
-    doc and _extreme."""
+    doc and _extreme.  ``part``: a constrained model's coordinate partition (Ctx.part), None
+    for the declared one; so in the other functions of a recorded run."""
     if per_step < 1:
         raise ValueError("per_step must be at least 1")
-    cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, nx)
+    cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, nx, part)
     cdef double value = NAN, at = NAN, sampling = 0.0
     cdef int kind = (3 if minimum else 0) if absolute else (2 if minimum else 1)
     if v.r.n == 0:
@@ -800,9 +815,9 @@ def extreme(object capsule, double[::1] p, int[::1] law, double[::1] law_par, ro
 
 
 def crossing(object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows, modes,
-             int ns, int nx, int which, double level):
+             int ns, int nx, int which, double level, part=None):
     """First time state ``which`` reaches ``level`` (NaN if never)."""
-    cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, nx)
+    cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, nx, part)
     cdef int ok
     cdef double t
     with nogil:
@@ -811,11 +826,11 @@ def crossing(object capsule, double[::1] p, int[::1] law, double[::1] law_par, r
 
 
 def dwell_figures(object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows,
-                  modes, int ns, int nx, double t1, double t_end, int i_error, int i_acc):
+                  modes, int ns, int nx, double t1, double t_end, int i_error, int i_acc, part=None):
     """(U0, U0'') of a run whose dwell [t1, t_end] was stepped over exactly, in closed form
     from the state at t1 (_dwell_closed_form), or None where no closed form applies (more
     than two states, a dwell that is not linear and time invariant, outputs not affine)."""
-    cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, nx)
+    cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, nx, part)
     cdef double u0 = NAN, u0dd = NAN
     cdef bint ok
     if v.r.n == 0 or not v.r.rows[0] <= t1 <= t_end <= v.r.rows[(v.r.n - 1) * v.r.width]:
@@ -842,6 +857,7 @@ cdef struct Chunk:
     long max_steps
     long max_events
     const int* modes0
+    const int* part    # the coordinate partition of the runs (Ctx.part), or NULL
     bint exact
     int width
     Py_ssize_t cap
@@ -867,6 +883,7 @@ cdef int _chunk_open(Chunk* c, ModelC* m, int method, const int* law, const doub
     c.max_steps = max_steps
     c.max_events = max_events
     c.modes0 = modes0
+    c.part = NULL
     c.exact = exact
     c.width = 1 + (2 + extra_terms(method, exact)) * ns
     c.cap = cap if cap >= 64 else 64
@@ -907,6 +924,7 @@ cdef int _chunk_run(Chunk* c, const double* p, const double* y0, const double* s
     c.ctx.law_par = c.law_par
     c.ctx.mode = c.mode
     c.ctx.variant = 0
+    c.ctx.part = c.part
     c.run.ctx = &c.ctx
     c.run.rec.n = 0
     c.run.rec.cap = c.cap
@@ -989,7 +1007,8 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
                    double[:, ::1] figures, long[:, ::1] stats, double[::1] seconds,
                    Py_ssize_t start, Py_ssize_t stop, Py_ssize_t cap=4096, int stride=1,
                    bint figures_too=True, bint exact=False, const int[::1] run_which=None,
-                   const int[::1] run_kind=None, double[:, ::1] run_figures=None):
+                   const int[::1] run_kind=None, double[:, ::1] run_figures=None,
+                   const int[::1] part=None):
     """Run parameter sets start..stop-1 (rows of P, initial states Y0, stop times) and write
     the FIGURE_COLUMNS of each into ``figures`` and the STAT_COLUMNS into ``stats``; seconds[j]:
     wall time of run j with its figures.  i_error, i_acc: the error and acceleration outputs
@@ -1002,11 +1021,14 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
     ``run_which``, ``run_kind``: extremes over the whole run besides (state or output, score
     as :func:`sweep_extremes` takes them), found as :func:`extreme` finds them on a recorded
     run (12 samples a step, the best refined: the same bits); value and sampling error of
-    extreme k into run_figures[g, 2k] and [g, 2k + 1].  No GIL is held while it runs.
+    extreme k into run_figures[g, 2k] and [g, 2k + 1].  ``part``: a constrained model's
+    coordinate partition (Ctx.part) for every run, None for the declared one.  No GIL is held
+    while it runs.
 
     A run that fails leaves its status (runtime/driver.STATUS_TEXT) and NaN figures; a run
     whose span does not cover the rise and part of the dwell after it, status -1."""
     cdef ModelC* m = _chunk_model(capsule, method, P, Y0, atol, modes0)
+    _check_partition(m, part)
     if figures.shape[1] != len(FIGURE_COLUMNS):
         raise ValueError(f"figures must have {len(FIGURE_COLUMNS)} columns (FIGURE_COLUMNS)")
     if per_step < 1 or not (0 < n_cand <= MAX_CAND) or stride < 1:
@@ -1022,6 +1044,7 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
     if _chunk_open(&c, m, method, &law[0], &law_par[0], t0, h, rtol, &atol[0], max_steps,
                    &modes0[0] if modes0.shape[0] else NULL, max_events, exact, cap) != 0:
         raise MemoryError()
+    c.part = NULL if part is None else &part[0]
     cdef Rec rec
     cdef double* cache = NULL     # error, then acceleration, at every recorded point
     cdef Py_ssize_t ccap = 0
@@ -1133,7 +1156,8 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
                    const double[:, ::1] B, double[:, ::1] value, double[:, ::1] at,
                    double[:, ::1] sampling, long[:, ::1] stats, double[::1] t_stiff,
                    int mode_col=-1, int mode_value=0, double[::1] first_in_mode=None,
-                   Py_ssize_t cap=4096, bint exact=False, const double[:, ::1] atol_rows=None):
+                   Py_ssize_t cap=4096, bint exact=False, const double[:, ::1] atol_rows=None,
+                   const int[::1] part=None):
     """Run every parameter set (rows of P, initial states Y0, stop tables, h_max per run) and
     find extreme k of each run as :func:`extreme` finds it on a recorded run (the same scan,
     refinement and sampling check, so the same bits): state or output ``which[k]`` on
@@ -1142,10 +1166,12 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
     ``n_cand[k]`` peaks refined.  value, at, sampling: (n, n_figures); stats: the RUN_STATS;
     t_stiff: where Hairer's stiffness test first fired (NaN: never).  With ``mode_col`` >= 0,
     first_in_mode[g] is the first recorded time whose mode ``mode_col`` (among all modes, the
-    cam segments first) is ``mode_value`` (NaN: none).  No GIL is held while it runs.
+    cam segments first) is ``mode_value`` (NaN: none).  ``part`` as :func:`sweep_residual`
+    takes it.  No GIL is held while it runs.
 
     A run that fails leaves its status (runtime/driver.STATUS_TEXT) and NaN figures."""
     cdef ModelC* m = _chunk_model(capsule, method, P, Y0, atol, modes0)
+    _check_partition(m, part)
     cdef Py_ssize_t n = P.shape[0], nf = which.shape[0], g
     cdef int k, status, nm = m.n_modes, ns = m.n_states
     if not (Y0.shape[0] == stops.shape[0] == n_stops.shape[0] == h_max.shape[0] == A.shape[0]
@@ -1170,6 +1196,7 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
     if _chunk_open(&c, m, method, &law[0], &law_par[0], t0, h, rtol, &atol[0], max_steps,
                    &modes0[0] if modes0.shape[0] else NULL, max_events, exact, cap) != 0:
         raise MemoryError()
+    c.part = NULL if part is None else &part[0]
     cdef Rec rec
     cdef Py_ssize_t i
     cdef double a, b, v, t, samp

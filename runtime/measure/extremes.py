@@ -81,7 +81,8 @@ def extreme(result, name: str, a: float, b: float, *, absolute: bool, minimum: b
         raise CamdynInputError(f"per_step={per_step} must be >= 1 and candidates={candidates} "
                                "in 1..16")
     value, at, sampling = finder.extreme(*record(result), column(result, name), float(a),
-                                           float(b), absolute, minimum, per_step, candidates)
+                                           float(b), absolute, minimum, per_step, candidates,
+                                           part=result.part)
     return Extreme(float(value), float(at), float(sampling))
 
 
@@ -95,7 +96,8 @@ def dwell_closed_form(result, spec: dict, t1: float) -> tuple | None:
         return None
     t_end = float(result.t[-1])
     got = finder.dwell_figures(*record(result), float(t1), t_end,
-                               column(result, spec["error"]), column(result, spec["acceleration"]))
+                               column(result, spec["error"]), column(result, spec["acceleration"]),
+                               part=result.part)
     if got is None:
         return None
     return Extreme(float(got[0]), float("nan")), Extreme(float(got[1]), float("nan"))
@@ -151,7 +153,8 @@ def first_crossing(result, name: str, level: float) -> float:
     :func:`crossing_time` for another integrator's (or for an output)."""
     if not isinstance(result, Result) or name not in result.state_names:
         return crossing_time(result, name, level)
-    t = finder.crossing(*record(result), result.state_names.index(name), float(level))
+    t = finder.crossing(*record(result), result.state_names.index(name), float(level),
+                        part=result.part)
     if t != t:
         raise CamdynInputError(f"{name} never reaches {level:g} in this run; run longer")
     return float(t)

@@ -319,7 +319,7 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
           t_end: float | None = None, method: str | None = None, rtol: float | None = None,
           law: str | None = None, step: float | None = None, chunk: int | None = None,
           estimate: bool = True, out=None, resume: bool = False, atol: float | None = None,
-          state_atol: dict | None = None) -> SweepResult:
+          state_atol: dict | None = None, dependent=None) -> SweepResult:
     """Run ``target`` (a name, or a target of runtime/targets) at every point of ``grid``
     ({name: values}); ``jobs`` threads (default: every core), or the Dask cluster ``dask``;
     a progress bar on stderr.  Every figure comes with its error estimate (the grid again
@@ -330,7 +330,8 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
     chunk's rows appended once both its passes are in, then sweep.parquet and the charts
     (``.files``).  ``resume`` continues the table a stopped sweep of the same target, grid
     and settings left there: its rows are kept, the others run, and the table ends as an
-    uninterrupted sweep's, to the last bit."""
+    uninterrupted sweep's, to the last bit.  ``dependent``: a constrained model's dependent
+    coordinates (Simulator's ``dependent``) when ``target`` is a model's name."""
     from ..targets.resolve import is_model, resolve
 
     if dask is not None and jobs is not None:
@@ -343,7 +344,7 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
             rtol = MODEL_RTOL
         # a model that declares no rise: its states at t_end (runtime/targets/resolve.py)
         tgt = resolve(target, model_class=None, t_end=t_end, method=method, rtol=rtol, law=law,
-                      step=step, atol=atol, state_atol=state_atol or None)
+                      step=step, atol=atol, state_atol=state_atol or None, dependent=dependent)
     else:
         tgt = target
     axes = _axes(grid)

@@ -135,6 +135,19 @@ def parameters_of(model) -> dict:
     return out
 
 
+def _hashable_names(names) -> tuple:
+    """Names given as a sequence or one comma-separated string, as a tuple (a frozen target's
+    field); anything else is kept for Simulator to refuse by name."""
+    if names is None:
+        return ()
+    if isinstance(names, str):
+        return tuple(n.strip() for n in names.split(","))
+    try:
+        return tuple(names)
+    except TypeError:
+        return (names,)
+
+
 def _hashable_law(law):
     return tuple(sorted(law.items())) if isinstance(law, dict) else law
 
@@ -155,6 +168,8 @@ class ModelTarget(Target):
                 in the state's own units
     max_steps   the step budget of a run (None: the Simulator's); the run one notch tighter
                 of an error estimate has the same budget
+    dependent   a constrained model's dependent coordinates (names; empty: the declared ones),
+                Simulator's ``dependent``
     """
 
     ref: str
@@ -171,6 +186,7 @@ class ModelTarget(Target):
     atol: float | None = None
     state_atol: tuple = ()
     max_steps: int | None = None
+    dependent: tuple = ()
 
     kind = "model"
     chunk = 32
@@ -180,13 +196,15 @@ class ModelTarget(Target):
     @classmethod
     def of(cls, name: str, params: dict | None = None, *, method: str = "dp54", rtol=None,
            step=None, t_end=None, law="cycloidal", theta=None, initial: dict | None = None,
-           label: str = "", progress=None, atol=None, state_atol=None, max_steps=None):
+           label: str = "", progress=None, atol=None, state_atol=None, max_steps=None,
+           dependent=None):
         """The target of a model named on the command line or in code, checked: parameters
         in range, the method's options, the cam law, the initial values, the tolerances."""
         t = cls(model_ref(str(name)), (), method, rtol, step,
                 None if t_end is None else float(t_end), t_end is not None,
                 _hashable_law(law), theta, tuple(sorted((initial or {}).items())), label,
-                atol, tuple(dict(state_atol or {}).items()), max_steps)
+                atol, tuple(dict(state_atol or {}).items()), max_steps,
+                _hashable_names(dependent))
         t.load(progress)
         t = t.with_parameters(params or {})
         t.method()
@@ -291,11 +309,12 @@ class ModelTarget(Target):
         fine step 0.01 tau for the one-DOF model and CAMSHAFT-1 (sec. 4.4.2), 0.01 min(tau,
         tau_b) for CAMSHAFT-2, whose flywheel period is tau_b = tau (Fa/Fv)^(1/2) (5.19)."""
         sim = Simulator(self.model, self.end, "dp54", law=self._law, theta=self.theta,
-                        y0=self._y0)
+                        y0=self._y0, dependent=self.dependent or None)
         p = self.model.parameter_vector(self.values)
         J = driver.eval_jacobian_fd(self.model.capsule, p, sim.law_codes, sim.law_pars,
                                         np.zeros(1), sim.initial_state(p)[None, :],
-                                        np.ascontiguousarray(self.model.state_scales()))[0]
+                                        np.ascontiguousarray(self.model.state_scales()),
+                                        part=sim.part)[0]
         lam = np.linalg.eigvals(J)
         osc = lam.imag[lam.imag > 1e-9 * np.abs(lam)]
         if not osc.size:
@@ -329,7 +348,7 @@ class ModelTarget(Target):
             raise CamdynInputError(f"argument --turn: {self.model.name} has no cam input to drive")
         budget = {} if self.max_steps is None else {"max_steps": self.max_steps}
         return Simulator(self.model, self.end, self.method(), law=self._law, theta=self.theta,
-                         y0=self._y0, **budget)
+                         y0=self._y0, dependent=self.dependent or None, **budget)
 
     def window(self) -> Window | None:
         sim = self.simulator
@@ -475,7 +494,7 @@ class ModelTarget(Target):
             b.t0, b.first_step, b.h_max, b.rtol, b.atol, b.max_steps, b.modes0, b.max_events,
             index[spec["error"]], index[spec["acceleration"]], float(spec["rise_end"]), i_rise,
             per_step, candidates, figures, stats, secs, 0, n, 4096, stride,
-            exact=sim.exact_segments,
+            exact=sim.exact_segments, part=b.part,
             run_which=np.array([index[RUN_WANTED[f.name].name] for f in extra], dtype=np.intc),
             run_kind=np.array([RUN_WANTED[f.name].kind for f in extra], dtype=np.intc),
             run_figures=run_figures)
@@ -546,6 +565,8 @@ class StateTarget(ModelTarget):
         record = {"model": self.model.name, "method": self.method_name, "t_end": self.end,
                   "time_unit": self.model.manifest["time"]["unit"], "state": figures,
                   "n_steps": stats["n_steps"], "n_rhs": stats["n_rhs"]}
+        if self.model.manifest.get("n_constraints"):
+            record["dependent"] = list(res.dependent)
         return Outcome(figures, {}, {}, list(res.warnings), record, stats, res)
 
     def run_points(self, names, points) -> Batch:

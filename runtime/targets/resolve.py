@@ -79,6 +79,10 @@ def resolve(name: str, *, model_class=ModelTarget, progress=None, **settings):
         if method in ("rk4", "koster"):
             settings["rtol"] = None
         return target.with_settings(**settings)
+    if "dependent" in settings:
+        raise CamdynInputError(f"dependent: the scene {name} sets its model's formulation; "
+                               "dependent coordinates are chosen for a constrained model run "
+                               "by name (camdyn integrate MODEL --dependent NAMES)")
     given = [k for k in ("t_end", "law", "step") if k in settings]
     if given:
         raise CamdynInputError(f"{', '.join(given)}: t_end, law and step of a scene come from the "
