@@ -17,8 +17,8 @@ import sympy as sp
 
 from . import symbolic
 from .emit import (Plain, doc_lines, manifest_common, math_imports, number, option_entries,
-                   plainer, render as render_template, residual_entry, state_entries,
-                   time_functions, with_source_hash)
+                   plainer, render as render_template, state_entries, time_functions,
+                   with_source_hash)
 from .lagrange import Equations, derive
 from .model import CamFunction, Model
 from .optimize import ConstantTable, dwell_variants, dwell_zeros
@@ -303,7 +303,9 @@ def _model_manifest(m: Model, eq: Equations, instances: list, events: list,
         "modes": [{"name": mode.name, "values": list(mode.values), "doc": mode.doc,
                    "initial": mode.initial or mode.values[0]} for mode in m.modes],
         "events": [e["name"] for e in events],
-        "residual": residual_entry(m),
+        "residual": None if m.residual is None else {
+            "error": m.residual.error, "acceleration": m.residual.acceleration,
+            "rise_end": m.residual.rise_end, "rise_state": m.residual.rise_state},
         "options": option_entries(m),
         # d(dy/dt)/dy (ModelC.jac): derived symbolically with the equations
         "jacobian": "symbolic",

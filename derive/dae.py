@@ -37,7 +37,7 @@ import re
 import sympy as sp
 
 from .emit import (doc_lines, manifest_common, math_imports, option_entries, plainer,
-                   render as render_template, residual_entry, state_entries, with_source_hash)
+                   render as render_template, state_entries, with_source_hash)
 from .lagrange import Equations, derive, generic_rank
 from .model import Model
 from .optimize import ConstantTable
@@ -141,9 +141,7 @@ def constrained_context(eq: Equations) -> dict:
         "cam_profile": cam_profile,
         "modes": [],
         "events": [e.name for e in m.events],
-        # a constrained follower with a rise has U0, U0'' like any other (the runtime starts
-        # it on its constraints, Simulator.start)
-        "residual": residual_entry(m),
+        "residual": None,
         "options": option_entries(m),
         # d(dy/dt)/dy and df/dt (ModelC.jac): A^-1 d(b - A x)/dy at fixed x (template)
         "jacobian": "symbolic",

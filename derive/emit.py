@@ -171,13 +171,6 @@ def manifest_common(m: Model) -> dict:
     }
 
 
-def residual_entry(m: Model) -> dict | None:
-    """The manifest's residual-vibration declaration (thesis sec. 3.3), None without one."""
-    r = m.residual
-    return None if r is None else {"error": r.error, "acceleration": r.acceleration,
-                                   "rise_end": r.rise_end, "rise_state": r.rise_state}
-
-
 def option_entries(m: Model) -> list:
     """The model's options as JSON (a tuple becomes a list)."""
     return [list(o) if isinstance(o, tuple) else o for o in m.options]
