@@ -539,14 +539,28 @@ cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step,
     return <int> (S.n if S.n < 2147483647 else 2147483647)
 
 
+cdef double _recorded(Rec* r, Py_ssize_t k, int which) noexcept nogil:
+    """State (which < ns) or output (which - ns) at recorded point k, the output from the
+    point's own state in its own modes (as a Result's outputs at its recorded points)."""
+    cdef const double* a = r.rows + k * r.width
+    if which < r.ns:
+        return a[1 + which]
+    if r.nm:
+        memcpy(r.ctx.mode, r.modes + k * r.nm, r.nm * sizeof(int))
+        r.m.refresh(r.ctx)
+    r.m.outputs(a[0], a + 1, r.out, r.ctx)
+    return r.out[which - r.ns]
+
+
 cdef double _crossing(Rec* r, int which, double level, int* ok) noexcept nogil:
-    """First time the state ``which`` reaches ``level``: the first recorded point at or past
-    it, then bisection on the dense output of the step before it to 1e-14."""
+    """First time the state or output ``which`` (outputs after the ns states) reaches
+    ``level``: the first recorded point at or past it, then bisection on the dense output of
+    the step before it to 1e-14."""
     cdef Py_ssize_t k = 0
     cdef double lo, hi, mid
     cdef int it
     ok[0] = 1
-    while k < r.n and r.rows[k * r.width + 1 + which] - level < 0:
+    while k < r.n and _recorded(r, k, which) - level < 0:
         k += 1
     if k == r.n:
         ok[0] = 0
@@ -816,7 +830,8 @@ def extreme(object capsule, double[::1] p, int[::1] law, double[::1] law_par, ro
 
 def crossing(object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows, modes,
              int ns, int nx, int which, double level, part=None):
-    """First time state ``which`` reaches ``level`` (NaN if never)."""
+    """First time state or output ``which`` (outputs after the ns states) reaches ``level``
+    (NaN if never)."""
     cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, nx, part)
     cdef int ok
     cdef double t
@@ -1157,7 +1172,8 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
                    double[:, ::1] sampling, long[:, ::1] stats, double[::1] t_stiff,
                    int mode_col=-1, int mode_value=0, double[::1] first_in_mode=None,
                    Py_ssize_t cap=4096, bint exact=False, const double[:, ::1] atol_rows=None,
-                   const int[::1] part=None):
+                   const int[::1] part=None, const int[::1] sample_which=None,
+                   const double[:, :, ::1] sample_t=None, double[:, :, ::1] sample_v=None):
     """Run every parameter set (rows of P, initial states Y0, stop tables, h_max per run) and
     find extreme k of each run as :func:`extreme` finds it on a recorded run (the same scan,
     refinement and sampling check, so the same bits): state or output ``which[k]`` on
@@ -1167,7 +1183,10 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
     t_stiff: where Hairer's stiffness test first fired (NaN: never).  With ``mode_col`` >= 0,
     first_in_mode[g] is the first recorded time whose mode ``mode_col`` (among all modes, the
     cam segments first) is ``mode_value`` (NaN: none).  ``part`` as :func:`sweep_residual`
-    takes it.  No GIL is held while it runs.
+    takes it.  With ``sample_which``, sample_v[g, k, i] is state or output ``sample_which[k]``
+    at time sample_t[g, k, i] on run g's dense output, as Result.sample gives it (NaN where the
+    time is NaN or outside the run): what a figure needs of a record besides its extremes
+    (runtime/measure/modes.py amplitude_bound).  No GIL is held while it runs.
 
     A run that fails leaves its status (runtime/driver.STATUS_TEXT) and NaN figures."""
     cdef ModelC* m = _chunk_model(capsule, method, P, Y0, atol, modes0)
@@ -1192,6 +1211,16 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
         raise ValueError("mode_col must name a mode, with first_in_mode one value per run")
     if atol_rows is not None and (atol_rows.shape[0] != n or atol_rows.shape[1] != ns):
         raise ValueError("atol_rows: one absolute tolerance per state and run")
+    cdef Py_ssize_t n_sets = 0 if sample_which is None else sample_which.shape[0], n_times = 0
+    if n_sets:
+        if (sample_t is None or sample_v is None or sample_t.shape[0] != n
+                or sample_t.shape[1] != n_sets or sample_v.shape[0] != n
+                or sample_v.shape[1] != n_sets or sample_v.shape[2] != sample_t.shape[2]):
+            raise ValueError("sample_t and sample_v: (runs, len(sample_which), times) each")
+        n_times = sample_t.shape[2]
+        for k in range(n_sets):
+            if not 0 <= sample_which[k] < ns + m.n_outputs:
+                raise ValueError(f"sample set {k}: a state or output expected")
     cdef Chunk c
     if _chunk_open(&c, m, method, &law[0], &law_par[0], t0, h, rtol, &atol[0], max_steps,
                    &modes0[0] if modes0.shape[0] else NULL, max_events, exact, cap) != 0:
@@ -1218,9 +1247,17 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
                 value[g, k] = NAN
                 at[g, k] = NAN
                 sampling[g, k] = NAN
+            for k in range(n_sets):
+                for i in range(n_times):
+                    sample_v[g, k, i] = NAN
             if status != STATUS_OK or c.run.rec.n == 0:
                 continue
             _chunk_record(&c, &rec)
+            for k in range(n_sets):
+                for i in range(n_times):
+                    t = sample_t[g, k, i]
+                    if _t(&rec, 0) <= t <= _t(&rec, rec.n - 1):
+                        sample_v[g, k, i] = _value_in(&rec, t, _step_of(&rec, t), sample_which[k])
             if mode_col >= 0:
                 for i in range(rec.n):
                     if c.rmode[i * nm + mode_col] == mode_value:

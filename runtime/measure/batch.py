@@ -47,6 +47,8 @@ class Runs:
     stats: dict
     t_stiff: np.ndarray
     first_in_mode: np.ndarray | None
+    samples: np.ndarray | None = None
+    """samples[j, k, i]: sampled set k of run j at its i-th time (:func:`run_batch`)."""
 
     def extreme(self, j: int, k: int) -> Extreme | None:
         v = self.value[j, k]
@@ -56,11 +58,15 @@ class Runs:
 
 def run_batch(sim: Simulator, P: np.ndarray, Y0: np.ndarray, t_end: np.ndarray,
               wanted: tuple, spans: np.ndarray, mode: tuple | None = None,
-              atol: np.ndarray | None = None) -> Runs:
+              atol: np.ndarray | None = None, samples: tuple = (),
+              sample_times: np.ndarray | None = None) -> Runs:
     """Run the rows of P from the rows of Y0, each to its own ``t_end`` (its stop times and
     largest step as a Simulator to that end makes them), with ``sim``'s method, laws and modes;
     ``spans[j, k]`` = (a, b) of wanted extreme k in run j (-inf, inf: the run's ends; NaN: not
-    wanted).  ``mode`` = (name, value) of a force element's mode to watch for."""
+    wanted).  ``mode`` = (name, value) of a force element's mode to watch for.  ``samples``:
+    names of states or outputs, set k of ``sample_times[j, k, :]`` (NaN-padded) sampled on
+    run j's dense output as Result.sample samples it, into ``Runs.samples`` (NaN where the
+    time is NaN)."""
     m, meth = sim.model, sim.method
     P = np.ascontiguousarray(np.atleast_2d(P), dtype=float)
     n = len(P)
@@ -83,6 +89,12 @@ def run_batch(sim: Simulator, P: np.ndarray, Y0: np.ndarray, t_end: np.ndarray,
         col = len(m.manifest["cam_instances"]) + k
         val = specs[k]["values"].index(mode[1])
         first = np.empty(n)
+    which_s = T_s = V_s = None
+    if samples:
+        which_s = np.array([column(m, name) for name in samples], dtype=np.intc)
+        T_s = np.ascontiguousarray(np.asarray(sample_times, dtype=float).reshape(
+            n, len(samples), -1))
+        V_s = np.empty_like(T_s)
     finder.sweep_extremes(
         m.capsule, meth.code, sim.law_codes, sim.law_pars, P,
         np.ascontiguousarray(Y0, dtype=float), S, np.array([len(s) for s in stops], dtype=np.intc),
@@ -96,6 +108,6 @@ def run_batch(sim: Simulator, P: np.ndarray, Y0: np.ndarray, t_end: np.ndarray,
         np.ascontiguousarray(spans[:, :, 0]), np.ascontiguousarray(spans[:, :, 1]),
         value, at, samp, stats, t_stiff, col, val, first, exact=sim.exact_segments,
         atol_rows=None if atol is None else np.ascontiguousarray(atol, dtype=float),
-        part=sim.part)
+        part=sim.part, sample_which=which_s, sample_t=T_s, sample_v=V_s)
     return Runs(value, at, samp, {k: stats[:, i] for i, k in enumerate(finder.RUN_STATS)},
-                t_stiff, first)
+                t_stiff, first, V_s)

@@ -149,12 +149,13 @@ def crossing_time(result, name: str, level: float) -> float:
 
 
 def first_crossing(result, name: str, level: float) -> float:
-    """First time the state ``name`` reaches ``level``: compiled for a camdyn run, through
-    :func:`crossing_time` for another integrator's (or for an output)."""
-    if not isinstance(result, Result) or name not in result.state_names:
+    """First time the state or output ``name`` reaches ``level``: compiled for a camdyn run
+    (the crossing a grid's compiled chunk finds, runtime/engine/finder.pyx, so that a chunk's
+    rise ends where a single run's does, bit for bit), through :func:`crossing_time` for
+    another integrator's."""
+    if not isinstance(result, Result):
         return crossing_time(result, name, level)
-    t = finder.crossing(*record(result), result.state_names.index(name), float(level),
-                        part=result.part)
+    t = finder.crossing(*record(result), column(result, name), float(level), part=result.part)
     if t != t:
         raise CamdynInputError(f"{name} never reaches {level:g} in this run; run longer")
     return float(t)

@@ -82,11 +82,24 @@ def amplitude_bound(result, name: str, a: float, b: float, period: float,
     max over the window of (v^2 + (v'/omega)^2)^(1/2), omega = 2 pi/period, v' by central
     differences of the dense output.  For a single sinusoid it is the amplitude wherever the
     window lies, however short: what the largest |v| over a full period would have been."""
-    if not (b > a and period > 0):
+    T = amplitude_times(a, b, period, samples_per_period)
+    if T is None:
         return 0.0
+    return amplitude_from(T, result.sample(T)[name], period)
+
+
+def amplitude_times(a: float, b: float, period: float,
+                    samples_per_period: int = 64) -> np.ndarray | None:
+    """The times :func:`amplitude_bound` samples on [a, b] (None: an empty window or no
+    period), so that a grid's compiled runs can sample them on each record."""
+    if not (b > a and period > 0):
+        return None
     n = max(8, int(math.ceil(samples_per_period * (b - a) / period)) + 1)
-    T = np.linspace(a, b, n)
-    v = result.sample(T)[name]
+    return np.linspace(a, b, n)
+
+
+def amplitude_from(T: np.ndarray, v: np.ndarray, period: float) -> float:
+    """:func:`amplitude_bound` from the values ``v`` at its times ``T``."""
     dv = np.gradient(v, T)
     w = 2 * math.pi / period
     return float(np.max(np.sqrt(v * v + (dv / w) ** 2)))

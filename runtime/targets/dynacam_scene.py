@@ -19,10 +19,11 @@ import numpy as np
 
 from ..core.errors import CamdynInputError, SimulationError
 from ..core.methods import ADAPTIVE, METHODS
-from ..core.simulator import absolute_tolerances
+from ..core.simulator import Simulator, absolute_tolerances
 from ..engine import driver
 from ..measure import batch
-from ..measure.modes import amplitude_bound, slowest_periods
+from ..measure.modes import (amplitude_bound, amplitude_from, amplitude_times,
+                             slowest_periods)
 from . import dynacam, scene_files
 from .base import Batch, Figure, Outcome, Parameter, Target, Window
 from .problem import Problem
@@ -52,6 +53,57 @@ RETURN_FIGURES = (
     Figure("U0_return", "positional error amplitude after the return", output="U", dwell=True),
 )
 """A full turn's ([turn]) figures besides."""
+
+WINDOW_OUTPUTS = {"U0": "U", "U0dd": "Xdd", "U0_return": "U", "U0dd_return": "Xdd"}
+"""The dwell figures of a full turn that may be read from a dwell shorter than their window,
+and the output each is read from."""
+
+
+@dataclass(frozen=True)
+class ShortDwell:
+    """A dwell figure read from [a, b], shorter than ``period``, the slowest mode its output
+    sees; ``times`` where its amplitude is sampled (runtime/measure/modes.py
+    amplitude_times)."""
+
+    name: str
+    output: str
+    a: float
+    b: float
+    period: float
+    times: np.ndarray
+
+
+def short_dwells(scene, model, p, sim, y0, t_m: float, t_end: float, present) -> list:
+    """The ShortDwells of a full turn's run with parameters p from y0 to t_end: of the dwell
+    figures in ``present`` (those the run reaches), the ones whose dwell is shorter than one
+    period of the slowest mode their output sees at the start (sim's laws, modes and t0)."""
+    spans = dynacam.dwell_spans(scene, t_m, t_end)
+    names = [k for k in spans if k in present]
+    periods = slowest_periods(model, p, sim.law_codes, sim.law_pars, sim.t0, y0,
+                              [WINDOW_OUTPUTS[k] for k in names],
+                              np.array(sim.modes0, dtype=np.intc) if sim.modes0 else None)[0]
+    out = []
+    for k, name in enumerate(names):
+        a, b = spans[name]
+        period = float(periods[k])
+        if period <= 0 or b - a >= period:
+            continue
+        out.append(ShortDwell(name, WINDOW_OUTPUTS[name], a, b, period,
+                              amplitude_times(a, b, period)))
+    return out
+
+
+def window_errors(short: list, bounds: list, figures: dict, t_m: float) -> tuple[dict, list]:
+    """(figure -> the part of the oscillation its short dwell does not show, the warning of
+    each) from the amplitude each ShortDwell shows (``bounds``, modes.amplitude_bound)."""
+    window, notes = {}, []
+    for d, bound in zip(short, bounds):
+        window[d.name] = max(0.0, bound - figures[d.name])
+        notes.append(f"{d.name} is read from a dwell of {(d.b - d.a) / t_m:.3g} (T), shorter "
+                     f"than one period of the slowest mode it sees ({d.period / t_m:.3g}): "
+                     f"its estimate includes {window[d.name]:.2g} for the part of the "
+                     "oscillation the dwell does not show")
+    return window, notes
 
 
 @dataclass(frozen=True)
@@ -182,14 +234,37 @@ class DynacamTarget(Target):
     def run_points(self, names: tuple, points: np.ndarray) -> Batch:
         """The points' runs in one compiled call holding no GIL (runtime/measure/batch.py), each
         from its consistent initial state solved beforehand, the figures found on each record
-        as a single run finds them (the same numbers, bit for bit).  A full turn's points run
-        one at a time: a figure read from a dwell shorter than its window takes its estimate
-        from the run's record (:meth:`_window_errors`)."""
-        if self.scene.turn is not None:
-            return super().run_points(names, points)
-        pr = self.prepared
-        model, sim = pr.model, pr.simulator
+        as a single run finds them (the same numbers, bit for bit).  With a full turn a dwell
+        figure read from a dwell shorter than its window takes its estimate from the record
+        (:meth:`_window_errors`): the compiled call samples the dense output where
+        runtime/measure/modes.py amplitude_bound samples a single run's, so the estimates and
+        their warnings are the single runs' too, bit for bit.  A full turn's cam law depends
+        on the rise angle beta_m: points with different ones go in one call each."""
         scenes = [self.with_parameters(dict(zip(names, map(float, pt)))).scene for pt in points]
+        figs = self.figure_names()
+        n = len(points)
+        out = np.full((n, len(figs)), np.nan)
+        samp = np.zeros_like(out)
+        warnings, steps = [[] for _ in range(n)], np.empty(n)
+        groups: dict = {}
+        for j, sc in enumerate(scenes):
+            key = None if sc.turn is None else scene_files.turn_angles(sc)
+            groups.setdefault(key, []).append(j)
+        own = None if self.scene.turn is None else scene_files.turn_angles(self.scene)
+        for key, idx in groups.items():
+            sim = self.prepared.simulator if key == own else Simulator(
+                self.prepared.model, self.prepared.t_end, self.method(),
+                law=scenes[idx[0]].cam_law(), modes=self.scene.modes,
+                max_steps=dynacam.MAX_STEPS)
+            self._run_group(names, points, scenes, idx, sim, out, samp, warnings, steps)
+        return Batch(out, samp, warnings, steps)
+
+    def _run_group(self, names, points, scenes, idx, sim, out, samp, warnings, steps) -> None:
+        """The runs of points ``idx`` (one cam law, ``sim``'s) in one compiled call, their rows
+        of the batch filled in."""
+        model = self.prepared.model
+        idx = np.asarray(idx)
+        scenes = [scenes[j] for j in idx]
         placed = [dynacam.placed(sc) for sc in scenes]
         P = np.array([model.parameter_vector(params) for params, _, _ in placed])
         Y0 = np.array([dynacam.equilibrium(model, p, sim) for p in P])
@@ -201,20 +276,30 @@ class DynacamTarget(Target):
             for s in sp:
                 wanted.setdefault(s.key, batch.Wanted(s.name, s.absolute, s.minimum))
         order = list(wanted)
-        ab = np.full((len(points), len(order), 2), np.nan)
+        ab = np.full((len(idx), len(order), 2), np.nan)
         for j, sp in enumerate(spans):
             for k, key in enumerate(order):
                 if key in sp:
                     ab[j, k] = sp[key].a, sp[key].b
+        # a full turn's dwells shorter than their window: the times their estimate samples
+        short = [[] for _ in idx]
+        if self.scene.turn is not None:
+            short = [short_dwells(sc, model, p, sim, y0, ch["t_m"], end, spans[j])
+                     for j, (sc, p, y0, (_, ch, end)) in enumerate(zip(scenes, P, Y0, placed))]
+        width = max((len(d.times) for sh in short for d in sh), default=0)
+        times = np.full((len(idx), len(WINDOW_OUTPUTS), width), np.nan)
+        for j, sh in enumerate(short):
+            for d in sh:
+                times[j, list(WINDOW_OUTPUTS).index(d.name), :len(d.times)] = d.times
         contact = self.scene.options.roller == "contact"
         # each point's own absolute tolerances, as its single run takes them from its start
         atol = np.array([absolute_tolerances(model, sim.method, y0) for y0 in Y0])
         runs = batch.run_batch(sim, P, Y0, t_end, tuple(wanted.values()), ab,
-                               mode=("roller", "free") if contact else None, atol=atol)
-        self._check_runs(runs, names, points)
+                               mode=("roller", "free") if contact else None, atol=atol,
+                               samples=tuple(WINDOW_OUTPUTS.values()) if width else (),
+                               sample_times=times if width else None)
+        self._check_runs(runs, names, points[idx])
         figs = self.figure_names()
-        out = np.full((len(points), len(figs)), np.nan)
-        samp = np.zeros_like(out)
         for j, (sc, (_, ch, _)) in enumerate(zip(scenes, placed)):
             figures, sampling = dict.fromkeys(keys), {}
             for k, key in enumerate(order):
@@ -225,11 +310,16 @@ class DynacamTarget(Target):
             first = np.nan if runs.first_in_mode is None else runs.first_in_mode[j]
             figures["jump_occurs"] = float(first == first)
             figures["jump_T"] = first / ch["t_m"] + sc.T_start if first == first else None
+            bounds = [amplitude_from(d.times, runs.samples[j, list(WINDOW_OUTPUTS).index(
+                d.name), :len(d.times)], d.period) for d in short[j]]
+            window, notes = window_errors(short[j], bounds, figures, ch["t_m"])
+            g = idx[j]
             for k, f in enumerate(figs):
                 v = figures.get(f)
-                out[j, k] = np.nan if v is None else float(v)
-                samp[j, k] = sampling.get(f, 0.0) + 0.0
-        return Batch(out, samp, [[] for _ in points], runs.stats["n_steps"].astype(float))
+                out[g, k] = np.nan if v is None else float(v)
+                samp[g, k] = sampling.get(f, 0.0) + window.get(f, 0.0)
+            warnings[g] = notes
+            steps[g] = float(runs.stats["n_steps"][j])
 
     def _check_runs(self, runs, names, points) -> None:
         """A run of the batch that failed, run alone: it raises what it ran into."""
@@ -246,27 +336,11 @@ class DynacamTarget(Target):
         shorter than one period of the slowest mode its output sees carries the difference
         between the amplitude the span shows (runtime/measure/modes.py) and its value."""
         pr = self.prepared
-        sim = pr.simulator
         p = pr.model.parameter_vector(pr.params)
-        spans = dynacam.dwell_spans(self.scene, pr.t_m, pr.t_end)
-        outputs = {"U0": "U", "U0dd": "Xdd", "U0_return": "U", "U0dd_return": "Xdd"}
-        names = [k for k in spans if figures.get(k) is not None]
-        periods = slowest_periods(pr.model, p, sim.law_codes, sim.law_pars, sim.t0, pr.y0,
-                                  [outputs[k] for k in names],
-                                  np.array(sim.modes0, dtype=np.intc) if sim.modes0 else None)[0]
-        window, notes = {}, []
-        for k, name in enumerate(names):
-            a, b = spans[name]
-            period = float(periods[k])
-            if period <= 0 or b - a >= period:
-                continue
-            bound = amplitude_bound(res, outputs[name], a, b, period)
-            window[name] = max(0.0, bound - figures[name])
-            notes.append(f"{name} is read from a dwell of {(b - a) / pr.t_m:.3g} (T), shorter "
-                         f"than one period of the slowest mode it sees ({period / pr.t_m:.3g}): "
-                         f"its estimate includes {window[name]:.2g} for the part of the "
-                         "oscillation the dwell does not show")
-        return window, notes
+        short = short_dwells(self.scene, pr.model, p, pr.simulator, pr.y0, pr.t_m, pr.t_end,
+                             {k for k, v in figures.items() if v is not None})
+        bounds = [amplitude_bound(res, d.output, d.a, d.b, d.period) for d in short]
+        return window_errors(short, bounds, figures, pr.t_m)
 
     def problem(self) -> Problem:
         pr, sc = self.prepared, self.scene

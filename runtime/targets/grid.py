@@ -1,11 +1,13 @@
 """A target over a grid of its parameters: the runs in chunks, on threads (or any mapper, a
 Dask cluster's), with the answer contract applied to every point.
 
-A chunk is ``target.run_points(names, points)``: a model's chunk with an adaptive method runs
-in compiled code holding no GIL (runtime/engine/finder.pyx), so threads run chunks side by
+A chunk is ``target.run_points(names, points)``: with an adaptive method a target's chunk
+runs in compiled code holding no GIL (runtime/engine/finder.pyx, runtime/measure/batch.py),
+what each point needs of Python (a consistent initial state, a scene's equilibrium, the times
+a full turn's short dwells are sampled at) made beforehand, so threads run chunks side by
 side on as many cores (threads rather than processes: no pickling, no start-up, one copy of
-the model); a scene's chunk runs point by point, its threads overlapping only in the compiled
-integration.  With the error estimate, every point runs again one notch tighter; the two
+the model); fixed-step methods run point by point (their stability check lives in
+Simulator.run).  With the error estimate, every point runs again one notch tighter; the two
 passes of a chunk go out side by side, so that its rows are whole as soon as both are in, and
 the rows come back in the grid's order (a sweep writes its table as they come).
 """

@@ -444,18 +444,15 @@ class ModelTarget(Target):
         return np.ascontiguousarray(P)
 
     def run_points(self, names: tuple, points: np.ndarray) -> Batch:
-        sim = self.simulator
-        # constrained models start from their projected initial state (Simulator.run)
-        if not sim.method.adaptive or hasattr(self.model.module, "consistent_state") \
-                or self.spec.get("rise_state") and \
-                self.spec["rise_state"] not in self.model.state_names:
+        if not self.simulator.method.adaptive:
             return self._points_one_by_one(names, points)
         return self.residual_points(names, points)
 
     def _points_one_by_one(self, names, points) -> Batch:
-        """Fixed-step methods (their stability check lives in Simulator.run) and constrained
-        models or rises the compiled chunk does not handle: one run at a time, one
-        Simulator."""
+        """Fixed-step methods (their stability check lives in Simulator.run): one run at a
+        time, one Simulator; the adaptive methods' points run in compiled chunks
+        (:meth:`residual_points`), constrained models and rises that end at an output's
+        crossing included."""
         figs = self.figure_names()
         out = np.full((len(points), len(figs)), np.nan)
         samp = np.zeros_like(out)
@@ -470,14 +467,21 @@ class ModelTarget(Target):
 
     def residual_points(self, names, points, reference: bool = False) -> Batch:
         """The residual-vibration figures of every point (a model with an adaptive method whose
-        rise ends at a time or at a state's crossing) in one compiled call holding no GIL: the
-        sweep's scan (:func:`scan_density`, the CANDIDATES best peaks refined), or with
-        ``reference`` the scan of a single run (runtime/measure/residual.py: 12 samples a
-        step, the best refined), whose figures equal a single run's bit for bit; and the
-        extremes over the whole run (RUN_EXTREMES, CAMSHAFT-2's) as :meth:`read` finds them
-        on a single run, bit for bit."""
+        rise ends at a time or where a state or output crosses a level) in one compiled call
+        holding no GIL: the sweep's scan (:func:`scan_density`, the CANDIDATES best peaks
+        refined), or with ``reference`` the scan of a single run (runtime/measure/residual.py:
+        12 samples a step, the best refined), whose figures equal a single run's bit for bit;
+        and the extremes over the whole run (RUN_EXTREMES, CAMSHAFT-2's) as :meth:`read` finds
+        them on a single run, bit for bit.  A constrained model's points start from their
+        consistent states, solved beforehand as Simulator.run solves them (Simulator.start),
+        each with the note a single run gives where that moved it."""
         model, sim, spec = self.model, self.simulator, self.spec
         b = sim.batch_inputs(self._grid_parameters(names, points))
+        notes = [None] * len(points)
+        if hasattr(model.module, "consistent_state"):
+            starts = [sim.start(p, y0) for p, y0 in zip(b.P, b.Y0)]
+            b = replace(b, Y0=np.ascontiguousarray([y for y, _ in starts], dtype=float))
+            notes = [note for _, note in starts]
         n, ns = len(points), len(model.state_names)
         index = {k: i for i, k in enumerate(model.state_names)}
         index.update({k: ns + i for i, k in enumerate(model.output_names)})
@@ -517,7 +521,7 @@ class ModelTarget(Target):
             samp[:, k] = figures[:, col[f + "_sampling"]]
         samp[:, 4:] = run_figures[:, 1::2]
         return Batch(np.hstack([figures[:, :4], run_figures[:, 0::2]]), samp,
-                     [[] for _ in range(n)], stats[:, 1].astype(float))
+                     [[note] if note else [] for note in notes], stats[:, 1].astype(float))
 
     # -- other studies -------------------------------------------------------------------
 
