@@ -141,7 +141,10 @@ def constrained_context(eq: Equations) -> dict:
         "cam_profile": cam_profile,
         "modes": [],
         "events": [e.name for e in m.events],
-        "residual": None,
+        # a rise and its residual vibration, declared as for an unconstrained model
+        "residual": None if m.residual is None else {
+            "error": m.residual.error, "acceleration": m.residual.acceleration,
+            "rise_end": m.residual.rise_end, "rise_state": m.residual.rise_state},
         "options": option_entries(m),
         # d(dy/dt)/dy and df/dt (ModelC.jac): A^-1 d(b - A x)/dy at fixed x (template)
         "jacobian": "symbolic",

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:db199c9d506de57f96fa0f8cda7f64cac2d806020266d12a23e91d8571a140e9
-# Text hash: sha256:665b6c5ddeb4ce7308459c6c19f6fe17c7ec5bfa32ecf7dae6d5443f33ca5a76
+# Derivation key: sha256:2e6c90f85ba41a6c874f234c7f7ee4dbf0a8eb9d35d07a41dac2147727f2a368
+# Text hash: sha256:86e18d798a4884d834dc59541635a74f74d92fcf5aa002fa231c664a5f71457e
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:c16b3556f450993e2cc9f2fd4a99c60d51901b4ed16007df3788e4358514ae33

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:cab01a73da94c4079d2f5bdc4eac721bbd9d1ddd90569d98fe00e66e67e058e9
-# Text hash: sha256:b7e49cc752656fcd23a65dba8b794528f63d88bc5c777cfda2ff241040a44562
+# Derivation key: sha256:73e435b7177ecf50f16684b5c07a0e8a18ddf276dd1cf40229416756e9efb7e8
+# Text hash: sha256:8d0af1da06f5757a199359a4687e47937cfb0777f31bd3afe9fa902733bd4834
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:a4c10ed1c7eeed79759d12da9812dfb2e08f6d7ceaf7defeb99a53905305f1ad

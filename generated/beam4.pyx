@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6e25ea9a93afa04809abea1bb9273779145819faee4fee24437a8e6e4b61362a
-# Text hash: sha256:4307a27cb895d79dfaf44bff70b0985765ff86ebd8a5cb26f39fb95b18ddc8db
+# Derivation key: sha256:8f66d8b05fc559b43a1a12a336066f5bf364515dc6a49d9ceaa35530ee1fd67b
+# Text hash: sha256:e7d43b5703d7aff0a5fb21be6dc77e36efba890d900de41fd05fe68ca6627634
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:64a7efcd9334b75fa69119f83904c9f9c8d47957738123d27eab23d9cd1693f4

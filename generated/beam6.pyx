@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:2d58b09a371abe0e68fdb0eeb11c90fe0fff6e57e08e7e3a3f2a1c355b046d6d
-# Text hash: sha256:5e5af4565bef17b9a49812d104185d9397bec62bcd5687e8c15aca179187a524
+# Derivation key: sha256:3c0613f09247e584f8f0186d5558e369954fda340ba7c0a8fd380d8a0bdedc30
+# Text hash: sha256:6ccb1ddf377d28ba9208e5ad8566dcaa007a47a917878cf49e5443c9793d67db
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:ba76292f91dfbbd6b8d39b0bd7d40b2000e3a575b4d3c5fd9aa69df4a2837883

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a6efee421fd8f78ecf11cb47615ac40b07ca7a345b1769dfbeb645648765728a
-# Text hash: sha256:a892c554a16428157f83c44f2279351f76cc54e756a7d87d66ab9e70887b4db3
+# Derivation key: sha256:4f43845ab8fd868baadc39ad1ba7a35ad4dda780c75ea01e8200647dee0b42b0
+# Text hash: sha256:fd356813e1e68096649f9b2326ad7d2d6af37023cbc6a48edc6d02057365ecb4
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:161a1c58ca2d37fcefd956520d1151d5da9a8e1578200587452bf241fc0d81e3

@@ -7,6 +7,7 @@ model (thesis (3.3) with the damping of (6.47)), against the same dwell integrat
 rtol 1e-13, and for what must not change: models that are not linear there, the thesis scheme,
 the stability map's runs, and the dense output's accuracy at rtol.
 """
+import json
 import math
 
 import numpy as np
@@ -209,3 +210,28 @@ def test_the_record_of_a_damped_stiff_dwell_thins_out():
     T = np.linspace(1.0, 3.0, 4001)
     err = np.abs(exact.sample(T)["X"] - ref.sample(T)["X"]).max()
     assert err < 1e-5 * np.abs(ref["X"]).max(), err
+
+
+def test_integrate_command_steps_over_the_dwell_on_request(capsys):
+    """`camdyn integrate --exact-segments on` with radau5 on the roller held on its damped
+    contact spring: the same end state as the run integrating the dwell (within the two runs'
+    tolerance, rtol 1e-6 of the follower's stroke), in fewer recorded points (the dwell's
+    record thins out, test above); a bad value is one line with status 2."""
+    from camdyn.runtime.cli import main
+
+    base = ["integrate", "roller_bilateral", "--set", "kappa=1000", "--set", "zeta=0.1",
+            "--t-end", "3", "--method", "radau5", "--rtol", "1e-6", "--json",
+            "--no-error-estimate"]
+    runs = {}
+    for flag in ("on", "off"):
+        assert main(base + ["--exact-segments", flag]) == 0
+        runs[flag] = json.loads(capsys.readouterr().out)
+    on, off = runs["on"], runs["off"]
+    assert on["exact_segments"] is True and off["exact_segments"] is False
+    assert on["n_steps"] * 2 < off["n_steps"]
+    assert abs(on["state"]["X"] - off["state"]["X"]) < 1e-6 * 1.0
+    with pytest.raises(SystemExit) as exc:        # argparse's refusal
+        main(base + ["--exact-segments", "maybe"])
+    assert exc.value.code == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--exact-segments" in err[0]

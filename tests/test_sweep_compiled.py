@@ -136,7 +136,7 @@ s(t) = 1 - exp(-4 t) (a rise that ends at t = 1 for its residual figures)."""
 import sympy as sp
 
 from camdyn.derive.model import (Constraint, ConstraintSolver, Coordinate, Model, Output,
-                                 Parameter, time)
+                                 Parameter, Residual, time)
 
 t = time("t")
 x = Coordinate("x", "m", "first mass", initial=0.0)
@@ -160,7 +160,8 @@ def build() -> Model:
                           Output("Xdd", X.diff(t, 2), "m/s^2", "acceleration")),
                  constraints=(Constraint("link", Y - X, "lam", "N", "link force"),),
                  solver=ConstraintSolver(baumgarte_rate=w.symbol, formulation=form.symbol,
-                                         dependent=("y",)))
+                                         dependent=("y",)),
+                 residual=Residual("U", "Xdd", rise_end=1.0))
 '''
 """A constrained model with a rise: its declared start (y = 0.02 off the link) is projected
 onto the constraint before every run, with a note."""
@@ -168,9 +169,8 @@ onto the constraint before every run, with a note."""
 
 @pytest.fixture(scope="module")
 def linked(tmp_path_factory):
-    """The model file above, built on demand into a cache of the test's own, with the
-    residual declaration of a rise that ends at t = 1 (the derivation of a constrained model,
-    derive/dae.py, writes none into its manifest yet)."""
+    """The model file above, built on demand into a cache of the test's own; its rise, which
+    ends at t = 1, declared as an unconstrained model declares it."""
     import os
 
     from camdyn.runtime.core import ondemand
@@ -182,9 +182,8 @@ def linked(tmp_path_factory):
     os.environ[ondemand.ENV_CACHE] = str(folder / "cache")
     try:
         model = ondemand.model_file(str(path))      # loaded once per process
-        assert model.manifest.get("residual") is None
-        model.manifest["residual"] = {"error": "U", "acceleration": "Xdd", "rise_end": 1.0,
-                                      "rise_state": ""}
+        assert model.manifest.get("residual") == {"error": "U", "acceleration": "Xdd",
+                                                  "rise_end": 1.0, "rise_state": ""}
         yield str(path)
     finally:
         if old is None:

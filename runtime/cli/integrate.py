@@ -31,6 +31,12 @@ def add(sub):
     ig.add_argument("--max-steps", type=int, default=None, metavar="N",
                     help="the run's budget of steps, a whole number >= 1 (default 5,000,000); "
                          "the error estimate's run one notch tighter has the same budget")
+    ig.add_argument("--exact-segments", default=None, choices=("on", "off"),
+                    help="step over intervals where the model is linear and time invariant (a "
+                         "dwell) with their exact propagator e^(A h), the record's points "
+                         "spreading out as the vibration fades; default: on for rk4 and "
+                         "dop853, off for the others (on pays for rodas4 and radau5 where a "
+                         "stiff mode is damped, e.g. a contact with damping)")
     ig.add_argument("--law", default="cycloidal", choices=law_names(), help="cam law of the inputs")
     ig.add_argument("--theta", type=float, default=None, help="shape parameter of the law")
     ig.add_argument("--turn", default=None, metavar="RISE,UP,RETURN,LOW",
@@ -85,7 +91,9 @@ def run(args) -> int:
         t = resolve.model(args.model, StateTarget, say, params=params, method=args.method,
                           rtol=args.rtol, step=args.step, t_end=args.t_end, law=law,
                           theta=theta, initial=initial, max_steps=args.max_steps,
-                          dependent=args.dependent, **tolerances(args))
+                          dependent=args.dependent, **tolerances(args),
+                          exact=None if args.exact_segments is None
+                          else args.exact_segments == "on")
         if args.out:
             from ..core.outdir import out_folder
 

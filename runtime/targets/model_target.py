@@ -170,6 +170,8 @@ class ModelTarget(Target):
                 of an error estimate has the same budget
     dependent   a constrained model's dependent coordinates (names; empty: the declared ones),
                 Simulator's ``dependent``
+    exact       step over linear, time-invariant intervals with their exact propagator
+                (Simulator's ``exact_segments``; None: the method's default)
     """
 
     ref: str
@@ -187,6 +189,7 @@ class ModelTarget(Target):
     state_atol: tuple = ()
     max_steps: int | None = None
     dependent: tuple = ()
+    exact: bool | None = None
 
     kind = "model"
     chunk = 32
@@ -197,14 +200,14 @@ class ModelTarget(Target):
     def of(cls, name: str, params: dict | None = None, *, method: str = "dp54", rtol=None,
            step=None, t_end=None, law="cycloidal", theta=None, initial: dict | None = None,
            label: str = "", progress=None, atol=None, state_atol=None, max_steps=None,
-           dependent=None):
+           dependent=None, exact=None):
         """The target of a model named on the command line or in code, checked: parameters
         in range, the method's options, the cam law, the initial values, the tolerances."""
         t = cls(model_ref(str(name)), (), method, rtol, step,
                 None if t_end is None else float(t_end), t_end is not None,
                 _hashable_law(law), theta, tuple(sorted((initial or {}).items())), label,
                 atol, tuple(dict(state_atol or {}).items()), max_steps,
-                _hashable_names(dependent))
+                _hashable_names(dependent), exact)
         t.load(progress)
         t = t.with_parameters(params or {})
         t.method()
@@ -348,7 +351,8 @@ class ModelTarget(Target):
             raise CamdynInputError(f"argument --turn: {self.model.name} has no cam input to drive")
         budget = {} if self.max_steps is None else {"max_steps": self.max_steps}
         return Simulator(self.model, self.end, self.method(), law=self._law, theta=self.theta,
-                         y0=self._y0, dependent=self.dependent or None, **budget)
+                         y0=self._y0, dependent=self.dependent or None,
+                         exact_segments=self.exact, **budget)
 
     def window(self) -> Window | None:
         sim = self.simulator
@@ -568,7 +572,8 @@ class StateTarget(ModelTarget):
         stats["stiff_from_T"] = res.stiff_from_T
         record = {"model": self.model.name, "method": self.method_name, "t_end": self.end,
                   "time_unit": self.model.manifest["time"]["unit"], "state": figures,
-                  "n_steps": stats["n_steps"], "n_rhs": stats["n_rhs"]}
+                  "n_steps": stats["n_steps"], "n_rhs": stats["n_rhs"],
+                  "exact_segments": res.exact_segments}
         if self.model.manifest.get("n_constraints"):
             record["dependent"] = list(res.dependent)
         return Outcome(figures, {}, {}, list(res.warnings), record, stats, res)
