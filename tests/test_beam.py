@@ -334,6 +334,33 @@ def test_rigid_limit_kinematics(rigid, default_runs):
     assert t[-1] == pytest.approx(c.period, rel=1e-12)
 
 
+def test_rigid_limit_with_the_roller_s_inertia_by_radau5(default_runs):
+    """E x 1e6 at N = 6 with the roller's inertia (a uniform disc) and the cycloidal law, one
+    revolution, by radau5 with the mode amplitudes held to 0.1 of the rod's deflection scale:
+    the start rings the modes (undamped, at about 1e-11 m, 0.2 of that scale, near 50 MHz),
+    which this tolerance lets the L-stable method step over; the default mode tolerance (3e-5
+    of the scale) would have every method follow that ringing, ~1e8 steps a revolution.
+    Asserted: under 1000 steps (measured 374); the rigid kinematics as in
+    test_rigid_limit_kinematics (x_E = d - r(Omega t) within 1e-6 d, theta = Omega t within
+    1e-6 of a revolution), the deflection under 3e-4 of the default run's (measured 1.22e-10
+    m, 5.6e-7 of it), and the same max |v_E| within 1e-4 at mode tolerances 0.1 and 1 (measured
+    5e-6 apart)."""
+    peaks = []
+    for mode_atol in (0.1, 1.0):
+        case = replace(DEFAULT, modes=6, E=DEFAULT.E * 1e6, method="radau5", rtol=1e-6,
+                       mode_atol=mode_atol)
+        sim, _ = beam.simulator(case, max_steps=1000)
+        res = sim.run(beam.parameters(case))
+        t = np.array(res["t"])
+        x_rigid = (case.distance - case.base_radius - case.roller_radius
+                   - case.rise * rdfd(case.omega * t)[0])
+        assert np.abs(np.array(res["xE"]) - x_rigid).max() < 1e-6 * case.distance
+        assert np.abs(np.array(res["theta"]) - case.omega * t).max() < 1e-6 * 2 * np.pi
+        peaks.append(np.abs(tip(res, case)).max())
+    assert peaks[0] < 3e-4 * np.abs(tip(default_runs["augmented"], DEFAULT)).max()
+    assert peaks[1] == pytest.approx(peaks[0], rel=1e-4)
+
+
 def test_rigid_limit_multipliers(rigid):
     """Multipliers in the rigid limit (E x 1e4 at N = 3, E x 1e6 at N = 1; J_r = 0).  From M Q'' + Phi_Q^T lambda = f with
     dPhi2/dx_E = 1 and dPhi1/dx_E = -dv_E/dx_E -> 0, the x_E equation of the rigid follower,
