@@ -2096,13 +2096,14 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
     compares its interpolant with the exact state at s = 1/(2 (n_extra + 1)) (the first node
     of the level below, where the interpolant's error is near its largest), in the step
     control's norm; a step whose error exceeds the tolerance is taken again one rung lower
-    (the lowest one always holds), and the next step is one rung higher when 2^p times the
-    error would still be within half of it (p = 4 + n_extra, the interpolant's order) and the
-    position is on that rung's grid.  A damped fast mode (a stiff contact) then sets the
+    (the lowest one always holds), and the next step is as many rungs higher as keep 2^p times
+    the error a rung within half of it (p = 4 + n_extra, the interpolant's order) with the
+    position on that rung's grid.  A damped fast mode (a stiff contact) then sets the
     record's density only while it rings."""
     cdef Ctx* ctx = run.ctx
     cdef Record* r = &run.rec
-    cdef int nx = r.n_extra, i, j, k = 0, K = 0, kmax, built = -1, status = STATUS_OK
+    cdef int nx = r.n_extra, i, j, k = 0, K = 0, kmax, status = STATUS_OK
+    cdef char ready[64]
     cdef bint adaptive = adaptive_method(run.method)
     cdef double t = a, h, h0, H, rate, err = 0.0, grow
     cdef double y[_NS]
@@ -2175,16 +2176,20 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
         free(A)
         free(levels)
         return STATUS_NO_MEMORY
+    # every rung's first pair, the square of the one below (its test pair), now: a matrix
+    # product each; the rest of a rung (_exact_level) only once a step is taken on it
+    for k in range(kmax + 1):
+        T = root if k == 0 else levels + (k - 1) * size
+        L = levels + k * size
+        _matmul(_NS, T, T, L)
+        _affine(T, T + (nx + 1 if k > 0 else 1) * _NS * _NS, T + (nx + 1 if k > 0 else 1) * _NS * _NS,
+                L + (nx + 1) * _NS * _NS)
+    k = 0
+    memset(ready, 0, sizeof(ready))
     while idx < n0:
-        if k > built:
-            # the rung's first pair is the square of the test pair, the first pair one rung down
-            T = root if k == 0 else levels + (k - 1) * size
-            L = levels + k * size
-            _matmul(_NS, T, T, L)
-            _affine(T, T + (nx + 1 if k > 0 else 1) * _NS * _NS, T + (nx + 1 if k > 0 else 1) * _NS * _NS,
-                    L + (nx + 1) * _NS * _NS)
-            _exact_level(nx, W, h0 * (1L << k), A, c, L)
-            built = k
+        if not ready[k]:
+            _exact_level(nx, W, h0 * (1L << k), A, c, levels + k * size)
+            ready[k] = 1
         L = levels + k * size
         stride = 1L << k
         H = h0 * stride
@@ -2227,9 +2232,12 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
                 run.t_fail = t
                 status = STATUS_MAX_STEPS
                 break
+            # up as many rungs as the error allows (2^p times more a rung) and the grid admits
             grow = err * (1L << (4 + nx))
-            if k < kmax and grow <= 0.5 and idx % (2 * stride) == 0:
+            while k < kmax and grow <= 0.5 and idx % (2 * stride) == 0:
                 k += 1
+                stride *= 2
+                grow *= (1L << (4 + nx))
     run.n_steps += done
     memcpy(run.y, y, sizeof(y))
     free(A)
