@@ -2039,17 +2039,18 @@ cdef double _lti_rate(const double* A) noexcept nogil:
     return bound
 
 
-cdef inline void _exact_sizes(int nx, long* level) noexcept nogil:
-    # a level's block: the propagators (Phi, Gam) to s_j H, j = 1 .. nx + 1, then the extras'
-    # affine map X (nx _NS x _NS) and x0 (nx _NS)
-    level[0] = (2 * nx + 1) * (_NS * _NS + _NS)
+cdef inline double* _gam(double* L, int nx) noexcept nogil:
+    """Gam of a rung's first propagator pair: a rung's block holds (Phi, Gam) to s_j H,
+    j = 1 .. nx + 1, the nx + 1 Phi first, then the Gam, then the extras' affine map X
+    (nx _NS x _NS) and x0 (nx _NS): (2 nx + 1)(_NS^2 + _NS) doubles."""
+    return L + (nx + 1) * _NS * _NS
 
 
-cdef int _exact_level(int nx, const double* W, double H, const double* A, const double* c,
-                      double* L) noexcept nogil:
-    """Complete a level's block L whose first propagator pair (to H/(nx + 1)) is in place:
-    its powers to the other nodes and the step's end, and the extras of a step of length H
-    as an affine map of the step's starting state; -1 when out of memory."""
+cdef void _exact_level(int nx, const double* W, double H, const double* A, const double* c,
+                       double* L) noexcept nogil:
+    """Complete a rung's block L (_gam) whose first propagator pair (to H/(nx + 1)) is in
+    place: its powers to the other nodes and the step's end, and the extras of a step of
+    length H as an affine map of the step's starting state."""
     cdef double* P = L
     cdef double* G = L + (nx + 1) * _NS * _NS
     cdef double* X = G + (nx + 1) * _NS
@@ -2065,7 +2066,7 @@ cdef int _exact_level(int nx, const double* W, double H, const double* A, const 
         _matmul(_NS, P, P + (j - 1) * _NS * _NS, P + j * _NS * _NS)
         _affine(P, G + (j - 1) * _NS, G, G + j * _NS)
     if nx == 0:
-        return 0
+        return
     # every input of fit_extras is affine in the step's starting state, so are the extras:
     # X y + x0, fitted once from the zero state and the unit states
     for i in range(_NS + 1):
@@ -2084,7 +2085,6 @@ cdef int _exact_level(int nx, const double* W, double H, const double* A, const 
     for i in range(_NS):
         for j in range(nx * _NS):
             X[j * _NS + i] -= x0[j]
-    return 0
 
 
 cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
@@ -2105,7 +2105,7 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
     cdef int nx = r.n_extra, i, j, k = 0, K = 0, kmax, status = STATUS_OK
     cdef char ready[64]
     cdef bint adaptive = adaptive_method(run.method)
-    cdef double t = a, h, h0, H, rate, err = 0.0, grow
+    cdef double t = a, h, h0, H, rate, err = 0.0, grow, v
     cdef double y[_NS]
     cdef double yn[_NS]
     cdef double f[_NS]
@@ -2116,19 +2116,18 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
     cdef double ex[8 * _NS]
     cdef double W[64]
     cdef double* A
-    cdef double* root          # the propagator pair to h0/(2 (nx + 1)): level 0's test
-    cdef double* levels
+    # block 0 the root, the propagator pair to h0/(2 (nx + 1)) (rung 0's test pair), block
+    # k + 1 rung k, whose first pair is the square of the block below's (its test pair)
+    cdef double* blocks
     cdef double* L
     cdef double* T
     cdef double* row
-    cdef long size, idx = 0, n0, stride, done = 0
-    _exact_sizes(nx, &size)
+    cdef long size = (2 * nx + 1) * (_NS * _NS + _NS), idx = 0, n0, stride, done = 0
     if fit_matrix(nx, W) != 0:
         return STATUS_BAD_MODEL
-    A = <double*> malloc((_NS * _NS + _NS * _NS + _NS) * sizeof(double))
+    A = <double*> malloc(_NS * _NS * sizeof(double))
     if A == NULL:
         return STATUS_NO_MEMORY
-    root = A + _NS * _NS
     memcpy(y, run.y, sizeof(y))
     rhs(t, y, f, ctx)
     jacobian(t, y, A, NULL, ctx)
@@ -2163,49 +2162,47 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
             free(A)
             return STATUS_MAX_STEPS
     h0 = (b - a) / n0
-    levels = <double*> malloc((kmax + 1) * size * sizeof(double))
-    if levels == NULL:
+    blocks = <double*> malloc((kmax + 2) * size * sizeof(double))
+    if blocks == NULL:
         free(A)
         return STATUS_NO_MEMORY
-    if _expm_affine(A, c, 0.5 * h0 / (nx + 1), root, root + _NS * _NS) != 0:
+    if _expm_affine(A, c, 0.5 * h0 / (nx + 1), blocks, _gam(blocks, nx)) != 0:
         run.t_fail = t
         free(A)
-        free(levels)
+        free(blocks)
         return STATUS_NOT_FINITE
     if _rec_point(run, t, y, f) != 0:
         free(A)
-        free(levels)
+        free(blocks)
         return STATUS_NO_MEMORY
-    # every rung's first pair, the square of the one below (its test pair), now: a matrix
-    # product each; the rest of a rung (_exact_level) only once a step is taken on it
+    # every rung's first pair now, a matrix product each; the rest of a rung (_exact_level)
+    # only once a step is taken on it
     for k in range(kmax + 1):
-        T = root if k == 0 else levels + (k - 1) * size
-        L = levels + k * size
+        T = blocks + k * size
+        L = T + size
         _matmul(_NS, T, T, L)
-        _affine(T, T + (nx + 1 if k > 0 else 1) * _NS * _NS, T + (nx + 1 if k > 0 else 1) * _NS * _NS,
-                L + (nx + 1) * _NS * _NS)
+        _affine(T, _gam(T, nx), _gam(T, nx), _gam(L, nx))
     k = 0
     memset(ready, 0, sizeof(ready))
     while idx < n0:
+        T = blocks + k * size          # the test pair
+        L = T + size
         if not ready[k]:
-            _exact_level(nx, W, h0 * (1L << k), A, c, levels + k * size)
+            _exact_level(nx, W, h0 * (1L << k), A, c, L)
             ready[k] = 1
-        L = levels + k * size
         stride = 1L << k
         H = h0 * stride
-        _affine(L + nx * _NS * _NS, y, L + (nx + 1) * _NS * _NS + nx * _NS, yn)
+        _affine(L + nx * _NS * _NS, y, _gam(L, nx) + nx * _NS, yn)
         _affine(A, yn, c, fn)
         if nx:     # the step's extras, X y + x0
             row = L + (nx + 1) * (_NS * _NS + _NS)
             for j in range(nx * _NS):
-                H = row[nx * _NS * _NS + j]
+                v = row[nx * _NS * _NS + j]
                 for i in range(_NS):
-                    H += row[j * _NS + i] * y[i]
-                ex[j] = H
-            H = h0 * stride
+                    v += row[j * _NS + i] * y[i]
+                ex[j] = v
         if adaptive:
-            T = root if k == 0 else levels + (k - 1) * size
-            _affine(T, y, T + (nx + 1 if k > 0 else 1) * _NS * _NS, yt)
+            _affine(T, y, _gam(T, nx), yt)
             _dense(0.5 / (nx + 1), H, y, yn, f, fn, ex, nx, yi)
             for i in range(_NS):
                 yi[i] -= yt[i]
@@ -2241,7 +2238,7 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
     run.n_steps += done
     memcpy(run.y, y, sizeof(y))
     free(A)
-    free(levels)
+    free(blocks)
     return status
 
 
