@@ -28,6 +28,7 @@ import numpy as np
 
 from camdyn.runtime.engine.abi cimport *
 from camdyn.runtime.engine.dense cimport dense_component
+from camdyn.runtime.engine.partition cimport check_partition
 from camdyn.runtime.engine.dop853 cimport D8_A, D8_C, D8_D, D8_E3, D8_E5
 from camdyn.runtime.engine.linalg cimport clu_factor, clu_solve, lu_factor, lu_solve
 from camdyn.runtime.engine.radau cimport *
@@ -153,16 +154,6 @@ cdef ModelC* model_pointer(object capsule) except NULL:
     return m
 
 
-cdef int _check_partition(ModelC* m, const int[::1] part) except -1:
-    """A ValueError unless ``part`` is None (the declared partition) or a coordinate partition
-    of the constrained model m (Ctx.part)."""
-    if part is not None and not partition_ok(m, &part[0] if part.shape[0] else NULL,
-                                             part.shape[0]):
-        raise ValueError(f"a coordinate partition is {m.n_q} distinct coordinate indices of a "
-                         "constrained model, the dependent ones first")
-    return 0
-
-
 cdef class ParameterTable:
     """A model's parameters (names, defaults, ranges) for CompiledModel.parameter_vector's
     common case, checked in C: every value given an exact float, finite and in its range.
@@ -254,7 +245,7 @@ cdef class Integrator:
                  int stab_mode=0, double[::1] stab_bound=None, bint exact=False,
                  const int[::1] part=None):
         self.m = model_pointer(capsule)
-        _check_partition(self.m, part)
+        check_partition(self.m, part)
         self.part = None if part is None else np.array(part, dtype=np.intc)
         self.capsule = capsule
         cdef int ns = self.m.n_states, ne = self.m.n_modes - self.m.n_instances
@@ -550,7 +541,7 @@ cdef int _ctx_init(Ctx* ctx, ModelC* m, double[::1] p, double[::1] k, int[::1] l
                    double[::1] law_par, int[::1] mode, const int[::1] part=None) except -1:
     """Point ctx at the arrays; k holds the constants, then the cam cache; ``part`` the
     coordinate partition (checked), None for the declared one."""
-    _check_partition(m, part)
+    check_partition(m, part)
     ctx.part = NULL if part is None else &part[0]
     ctx.p = &p[0]
     ctx.k = &k[0]
@@ -695,7 +686,7 @@ def linearize(object capsule, const double[:, ::1] P, int[::1] law, double[::1] 
     grid of parameter sets: what camdyn.runtime.measure.modes reads the dwell's modes from.
     ``part`` as :func:`eval_outputs` takes it."""
     cdef ModelC* m = model_pointer(capsule)
-    _check_partition(m, part)
+    check_partition(m, part)
     cdef Py_ssize_t n = P.shape[0], j
     cdef int ns = m.n_states, no = outputs.shape[0], r, c, i
     if P.shape[1] != m.n_params or Y.shape[0] != n or Y.shape[1] != ns or t.shape[0] != n \
@@ -768,7 +759,7 @@ def consistent_state(object capsule, object module, double[::1] p, int[::1] law,
     declared); a ValueError when Newton's method fails: its text "singular" where Phi_Q
     restricted to the dependent coordinates is, else "no convergence"."""
     cdef ModelC* m = model_pointer(capsule)
-    _check_partition(m, part)
+    check_partition(m, part)
     cdef double[::1] k = np.empty(m.n_const + m.n_cache + 1)
     cdef int[::1] md = _mode_buffer(m, element_modes)
     if y.shape[0] != m.n_states:

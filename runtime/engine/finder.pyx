@@ -39,6 +39,7 @@ import numpy as np
 
 from camdyn.runtime.engine.abi cimport *
 from camdyn.runtime.engine.dense cimport dense_component
+from camdyn.runtime.engine.partition cimport check_partition
 
 cdef enum:
     MAX_CAND = 16
@@ -72,16 +73,6 @@ cdef ModelC* _model(object capsule) except NULL:
     if m.abi_version != CAMDYN_ABI:
         raise RuntimeError(f"generated model built for ABI {m.abi_version}, runtime has {CAMDYN_ABI}")
     return m
-
-
-cdef int _check_partition(ModelC* m, const int[::1] part) except -1:
-    """A ValueError unless ``part`` is None (the declared partition) or a coordinate partition
-    of the constrained model m (Ctx.part)."""
-    if part is not None and not partition_ok(m, &part[0] if part.shape[0] else NULL,
-                                             part.shape[0]):
-        raise ValueError(f"a coordinate partition is {m.n_q} distinct coordinate indices of a "
-                         "constrained model, the dependent ones first")
-    return 0
 
 
 cdef inline double _t(Rec* r, Py_ssize_t i) noexcept nogil:
@@ -774,7 +765,7 @@ cdef class _View:
                  modes, int ns, int nx, part=None):
         cdef ModelC* m = _model(capsule)
         self.part = None if part is None else np.array(part, dtype=np.intc)
-        _check_partition(m, self.part)
+        check_partition(m, self.part)
         self.keep = capsule
         self.rows = np.ascontiguousarray(rows, dtype=float)
         nm = m.n_modes
@@ -1043,7 +1034,7 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
     A run that fails leaves its status (runtime/driver.STATUS_TEXT) and NaN figures; a run
     whose span does not cover the rise and part of the dwell after it, status -1."""
     cdef ModelC* m = _chunk_model(capsule, method, P, Y0, atol, modes0)
-    _check_partition(m, part)
+    check_partition(m, part)
     if figures.shape[1] != len(FIGURE_COLUMNS):
         raise ValueError(f"figures must have {len(FIGURE_COLUMNS)} columns (FIGURE_COLUMNS)")
     if per_step < 1 or not (0 < n_cand <= MAX_CAND) or stride < 1:
@@ -1190,7 +1181,7 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
 
     A run that fails leaves its status (runtime/driver.STATUS_TEXT) and NaN figures."""
     cdef ModelC* m = _chunk_model(capsule, method, P, Y0, atol, modes0)
-    _check_partition(m, part)
+    check_partition(m, part)
     cdef Py_ssize_t n = P.shape[0], nf = which.shape[0], g
     cdef int k, status, nm = m.n_modes, ns = m.n_states
     if not (Y0.shape[0] == stops.shape[0] == n_stops.shape[0] == h_max.shape[0] == A.shape[0]
