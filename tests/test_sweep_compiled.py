@@ -216,6 +216,28 @@ def _count_calls(monkeypatch, module, name):
     return calls
 
 
+def _residual_chunks_against_single_runs(monkeypatch, target, names, pts):
+    """(single runs, chunk) of a model target's residual figures at ``pts``: both compiled
+    calls go to finder.sweep_residual with no single run; with the scan of a single run the
+    chunk equals the single runs bit for bit, with the sweep's own scan its figures lie within
+    1e-9 of their largest value."""
+    from camdyn.runtime.engine import finder
+    from camdyn.runtime.targets.model_target import ModelTarget
+
+    one = target._points_one_by_one(names, pts)
+    calls = _count_calls(monkeypatch, finder, "sweep_residual")
+    with monkeypatch.context() as m:
+        _no_single_runs(m, ModelTarget)
+        ref = target.residual_points(names, pts, reference=True)
+        chunk = target.run_points(names, pts)
+    assert len(calls) == 2
+    assert_same_batches(ref, one)
+    for k in range(3):
+        assert np.abs(chunk.figures[:, k] - one.figures[:, k]).max() \
+            <= 1e-9 * np.abs(one.figures[:, k]).max()
+    return one, chunk
+
+
 def test_constrained_model_chunk_equals_single_runs(linked, monkeypatch):
     """A constrained model with a rise (the model file above) sweeps in one compiled call
     (finder.sweep_residual), each point from its consistent state solved beforehand: with the
@@ -223,25 +245,14 @@ def test_constrained_model_chunk_equals_single_runs(linked, monkeypatch):
     onto the link) equal single runs' (Simulator.run, then residual()), bit for bit; with the
     sweep's scan the run's notes and steps still do, and the figures lie within 1e-9 of their
     largest value (the scan's sampling density, as for CAMSHAFT-1 and -2)."""
-    from camdyn.runtime.engine import finder
     from camdyn.runtime.targets.model_target import ModelTarget
 
     names, pts = ("c", "d"), np.array([[300.0, 0.5], [500.0, 0.0], [800.0, 1.0]])
     target = ModelTarget.of(linked, rtol=1e-8).fit_points(names, pts)
-    one = target._points_one_by_one(names, pts)
+    one, chunk = _residual_chunks_against_single_runs(monkeypatch, target, names, pts)
     assert all(len(w) == 1 and "violated the constraints" in w[0] for w in one.warnings)
-    calls = _count_calls(monkeypatch, finder, "sweep_residual")
-    with monkeypatch.context() as m:
-        _no_single_runs(m, ModelTarget)
-        ref = target.residual_points(names, pts, reference=True)
-        chunk = target.run_points(names, pts)
-    assert len(calls) == 2
-    assert_same_batches(ref, one)
     assert chunk.warnings == one.warnings
     assert np.array_equal(chunk.steps, one.steps)
-    for k in range(3):
-        assert np.abs(chunk.figures[:, k] - one.figures[:, k]).max() \
-            <= 1e-9 * np.abs(one.figures[:, k]).max()
 
 
 def test_rise_ending_at_an_output_chunk_equals_single_runs(monkeypatch):
@@ -249,25 +260,13 @@ def test_rise_ending_at_an_output_chunk_equals_single_runs(monkeypatch):
     the rise angle, (6.17)) reaches 1, found on the record in compiled code for a single run
     and a chunk alike; with the scan of a single run the chunk's figures are the single runs',
     bit for bit, and with the sweep's scan within 1e-9 of their largest value."""
-    from camdyn.runtime.engine import finder
     from camdyn.runtime.targets.model_target import ModelTarget
 
     target = ModelTarget.of("dynacam_radial_ideal_rigidgear_bilateral", rtol=1e-8)
     assert target.spec["rise_state"] not in target.model.state_names
     c_x = target.model.parameter_vector()[target.model.parameter_names.index("c_x")]
     names, pts = ("c_x",), np.array([[c_x], [1.3 * c_x]])
-    target = target.fit_points(names, pts)
-    one = target._points_one_by_one(names, pts)
-    calls = _count_calls(monkeypatch, finder, "sweep_residual")
-    with monkeypatch.context() as m:
-        _no_single_runs(m, ModelTarget)
-        ref = target.residual_points(names, pts, reference=True)
-        chunk = target.run_points(names, pts)
-    assert len(calls) == 2
-    assert_same_batches(ref, one)
-    for k in range(3):
-        assert np.abs(chunk.figures[:, k] - one.figures[:, k]).max() \
-            <= 1e-9 * np.abs(one.figures[:, k]).max()
+    _residual_chunks_against_single_runs(monkeypatch, target.fit_points(names, pts), names, pts)
 
 
 def test_output_crossing_is_brents_to_its_tolerance():
