@@ -40,6 +40,8 @@ from ..core.errors import CamdynInputError
 from ..measure.contract import chart_note
 from ..core.laws import choose
 from ..core.outdir import out_folder, writing
+from .follower import (KINDS, Contact, OscillatingFlat, OscillatingRoller, TranslatingFlat,
+                       TranslatingRoller)
 from .motion import RDFD, failing_spans
 
 TWO_PI = 2 * math.pi
@@ -88,6 +90,10 @@ MIN_RADIUS = 1e-6
 above the smallest float that curvatures (1/radius, squared) stay finite."""
 
 
+def _a(kind: str) -> str:
+    return ("an " if kind[0] in "aeiou" else "a ") + kind
+
+
 def _positive(name, value, low=0.0, strict=True, high=None):
     try:
         value = float(value)
@@ -103,11 +109,13 @@ def _positive(name, value, low=0.0, strict=True, high=None):
 
 @dataclass(frozen=True)
 class CamProfile:
-    """A radial disk cam with a translating roller follower (see the module's conventions)."""
+    """A radial disk cam and its follower (see the module's conventions and
+    :mod:`camdyn.runtime.cam.follower`): a translating follower rises by ``stroke`` (m), an
+    oscillating one swings by ``swing_deg``."""
 
-    stroke: float
-    base_radius: float
-    roller_radius: float
+    stroke: float | None = None
+    base_radius: float | None = None
+    roller_radius: float | None = None
     offset: float = 0.0
     angles_deg: tuple = (90.0, 90.0, 90.0, 90.0)
     law: str = "cycloidal"
@@ -118,21 +126,52 @@ class CamProfile:
     groove: bool = False
     points_per_degree: int = 10
     max_pressure_angle_deg: float = 30.0
+    follower: str = "translating-roller"
+    """One of :data:`camdyn.runtime.cam.follower.KINDS`."""
+    pivot_distance: float | None = None
+    """Oscillating followers: cam centre to pivot a (m)."""
+    arm_length: float | None = None
+    """Oscillating roller: pivot to roller centre l (m)."""
+    swing_deg: float | None = None
+    """Oscillating followers: the arm's swing over the rise (deg)."""
+    face_offset: float = 0.0
+    """Oscillating flat face: distance f of the face's line from the pivot (m)."""
     cam: RDFD = field(init=False, repr=False, compare=False)
+    geometry: object = field(init=False, repr=False, compare=False)
 
     def __post_init__(self):
-        h = _positive("stroke", self.stroke, strict=False, high=MAX_LENGTH)
+        kind = self.follower
+        if kind not in KINDS:
+            raise CamdynInputError(f"follower={kind!r} is not one of {', '.join(KINDS)}")
+        oscillating, roller = kind.startswith("oscillating"), kind.endswith("roller")
+        needs = ["base-radius"] + (["roller-radius"] if roller else [])
+        needs += (["pivot-distance", "swing"] + (["arm-length"] if roller else [])
+                  if oscillating else ["stroke"])
+        given = {"base-radius": self.base_radius, "roller-radius": self.roller_radius,
+                 "pivot-distance": self.pivot_distance, "swing": self.swing_deg,
+                 "arm-length": self.arm_length, "stroke": self.stroke}
+        missing = [n for n in needs if given[n] is None]
+        if missing:
+            raise CamdynInputError(f"{_a(kind)} follower needs {', '.join(missing)}")
         rb = _positive("base-radius", self.base_radius, low=MIN_RADIUS, strict=False,
                        high=MAX_LENGTH)
-        rr = _positive("roller-radius", self.roller_radius, low=MIN_RADIUS, strict=False,
-                       high=MAX_LENGTH)
+        self._only_with(oscillating, roller)
+        rr = (_positive("roller-radius", self.roller_radius, low=MIN_RADIUS, strict=False,
+                        high=MAX_LENGTH) if roller else None)
+        if oscillating:
+            rise = math.radians(_positive("swing", self.swing_deg, high=90.0))
+        else:
+            rise = _positive("stroke", self.stroke, strict=False, high=MAX_LENGTH)
         try:
             e = float(self.offset)
         except (TypeError, ValueError):
             raise CamdynInputError(f"offset must be a number, got {self.offset!r}") from None
-        if not math.isfinite(e) or abs(e) >= rb + rr:
+        reach = rb + (rr or 0.0)
+        if not math.isfinite(e) or (roller and abs(e) >= reach):
             raise CamdynInputError(f"offset={e:g} is out of range: |offset| < base-radius + "
-                                   f"roller-radius = {rb + rr:g}")
+                                   f"roller-radius = {reach:g}")
+        if not math.isfinite(e):
+            raise CamdynInputError(f"offset={e:g} is out of range: it must be finite")
         ang = tuple(self.angles_deg)
         if len(ang) != 4:
             raise CamdynInputError(f"angles must be four values rise,upper dwell,return,lower "
@@ -148,17 +187,85 @@ class CamProfile:
             raise CamdynInputError(f"points-per-degree={ppd!r} is out of range: an integer "
                                    f"from 1 to 1000")
         _positive("max-pressure-angle", self.max_pressure_angle_deg, high=90.0)
+        if self.groove and not roller:
+            raise CamdynInputError("groove goes with a roller follower: a flat face has one "
+                                   "side to push on")
         r = np.radians(ang)
         if self.return_law is None and self.return_law_parameter is not None:
             raise CamdynInputError("return-law-parameter goes with --return-law")
         fall = (None if self.return_law is None
                 else _law("return-law", self.return_law, self.return_law_parameter))
-        cam = RDFD(h, rb, rr, _law("law", self.law, self.law_parameter),
+        cam = RDFD(rise, rb, rr or 0.0, _law("law", self.law, self.law_parameter),
                    beta_rise=float(r[0]), dwell_outer=float(r[1]), beta_fall=float(r[2]),
                    fall_law=fall)
         object.__setattr__(self, "offset", e)
         object.__setattr__(self, "angles_deg", ang)
         object.__setattr__(self, "cam", cam)
+        object.__setattr__(self, "geometry", self._geometry(rb, rr, e, rise))
+
+    def _only_with(self, oscillating: bool, roller: bool) -> None:
+        """Refuse the dimensions another follower takes, naming them."""
+        stray = []
+        if oscillating:
+            stray += [n for n, v in (("stroke", self.stroke), ("offset", self.offset or None))
+                      if v is not None]
+        else:
+            stray += [n for n, v in (("pivot-distance", self.pivot_distance),
+                                     ("arm-length", self.arm_length), ("swing", self.swing_deg))
+                      if v is not None]
+        if not roller and self.roller_radius is not None:
+            stray.append("roller-radius")
+        if (self.follower != "oscillating-flat") and self.face_offset:
+            stray.append("face-offset")
+        if self.follower == "oscillating-flat" and self.arm_length is not None:
+            stray.append("arm-length")
+        if stray:
+            raise CamdynInputError(f"{', '.join(stray)} {'does' if len(stray) == 1 else 'do'} "
+                                   f"not apply to {_a(self.follower)} follower")
+
+    def _geometry(self, rb, rr, e, swing):
+        kind = self.follower
+        if kind == "translating-roller":
+            return TranslatingRoller(rb, rr, e)
+        if kind == "translating-flat":
+            return TranslatingFlat(rb, e)
+        a = _positive("pivot-distance", self.pivot_distance, low=MIN_RADIUS, strict=False,
+                      high=MAX_LENGTH)
+        if kind == "oscillating-roller":
+            l = _positive("arm-length", self.arm_length, low=MIN_RADIUS, strict=False,
+                          high=MAX_LENGTH)
+            rp = rb + rr
+            if not abs(a - l) < rp < a + l:
+                raise CamdynInputError(
+                    f"arm-length={l:g} with pivot-distance={a:g} cannot put the roller on the "
+                    f"prime circle r_b + r_r = {rp:g}: it needs |pivot-distance - arm-length| "
+                    f"< {rp:g} < pivot-distance + arm-length")
+            geo = OscillatingRoller(rb, rr, a, l)
+        else:
+            try:
+                f = float(self.face_offset)
+            except (TypeError, ValueError):
+                raise CamdynInputError(f"face-offset must be a number, got "
+                                       f"{self.face_offset!r}") from None
+            if not (math.isfinite(f) and abs(rb - f) < a):
+                raise CamdynInputError(
+                    f"face-offset={f:g} is out of range: the face must reach the base circle, "
+                    f"|base-radius - face-offset| < pivot-distance = {a:g}")
+            geo = OscillatingFlat(rb, a, f)
+        if geo.psi0 + swing >= math.pi:
+            raise CamdynInputError(
+                f"swing={math.degrees(swing):g} deg is out of range: from the arm's start "
+                f"angle {math.degrees(geo.psi0):.4g} deg it must stay below 180 deg, swing < "
+                f"{180 - math.degrees(geo.psi0):.4g} deg")
+        return geo
+
+    @property
+    def roller(self) -> bool:
+        return self.follower.endswith("roller")
+
+    @property
+    def oscillating(self) -> bool:
+        return self.follower.startswith("oscillating")
 
     @property
     def turn(self):
@@ -173,22 +280,23 @@ class CamProfile:
     # -- geometry at any angles --------------------------------------------------------
     @property
     def prime_radius(self) -> float:
-        return self.base_radius + self.roller_radius
+        return self.base_radius + (self.roller_radius or 0.0)
 
     @property
     def d0(self) -> float:
         return math.sqrt(self.prime_radius**2 - self.offset**2)
 
-    def pitch(self, phi) -> np.ndarray:
-        """Pitch points, shape (2, n)."""
+    def contact(self, phi) -> Contact:
+        """The follower's contact geometry at the cam angles phi (rad)."""
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
-        u = self.d0 + self.cam.displacement(phi)[0]
-        e = self.offset
-        c, s = np.cos(phi), np.sin(phi)
-        return np.array([u * c - e * s, u * s + e * c])
+        return self.geometry.contact(phi, self.cam.displacement(phi)[:3])
+
+    def pitch(self, phi) -> np.ndarray:
+        """Pitch points (roller centre), shape (2, n)."""
+        return np.array(self.contact(phi).pitch)
 
     def tangent(self, phi) -> np.ndarray:
-        """dp/dphi, shape (2, n): R(phi) (s' - e, d0 + s)."""
+        """dP/dphi of a translating roller's pitch curve, shape (2, n): R(phi) (s' - e, d0 + s)."""
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
         S = self.cam.displacement(phi)
         a, b = S[1] - self.offset, self.d0 + S[0]
@@ -196,19 +304,18 @@ class CamProfile:
         return np.array([a * c - b * s, a * s + b * c])
 
     def pressure_angle(self, phi) -> np.ndarray:
-        """alpha in rad: atan2(s' - e, d0 + s)."""
-        S = self.cam.displacement(phi)
-        return np.arctan2(S[1] - self.offset, self.d0 + S[0])
+        """alpha in rad (translating roller: atan2(s' - e, d0 + s))."""
+        return self.contact(phi).pressure_angle
 
     def curvature(self, phi) -> np.ndarray:
-        """Signed curvature of the pitch curve, from the parametric derivatives in the
-        follower frame: a = (s' - e, d0 + s), b = (s'' - d0 - s, 2 s' - e),
-        kappa = (a x b) / |a|^3."""
-        S = self.cam.displacement(phi)
-        e, u = self.offset, self.d0 + S[0]
-        a0, a1 = S[1] - e, u
-        b0, b1 = S[2] - u, 2 * S[1] - e
-        return (a0 * b1 - a1 * b0) / (a0 * a0 + a1 * a1) ** 1.5
+        """Signed curvature of the pitch curve (roller followers), of the profile (flat
+        faces)."""
+        c = self.contact(phi)
+        return c.kappa_pitch if self.roller else c.kappa_profile
+
+    def profile_curvature(self, phi) -> np.ndarray:
+        """Signed curvature of the profile itself, positive where convex."""
+        return self.contact(phi).kappa_profile
 
     # -- the sampled cam ---------------------------------------------------------------
     @cached_property
@@ -219,24 +326,34 @@ class CamProfile:
     @cached_property
     def table(self) -> dict:
         """Every column along the sampled cam angle (SI, angles in deg)."""
-        phi, rr = self.phi, self.roller_radius
+        phi = self.phi
         S = self.cam.displacement(phi)
-        p = self.pitch(phi)
-        t = self.tangent(phi)
-        t = t / np.hypot(t[0], t[1])
-        n = np.array([t[1], -t[0]])          # outward normal of a counter-clockwise curve
-        kappa = self.curvature(phi)
+        c = self.contact(phi)
+        out = {"phi_deg": np.degrees(phi)}
+        if self.oscillating:
+            out["psi_deg"] = np.degrees(self.geometry.psi0 + S[0])
+        else:
+            out["s"] = S[0]
+        if self.roller:
+            rr = self.roller_radius
+            out["x_pitch"], out["y_pitch"] = c.pitch
+        out["x_profile"], out["y_profile"] = c.x, c.y
+        if self.groove:
+            # the outer wall lies a roller diameter beyond the inner one along the normal
+            out["x_outer"] = 2 * c.pitch[0] - c.x
+            out["y_outer"] = 2 * c.pitch[1] - c.y
+        out["alpha_deg"] = np.degrees(c.pressure_angle)
         with np.errstate(divide="ignore"):
-            rho = np.where(kappa == 0.0, np.inf, 1.0 / kappa)
-        out = {"phi_deg": np.degrees(phi), "s": S[0], "x_pitch": p[0], "y_pitch": p[1],
-               "x_profile": p[0] - rr * n[0], "y_profile": p[1] - rr * n[1]}
-        if self.groove:
-            out["x_outer"], out["y_outer"] = p[0] + rr * n[0], p[1] + rr * n[1]
-        out["alpha_deg"] = np.degrees(self.pressure_angle(phi))
-        out["rho_pitch"] = rho
-        out["rho_profile"] = rho - rr
-        if self.groove:
-            out["rho_outer"] = rho + rr
+            if self.roller:
+                rho = np.where(c.kappa_pitch == 0.0, np.inf, 1.0 / c.kappa_pitch)
+                out["rho_pitch"] = rho
+                out["rho_profile"] = rho - rr
+                if self.groove:
+                    out["rho_outer"] = rho + rr
+            else:
+                out["rho_profile"] = np.where(c.kappa_profile == 0.0, np.inf,
+                                              1.0 / c.kappa_profile)
+                out["face_position"] = c.face_position
         return out
 
     # -- checks ------------------------------------------------------------------------
@@ -263,8 +380,36 @@ class CamProfile:
 
     @cached_property
     def checks(self) -> tuple:
-        th, rr = self._grid(), self.roller_radius
-        out = []
+        th = self._grid()
+        out = list(self._undercut_checks(th) if self.roller else self._cusp_checks(th))
+        lim = math.radians(self.max_pressure_angle_deg)
+
+        def fa(x):
+            return np.abs(self.pressure_angle(x))
+        at, amax, sampled = self._worst(fa, th)
+        bad = fa(th) > lim
+        runs = failing_spans(th, bad, lambda x: float(fa(x)[0]) - lim)
+        if runs:
+            spans = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}]" for a, b in runs)
+            msg = (f"pressure angle: |alpha| reaches {math.degrees(amax):.2f} deg at cam angle "
+                   f"{math.degrees(at):.2f} deg, beyond the limit {self.max_pressure_angle_deg:g} "
+                   f"deg for phi in {spans} deg. Use a larger base circle or a longer "
+                   f"rise/return angle" + (" (or move the pivot: the arm's start angle sets "
+                   f"it)." if self.oscillating else " (an offset lowers it on one stroke, "
+                   f"raises it on the other)."))
+        else:
+            msg = (f"pressure angle within {self.max_pressure_angle_deg:g} deg: largest "
+                   f"|alpha| = {math.degrees(amax):.2f} deg at {math.degrees(at):.2f} deg")
+        out.append(Check("pressure angle", not runs, math.degrees(at), math.degrees(amax),
+                         self.max_pressure_angle_deg,
+                         tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg,
+                         math.degrees(amax - sampled)))
+        return tuple(out)
+
+    def _undercut_checks(self, th):
+        """A roller's walls: each cusps where 1 + d kappa_p < 0 (d = -r_r the profile or
+        inner wall, +r_r the outer wall)."""
+        rr = self.roller_radius
         walls = [("undercut", "profile" if not self.groove else "inner wall", -1.0)]
         if self.groove:
             walls.append(("undercut outer", "outer wall", +1.0))
@@ -289,49 +434,67 @@ class CamProfile:
             else:
                 msg = (f"no undercut of the {wall}: smallest {shape} |rho_p| = {rho * 1e3:.4g} mm "
                        f"at {math.degrees(at):.2f} deg > roller radius {rr * 1e3:.4g} mm")
-            out.append(Check(name, not runs, math.degrees(at), rho, rr,
-                             tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg,
-                             rho_error))
-        lim = math.radians(self.max_pressure_angle_deg)
+            yield Check(name, not runs, math.degrees(at), rho, rr,
+                        tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg,
+                        rho_error)
 
-        def fa(x):
-            return np.abs(self.pressure_angle(x))
-        at, amax, sampled = self._worst(fa, th)
-        bad = fa(th) > lim
-        runs = failing_spans(th, bad, lambda x: float(fa(x)[0]) - lim)
+    def _cusp_checks(self, th):
+        """A flat face follows the profile only where the profile is convex: it cusps where
+        its radius of curvature rho = k + d^2k/dtheta^2 is negative (translating face:
+        r_b + s + s'')."""
+        def rho(x):
+            return 1.0 / self.profile_curvature(x)
+        runs = failing_spans(th, rho(th) < 0, lambda x: float(rho(x)[0]))
+        # worst: the least rho, most negative where it cusps
+        at, neg, sampled = self._worst(lambda x: -rho(x), th)
+        value, err = -neg, abs(neg - sampled)
         if runs:
             spans = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}]" for a, b in runs)
-            msg = (f"pressure angle: |alpha| reaches {math.degrees(amax):.2f} deg at cam angle "
-                   f"{math.degrees(at):.2f} deg, beyond the limit {self.max_pressure_angle_deg:g} "
-                   f"deg for phi in {spans} deg. Use a larger base circle or a longer "
-                   f"rise/return angle (an offset lowers it on one stroke, raises it on the "
-                   f"other).")
+            msg = (f"cusp: the flat face cannot follow this motion, the profile cusps at cam "
+                   f"angle {math.degrees(at):.2f} deg (its radius of curvature "
+                   f"{'' if self.oscillating else 'r_b + s + s'' '}reaches {value * 1e3:.4g} mm; "
+                   f"negative for phi in {spans} deg). Use a larger base circle, a longer "
+                   f"rise/return angle or a smaller {'swing' if self.oscillating else 'stroke'}.")
         else:
-            msg = (f"pressure angle within {self.max_pressure_angle_deg:g} deg: largest "
-                   f"|alpha| = {math.degrees(amax):.2f} deg at {math.degrees(at):.2f} deg")
-        out.append(Check("pressure angle", not runs, math.degrees(at), math.degrees(amax),
-                         self.max_pressure_angle_deg,
-                         tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg,
-                         math.degrees(amax - sampled)))
-        return tuple(out)
+            msg = (f"no cusp: the profile's smallest radius of curvature is {value * 1e3:.4g} mm "
+                   f"at {math.degrees(at):.2f} deg")
+        yield Check("cusp", not runs, math.degrees(at), value, 0.0,
+                    tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg, err)
 
     @property
     def failures(self) -> list:
         return [c for c in self.checks if not c.ok]
 
     def extremes(self) -> dict:
-        """The largest |alpha| (deg) and the smallest |rho_p| (m) along the cam, each refined
-        on the closed-form profile between the samples around the sampled extreme, with its
-        sampling error: how far the sampled extreme lay from the refined one, a bound of what
-        the refinement could still be off by choosing among near-equal peaks."""
+        """The largest |alpha| (deg), the smallest |rho| of the pitch curve (rollers) and of
+        the profile (m), and for a flat face where the contact travels on it (m), each
+        refined on the closed-form profile between the samples around the sampled extreme,
+        with its sampling error: how far the sampled extreme lay from the refined one, a
+        bound of what the refinement could still be off by choosing among near-equal
+        peaks."""
+        th = self._grid()
         alpha = next(c for c in self.checks if c.name == "pressure angle")
-        _, kmax, sampled_k = self._worst(lambda x: np.abs(self.curvature(x)), self._grid())
-        rho = 1.0 / kmax if kmax > 0 else math.inf
-        rho_sampled = 1.0 / sampled_k if sampled_k > 0 else math.inf
-        return {"max_abs_pressure_angle_deg": alpha.value,
-                "max_abs_pressure_angle_deg_error": alpha.error,
-                "min_rho_pitch": rho,
-                "min_rho_pitch_error": abs(rho - rho_sampled) if math.isfinite(rho) else 0.0}
+        out = {"max_abs_pressure_angle_deg": alpha.value,
+               "max_abs_pressure_angle_deg_error": alpha.error}
+
+        def least_rho(curvature):
+            _, kmax, sampled_k = self._worst(lambda x: np.abs(curvature(x)), th)
+            rho = 1.0 / kmax if kmax > 0 else math.inf
+            rho_sampled = 1.0 / sampled_k if sampled_k > 0 else math.inf
+            return rho, abs(rho - rho_sampled) if math.isfinite(rho) else 0.0
+
+        if self.roller:
+            out["min_rho_pitch"], out["min_rho_pitch_error"] = least_rho(self.curvature)
+        out["min_rho_profile"], out["min_rho_profile_error"] = least_rho(self.profile_curvature)
+        if not self.roller:
+            def w(x):
+                return self.contact(x).face_position
+            _, hi, hi_s = self._worst(w, th)
+            _, lo, lo_s = self._worst(lambda x: -w(x), th)
+            out["face_travel"] = [-lo, hi]
+            out["face_width"] = hi + lo
+            out["face_width_error"] = abs(hi - hi_s) + abs(lo - lo_s)
+        return out
 
     def summary(self) -> dict:
         return {"law": self.law, "law_parameter": self.cam.law.par if self.law_parameter is not None else None,
@@ -339,9 +502,15 @@ class CamProfile:
                 "return_law_parameter": (self.cam.return_law.par if self.return_law_parameter
                                          is not None else None),
                 "kind": "groove" if self.groove else "open",
+                "follower": self.follower,
                 "stroke": self.stroke, "base_radius": self.base_radius,
                 "roller_radius": self.roller_radius, "offset": self.offset,
                 "prime_radius": self.prime_radius,
+                **({"pivot_distance": self.pivot_distance, "swing_deg": self.swing_deg,
+                    "start_angle_deg": math.degrees(self.geometry.psi0),
+                    **({"arm_length": self.arm_length} if self.roller
+                       else {"face_offset": self.face_offset})}
+                   if self.oscillating else {}),
                 "angles_deg": dict(zip(("rise", "upper_dwell", "return", "lower_dwell"),
                                        self.angles_deg)),
                 "points": int(self.phi.size),
@@ -374,12 +543,14 @@ class CamProfile:
         doc.header["$MEASUREMENT"] = 1
         colours = {"PITCH": 3, "PROFILE": 7, "PROFILE_OUTER": 5, "BASE_CIRCLE": 8}
         for name, colour in colours.items():
-            if name == "PROFILE_OUTER" and not self.groove:
+            if (name == "PROFILE_OUTER" and not self.groove) or (name == "PITCH" and not self.roller):
                 continue
             doc.layers.add(name, color=colour)
         msp = doc.modelspace()
         tab = self.table
-        curves = [("PITCH", "x_pitch", "y_pitch"), ("PROFILE", "x_profile", "y_profile")]
+        curves = [("PROFILE", "x_profile", "y_profile")]
+        if self.roller:
+            curves.insert(0, ("PITCH", "x_pitch", "y_pitch"))
         if self.groove:
             curves.append(("PROFILE_OUTER", "x_outer", "y_outer"))
         for layer, x, y in curves:
@@ -404,8 +575,9 @@ class CamProfile:
         fig = plt.figure(figsize=(12, 6))
         ax = fig.add_subplot(1, 2, 1)
         close = np.r_[np.arange(self.phi.size), 0]
-        ax.plot(tab["x_pitch"][close] * 1e3, tab["y_pitch"][close] * 1e3, "g--", lw=0.8,
-                label="pitch curve")
+        if self.roller:
+            ax.plot(tab["x_pitch"][close] * 1e3, tab["y_pitch"][close] * 1e3, "g--", lw=0.8,
+                    label="pitch curve")
         ax.plot(tab["x_profile"][close] * 1e3, tab["y_profile"][close] * 1e3, "k-", lw=1.2,
                 label="profile" if not self.groove else "inner wall")
         if self.groove:
@@ -414,19 +586,18 @@ class CamProfile:
         a = np.linspace(0, TWO_PI, 361)
         ax.plot(self.base_radius * 1e3 * np.cos(a), self.base_radius * 1e3 * np.sin(a), ":",
                 color="0.5", lw=0.8, label="base circle")
-        x0, y0 = tab["x_pitch"][0] * 1e3, tab["y_pitch"][0] * 1e3
-        ax.plot(x0 + self.roller_radius * 1e3 * np.cos(a), y0 + self.roller_radius * 1e3 * np.sin(a),
-                "r-", lw=0.8, label="roller at phi = 0")
+        self._draw_follower(ax)
         for c in self.failures:
             w = math.radians(c.worst_deg)
-            p = self.pitch(w)[:, 0] * 1e3
+            p = np.array(self.contact(w).pitch if self.roller else
+                         (self.contact(w).x, self.contact(w).y))[:, 0] * 1e3
             ax.plot(p[0], p[1], "rx", ms=10)
         ax.set_aspect("equal")
         ax.set_xlabel("x, mm")
         ax.set_ylabel("y, mm")
         laws = self.law if self.return_law in (None, self.law) else f"{self.law}/{self.return_law}"
-        ax.set_title(f"{laws}, {'groove' if self.groove else 'open'} cam, "
-                     f"e = {self.offset * 1e3:g} mm")
+        ax.set_title(f"{laws}, {'groove' if self.groove else 'open'} cam, {self.follower}"
+                     + ("" if self.oscillating else f", e = {self.offset * 1e3:g} mm"))
         ax.legend(fontsize=7, loc="upper right")
         phi = tab["phi_deg"]
         a1 = fig.add_subplot(2, 2, 2)
@@ -436,7 +607,9 @@ class CamProfile:
         a1.set_ylabel("pressure angle, deg")
         a1.grid(True, lw=0.3)
         a2 = fig.add_subplot(2, 2, 4, sharex=a1)
-        span = 4 * (self.prime_radius + self.stroke) * 1e3
+        reach = np.hypot(tab["x_pitch" if self.roller else "x_profile"],
+                         tab["y_pitch" if self.roller else "y_profile"])
+        span = 4 * float(np.max(reach)) * 1e3
         for key, style, lab in (("rho_pitch", "g--", "pitch"), ("rho_profile", "k-", "profile"),
                                 ("rho_outer", "b-", "outer wall")):
             if key in tab:
@@ -450,10 +623,16 @@ class CamProfile:
         a2.legend(fontsize=7)
         a2.grid(True, lw=0.3)
         ex = self.extremes()
+        figures = {"largest |alpha| (deg)": (ex["max_abs_pressure_angle_deg"],
+                                             ex["max_abs_pressure_angle_deg_error"]),
+                   "smallest |rho_profile| (m)": (ex["min_rho_profile"],
+                                                  ex["min_rho_profile_error"])}
+        if self.roller:
+            figures["smallest |rho_pitch| (m)"] = (ex["min_rho_pitch"], ex["min_rho_pitch_error"])
+        else:
+            figures["face width (m)"] = (ex["face_width"], ex["face_width_error"])
         fig.text(0.01, 0.01, chart_note(
-            {"largest |alpha| (deg)": (ex["max_abs_pressure_angle_deg"],
-                                       ex["max_abs_pressure_angle_deg_error"]),
-             "smallest |rho_pitch| (m)": (ex["min_rho_pitch"], ex["min_rho_pitch_error"])},
+            figures,
             [c.message for c in self.failures]) + " (the estimates: what the sampling leaves)",
             fontsize=7)
         fig.tight_layout(rect=(0, 0.04, 1, 1))
@@ -461,6 +640,34 @@ class CamProfile:
             fig.savefig(path, dpi=110)
         plt.close(fig)
         return path
+
+    def _draw_follower(self, ax) -> None:
+        """The follower at phi = 0 (cam frame = ground frame there): the roller, or the face
+        over the width the contact travels, and an oscillating follower's arm and pivot."""
+        a = np.linspace(0, TWO_PI, 361)
+        c = self.contact(0.0)
+        if self.roller:
+            x0, y0 = c.pitch[0][0] * 1e3, c.pitch[1][0] * 1e3
+            r = self.roller_radius * 1e3
+            ax.plot(x0 + r * np.cos(a), y0 + r * np.sin(a), "r-", lw=0.8, label="roller at phi = 0")
+            centre = (x0, y0)
+        else:
+            lo, hi = self.extremes()["face_travel"]
+            x0, y0 = c.x[0] * 1e3, c.y[0] * 1e3
+            w0 = c.face_position[0]
+            # the face's direction at phi = 0: along the arm u (rocker) or +y (slide)
+            if self.oscillating:
+                psi = self.geometry.psi0
+                d = np.array([-math.cos(psi), math.sin(psi)])
+            else:
+                d = np.array([0.0, 1.0])
+            ends = np.array([(lo - w0) * 1e3, (hi - w0) * 1e3])
+            ax.plot(x0 + ends * d[0], y0 + ends * d[1], "r-", lw=1.5, label="face at phi = 0")
+            centre = (x0, y0)
+        if self.oscillating:
+            A = self.pivot_distance * 1e3
+            ax.plot([A, centre[0]], [0.0, centre[1]], "r:", lw=0.8)
+            ax.plot([A], [0.0], "r^", ms=6, label="pivot")
 
     def write_all(self, out_dir, stem: str = "cam") -> dict:
         out = out_folder(out_dir)

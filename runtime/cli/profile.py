@@ -6,10 +6,11 @@ import sys
 
 from ..core.errors import CamdynInputError
 from ..core.outdir import out_folder, write_text
+from ..cam.follower import KINDS
 from .common import add_out_option, fail, law_names
 
-HELP = ("the cam itself: pitch curve and profile(s) of a disk cam for a translating roller "
-        "follower, as CSV, DXF and PNG")
+HELP = ("the cam itself: profile(s) of a disk cam for a translating or oscillating, roller or "
+        "flat-faced follower, as CSV, DXF and PNG")
 """The command's line in `camdyn --help`."""
 
 
@@ -17,13 +18,21 @@ def add(sub):
     names = law_names()
     p = sub.add_parser(
         "profile", help=HELP,
-        description="A radial disk cam for a translating roller follower over a full turn "
-                    "(rise, upper dwell, return with the same law mirrored, lower dwell): the "
-                    "pitch curve and the profile (open cam) or both walls (--groove), with the "
-                    "pressure angle and the radius of curvature along the cam angle, written as "
-                    "CSV (SI), DXF (mm, layers PITCH, PROFILE, PROFILE_OUTER, BASE_CIRCLE) and "
-                    "PNG. The undercut and pressure-angle checks that fail are warnings naming "
-                    "the cam angle where they are worst (and in the JSON). SI units.")
+        description="A radial disk cam over a full turn (rise, upper dwell, return with the "
+                    "same law mirrored, lower dwell) for a translating or oscillating (rocker), "
+                    "roller or flat-faced follower: the profile as the envelope of the "
+                    "follower's positions seen from the cam, the pitch curve of a roller "
+                    "(both walls with --groove), the pressure angle and the radius of curvature "
+                    "along the cam angle, and for a flat face where the contact travels on it "
+                    "(the face width it needs); written as CSV (SI), DXF (mm, layers PITCH, "
+                    "PROFILE, PROFILE_OUTER, BASE_CIRCLE) and PNG. The undercut (roller), cusp "
+                    "(flat face) and pressure-angle checks that fail are warnings naming the "
+                    "cam angle where they are worst (and in the JSON). SI units.")
+    p.add_argument("--follower", default="translating-roller", choices=KINDS,
+                   help="the follower (default translating-roller); a translating one takes "
+                        "--stroke (and --offset), an oscillating one --pivot-distance and "
+                        "--swing, a roller --roller-radius, an oscillating roller "
+                        "--arm-length, an oscillating flat face --face-offset")
     p.add_argument("--law", default="cycloidal", choices=names,
                    help="cam law of the rise (the return is its mirror unless --return-law; "
                         "default cycloidal)")
@@ -33,15 +42,25 @@ def add(sub):
                    help="cam law of the return, S = h (1 - H(u)) (default: the rise's)")
     p.add_argument("--return-law-parameter", type=float, default=None, metavar="X",
                    help="the return law's shape parameter")
-    p.add_argument("--stroke", type=float, required=True, metavar="M", help="stroke h, m, 0 <= h < 1000")
+    p.add_argument("--stroke", type=float, default=None, metavar="M",
+                   help="stroke h of a translating follower, m, 0 <= h < 1000")
+    p.add_argument("--swing", type=float, default=None, metavar="DEG",
+                   help="swing of an oscillating follower's arm over the rise, deg, 0 < DEG < 90")
+    p.add_argument("--pivot-distance", type=float, default=None, metavar="M",
+                   help="oscillating follower: cam centre to the arm's pivot a, m")
+    p.add_argument("--arm-length", type=float, default=None, metavar="M",
+                   help="oscillating roller: pivot to roller centre l, m, |a - l| < r_b + r_r < a + l")
+    p.add_argument("--face-offset", type=float, default=0.0, metavar="M",
+                   help="oscillating flat face: distance of the face's line from the pivot f, m "
+                        "(default 0, the face through the pivot; |r_b - f| < a)")
     p.add_argument("--base-radius", type=float, required=True, metavar="M",
                    help="base circle of the cam profile r_b, m, 1e-6 <= r_b < 1000 (roller centre on the "
                         "prime circle r_b + r_r at the bottom of the stroke)")
-    p.add_argument("--roller-radius", type=float, required=True, metavar="M",
-                   help="roller radius r_r, m, 1e-6 <= r_r < 1000")
-    p.add_argument("--offset", type=float, default=0.0, metavar="M",
-                   help="follower offset e, m, |e| < r_b + r_r (default 0; e > 0 lowers the "
-                        "pressure angle on the rise)")
+    p.add_argument("--roller-radius", type=float, default=None, metavar="M",
+                   help="roller radius r_r of a roller follower, m, 1e-6 <= r_r < 1000")
+    p.add_argument("--offset", type=float, default=None, metavar="M",
+                   help="translating follower: offset e of its axis, m, |e| < r_b + r_r "
+                        "(default 0; e > 0 lowers a roller's pressure angle on the rise)")
     p.add_argument("--angles", default="90,90,90,90", metavar="R,D,F,D",
                    help="rise, upper dwell, return, lower dwell in deg, summing to 360 "
                         "(default 90,90,90,90)")
@@ -68,7 +87,11 @@ def run(args) -> int:
                           f"dwell summing to 360, got {args.angles!r}")
     try:
         cam = CamProfile(stroke=args.stroke, base_radius=args.base_radius,
-                         roller_radius=args.roller_radius, offset=args.offset,
+                         roller_radius=args.roller_radius,
+                         offset=0.0 if args.offset is None else args.offset,
+                         follower=args.follower, pivot_distance=args.pivot_distance,
+                         arm_length=args.arm_length, swing_deg=args.swing,
+                         face_offset=args.face_offset,
                          angles_deg=tuple(angles), law=args.law, law_parameter=args.law_parameter,
                          return_law=args.return_law,
                          return_law_parameter=args.return_law_parameter,
@@ -86,15 +109,30 @@ def run(args) -> int:
     if args.json:
         print(json.dumps(out, indent=1))
         return 0
-    print(f"{out['kind']} cam, {cam.law}{'' if cam.return_law in (None, cam.law) else ' / ' + cam.return_law + ' return'} law, stroke {cam.stroke * 1e3:g} mm, base circle "
-          f"{cam.base_radius * 1e3:g} mm, roller {cam.roller_radius * 1e3:g} mm, offset "
-          f"{cam.offset * 1e3:g} mm, {out['points']} points")
+    laws = cam.law + ("" if cam.return_law in (None, cam.law) else f" / {cam.return_law} return")
+    if cam.oscillating:
+        motion = (f"swing {cam.swing_deg:g} deg, pivot at {cam.pivot_distance * 1e3:g} mm"
+                  + (f", arm {cam.arm_length * 1e3:g} mm" if cam.roller
+                     else f", face offset {cam.face_offset * 1e3:g} mm"))
+    else:
+        motion = f"stroke {cam.stroke * 1e3:g} mm, offset {cam.offset * 1e3:g} mm"
+    roller = f", roller {cam.roller_radius * 1e3:g} mm" if cam.roller else ""
+    print(f"{out['kind']} cam, {cam.follower} follower, {laws} law, {motion}, base circle "
+          f"{cam.base_radius * 1e3:g} mm{roller}, {out['points']} points")
     for c in cam.checks:
         print(f"{'ok  ' if c.ok else 'FAIL'} {c.message}")
+    pitch = (f", smallest |rho_pitch| = {out['min_rho_pitch'] * 1e3:.6g}"
+             f"{plus_minus(out['min_rho_pitch_error'] * 1e3)} mm" if cam.roller else "")
     print(f"     largest |alpha| = {out['max_abs_pressure_angle_deg']:.6g}"
-          f"{plus_minus(out['max_abs_pressure_angle_deg_error'])} deg, smallest |rho_pitch| = "
-          f"{out['min_rho_pitch'] * 1e3:.6g}{plus_minus(out['min_rho_pitch_error'] * 1e3)} mm "
-          "(refined between the samples; ± what the sampling leaves)")
+          f"{plus_minus(out['max_abs_pressure_angle_deg_error'])} deg{pitch}, smallest "
+          f"|rho_profile| = {out['min_rho_profile'] * 1e3:.6g}"
+          f"{plus_minus(out['min_rho_profile_error'] * 1e3)} mm")
+    if not cam.roller:
+        lo, hi = out["face_travel"]
+        print(f"     the contact travels on the face from {lo * 1e3:.6g} to {hi * 1e3:.6g} mm "
+              f"({'from the pivot' if cam.oscillating else 'from the slide axis'}): face width "
+              f">= {out['face_width'] * 1e3:.6g}{plus_minus(out['face_width_error'] * 1e3)} mm")
+    print("     (refined between the samples; ± what the sampling leaves)")
     for f in out["files"].values():
         print(f"wrote {f}")
     return 0
