@@ -69,6 +69,11 @@ class Contact:
     face_position: np.ndarray | None = None
     """Where the contact lies on the flat face (m): from the slide's axis (translating), from
     the pivot along the arm (oscillating)."""
+    lever: np.ndarray | None = None
+    """n . dX/dm: the common normal (from the cam to the follower) against the velocity of
+    the follower's point of contact per unit of motion m (1 for a translating face, cos alpha
+    for a translating roller, m for a rocker): by virtual work the normal force F_n drives the
+    motion with the generalised force F_n * lever."""
 
 
 def _cross(a0, a1, b0, b1):
@@ -98,6 +103,10 @@ class _Roller:
         """Unit vector of the roller centre's velocity as the follower rises (ground)."""
         raise NotImplementedError
 
+    def reach(self) -> float:
+        """|dG/dm|: how far the roller centre moves per unit of motion."""
+        raise NotImplementedError
+
     def contact(self, phi, M) -> Contact:
         (g0, g1), (d0, d1), (e0, e1) = self.centre(M)
         # P' and P'' expressed in the ground frame (R^T P', R^T P''): curvature and angles
@@ -115,7 +124,8 @@ class _Roller:
             rho_p = np.where(kappa == 0.0, np.inf, 1.0 / kappa)
             kappa_prof = np.where(np.isinf(rho_p), 0.0, 1.0 / (rho_p - rr))
         return Contact(px - rr * q0, py - rr * q1, kappa_prof, _pressure(n0, n1, v0, v1),
-                       pitch=(px, py), kappa_pitch=kappa)
+                       pitch=(px, py), kappa_pitch=kappa,
+                       lever=(n0 * v0 + n1 * v1) * self.reach())
 
 
 @dataclass(frozen=True)
@@ -136,6 +146,9 @@ class TranslatingRoller(_Roller):
 
     def direction(self, M):
         return np.ones_like(M[0]), np.zeros_like(M[0])
+
+    def reach(self) -> float:
+        return 1.0
 
 
 @dataclass(frozen=True)
@@ -165,6 +178,9 @@ class OscillatingRoller(_Roller):
         psi = self.psi0 + M[0]
         return np.sin(psi), np.cos(psi)
 
+    def reach(self) -> float:
+        return self.arm_length
+
 
 class _Flat:
     """A flat-faced follower: subclasses give the face's normal angle theta_g and support k
@@ -179,7 +195,7 @@ class _Flat:
         raise NotImplementedError
 
     def velocity(self, M, w):
-        """Velocity direction (ground) of the face's point at face position w as it rises."""
+        """Velocity (ground) of the face's point at face position w per unit of motion."""
         raise NotImplementedError
 
     def contact(self, phi, M) -> Contact:
@@ -198,7 +214,8 @@ class _Flat:
             kappa = np.where(rho == 0.0, np.inf, 1.0 / rho)
         # where theta runs backwards (t1 < 0) the envelope is traced backwards: a cusp too
         kappa = np.where(t1 > 0, kappa, -np.abs(kappa))
-        return Contact(x, y, kappa, _pressure(m0, m1, v0, v1), face_position=w)
+        return Contact(x, y, kappa, _pressure(m0, m1, v0, v1), face_position=w,
+                       lever=m0 * v0 + m1 * v1)
 
 
 @dataclass(frozen=True)

@@ -317,6 +317,95 @@ class CamProfile:
         """Signed curvature of the profile itself, positive where convex."""
         return self.contact(phi).kappa_profile
 
+    # -- contact force and stress (runtime/cam/load.py, runtime/cam/stress.py) ----------
+    def contact_stress(self, phi, spec) -> tuple[np.ndarray, np.ndarray]:
+        """(F_n, p0): the normal force (N) and Hertz's peak contact pressure (Pa) at the cam
+        angles phi.  The relative curvature is the profile's plus the roller's (line
+        contact; a crowned roller's crown across it, point contact); where it is not
+        positive (a cusp, or a concave part tighter than the roller) p0 is infinite."""
+        from .stress import line_contact, point_contact
+
+        phi = np.atleast_1d(np.asarray(phi, dtype=float))
+        M = self.cam.displacement(phi)[:3]
+        c = self.geometry.contact(phi, M)
+        force = spec.load.normal_force(M, c.lever)
+        curv = c.kappa_profile + (1.0 / self.roller_radius if self.roller else 0.0)
+        ok = curv > 0
+        p0 = np.full(phi.shape, np.inf)
+        if spec.crown_radius is not None and self.roller:
+            across = 0.5 / spec.crown_radius
+            p0[ok] = [point_contact(f, 0.5 * k, across, spec.e_star)[0]
+                      for f, k in zip(force[ok], curv[ok])]
+        else:
+            p0[ok] = line_contact(force[ok], spec.length(self.roller), curv[ok], spec.e_star)[0]
+        return force, p0
+
+    def stress_summary(self, spec) -> dict:
+        """The peak contact pressure along the cam (refined between the samples, with the
+        sampling error), where it is, the force's range, and the checks: the allowable
+        pressure, and for a kinetostatic force whether the follower stays on the cam."""
+        th = self._grid()
+        if spec.crown_radius is not None and not self.roller:
+            raise CamdynInputError("crown-radius goes with a roller follower")
+        spec.length(self.roller)            # refuses a missing length before any work
+
+        def f(x):
+            return self.contact_stress(x, spec)[0]
+
+        def p(x):
+            return self.contact_stress(x, spec)[1]
+        _, fmax, fmax_s = self._worst(f, th)
+        lo_at, neg, neg_s = self._worst(lambda x: -f(x), th)
+        out = {"contact_force": spec.load.describe(),
+               "contact_force_max": fmax, "contact_force_max_error": abs(fmax - fmax_s),
+               "contact_force_min": -neg, "contact_force_min_error": abs(neg - neg_s),
+               "materials": list(spec.materials), "contact_modulus": spec.e_star,
+               "contact": "point (crowned roller)" if spec.crown_radius is not None else "line"}
+        checks = []
+        p_grid = p(th)
+        if not np.all(np.isfinite(p_grid)):
+            at = float(th[np.argmax(~np.isfinite(p_grid))])
+            out.update(hertz_stress_max=None, hertz_stress_max_error=None,
+                       hertz_stress_max_angle_deg=math.degrees(at))
+            checks.append(Check("contact stress", False, math.degrees(at), math.inf,
+                                spec.allowable or 0.0, (), (
+                                    f"contact stress: no Hertz contact from cam angle "
+                                    f"{math.degrees(at):.2f} deg on, where the profile is not "
+                                    f"convex enough for the follower (see the undercut or cusp "
+                                    f"check)")))
+        else:
+            at, pmax, sampled = self._worst(p, th)
+            out.update(hertz_stress_max=pmax, hertz_stress_max_error=abs(pmax - sampled),
+                       hertz_stress_max_angle_deg=math.degrees(at))
+            if spec.allowable is not None:
+                bad = pmax > spec.allowable
+                msg = (f"contact stress: Hertz's peak pressure reaches {pmax / 1e6:.4g} MPa at "
+                       f"cam angle {math.degrees(at):.2f} deg, "
+                       + (f"beyond the allowable {spec.allowable / 1e6:.4g} MPa. Use a wider "
+                          f"contact, a larger roller or base circle, or a stronger material "
+                          f"pair." if bad else
+                          f"within the allowable {spec.allowable / 1e6:.4g} MPa"))
+                checks.append(Check("contact stress", not bad, math.degrees(at), pmax,
+                                    spec.allowable, (), msg, abs(pmax - sampled)))
+        if not spec.load.constant:
+            runs = failing_spans(th, f(th) < 0, lambda x: float(f(np.array([x]))[0]))
+            if runs:
+                spans = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}]"
+                                  for a, b in runs)
+                msg = (f"follower leaves the cam: at {spec.load.speed_rpm:g} rpm the contact "
+                       f"force falls to {-neg:.4g} N at cam angle {math.degrees(lo_at):.2f} deg "
+                       f"(negative for phi in {spans} deg): the spring cannot hold the "
+                       f"follower there. Raise the spring's preload or rate, or lower the speed.")
+            else:
+                msg = (f"follower stays on the cam: least contact force {-neg:.4g} N at "
+                       f"{math.degrees(lo_at):.2f} deg")
+            checks.append(Check("contact kept", not runs, math.degrees(lo_at), -neg, 0.0,
+                                tuple((math.degrees(a), math.degrees(b)) for a, b in runs),
+                                msg, abs(neg - neg_s)))
+        out["checks"] = [c.as_dict() for c in checks]
+        out["warnings"] = [c.message for c in checks if not c.ok]
+        return out
+
     # -- the sampled cam ---------------------------------------------------------------
     @cached_property
     def phi(self) -> np.ndarray:

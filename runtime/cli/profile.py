@@ -7,6 +7,7 @@ import sys
 from ..core.errors import CamdynInputError
 from ..core.outdir import out_folder, write_text
 from ..cam.follower import KINDS
+from ..cam.stress import MATERIALS
 from .common import add_out_option, fail, law_names
 
 HELP = ("the cam itself: profile(s) of a disk cam for a translating or oscillating, roller or "
@@ -69,6 +70,35 @@ def add(sub):
                    help="pressure-angle limit of the check, 0 < DEG < 90 (default 30)")
     p.add_argument("--points-per-degree", type=int, default=10, metavar="N",
                    help="samples per degree of cam angle, 1 to 1000 (default 10)")
+    g = p.add_argument_group(
+        "contact stress", "Hertz's peak contact pressure along the cam (line contact; a crowned "
+        "roller's point contact), from a constant normal force or the kinetostatic one at a "
+        "cam speed")
+    g.add_argument("--contact-force", type=float, default=None, metavar="N",
+                   help="a constant normal force between cam and follower, N")
+    g.add_argument("--speed", type=float, default=None, metavar="RPM",
+                   help="cam speed for the kinetostatic force: the follower driven through its "
+                        "motion against its mass and spring")
+    g.add_argument("--follower-mass", type=float, default=0.0, metavar="KG",
+                   help="with --speed: the follower's mass, kg (a rocker's moment of inertia "
+                        "about the pivot, kg m^2)")
+    g.add_argument("--spring-rate", type=float, default=0.0, metavar="K",
+                   help="with --speed: the return spring's rate, N/m (a rocker's N m/rad)")
+    g.add_argument("--spring-preload", type=float, default=0.0, metavar="F0",
+                   help="with --speed: the spring's force at the bottom of the stroke, N (a "
+                        "rocker's N m)")
+    g.add_argument("--roller-width", type=float, default=None, metavar="M",
+                   help="the roller's width, m: the contact line's length")
+    g.add_argument("--cam-width", type=float, default=None, metavar="M",
+                   help="the cam's thickness, m: the contact line's length for a flat face (the "
+                        "shorter of the two for a roller)")
+    g.add_argument("--materials", default="steel,steel", metavar="CAM,FOLLOWER",
+                   help="materials of cam and follower, each a name (" + ", ".join(MATERIALS)
+                        + ") or E:nu in Pa, e.g. 210e9:0.3 (default steel,steel)")
+    g.add_argument("--crown-radius", type=float, default=None, metavar="M",
+                   help="a crowned roller's crown radius across the cam, m (point contact)")
+    g.add_argument("--allowable-stress", type=float, default=None, metavar="PA",
+                   help="the allowable peak contact pressure, Pa, for the check")
     add_out_option(p, default="out/cam", metavar="DIR",
                    help="folder for cam.csv, cam.dxf, cam.png, cam.json (default out/cam)")
     p.add_argument("--json", action="store_true", help="one JSON object on stdout")
@@ -76,7 +106,9 @@ def add(sub):
 
 
 def run(args) -> int:
+    from ..cam.load import ContactLoad
     from ..cam.profile import CamProfile
+    from ..cam.stress import ContactSpec
     from ..measure.contract import plus_minus
 
     prog = "camdyn profile"
@@ -98,14 +130,32 @@ def run(args) -> int:
                          groove=args.groove, points_per_degree=args.points_per_degree,
                          max_pressure_angle_deg=args.max_pressure_angle)
         out = cam.summary()
+        if args.contact_force is not None or args.speed is not None:
+            spec = ContactSpec(
+                ContactLoad(force=args.contact_force, speed_rpm=args.speed,
+                            mass=args.follower_mass, spring_rate=args.spring_rate,
+                            preload=args.spring_preload),
+                roller_width=args.roller_width, cam_width=args.cam_width,
+                materials=tuple(args.materials.split(",")), crown_radius=args.crown_radius,
+                allowable=args.allowable_stress)
+            stress = cam.stress_summary(spec)
+            out["contact_stress"] = stress
+            out["hertz_stress_max"] = stress["hertz_stress_max"]
+            out["hertz_stress_max_error"] = stress["hertz_stress_max_error"]
+            out["warnings"] = out["warnings"] + stress["warnings"]
+            out["ok"] = out["ok"] and not stress["warnings"]
+        elif any(v is not None for v in (args.roller_width, args.cam_width, args.crown_radius,
+                                          args.allowable_stress)):
+            return fail(prog, "the contact stress needs its force: --contact-force N, or "
+                              "--speed RPM with --follower-mass, --spring-rate, --spring-preload")
         folder = out_folder(args.out, files=[f"cam.{x}" for x in ("csv", "dxf", "png", "json")])
         out["files"] = cam.write_all(folder)
         out["files"]["json"] = str(folder / "cam.json")
         write_text(folder / "cam.json", json.dumps(out, indent=1))
     except CamdynInputError as exc:
         return fail(prog, str(exc))
-    for c in cam.failures:
-        print(f"{prog}: warning: {c.message}", file=sys.stderr)
+    for w in out["warnings"]:
+        print(f"{prog}: warning: {w}", file=sys.stderr)
     if args.json:
         print(json.dumps(out, indent=1))
         return 0
@@ -132,6 +182,17 @@ def run(args) -> int:
         print(f"     the contact travels on the face from {lo * 1e3:.6g} to {hi * 1e3:.6g} mm "
               f"({'from the pivot' if cam.oscillating else 'from the slide axis'}): face width "
               f">= {out['face_width'] * 1e3:.6g}{plus_minus(out['face_width_error'] * 1e3)} mm")
+    if "contact_stress" in out:
+        st = out["contact_stress"]
+        print(f"     {st['contact_force']}: {st['contact_force_min']:.6g} to "
+              f"{st['contact_force_max']:.6g} N, {st['contact']} contact, E* = "
+              f"{st['contact_modulus'] / 1e9:.4g} GPa")
+        if st["hertz_stress_max"] is not None:
+            print(f"     Hertz's peak contact pressure {st['hertz_stress_max'] / 1e6:.6g}"
+                  f"{plus_minus(st['hertz_stress_max_error'] / 1e6)} MPa at cam angle "
+                  f"{st['hertz_stress_max_angle_deg']:.2f} deg")
+        for c in st["checks"]:
+            print(f"{'ok  ' if c['ok'] else 'FAIL'} {c['message']}")
     print("     (refined between the samples; ± what the sampling leaves)")
     for f in out["files"].values():
         print(f"wrote {f}")
