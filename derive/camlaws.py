@@ -46,6 +46,9 @@ c_scca = sp.Symbol("c", positive=True)
 """Constant-acceleration fraction c of the sine-constant-cosine law (Norton's b, c, d with
 b = 1/4, d = 3/4 - c): see :func:`scca_pieces`."""
 
+tau_d = sp.Symbol("tau_d", positive=True)
+"""Design tau of the polydyne law: T_e/t_m (3.3) at the speed the cam is compensated for."""
+
 _A = sp.Symbol("A", real=True)  # unknown acceleration amplitude while building
 
 
@@ -298,6 +301,10 @@ for _l in (
     _law("parabolic", 4, "Parabolic (constant acceleration)", "H'' = +-4", (0, _half, 1),
          [_A, -_A]),
     polynomial_law("4-5-6-7", 5, {2: 0, 3: 0}, {1: 0, 2: 0, 3: 0}, "4-5-6-7 polynomial"),
+    # the degree-9 member (derivatives 1 to 4 zero at both ends): the polydyne's output
+    # motion, and the cam it is compensated against
+    polynomial_law("5-6-7-8-9", 10, {2: 0, 3: 0, 4: 0}, {1: 0, 2: 0, 3: 0, 4: 0},
+                   "5-6-7-8-9 polynomial"),
     _law("modified-trapezoid", 6, "Modified trapezoid", "jerk-limited, eighths of the rise",
          (0, sp.Rational(1, 8), sp.Rational(3, 8), sp.Rational(5, 8), sp.Rational(7, 8), 1),
          [_A * sp.sin(4 * _pi * T), _A, _A * sp.cos(4 * _pi * (T - sp.Rational(3, 8))), -_A,
@@ -314,6 +321,20 @@ for _l in (
            LawParameter(c_scca, 0.25, 0.0, 0.75,
                         "fraction of the rise at constant acceleration, b = 1/4, d = 3/4 - c"),
            simplify_pieces=False),
+    # the compensated cam (polydyne) of the one-DOF follower (3.1): the rise that makes the
+    # output X follow the degree-9 polynomial P (its derivatives 1 to 4 zero at both ends)
+    # exactly at the design tau: X'' = (2 pi/tau)^2 (H - X) inverted, H = P + (tau_d/2 pi)^2 P''.
+    # P's fourth derivative zero at the ends keeps the cam's acceleration
+    # H'' = P'' + (tau_d/2 pi)^2 P^(4) continuous into the dwells.  Declared by H'' with
+    # H(0) = H'(0) = 0, the amplitude comes out 1.
+    CamLaw("polydyne", 9, "Polydyne (one-DOF compensated degree-9 rise)",
+           "H = P9 + (tau_d/2 pi)^2 P9'', P9 with P' to P^(4) zero at both ends",
+           (sp.Integer(0), sp.Integer(1)),
+           (_A * (sp.diff(polynomial_2n1(4), T, 2)
+                  + (tau_d / (2 * _pi))**2 * sp.diff(polynomial_2n1(4), T, 4)),),
+           LawParameter(tau_d, 0.15, 0.0, 1.0,
+                        "design tau T_e/t_m (3.3) at which the one-DOF output follows the "
+                        "degree-9 rise exactly")),
 ):
     LAWS[_l.key] = _l
 

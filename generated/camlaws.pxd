@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:100b927786197ac6377e79a8a9d0216fe60c9f8099e523fa66d13e85bb2613a5
-# Text hash: sha256:6e48dae733dedb558bf62ed8bfad29d07a80f17a6b7c0aba34d779b0e792def8
+# Derivation key: sha256:73ec8a9f5248a6590bedac2d49f62690f3e78712b97566f126b282ea29af0c60
+# Text hash: sha256:32826b94a093235c2a7b154ab32cb2643319f6ca1f1b5c1bfaddea83144dc1f3
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),
@@ -20,12 +20,14 @@
 #   6  modified-trapezoid   Modified trapezoid, jerk-limited, eighths of the rise; H''max = 8*pi/(2 + pi)
 #   7  uniform              Uniform motion (constant velocity), H = T; ramp input (3.8); H''max = impulsive
 #   8  sine-constant-cosine Sine-constant-cosine acceleration (SCCA, b = 1/4), Norton SCCA, b = 1/4, d = 3/4 - c; H''max = 8*pi**2/(-2*pi**2*c**2 + 16*c**2 - 24*c + 3*pi**2*c + 2*pi + 8)
+#   9  polydyne             Polydyne (one-DOF compensated degree-9 rise), H = P9 + (tau_d/2 pi)^2 P9'', P9 with P' to P^(4) zero at both ends; H''max = 1
+#   10 5-6-7-8-9            5-6-7-8-9 polynomial, H = 126 T^5 - 420 T^6 + 540 T^7 - 315 T^8 + 70 T^9; H''max = 1215*sqrt(7)/343
 
 #
 #   1000 (turn)               dwell-rise-dwell-return over a full cam turn, periodic in T
 #        (below); `par` is the slot of camlaw_turns that describes it.
 
-from libc.math cimport INFINITY, M_PI, cos, floor, sin
+from libc.math cimport INFINITY, M_PI, cos, floor, pow, sin
 
 # -- sine and cosine of the laws ----------------------------------------------------------
 # The trigonometric laws evaluate sin and cos at every stage of a step, and libm's general
@@ -167,6 +169,18 @@ cdef inline int _plain_segment(int law, double par, double T) noexcept nogil:
         if T < 1.0:
             return 5
         return 6
+    elif law == 9:  # polydyne
+        if T < 0.0:
+            return 0
+        if T < 1.0:
+            return 1
+        return 2
+    elif law == 10:  # 5-6-7-8-9
+        if T < 0.0:
+            return 0
+        if T < 1.0:
+            return 1
+        return 2
     return -1
 
 
@@ -192,6 +206,10 @@ cdef inline bint camlaw_dwell(int law, int seg) noexcept nogil:
         return seg == 2
     elif law == 8:
         return seg == 6
+    elif law == 9:
+        return seg == 2
+    elif law == 10:
+        return seg == 2
     return False
 
 
@@ -273,6 +291,16 @@ cdef inline double _plain_lo(int law, double par, int seg) noexcept nogil:
         elif seg == 5:
             return 7.0/8.0
         elif seg == 6:
+            return 1.0
+    elif law == 9:
+        if seg == 1:
+            return 0.0
+        elif seg == 2:
+            return 1.0
+    elif law == 10:
+        if seg == 1:
+            return 0.0
+        elif seg == 2:
             return 1.0
     return INFINITY
 
@@ -376,7 +404,7 @@ cdef inline void _turn_eval(const double* q, int seg, double T, double* out) noe
 
 
 cdef inline void _plain_eval(int law, double par, int seg, double T, double* out) noexcept nogil:
-    cdef double c0, c1, c2, c3, c4, c5, c6, c7, c8, c9, c10, c11, c12, c13
+    cdef double c0, c1, c2, c3, c4, c5, c6, c7, c8, c9, c10, c11, c12, c13, c14, c15, c16, c17, c18, c19
     if law == 0:  # cycloidal
         if seg == 0:
             out[0] = 0.0
@@ -696,6 +724,66 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             out[3] = 0.0
         else:
             out[0] = out[1] = out[2] = out[3] = 0.0
+    elif law == 9:  # polydyne
+        if seg == 0:
+            out[0] = 0.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        elif seg == 1:
+            c0 = (M_PI*M_PI)
+            c1 = (1.0/c0)
+            c2 = (T*T*T)
+            c3 = (par*par)
+            c4 = 3150.0*c3
+            c5 = 2.0*T - 9.0
+            c6 = pow(T, 5.0)*c0
+            c7 = c5*c6
+            c8 = (T*T)
+            c9 = c0 + 45.0*c3
+            c10 = c8*c9
+            c11 = 2.0*c0 + 21.0*c3
+            c12 = c11*c2
+            c13 = (T*T*T*T)
+            c14 = 3.0*c0 + 7.0*c3
+            c15 = c13*c14
+            c16 = T*c3
+            c17 = c8*(-5.0*T + 2.0*c13 - 7.0*c2 + 9.0*c8 + 1.0)
+            c18 = 3.0*c1
+            c19 = c18*c3*(-10.0*T + 14.0*c13 - 35.0*c2 + 30.0*c8 + 1.0)
+            out[0] = c1*c2*(-T*c4 + 126.0*c10 - 210.0*c12 + 180.0*c15 + 630.0*c3 + 35.0*c7)
+            out[1] = c1*c8*(T*(252.0*T*c9 + 175.0*c0*c13*c5 - 630.0*c11*c8 + 720.0*c14*c2 - c4 + 70.0*c6) + 378.0*c10 - 630.0*c12 + 540.0*c15 - 9450.0*c16 + 1890.0*c3 + 105.0*c7)
+            out[2] = 1260.0*T*(2.0*c17 + c19)
+            out[3] = 1260.0*c16*c18*(60.0*T + 56.0*c2 - 105.0*c8 - 10.0) + 7560.0*c17 + 1260.0*c19 + 2520.0*c2*(18.0*T + 8.0*c2 - 21.0*c8 - 5.0)
+        elif seg == 2:
+            out[0] = 1.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        else:
+            out[0] = out[1] = out[2] = out[3] = 0.0
+    elif law == 10:  # 5-6-7-8-9
+        if seg == 0:
+            out[0] = 0.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        elif seg == 1:
+            c0 = (T*T)
+            c1 = (T*T*T)
+            c2 = (T*T*T*T)
+            c3 = -420.0*T + 540.0*c0 - 315.0*c1 + 70.0*c2 + 126.0
+            out[0] = pow(T, 5.0)*c3
+            out[1] = 5.0*c2*(T*(216.0*T - 189.0*c0 + 56.0*c1 - 84.0) + c3)
+            out[2] = 2520.0*c1*(-5.0*T + 9.0*c0 - 7.0*c1 + 2.0*c2 + 1.0)
+            out[3] = 2520.0*c0*(T*(18.0*T - 21.0*c0 + 8.0*c1 - 5.0) - 15.0*T + 27.0*c0 - 21.0*c1 + 6.0*c2 + 3.0)
+        elif seg == 2:
+            out[0] = 1.0
+            out[1] = 0.0
+            out[2] = 0.0
+            out[3] = 0.0
+        else:
+            out[0] = out[1] = out[2] = out[3] = 0.0
     else:
         out[0] = out[1] = out[2] = out[3] = 0.0
 
@@ -818,5 +906,24 @@ cdef inline double _plain_d4(int law, double par, int seg, double T) noexcept no
             c1 = (M_PI*M_PI)
             return 12468.363652352313*camlaw_cos(3.141592653589793*(4.0*T - 7.0/2.0))/(3.0*par*c1 - 24.0*par - 2.0*c0*c1 + 16.0*c0 + 6.283185307179586 + 8.0)
         elif seg == 6:
+            return 0.0
+    elif law == 9:  # polydyne
+        if seg == 0:
+            return 0.0
+        elif seg == 1:
+            c0 = (T*T*T)
+            c1 = (T*T)
+            c2 = 0.10132118364233778*(par*par)
+            return 22680.0*T*c2*(-35.0*T + 28.0*c1 + 10.0) + 15120.0*T*(2.0*(T*T*T*T) - 5.0*T - 7.0*c0 + 9.0*c1 + 1.0) + 15120.0*c0*(-7.0*T + 4.0*c1 + 3.0) + 15120.0*c1*(18.0*T + 8.0*c0 - 21.0*c1 - 5.0) + 7560.0*c2*(60.0*T + 56.0*c0 - 105.0*c1 - 10.0)
+        elif seg == 2:
+            return 0.0
+    elif law == 10:  # 5-6-7-8-9
+        if seg == 0:
+            return 0.0
+        elif seg == 1:
+            c0 = (T*T)
+            c1 = (T*T*T)
+            return 15120.0*T*(2.0*(T*T*T*T) + T*(18.0*T - 21.0*c0 + 8.0*c1 - 5.0) - 5.0*T + c0*(-7.0*T + 4.0*c0 + 3.0) + 9.0*c0 - 7.0*c1 + 1.0)
+        elif seg == 2:
             return 0.0
     return 0.0

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:100b927786197ac6377e79a8a9d0216fe60c9f8099e523fa66d13e85bb2613a5
-# Text hash: sha256:9a41ac7128b212cf3a69771f4668141d4cb73205bda6db5f97aac26c233470e9
+# Derivation key: sha256:73ec8a9f5248a6590bedac2d49f62690f3e78712b97566f126b282ea29af0c60
+# Text hash: sha256:46edde461aa4bd187bb18fda1ce3b49be091cf5c2b3baadc3333c78a62d09195
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.
@@ -146,6 +146,36 @@ _LAWS_JSON = """
   },
   "reference": "Norton SCCA, b = 1/4, d = 3/4 - c",
   "title": "Sine-constant-cosine acceleration (SCCA, b = 1/4)"
+ },
+ {
+  "amplitude": "1",
+  "bounds": [
+   "0.0",
+   "1.0"
+  ],
+  "code": 9,
+  "key": "polydyne",
+  "parameter": {
+   "default": 0.15,
+   "doc": "design tau T_e/t_m (3.3) at which the one-DOF output follows the degree-9 rise exactly",
+   "high": 1.0,
+   "low": 0.0,
+   "name": "tau_d"
+  },
+  "reference": "H = P9 + (tau_d/2 pi)^2 P9'', P9 with P' to P^(4) zero at both ends",
+  "title": "Polydyne (one-DOF compensated degree-9 rise)"
+ },
+ {
+  "amplitude": "1215*sqrt(7)/343",
+  "bounds": [
+   "0.0",
+   "1.0"
+  ],
+  "code": 10,
+  "key": "5-6-7-8-9",
+  "parameter": null,
+  "reference": "H = 126 T^5 - 420 T^6 + 540 T^7 - 315 T^8 + 70 T^9",
+  "title": "5-6-7-8-9 polynomial"
  }
 ]
 """
@@ -234,4 +264,8 @@ def breakpoints(int law, double par):
         return [0.0, 1.0]
     elif law == 8:  # sine-constant-cosine
         return [0.0, 1.0/8.0, 0.5*par + 1.0/8.0, 7.0/8.0 - 0.5*par, 7.0/8.0, 1.0]
+    elif law == 9:  # polydyne
+        return [0.0, 1.0]
+    elif law == 10:  # 5-6-7-8-9
+        return [0.0, 1.0]
     raise ValueError(f"unknown cam law code {law}")

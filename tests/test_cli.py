@@ -102,7 +102,8 @@ def test_laws_table_json():
     assert rows["cycloidal"]["H2_max"] == pytest.approx(2 * 3.141592653589793)
     assert rows["modified-sine"]["H2_max"] == pytest.approx(5.398, abs=1e-3)   # theta = 0.1
     assert set(rows) == {"cycloidal", "modified-sine", "3-4-5", "simple-harmonic", "parabolic",
-                         "4-5-6-7", "modified-trapezoid", "uniform", "sine-constant-cosine"}
+                         "4-5-6-7", "modified-trapezoid", "uniform", "sine-constant-cosine",
+                         "5-6-7-8-9", "polydyne"}
 
 
 # -- camshaft2 (thesis ch. 5) ---------------------------------------------------------------------

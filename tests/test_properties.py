@@ -80,6 +80,8 @@ CONTINUITY = {
     "modified-trapezoid": (2, 3),     # sine ramps meet the constant pieces with zero jerk
     "uniform": (0, None),             # H' jumps to 1: the ramp input (3.8)
     "sine-constant-cosine": (2, 3),   # like the modified trapezoid: zero-jerk joins
+    "5-6-7-8-9": (4, None),           # derivatives 1 to 4 zero at both ends
+    "polydyne": (2, None),            # H'' = P'' + c P^(4) zero at the ends, H''' is not
 }
 
 
@@ -102,6 +104,8 @@ def _start_jump(key, th):
         return 3, _modified_sine_peak(th) * pi / (2 * th)     # (A.2.21): 85 at theta = 0.1
     if key == "sine-constant-cosine":
         return 3, 4 * pi * _scca_peak(th)                     # H'' = A sin 4 pi T on [0, 1/8]
+    if key == "polydyne":   # H''' = P''' + (tau_d/2 pi)^2 P^(5), P = 126 T^5 - ...
+        return 3, (th / (2 * pi))**2 * 126 * 120
     trapezoid_peak = 8 * pi / (2 + pi)    # H'' = A sin 4 pi T on the first eighth, classical 4.888
     return {
         "cycloidal": (3, 4 * pi**2),        # (A.2.15): 39.4
@@ -109,6 +113,7 @@ def _start_jump(key, th):
         "simple-harmonic": (2, pi**2 / 2),  # H'' = (pi^2/2) cos pi T
         "parabolic": (2, 4.0),
         "4-5-6-7": (4, 840.0),              # H = 35 T^4 - ...: H'''' = 840 at T = 0
+        "5-6-7-8-9": (5, 15120.0),          # H = 126 T^5 - ...: H^(5) = 126 * 5! at T = 0
         "modified-trapezoid": (3, 4 * pi * trapezoid_peak),
         "uniform": (1, 1.0),
     }[key]
@@ -152,10 +157,11 @@ def law_and_theta(draw):
 @functools.cache
 def _symbolic(key):
     """mpmath functions (T, theta) of each segment's d^k H/dT^k (dwells included, k = 0..4), of
-    the law's own Piecewise (k = 0..3), and of its breakpoints (theta)."""
+    the law's own Piecewise (k = 0..3), and of its breakpoints (theta); k = 0..5 for the
+    pieces, the degree-9 rise's first jump being in H^(5)."""
     law = LAWS[key]
     par = law.parameter.symbol if law.parameter else theta
-    pieces = [[sp.lambdify((T, par), e, "mpmath") for e in law.segment_exprs(k)] for k in range(5)]
+    pieces = [[sp.lambdify((T, par), e, "mpmath") for e in law.segment_exprs(k)] for k in range(6)]
     whole = [sp.lambdify((T, par), law.piecewise(k), "mpmath") for k in range(4)]
     bounds = [sp.lambdify(par, b, "mpmath") for b in law.bounds]
     return pieces, whole, bounds
@@ -193,13 +199,13 @@ def _compiled(key, th, ts):
 
 @functools.lru_cache(maxsize=4096)
 def _scale(key, th):
-    """Per order k = 0..4: 1 + the largest |d^k H/dT^k| at the ends and quarter points of every
+    """Per order k = 0..5: 1 + the largest |d^k H/dT^k| at the ends and quarter points of every
     piece of the rise, from the symbolic law: the size that rounding scales with."""
     b = _bounds(key, th)
-    out = np.ones(5)
+    out = np.ones(6)
     for seg in range(1, len(b)):
         for t in np.linspace(b[seg - 1], b[seg], 5):
-            out = np.maximum(out, [1 + abs(_piece(key, th, seg, k, t)) for k in range(5)])
+            out = np.maximum(out, [1 + abs(_piece(key, th, seg, k, t)) for k in range(6)])
     return tuple(out)
 
 
@@ -295,7 +301,7 @@ def test_rise_is_point_symmetric_about_the_middle(law, t):
     key, th = law
     u = 1.0 - t
     on_break = {t, u} & set(_bounds(key, th))
-    orders = range(4) if not on_break else range(min(c for c in CONTINUITY[key] if c is not None) + 1)
+    orders = range(4) if not on_break else range(min(3, min(c for c in CONTINUITY[key] if c is not None)) + 1)
     s = _scale(key, th)
     mirrored = (lambda h, k: 1.0 - h if k == 0 else (-1) ** (k + 1) * h)
     for rows in (np.array([_symbolic_law(key, th, t), _symbolic_law(key, th, u)]), _compiled(key, th, [t, u])):

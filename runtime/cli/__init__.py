@@ -33,7 +33,7 @@ from ..core.errors import CamdynInputError
 from .common import Parser, fail, run_failed
 
 COMMANDS = ("derive", "residual", "check", "laws", "design", "run", "scenes", "integrate", "simulate",
-            "beam_follower", "stability", "precision", "profile", "figures", "sweep")
+            "beam_follower", "stability", "precision", "profile", "figures", "sweep", "polydyne")
 """The command modules, in the order of `camdyn --help`."""
 
 

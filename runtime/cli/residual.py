@@ -33,7 +33,12 @@ def add(sub):
     r.add_argument("--q", type=float, default=0.0,
                    help="relative damping q (6.47), one-dof only; default 0")
     r.add_argument("--law", default="cycloidal", choices=law_names())
-    r.add_argument("--theta", type=float, default=None, help="shape parameter of the modified sine")
+    r.add_argument("--theta", type=float, default=None,
+                   help="the law's shape parameter (modified sine: peak position; "
+                        "sine-constant-cosine: c; polydyne: the design tau)")
+    r.add_argument("--design-tau", type=float, default=None, metavar="TD",
+                   help="polydyne: the tau the cam is compensated for (its shape parameter): "
+                        "at tau = TD the one-DOF output follows the degree-9 rise exactly")
     r.add_argument("--method", default="dp54", choices=all_methods)
     r.add_argument("--rtol", type=float, default=None,
                    help="dp54/dop853/rodas4 tolerance (default 1e-10)")
@@ -99,6 +104,12 @@ def target(args):
         rtol = RESIDUAL_RTOL
     step = args.step
     params = parameters(args.model, args.tau, args.fa, args.fv, args.q)
+    if getattr(args, "design_tau", None) is not None:
+        if args.law != "polydyne":
+            raise CamdynInputError(f"--design-tau goes with --law polydyne, not {args.law}")
+        if args.theta is not None:
+            raise CamdynInputError("--design-tau is the polydyne's --theta: give one of them")
+        args.theta = args.design_tau
     if not METHODS[args.method].adaptive and step is None:
         step = ModelTarget.of(MODELS[args.model], params, law=args.law,
                               theta=args.theta).default_step()
