@@ -250,3 +250,96 @@ def test_cli_refuses_follower_input_in_one_line(tmp_path, capsys, argv, names):
     assert rc == 2 and len(err) == 1 and err[0].startswith("camdyn profile: error:")
     for n in names:
         assert n in err[0]
+
+
+def test_cutter_path_is_the_offset_profile():
+    """A cutter of the roller's radius runs on the pitch curve; for a flat face the cutter's
+    centre stays at r_c from the profile (its nearest profile point, densely sampled)."""
+    cam = CamProfile(follower="translating-roller", stroke=0.012, base_radius=RB,
+                     roller_radius=0.008, offset=0.004, cutter_radius=0.008)
+    t = cam.table
+    assert np.max(np.hypot(t["x_cutter"] - t["x_pitch"], t["y_cutter"] - t["y_pitch"])) < 1e-15
+    cam = CamProfile(follower="translating-flat", stroke=0.008, base_radius=RB,
+                     cutter_radius=0.01, points_per_degree=50)
+    t = cam.table
+    for i in range(0, t["x_cutter"].size, 1500):
+        gap = np.min(np.hypot(t["x_profile"] - t["x_cutter"][i], t["y_profile"] - t["y_cutter"][i]))
+        assert abs(gap - 0.01) < 1e-8
+
+
+def test_cutter_gouge_named():
+    """A rocker's cam with a concave part: a cutter larger than its least concave |rho|
+    gouges there; the check's value is that radius (dense sampling: 1e-9 m)."""
+    kw = dict(follower="oscillating-roller", swing_deg=20, base_radius=0.03,
+              roller_radius=0.008, pivot_distance=0.08, arm_length=0.06)
+    cam = CamProfile(**kw)
+    phi = np.linspace(0, 2 * np.pi, 720001)
+    k = cam.profile_curvature(phi)
+    rho_concave = 1.0 / np.max(-k)
+    big = CamProfile(**kw, cutter_radius=1.2 * rho_concave)
+    small = CamProfile(**kw, cutter_radius=0.8 * rho_concave)
+    cb = next(c for c in big.checks if c.name == "cutter")
+    cs = next(c for c in small.checks if c.name == "cutter")
+    assert not cb.ok and cs.ok and "gouges" in cb.message
+    assert abs(cb.value - rho_concave) < 1e-9 and abs(cs.value - rho_concave) < 1e-9
+    with pytest.raises(Exception, match="groove"):
+        CamProfile(stroke=0.01, base_radius=RB, roller_radius=0.008, groove=True,
+                   cutter_radius=0.005)
+
+
+def _arc_distance(p, centre, a0, a1, r):
+    """Distance of points p (n, 2) from the CCW arc of ezdxf's bulge_to_arc (angles in rad)."""
+    d = p - np.asarray(centre)[None, :]
+    ang = np.mod(np.arctan2(d[:, 1], d[:, 0]) - a0, 2 * np.pi)
+    span = np.mod(a1 - a0, 2 * np.pi)
+    on = np.abs(np.hypot(d[:, 0], d[:, 1]) - r)
+    ends = np.minimum(np.hypot(*(p - (centre[0] + r * np.cos(a0), centre[1] + r * np.sin(a0))).T),
+                      np.hypot(*(p - (centre[0] + r * np.cos(a1), centre[1] + r * np.sin(a1))).T))
+    return np.where(ang <= span, on, ends)
+
+
+@pytest.mark.parametrize("kind,kw", [
+    ("translating-roller", dict(stroke=0.015, roller_radius=0.005, cutter_radius=0.006)),
+    ("oscillating-flat", dict(swing_deg=8, pivot_distance=0.09, face_offset=0.01)),
+])
+def test_dxf_arcs_within_tolerance_and_tangent(tmp_path, kind, kw):
+    """The DXF's arcs, read back through ezdxf and turned into circles by ezdxf itself: every
+    point of the exact profile (60 a degree) lies within the tolerance of the chain, and
+    consecutive arcs share their tangent (G1)."""
+    import ezdxf
+    from ezdxf.math import bulge_to_arc
+
+    tol = 1e-6
+    cam = CamProfile(follower=kind, base_radius=0.026 if "roller" in kind else 0.03,
+                     arc_tolerance=tol, **kw)
+    path = cam.write_dxf(tmp_path / "cam.dxf")
+    doc = ezdxf.readfile(path)
+    layers = ["PROFILE"] + (["PITCH", "CUTTER"] if "roller" in kind else [])
+    for layer in layers:
+        line = next(e for e in doc.modelspace() if e.dxftype() == "LWPOLYLINE"
+                    and e.dxf.layer == layer)
+        pts = np.array([(x, y, b) for x, y, _, _, b in line.get_points()]) / [1e3, 1e3, 1]
+        assert 8 < len(pts) < 1000 and line.closed
+        arcs = []
+        for k in range(len(pts)):
+            s, e = pts[k], pts[(k + 1) % len(pts)]
+            # ezdxf gives every arc counter-clockwise from a0 to a1: a clockwise one (bulge
+            # < 0) is run from a1 back to a0
+            c, a0, a1, r = bulge_to_arc(s[:2], e[:2], s[2])
+            arcs.append((np.array([c[0], c[1]]), a0, a1, r, s[2] < 0))
+        t = cam.table
+        shift = {"PROFILE": 0.0, "PITCH": kw.get("roller_radius", 0),
+                 "CUTTER": kw.get("cutter_radius", 0)}[layer]
+        phi = np.linspace(0, 2 * np.pi, 21601)[:-1]
+        c = cam.contact(phi)
+        exact = np.column_stack([c.x + shift * c.normal[0], c.y + shift * c.normal[1]])
+        dist = np.min([_arc_distance(exact, a[0], a[1], a[2], a[3]) for a in arcs], axis=0)
+        assert np.max(dist) < 1.01 * tol, (layer, np.max(dist))
+        # G1: the tangent leaving each vertex on the next arc equals the one arriving
+        for k in range(len(arcs)):
+            (c0, a0, a1, r0, cw0), (c1, b0, b1, r1, cw1) = arcs[k], arcs[(k + 1) % len(arcs)]
+            end_ang = a0 if cw0 else a1
+            start_ang = b1 if cw1 else b0
+            t_in = np.array([-np.sin(end_ang), np.cos(end_ang)]) * (-1 if cw0 else 1)
+            t_out = np.array([-np.sin(start_ang), np.cos(start_ang)]) * (-1 if cw1 else 1)
+            assert np.hypot(*(t_in - t_out)) < 1e-6

@@ -47,8 +47,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-KINDS = ("translating-roller", "oscillating-roller", "translating-flat", "oscillating-flat")
-"""The followers, as ``camdyn profile --follower`` names them."""
+from .names import KINDS  # noqa: F401  (the followers by name)
 
 
 @dataclass(frozen=True)
@@ -62,6 +61,8 @@ class Contact:
     """Signed curvature of the profile (1/m), positive where convex."""
     pressure_angle: np.ndarray
     """rad."""
+    normal: tuple | None = None
+    """(nx, ny): the profile's outward unit normal in the cam frame."""
     pitch: tuple | None = None
     """(x, y) of the roller centre (roller followers)."""
     kappa_pitch: np.ndarray | None = None
@@ -124,7 +125,7 @@ class _Roller:
             rho_p = np.where(kappa == 0.0, np.inf, 1.0 / kappa)
             kappa_prof = np.where(np.isinf(rho_p), 0.0, 1.0 / (rho_p - rr))
         return Contact(px - rr * q0, py - rr * q1, kappa_prof, _pressure(n0, n1, v0, v1),
-                       pitch=(px, py), kappa_pitch=kappa,
+                       normal=(q0, q1), pitch=(px, py), kappa_pitch=kappa,
                        lever=(n0 * v0 + n1 * v1) * self.reach())
 
 
@@ -214,7 +215,8 @@ class _Flat:
             kappa = np.where(rho == 0.0, np.inf, 1.0 / rho)
         # where theta runs backwards (t1 < 0) the envelope is traced backwards: a cusp too
         kappa = np.where(t1 > 0, kappa, -np.abs(kappa))
-        return Contact(x, y, kappa, _pressure(m0, m1, v0, v1), face_position=w,
+        return Contact(x, y, kappa, _pressure(m0, m1, v0, v1), normal=_rotate(phi, m0, m1),
+                       face_position=w,
                        lever=m0 * v0 + m1 * v1)
 
 

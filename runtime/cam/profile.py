@@ -136,6 +136,11 @@ class CamProfile:
     """Oscillating followers: the arm's swing over the rise (deg)."""
     face_offset: float = 0.0
     """Oscillating flat face: distance f of the face's line from the pivot (m)."""
+    cutter_radius: float | None = None
+    """The milling cutter's radius (m): its centre path is the profile offset outwards."""
+    arc_tolerance: float | None = None
+    """Write the DXF's curves as tangent arcs within this distance (m) of the exact curves
+    (runtime/cam/biarc.py) instead of the sampled polylines."""
     cam: RDFD = field(init=False, repr=False, compare=False)
     geometry: object = field(init=False, repr=False, compare=False)
 
@@ -187,6 +192,14 @@ class CamProfile:
             raise CamdynInputError(f"points-per-degree={ppd!r} is out of range: an integer "
                                    f"from 1 to 1000")
         _positive("max-pressure-angle", self.max_pressure_angle_deg, high=90.0)
+        if self.cutter_radius is not None:
+            _positive("cutter-radius", self.cutter_radius, low=MIN_RADIUS, strict=False,
+                      high=MAX_LENGTH)
+            if self.groove:
+                raise CamdynInputError("cutter-radius goes with an open cam: a groove is cut by "
+                                       "a cutter of the roller's size along the pitch curve")
+        if self.arc_tolerance is not None:
+            _positive("arcs", self.arc_tolerance, low=1e-9, strict=False, high=1.0)
         if self.groove and not roller:
             raise CamdynInputError("groove goes with a roller follower: a flat face has one "
                                    "side to push on")
@@ -431,6 +444,9 @@ class CamProfile:
             # the outer wall lies a roller diameter beyond the inner one along the normal
             out["x_outer"] = 2 * c.pitch[0] - c.x
             out["y_outer"] = 2 * c.pitch[1] - c.y
+        if self.cutter_radius is not None:
+            out["x_cutter"] = c.x + self.cutter_radius * c.normal[0]
+            out["y_cutter"] = c.y + self.cutter_radius * c.normal[1]
         out["alpha_deg"] = np.degrees(c.pressure_angle)
         with np.errstate(divide="ignore"):
             if self.roller:
@@ -471,6 +487,8 @@ class CamProfile:
     def checks(self) -> tuple:
         th = self._grid()
         out = list(self._undercut_checks(th) if self.roller else self._cusp_checks(th))
+        if self.cutter_radius is not None:
+            out.append(self._cutter_check(th))
         lim = math.radians(self.max_pressure_angle_deg)
 
         def fa(x):
@@ -526,6 +544,30 @@ class CamProfile:
             yield Check(name, not runs, math.degrees(at), rho, rr,
                         tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg,
                         rho_error)
+
+    def _cutter_check(self, th):
+        """The cutter's centre, offset outwards by r_c, runs backwards (the cutter gouges the
+        profile) where 1 + r_c kappa < 0: a concave part tighter than the cutter."""
+        rc = self.cutter_radius
+
+        def g(x):
+            return 1.0 + rc * self.profile_curvature(x)
+        runs = failing_spans(th, g(th) < 0, lambda x: float(g(x)[0]))
+        at, k, k_sampled = self._worst(lambda x: -self.profile_curvature(x), th)
+        rho = 1.0 / k if k > 0 else math.inf
+        err = abs(rho - 1.0 / k_sampled) if k > 0 and k_sampled > 0 else 0.0
+        if runs:
+            spans = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}]" for a, b in runs)
+            msg = (f"cutter: a cutter of radius {rc * 1e3:.4g} mm gouges the profile at cam "
+                   f"angle {math.degrees(at):.2f} deg (for phi in {spans} deg), where the "
+                   f"concave profile's radius of curvature is down to {rho * 1e3:.4g} mm. Use a "
+                   f"smaller cutter.")
+        else:
+            msg = (f"cutter of radius {rc * 1e3:.4g} mm fits: "
+                   + (f"smallest concave |rho| = {rho * 1e3:.4g} mm at {math.degrees(at):.2f} deg"
+                      if math.isfinite(rho) else "the profile is convex throughout"))
+        return Check("cutter", not runs, math.degrees(at), rho if math.isfinite(rho) else math.inf,
+                     rc, tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg, err)
 
     def _cusp_checks(self, th):
         """A flat face follows the profile only where the profile is convex: it cusps where
@@ -603,6 +645,10 @@ class CamProfile:
                 "angles_deg": dict(zip(("rise", "upper_dwell", "return", "lower_dwell"),
                                        self.angles_deg)),
                 "points": int(self.phi.size),
+                "cutter_radius": self.cutter_radius,
+                **({"arc_tolerance": self.arc_tolerance,
+                    "arcs": {layer: len(self.arcs(layer)) for layer in self._layers()}}
+                   if self.arc_tolerance is not None else {}),
                 **self.extremes(),
                 "checks": [c.as_dict() for c in self.checks],
                 "ok": not self.failures,
@@ -630,9 +676,10 @@ class CamProfile:
         doc = ezdxf.new("R2010")
         doc.units = units.MM
         doc.header["$MEASUREMENT"] = 1
-        colours = {"PITCH": 3, "PROFILE": 7, "PROFILE_OUTER": 5, "BASE_CIRCLE": 8}
+        colours = {"PITCH": 3, "PROFILE": 7, "PROFILE_OUTER": 5, "BASE_CIRCLE": 8, "CUTTER": 1}
         for name, colour in colours.items():
-            if (name == "PROFILE_OUTER" and not self.groove) or (name == "PITCH" and not self.roller):
+            if ((name == "PROFILE_OUTER" and not self.groove) or (name == "PITCH" and not self.roller)
+                    or (name == "CUTTER" and self.cutter_radius is None)):
                 continue
             doc.layers.add(name, color=colour)
         msp = doc.modelspace()
@@ -640,6 +687,8 @@ class CamProfile:
         curves = [("PROFILE", "x_profile", "y_profile")]
         if self.roller:
             curves.insert(0, ("PITCH", "x_pitch", "y_pitch"))
+        if self.cutter_radius is not None:
+            curves.append(("CUTTER", "x_cutter", "y_cutter"))
         if self.groove:
             curves.append(("PROFILE_OUTER", "x_outer", "y_outer"))
         for layer, x, y in curves:
@@ -647,12 +696,38 @@ class CamProfile:
             # add_lwpolyline appends them one by one, copying the array each time, which took
             # 38 s at 200 points a degree and would take minutes at the allowed 1000
             line = msp.add_lwpolyline([], close=True, dxfattribs={"layer": layer})
-            n = len(tab[x])
-            line.lwpoints.set(np.column_stack([tab[x] * 1e3, tab[y] * 1e3, np.zeros((n, 3))]))
+            if self.arc_tolerance is None:
+                n = len(tab[x])
+                line.lwpoints.set(np.column_stack([tab[x] * 1e3, tab[y] * 1e3, np.zeros((n, 3))]))
+            else:
+                arcs = self.arcs(layer)
+                line.lwpoints.set(np.array([[a.start[0] * 1e3, a.start[1] * 1e3, 0.0, 0.0, a.bulge]
+                                            for a in arcs]))
         msp.add_circle((0.0, 0.0), self.base_radius * 1e3, dxfattribs={"layer": "BASE_CIRCLE"})
         with writing(path):
             doc.saveas(path)
         return path
+
+    def _layers(self) -> list:
+        return ((["PITCH"] if self.roller else []) + ["PROFILE"]
+                + (["CUTTER"] if self.cutter_radius is not None else [])
+                + (["PROFILE_OUTER"] if self.groove else []))
+
+    def arcs(self, layer: str = "PROFILE") -> list:
+        """The curve of a DXF layer (PROFILE, PITCH, CUTTER, PROFILE_OUTER) as tangent arcs
+        within ``arc_tolerance`` of it (:func:`camdyn.runtime.cam.biarc.fit`), split at the
+        motion's segment ends.  Every offset curve shares the profile's tangent."""
+        from .biarc import fit
+
+        tol = self.arc_tolerance if self.arc_tolerance is not None else 1e-6
+        rr, rc = self.roller_radius or 0.0, self.cutter_radius or 0.0
+        shift = {"PROFILE": 0.0, "PITCH": rr, "CUTTER": rc, "PROFILE_OUTER": 2 * rr}[layer]
+
+        def curve(u):
+            c = self.contact(u)
+            n0, n1 = c.normal
+            return np.array([c.x + shift * n0, c.y + shift * n1]), np.array([-n1, n0])
+        return fit(curve, self.cam.breakpoints, tol)
 
     def write_png(self, path) -> Path:
         import matplotlib

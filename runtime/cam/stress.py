@@ -29,17 +29,7 @@ import math
 import numpy as np
 
 from ..core.errors import CamdynInputError
-
-MATERIALS = {
-    "steel": (207e9, 0.292),
-    "stainless-steel": (190e9, 0.305),
-    "cast-iron": (100e9, 0.211),
-    "phosphor-bronze": (111e9, 0.349),
-    "brass": (106e9, 0.324),
-    "aluminium": (71.7e9, 0.333),
-}
-"""name -> (E in Pa, nu)."""
-
+from .names import MATERIALS
 
 def material(text: str) -> tuple[float, float]:
     """A material by name (:data:`MATERIALS`) or as E:nu (Pa, 1), e.g. ``210e9:0.3``."""

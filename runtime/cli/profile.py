@@ -6,8 +6,7 @@ import sys
 
 from ..core.errors import CamdynInputError
 from ..core.outdir import out_folder, write_text
-from ..cam.follower import KINDS
-from ..cam.stress import MATERIALS
+from ..cam.names import KINDS, MATERIALS
 from .common import add_out_option, fail, law_names
 
 HELP = ("the cam itself: profile(s) of a disk cam for a translating or oscillating, roller or "
@@ -70,6 +69,13 @@ def add(sub):
                    help="pressure-angle limit of the check, 0 < DEG < 90 (default 30)")
     p.add_argument("--points-per-degree", type=int, default=10, metavar="N",
                    help="samples per degree of cam angle, 1 to 1000 (default 10)")
+    p.add_argument("--cutter-radius", type=float, default=None, metavar="M",
+                   help="a milling cutter's radius, m: its centre path (the profile offset "
+                        "outwards; CSV x_cutter, y_cutter; DXF layer CUTTER) and the check that "
+                        "it does not gouge a concave part (open cams)")
+    p.add_argument("--arcs", type=float, default=None, metavar="TOL",
+                   help="write the DXF's curves as tangent arcs (bi-arcs) within TOL m of the "
+                        "exact curves, 1e-9 <= TOL <= 1, instead of sampled polylines")
     g = p.add_argument_group(
         "contact stress", "Hertz's peak contact pressure along the cam (line contact; a crowned "
         "roller's point contact), from a constant normal force or the kinetostatic one at a "
@@ -123,7 +129,8 @@ def run(args) -> int:
                          offset=0.0 if args.offset is None else args.offset,
                          follower=args.follower, pivot_distance=args.pivot_distance,
                          arm_length=args.arm_length, swing_deg=args.swing,
-                         face_offset=args.face_offset,
+                         face_offset=args.face_offset, cutter_radius=args.cutter_radius,
+                         arc_tolerance=args.arcs,
                          angles_deg=tuple(angles), law=args.law, law_parameter=args.law_parameter,
                          return_law=args.return_law,
                          return_law_parameter=args.return_law_parameter,
