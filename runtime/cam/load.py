@@ -20,19 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..core.errors import CamdynInputError
-
-
-def _number(name, value, low=0.0, strict=False, high=None):
-    try:
-        value = float(value)
-    except (TypeError, ValueError):
-        raise CamdynInputError(f"{name} must be a number, got {value!r}") from None
-    bad = (not math.isfinite(value) or (value <= low if strict else value < low)
-           or (high is not None and value > high))
-    if bad:
-        rng = f"{'>' if strict else '>='} {low:g}" + (f" and <= {high:g}" if high is not None else "")
-        raise CamdynInputError(f"{name}={value:g} is out of range: it must be finite and {rng}")
-    return value
+from .checks import in_range
 
 
 @dataclass(frozen=True)
@@ -53,12 +41,12 @@ class ContactLoad:
                                    "or through the cam speed (speed, with follower-mass, "
                                    "spring-rate, spring-preload), not both")
         if self.force is not None:
-            _number("contact-force", self.force, strict=True, high=1e9)
+            in_range("contact-force", self.force, strict=True, high=1e9)
         else:
-            _number("speed", self.speed_rpm, strict=True, high=1e6)
-            _number("follower-mass", self.mass, high=1e6)
-            _number("spring-rate", self.spring_rate, high=1e12)
-            _number("spring-preload", self.preload, high=1e9)
+            in_range("speed", self.speed_rpm, strict=True, high=1e6)
+            in_range("follower-mass", self.mass, high=1e6)
+            in_range("spring-rate", self.spring_rate, high=1e12)
+            in_range("spring-preload", self.preload, high=1e9)
 
     @property
     def constant(self) -> bool:

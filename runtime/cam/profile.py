@@ -40,6 +40,7 @@ from ..core.errors import CamdynInputError
 from ..measure.contract import chart_note
 from ..core.laws import choose
 from ..core.outdir import out_folder, writing
+from .checks import in_range
 from .follower import (KINDS, Contact, OscillatingFlat, OscillatingRoller, TranslatingFlat,
                        TranslatingRoller)
 from .motion import RDFD, failing_spans
@@ -94,17 +95,14 @@ def _a(kind: str) -> str:
     return ("an " if kind[0] in "aeiou" else "a ") + kind
 
 
-def _positive(name, value, low=0.0, strict=True, high=None):
-    try:
-        value = float(value)
-    except (TypeError, ValueError):
-        raise CamdynInputError(f"{name} must be a number, got {value!r}") from None
-    bad = not math.isfinite(value) or (value <= low if strict else value < low) \
-        or (high is not None and value >= high)
-    if bad:
-        rng = f"{'>' if strict else '>='} {low:g}" + (f" and < {high:g}" if high is not None else "")
-        raise CamdynInputError(f"{name}={value:g} is out of range: it must be finite and {rng}")
-    return value
+def _span_degrees(runs) -> tuple:
+    """Failing spans of cam angle (rad) in degrees."""
+    return tuple((math.degrees(a), math.degrees(b)) for a, b in runs)
+
+
+def _span_text(runs) -> str:
+    """Failing spans of cam angle (rad) as the messages print them: [a, b], [c, d] (deg)."""
+    return ", ".join(f"[{a:.2f}, {b:.2f}]" for a, b in _span_degrees(runs))
 
 
 @dataclass(frozen=True)
@@ -158,31 +156,31 @@ class CamProfile:
         missing = [n for n in needs if given[n] is None]
         if missing:
             raise CamdynInputError(f"{_a(kind)} follower needs {', '.join(missing)}")
-        rb = _positive("base-radius", self.base_radius, low=MIN_RADIUS, strict=False,
-                       high=MAX_LENGTH)
+        rb = in_range("base-radius", self.base_radius, low=MIN_RADIUS, high=MAX_LENGTH,
+                      high_open=True)
         self._only_with(oscillating, roller)
-        rr = (_positive("roller-radius", self.roller_radius, low=MIN_RADIUS, strict=False,
-                        high=MAX_LENGTH) if roller else None)
+        rr = (in_range("roller-radius", self.roller_radius, low=MIN_RADIUS, high=MAX_LENGTH,
+                       high_open=True) if roller else None)
         if oscillating:
-            rise = math.radians(_positive("swing", self.swing_deg, high=90.0))
+            rise = math.radians(in_range("swing", self.swing_deg, strict=True, high=90.0, high_open=True))
         else:
-            rise = _positive("stroke", self.stroke, strict=False, high=MAX_LENGTH)
+            rise = in_range("stroke", self.stroke, high=MAX_LENGTH, high_open=True)
         try:
             e = float(self.offset)
         except (TypeError, ValueError):
             raise CamdynInputError(f"offset must be a number, got {self.offset!r}") from None
-        reach = rb + (rr or 0.0)
-        if not math.isfinite(e) or (roller and abs(e) >= reach):
-            raise CamdynInputError(f"offset={e:g} is out of range: |offset| < base-radius + "
-                                   f"roller-radius = {reach:g}")
         if not math.isfinite(e):
             raise CamdynInputError(f"offset={e:g} is out of range: it must be finite")
+        reach = rb + (rr or 0.0)
+        if roller and abs(e) >= reach:
+            raise CamdynInputError(f"offset={e:g} is out of range: |offset| < base-radius + "
+                                   f"roller-radius = {reach:g}")
         ang = tuple(self.angles_deg)
         if len(ang) != 4:
             raise CamdynInputError(f"angles must be four values rise,upper dwell,return,lower "
                                    f"dwell in deg, got {len(ang)}")
         names = ("rise", "upper dwell", "return", "lower dwell")
-        ang = tuple(_positive(f"angles ({n})", a, strict=n in ("rise", "return"))
+        ang = tuple(in_range(f"angles ({n})", a, strict=n in ("rise", "return"))
                     for n, a in zip(names, ang))
         if abs(sum(ang) - 360.0) > 1e-9:
             raise CamdynInputError(f"angles must sum to 360 deg (rise + upper dwell + return + "
@@ -191,15 +189,16 @@ class CamProfile:
         if not isinstance(ppd, (int, np.integer)) or not 1 <= ppd <= 1000:
             raise CamdynInputError(f"points-per-degree={ppd!r} is out of range: an integer "
                                    f"from 1 to 1000")
-        _positive("max-pressure-angle", self.max_pressure_angle_deg, high=90.0)
+        in_range("max-pressure-angle", self.max_pressure_angle_deg, strict=True, high=90.0,
+                 high_open=True)
         if self.cutter_radius is not None:
-            _positive("cutter-radius", self.cutter_radius, low=MIN_RADIUS, strict=False,
-                      high=MAX_LENGTH)
+            in_range("cutter-radius", self.cutter_radius, low=MIN_RADIUS, high=MAX_LENGTH,
+                     high_open=True)
             if self.groove:
                 raise CamdynInputError("cutter-radius goes with an open cam: a groove is cut by "
                                        "a cutter of the roller's size along the pitch curve")
         if self.arc_tolerance is not None:
-            _positive("arcs", self.arc_tolerance, low=1e-9, strict=False, high=1.0)
+            in_range("arcs", self.arc_tolerance, low=1e-9, high=1.0, high_open=True)
         if self.groove and not roller:
             raise CamdynInputError("groove goes with a roller follower: a flat face has one "
                                    "side to push on")
@@ -242,11 +241,11 @@ class CamProfile:
             return TranslatingRoller(rb, rr, e)
         if kind == "translating-flat":
             return TranslatingFlat(rb, e)
-        a = _positive("pivot-distance", self.pivot_distance, low=MIN_RADIUS, strict=False,
-                      high=MAX_LENGTH)
+        a = in_range("pivot-distance", self.pivot_distance, low=MIN_RADIUS, high=MAX_LENGTH,
+                     high_open=True)
         if kind == "oscillating-roller":
-            l = _positive("arm-length", self.arm_length, low=MIN_RADIUS, strict=False,
-                          high=MAX_LENGTH)
+            l = in_range("arm-length", self.arm_length, low=MIN_RADIUS, high=MAX_LENGTH,
+                         high_open=True)
             rp = rb + rr
             if not abs(a - l) < rp < a + l:
                 raise CamdynInputError(
@@ -367,15 +366,15 @@ class CamProfile:
 
         def p(x):
             return self.contact_stress(x, spec)[1]
-        _, fmax, fmax_s = self._worst(f, th)
-        lo_at, neg, neg_s = self._worst(lambda x: -f(x), th)
+        f_grid, p_grid = self.contact_stress(th, spec)
+        _, fmax, fmax_s = self._worst(f, th, f_grid)
+        lo_at, neg, neg_s = self._worst(lambda x: -f(x), th, -f_grid)
         out = {"contact_force": spec.load.describe(),
                "contact_force_max": fmax, "contact_force_max_error": abs(fmax - fmax_s),
                "contact_force_min": -neg, "contact_force_min_error": abs(neg - neg_s),
                "materials": list(spec.materials), "contact_modulus": spec.e_star,
                "contact": "point (crowned roller)" if spec.crown_radius is not None else "line"}
         checks = []
-        p_grid = p(th)
         if not np.all(np.isfinite(p_grid)):
             at = float(th[np.argmax(~np.isfinite(p_grid))])
             out.update(hertz_stress_max=None, hertz_stress_max_error=None,
@@ -387,7 +386,7 @@ class CamProfile:
                                     f"convex enough for the follower (see the undercut or cusp "
                                     f"check)")))
         else:
-            at, pmax, sampled = self._worst(p, th)
+            at, pmax, sampled = self._worst(p, th, p_grid)
             out.update(hertz_stress_max=pmax, hertz_stress_max_error=abs(pmax - sampled),
                        hertz_stress_max_angle_deg=math.degrees(at))
             if spec.allowable is not None:
@@ -401,10 +400,9 @@ class CamProfile:
                 checks.append(Check("contact stress", not bad, math.degrees(at), pmax,
                                     spec.allowable, (), msg, abs(pmax - sampled)))
         if not spec.load.constant:
-            runs = failing_spans(th, f(th) < 0, lambda x: float(f(np.array([x]))[0]))
+            runs = failing_spans(th, f_grid < 0, lambda x: float(f(np.array([x]))[0]))
             if runs:
-                spans = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}]"
-                                  for a, b in runs)
+                spans = _span_text(runs)
                 msg = (f"follower leaves the cam: at {spec.load.speed_rpm:g} rpm the contact "
                        f"force falls to {-neg:.4g} N at cam angle {math.degrees(lo_at):.2f} deg "
                        f"(negative for phi in {spans} deg): the spring cannot hold the "
@@ -413,7 +411,7 @@ class CamProfile:
                 msg = (f"follower stays on the cam: least contact force {-neg:.4g} N at "
                        f"{math.degrees(lo_at):.2f} deg")
             checks.append(Check("contact kept", not runs, math.degrees(lo_at), -neg, 0.0,
-                                tuple((math.degrees(a), math.degrees(b)) for a, b in runs),
+                                _span_degrees(runs),
                                 msg, abs(neg - neg_s)))
         out["checks"] = [c.as_dict() for c in checks]
         out["warnings"] = [c.message for c in checks if not c.ok]
@@ -466,12 +464,12 @@ class CamProfile:
         """The sample angles with every segment end (the law's own breakpoints too)."""
         return np.union1d(np.append(self.phi, TWO_PI), self.cam.breakpoints)
 
-    def _worst(self, f, th):
-        """(where, value, sampled value) of the largest value of f: sampled on th, then refined
-        between the grid neighbours of the largest sample.  How far the refinement moved it
-        from the sample bounds what it could still be off by, choosing among near-equal
-        peaks: the extreme's sampling error."""
-        v = f(th)
+    def _worst(self, f, th, v=None):
+        """(where, value, sampled value) of the largest value of f: sampled on th (or its
+        samples v, given), then refined between the grid neighbours of the largest sample.
+        How far the refinement moved it from the sample bounds what it could still be off by,
+        choosing among near-equal peaks: the extreme's sampling error."""
+        v = f(th) if v is None else v
         i = int(np.argmax(v))
         lo, hi = th[max(i - 1, 0)], th[min(i + 1, th.size - 1)]
         if hi > lo:
@@ -497,7 +495,7 @@ class CamProfile:
         bad = fa(th) > lim
         runs = failing_spans(th, bad, lambda x: float(fa(x)[0]) - lim)
         if runs:
-            spans = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}]" for a, b in runs)
+            spans = _span_text(runs)
             msg = (f"pressure angle: |alpha| reaches {math.degrees(amax):.2f} deg at cam angle "
                    f"{math.degrees(at):.2f} deg, beyond the limit {self.max_pressure_angle_deg:g} "
                    f"deg for phi in {spans} deg. Use a larger base circle or a longer "
@@ -509,7 +507,7 @@ class CamProfile:
                    f"|alpha| = {math.degrees(amax):.2f} deg at {math.degrees(at):.2f} deg")
         out.append(Check("pressure angle", not runs, math.degrees(at), math.degrees(amax),
                          self.max_pressure_angle_deg,
-                         tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg,
+                         _span_degrees(runs), msg,
                          math.degrees(amax - sampled)))
         return tuple(out)
 
@@ -532,7 +530,7 @@ class CamProfile:
             rho_error = abs(rho - 1.0 / k_sampled) if k_sampled > 0 and k > 0 else 0.0
             shape = "convex" if d < 0 else "concave"
             if runs:
-                spans = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}]" for a, b in runs)
+                spans = _span_text(runs)
                 msg = (f"undercut: the {wall} cusps at cam angle {math.degrees(at):.2f} deg "
                        f"(fails for phi in {spans} deg): the pitch curve's radius of curvature "
                        f"on this {shape} part, down to {rho * 1e3:.4g} mm, is below the roller "
@@ -542,7 +540,7 @@ class CamProfile:
                 msg = (f"no undercut of the {wall}: smallest {shape} |rho_p| = {rho * 1e3:.4g} mm "
                        f"at {math.degrees(at):.2f} deg > roller radius {rr * 1e3:.4g} mm")
             yield Check(name, not runs, math.degrees(at), rho, rr,
-                        tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg,
+                        _span_degrees(runs), msg,
                         rho_error)
 
     def _cutter_check(self, th):
@@ -557,7 +555,7 @@ class CamProfile:
         rho = 1.0 / k if k > 0 else math.inf
         err = abs(rho - 1.0 / k_sampled) if k > 0 and k_sampled > 0 else 0.0
         if runs:
-            spans = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}]" for a, b in runs)
+            spans = _span_text(runs)
             msg = (f"cutter: a cutter of radius {rc * 1e3:.4g} mm gouges the profile at cam "
                    f"angle {math.degrees(at):.2f} deg (for phi in {spans} deg), where the "
                    f"concave profile's radius of curvature is down to {rho * 1e3:.4g} mm. Use a "
@@ -567,7 +565,7 @@ class CamProfile:
                    + (f"smallest concave |rho| = {rho * 1e3:.4g} mm at {math.degrees(at):.2f} deg"
                       if math.isfinite(rho) else "the profile is convex throughout"))
         return Check("cutter", not runs, math.degrees(at), rho if math.isfinite(rho) else math.inf,
-                     rc, tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg, err)
+                     rc, _span_degrees(runs), msg, err)
 
     def _cusp_checks(self, th):
         """A flat face follows the profile only where the profile is convex: it cusps where
@@ -580,7 +578,7 @@ class CamProfile:
         at, neg, sampled = self._worst(lambda x: -rho(x), th)
         value, err = -neg, abs(neg - sampled)
         if runs:
-            spans = ", ".join(f"[{math.degrees(a):.2f}, {math.degrees(b):.2f}]" for a, b in runs)
+            spans = _span_text(runs)
             msg = (f"cusp: the flat face cannot follow this motion, the profile cusps at cam "
                    f"angle {math.degrees(at):.2f} deg (its radius of curvature "
                    f"{'' if self.oscillating else 'r_b + s + s'' '}reaches {value * 1e3:.4g} mm; "
@@ -590,7 +588,7 @@ class CamProfile:
             msg = (f"no cusp: the profile's smallest radius of curvature is {value * 1e3:.4g} mm "
                    f"at {math.degrees(at):.2f} deg")
         yield Check("cusp", not runs, math.degrees(at), value, 0.0,
-                    tuple((math.degrees(a), math.degrees(b)) for a, b in runs), msg, err)
+                    _span_degrees(runs), msg, err)
 
     @property
     def failures(self) -> list:
@@ -713,10 +711,20 @@ class CamProfile:
                 + (["CUTTER"] if self.cutter_radius is not None else [])
                 + (["PROFILE_OUTER"] if self.groove else []))
 
+    @cached_property
+    def _fitted_arcs(self) -> dict:
+        return {}
+
     def arcs(self, layer: str = "PROFILE") -> list:
         """The curve of a DXF layer (PROFILE, PITCH, CUTTER, PROFILE_OUTER) as tangent arcs
         within ``arc_tolerance`` of it (:func:`camdyn.runtime.cam.biarc.fit`), split at the
-        motion's segment ends.  Every offset curve shares the profile's tangent."""
+        motion's segment ends.  Every offset curve shares the profile's tangent.  Fitted once
+        a layer (the JSON counts them, the DXF writes them)."""
+        if layer not in self._fitted_arcs:
+            self._fitted_arcs[layer] = self._fit_arcs(layer)
+        return self._fitted_arcs[layer]
+
+    def _fit_arcs(self, layer: str) -> list:
         from .biarc import fit
 
         tol = self.arc_tolerance if self.arc_tolerance is not None else 1e-6

@@ -29,6 +29,7 @@ import math
 import numpy as np
 
 from ..core.errors import CamdynInputError
+from .checks import in_range
 from .names import MATERIALS
 
 def material(text: str) -> tuple[float, float]:
@@ -117,16 +118,17 @@ class ContactSpec:
         widths = {}
         for name, w in (("roller-width", roller_width), ("cam-width", cam_width)):
             if w is not None:
-                widths[name] = _length(name, w)
+                widths[name] = in_range(name, w, strict=True, high=1000.0)
         self.widths = widths
         if len(materials) != 2:
             raise CamdynInputError(f"materials must be two, the cam's and the follower's, got "
                                    f"{len(materials)}")
         self.materials = tuple(materials)
         self.e_star = contact_modulus(material(materials[0]), material(materials[1]))
-        self.crown_radius = None if crown_radius is None else _length("crown-radius", crown_radius)
-        self.allowable = None if allowable is None else _length("allowable-stress", allowable,
-                                                                high=1e12)
+        self.crown_radius = (None if crown_radius is None else
+                             in_range("crown-radius", crown_radius, strict=True, high=1000.0))
+        self.allowable = (None if allowable is None else
+                          in_range("allowable-stress", allowable, strict=True, high=1e12))
 
     def length(self, roller: bool) -> float:
         """The contact line's length (m) for a roller or a flat face."""
@@ -138,11 +140,3 @@ class ContactSpec:
         return min(usable.values())
 
 
-def _length(name, value, high=1000.0):
-    try:
-        value = float(value)
-    except (TypeError, ValueError):
-        raise CamdynInputError(f"{name} must be a number, got {value!r}") from None
-    if not (math.isfinite(value) and 0.0 < value <= high):
-        raise CamdynInputError(f"{name}={value:g} is out of range: it must be > 0 and <= {high:g}")
-    return value
