@@ -74,8 +74,8 @@ def camdyn_simulate(method: str, exact: bool = True) -> Competitor:
 
     def runner(x):
         kw = _camdyn_kwargs(method, x)
-        # exact: simulate()'s default (RK4 and DOP853 step over the dwell exactly, DP54
-        # integrates it)
+        # exact: simulate()'s default (RK4, DOP853 and RKN12 step over the dwell exactly,
+        # DP54 integrates it)
         return lambda: simulate(MODEL, PARAMS, T_END, method,
                                 exact_segments=None if exact else False, **kw)
 
@@ -210,6 +210,7 @@ def sweep_groups(thin: bool = False) -> list[list[Competitor]]:
                camdyn_bare("rk4", exact=False), yardstick_rk4()],
               [camdyn_simulate("dp54"), camdyn_bare("dp54")],
               [camdyn_simulate("dop853"), camdyn_bare("dop853")],
+              [camdyn_simulate("rkn12"), camdyn_bare("rkn12")],
               [scipy_ivp("DOP853")], [scipy_ivp("RK45")], [scipy_odeint()]]
     if thin:
         groups = [[replace(c, grid=THIN_GRIDS[c.setting]) for c in g] for g in groups]

@@ -16,7 +16,7 @@ GOAL_IVP = 300.0     # camdyn at least this many times faster than solve_ivp at 
 GOAL_ODEINT = 100.0  # ... than odeint
 GOAL_YARD = 1.5      # camdyn RK4 at most this many times slower than the yardstick, same steps
                      # (the dwell integrated, as the yardstick does)
-CAMDYN_PUBLIC = ("camdyn-rk4", "camdyn-dp54", "camdyn-dop853")
+CAMDYN_PUBLIC = ("camdyn-rk4", "camdyn-dp54", "camdyn-dop853", "camdyn-rkn12")
 IVP = ("ivp-DOP853", "ivp-RK45")
 
 
@@ -187,11 +187,13 @@ def sec_matched(res) -> Section:
                     "interpolation); the bare loop and the yardstick run the steps of camdyn's "
                     "simulate() run.  Times: per target all methods re-timed side by side "
                     f"(interleaved repeats, {res['final_repeat']} of them).  "
-                    "camdyn best: the fastest of RK4, DP54 and DOP853 through simulate() as a user "
-                    "calls it (RK4 and DOP853 step over the dwell exactly, their default)."])
+                    "camdyn best: the fastest of RK4, DP54, DOP853 and RKN12 through simulate() as a "
+                    "user calls it (RK4, DOP853 and RKN12 step over the dwell exactly, their "
+                    "default; DOP853 and RKN12 make their dense output when it is first used)."])
 
 
 SHORT = {"camdyn-rk4": "RK4", "camdyn-dp54": "DP54", "camdyn-dop853": "DOP853",
+         "camdyn-rkn12": "RKN12",
          "ivp-DOP853": "DOP853", "ivp-RK45": "RK45"}
 
 
@@ -357,13 +359,13 @@ def findings(res) -> list[str]:
                f"record is written straight into NumPy arrays sized in advance, the last run's again "
                f"when they take at most 256 KiB; fresh pages cost what the difference shows).")
     tight = res["matched"][TARGETS[-1]]
-    keys = ("camdyn-rk4", "camdyn-dp54", "camdyn-dop853", "ivp-DOP853")
+    keys = ("camdyn-rk4", "camdyn-dp54", "camdyn-dop853", "camdyn-rkn12", "ivp-DOP853")
     counts = {k: tight[k].n_rhs for k in keys if k in tight}
     if len(counts) == len(keys):
         out.append(f"Method order: at U0 error {TARGETS[-1]:.0e} camdyn's RK4 needs "
-                   f"{counts['camdyn-rk4']}, DP54 {counts['camdyn-dp54']} and DOP853 "
-                   f"{counts['camdyn-dop853']} rhs calls (RK4 and DOP853 with the dwell exact), "
-                   f"SciPy's DOP853 {counts['ivp-DOP853']}.")
+                   f"{counts['camdyn-rk4']}, DP54 {counts['camdyn-dp54']}, DOP853 "
+                   f"{counts['camdyn-dop853']} and RKN12 {counts['camdyn-rkn12']} rhs calls (RK4, "
+                   f"DOP853 and RKN12 with the dwell exact), SciPy's DOP853 {counts['ivp-DOP853']}.")
     return out
 
 
@@ -425,6 +427,7 @@ STYLE = {"camdyn-rk4": ("C0", "o", "-"), "camdyn-rk4-bare": ("C0", "o", ":"),
          "camdyn-rk4-steps": ("C0", "o", "--"),
          "yardstick": ("k", "x", "-"), "camdyn-dp54": ("C1", "s", "-"), "camdyn-dp54-bare": ("C1", "s", ":"),
          "camdyn-dop853": ("C5", "P", "-"), "camdyn-dop853-bare": ("C5", "P", ":"),
+         "camdyn-rkn12": ("C6", "*", "-"), "camdyn-rkn12-bare": ("C6", "*", ":"),
          "ivp-DOP853": ("C2", "^", "-"), "ivp-RK45": ("C3", "v", "-"), "odeint": ("C4", "D", "-")}
 
 

@@ -109,7 +109,7 @@ def matched_settings(bench, comps, sweeps_, target) -> dict:
     pts = {k: matched(v, target) for k, v in sweeps_.items()}
     same = {"camdyn-rk4-steps": "camdyn-rk4", "camdyn-rk4-bare": "camdyn-rk4",
             "yardstick": "camdyn-rk4", "camdyn-dp54-bare": "camdyn-dp54",
-            "camdyn-dop853-bare": "camdyn-dop853"}
+            "camdyn-dop853-bare": "camdyn-dop853", "camdyn-rkn12-bare": "camdyn-rkn12"}
     for key, lead in same.items():
         if pts[lead] is not None:
             pts[key] = bench.points([comps[key]], pts[lead].setting)[0]

@@ -15,6 +15,7 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
+from camdyn.runtime.core.errors import CamdynInputError
 from camdyn.runtime.core.simulator import Simulator, simulate
 from camdyn.runtime.engine import driver
 
@@ -165,6 +166,41 @@ def test_an_event_cut_keeps_the_step_extension():
     sa, sb = a.sample(T), b.sample(T)
     for name in a.state_names:
         assert np.abs(sa[name] - sb[name]).max() < 1e-8 * max(1.0, np.abs(sb[name]).max()), name
+
+
+@pytest.mark.parametrize("exact", [False, True])
+def test_dense_output_on_first_use_takes_the_same_steps(exact):
+    """CAMSHAFT-1 (4.15), tau 0.15, Fa 2, rtol 1e-9, with the dense output left to its first
+    use (the default) and computed as the run goes: the same recorded points bit for bit;
+    three right-hand-side calls fewer for every integrated step; then the record, the
+    dense output at 601 times and U0 read off it the same to rounding (1e-15)."""
+    p, T = {"tau": 0.15, "Fa": 2.0}, np.linspace(0.0, 3.0, 601)
+    runs = {d: Simulator("camshaft1", 3.0, "dop853", rtol=1e-9, exact_segments=exact,
+                         dense_output=d).run(p) for d in (False, True)}
+    lean, full = runs[False], runs[True]
+    assert np.array_equal(lean.t, full.t) and np.array_equal(lean.y, full.y)
+    assert np.array_equal(lean.f, full.f)
+    # exact: the rise's steps alone are integrated, one a recorded point before T = 1
+    steps = full.stats["n_steps"] if not exact else int(np.count_nonzero(full.t < 1.0))
+    assert full.stats["n_rhs"] - lean.stats["n_rhs"] == 3 * steps > 0
+    assert np.isnan(lean._rows[:-1, 5:]).any() and not np.isnan(full.record).any()
+    assert np.abs(lean.record - full.record).max() < 1e-15
+    sl, sf = lean.sample(T), full.sample(T)
+    assert max(np.abs(sl[k] - sf[k]).max() for k in ("X", "Xd")) < 1e-15
+
+
+def test_a_model_with_events_always_has_its_dense_output():
+    """CAMSHAFT-2 locates its events on the dense output, so it is computed whatever
+    dense_output says: the same calls, the same record."""
+    a, b = (Simulator("camshaft2", 3.0, "dop853", rtol=1e-8, dense_output=d).run({})
+            for d in (False, True))
+    assert a.stats["n_rhs"] == b.stats["n_rhs"] and np.array_equal(a.record, b.record)
+    assert not np.isnan(a._rows).any()
+
+
+def test_dense_output_must_be_true_or_false():
+    with pytest.raises(CamdynInputError, match="dense_output must be True or False"):
+        Simulator("camshaft1", 3.0, "dop853", dense_output="yes")
 
 
 def _camdyn(*args):

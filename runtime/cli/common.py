@@ -71,8 +71,8 @@ def method_names() -> tuple[list, list]:
     try:
         from ..core import methods
     except (ImportError, AttributeError):
-        return (["dop853", "dp54", "koster", "radau5", "rk4", "rodas4"],
-                ["dp54", "dop853", "rodas4", "radau5"])
+        return (["dop853", "dp54", "koster", "radau5", "rk4", "rkn12", "rodas4"],
+                ["dp54", "dop853", "rodas4", "radau5", "rkn12"])
     return sorted(methods.METHODS), list(methods.ADAPTIVE)
 
 

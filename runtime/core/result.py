@@ -7,7 +7,7 @@ import numpy as np
 
 from ..engine import driver
 from . import stability as _stability
-from .errors import CamdynInputError
+from .errors import CamdynInputError, SimulationError
 
 
 class Result:
@@ -82,7 +82,9 @@ class Result:
     @cached_property
     def stats(self) -> dict:
         """Steps, rejected steps, right-hand-side calls, wall time of the compiled loops; for
-        the implicit methods also the Jacobians evaluated and the LU factorizations made."""
+        the implicit methods also the Jacobians evaluated and the LU factorizations made; once
+        a dense output left out of the run has been made (``record``), the calls of the run
+        that made it (n_rhs_dense_output)."""
         o = self._out
         out = {"n_steps": o.n_steps, "n_rejected": o.n_rejected, "n_rhs": o.n_rhs,
                "n_events": o.n_events, "seconds": o.seconds}
@@ -91,9 +93,27 @@ class Result:
         return out
 
     @cached_property
-    def record(self) -> np.ndarray:
-        """The recorded rows [t, y, f, extra] (camdyn/runtime/engine/abi.pxd), one per point."""
+    def _rows(self) -> np.ndarray:
         return self._out.rows[:self._out.n]
+
+    @cached_property
+    def record(self) -> np.ndarray:
+        """The recorded rows [t, y, f, extra] (camdyn/runtime/engine/abi.pxd), one per point.
+
+        A DOP853 run that left its dense output out (Simulator's ``dense_output``) runs again
+        here with it, from the same start: the same steps, now with their extra terms."""
+        rows, ns = self._rows, len(self.state_names)
+        if self._sim.integrator.dense or not np.isnan(rows[:, 1 + 2 * ns:]).any():
+            return rows
+        out = self._sim.integrator.run(self.p, self._sim.stops(self.p), rows.shape[0] + 1,
+                                       rows[0, 1:1 + ns].copy(), dense=True)
+        again = out.rows[:out.n]
+        if out.status != 0 or again.shape != rows.shape or not np.array_equal(
+                again[:, :1 + 2 * ns], rows[:, :1 + 2 * ns]):
+            raise SimulationError(f"{self.model.name}: the run made again for its dense output "
+                                  "did not take the same steps")
+        self.stats["n_rhs_dense_output"] = int(out.n_rhs)
+        return again
 
     @property
     def n_extra(self) -> int:
@@ -120,17 +140,17 @@ class Result:
     # views into the record rows [t, y, f, extra] (see camdyn/runtime/engine/abi.pxd)
     @cached_property
     def t(self) -> np.ndarray:
-        return self.record[:, 0]
+        return self._rows[:, 0]
 
     @cached_property
     def y(self) -> np.ndarray:
-        return self.record[:, 1:1 + len(self.state_names)]
+        return self._rows[:, 1:1 + len(self.state_names)]
 
     @cached_property
     def f(self) -> np.ndarray:
         """Slopes dy/dt at the recorded points (left limits at the end of an interval)."""
         ns = len(self.state_names)
-        return self.record[:, 1 + ns:1 + 2 * ns]
+        return self._rows[:, 1 + ns:1 + 2 * ns]
 
     @cached_property
     def _extra(self) -> np.ndarray:

@@ -20,6 +20,12 @@ from .compiled import CompiledModel, load
 from .result import Result
 
 
+def _flag(name: str, value) -> bool:
+    if not isinstance(value, bool):
+        raise CamdynInputError(f"{name} must be True or False, got {value!r}")
+    return value
+
+
 def law_choices(model: CompiledModel, law, theta):
     """The cam law of each input family of a model: (chosen per family, their codes, their
     shape parameters), from a law name (every input), {family: name}, or a composed turn."""
@@ -214,7 +220,7 @@ class Simulator:
             error.  An adaptive method's record there holds a degree-7 extension through the
             exact state whose steps lengthen as the content fades (each checked against the
             exact state at rtol and atol), so a stiff mode that has rung out no longer sets
-            them.  Default: True for RK4 and DOP853.  False for DP54 (the thesis's figures and
+            them.  Default: True for RK4, DOP853 and RKN12.  False for DP54 (the thesis's figures and
             their estimates are read off DP54's own record), for the thesis scheme, which is
             run as the thesis ran it, and for RODAS4 and RADAU5, whose own steps damp a stiff
             mode that does not decay (a stiff spring without damping) where the exact record
@@ -230,6 +236,13 @@ class Simulator:
             evaluation and integrates the others; every formulation starts from the
             consistent state they are solved for (``consistent``).  Phi_Q restricted to
             them must be invertible along the run.
+    dense_output
+            DOP853's dense output (its three extra stages a step, a sixth of the run's
+            right-hand-side calls) and RKN12's (eight interior steps, 128 calls a step): True computes it as the run goes; False, the default,
+            leaves it until a result's dense output is first used (``Result.sample``, the
+            extremes of the figures), which then runs again with it, taking the same steps.
+            A model with events always has it: the events are located on it.  Other methods'
+            dense output costs no extra call and is always there.
     """
 
     def __init__(self, model, t_end: float = 3.0, method="dp54", *, rtol: float | None = None,
@@ -237,7 +250,8 @@ class Simulator:
                  theta: float | None = None, y0=None, t0: float = 0.0, max_steps: int = 5_000_000,
                  modes: dict | None = None, max_events: int = 1_000_000,
                  check_stability: bool = True, consistent: bool = True,
-                 exact_segments: bool | None = None, dependent=None):
+                 exact_segments: bool | None = None, dependent=None,
+                 dense_output: bool = False):
         m = model if isinstance(model, CompiledModel) else load(model)
         self.dependent, self.part = partition(m, dependent)
         if isinstance(method, str):
@@ -285,15 +299,17 @@ class Simulator:
         stab = (driver.CHECK_OFF if method.adaptive else
                 driver.CHECK_STOP if check_stability else driver.CHECK_ESTIMATE)
         if exact_segments is None:
-            exact_segments = method.name in ("rk4", "dop853") and check_stability
+            exact_segments = method.name in ("rk4", "dop853", "rkn12") and check_stability
         elif not isinstance(exact_segments, bool):
             raise CamdynInputError(f"exact_segments must be True or False, got {exact_segments!r}")
         self.exact_segments = exact_segments
+        if method.name == "rkn12":
+            self._nystrom_model()
         self.integrator = driver.Integrator(
             m.capsule, method.code, self.law_codes, self.law_pars, y_init, t0, h, h_max, rtol, atol,
             max_steps, np.array(self.modes0, dtype=np.intc), int(max_events), stab,
             None if method.adaptive else _stability.loop_boundary(method.name), exact_segments,
-            self.part)
+            self.part, dense=_flag("dense_output", dense_output))
         self._stops: dict = {}
         self._cap = 256
         # what run() reads on every call, looked up once here
@@ -358,10 +374,47 @@ class Simulator:
     def _new_stops(self, p: np.ndarray):
         if len(self._stops) > 256:
             self._stops.clear()
+        if self.method.name == "rkn12":
+            self._velocity_free(p)
         stops = stop_times(self.model, p, self.laws, self.t0, self.t_end)
         cap = 0 if self.method.adaptive else driver.fixed_step_points(self.t0, stops, self.method.step)
         hit = self._stops[p.tobytes()] = (stops, cap)
         return hit
+
+    def _nystrom_model(self) -> None:
+        """Refuse a model RKN12 cannot integrate: first-order states, events, constraints, or a
+        Jacobian by differences (whose zeros are not exact, see _velocity_free)."""
+        m, why = self.model, None
+        mf = m.manifest
+        if len(m.state_names) != 2 * mf["n_q"]:
+            why = "it has first-order states"
+        elif mf.get("events"):
+            why = "it has events (located on a dense output made as the run goes)"
+        elif self._project or hasattr(m.module, "consistent_state"):
+            why = "it is constrained"
+        elif mf.get("jacobian") != "symbolic":
+            why = "its Jacobian is not symbolic, so q''s freedom from q' cannot be checked"
+        if why:
+            raise CamdynInputError(f"{m.name}: {why}, and rkn12 integrates q'' = g(t, q) "
+                                   "alone. Use dop853")
+
+    def _velocity_free(self, p: np.ndarray) -> None:
+        """Refuse parameters p for which q'' depends on q': the generated Jacobian's block
+        d q''/d q' must be exactly zero, checked at three states and times (a symbolic entry
+        that does not vanish identically is not exactly zero at such points)."""
+        m, nq = self.model, self.model.manifest["n_q"]
+        rng = np.random.default_rng(12)
+        for t in np.linspace(self.t0, self.t_end, 5)[1:4]:
+            y = self.initial_state(p) + rng.uniform(-0.5, 0.5, 2 * nq)
+            J = driver.eval_jacobian(m.capsule, p, self.law_codes, self.law_pars, float(t), y,
+                                     np.array(self.modes0, dtype=np.intc) if self.modes0 else None)
+            dep = np.argwhere(J[nq:, nq:] != 0.0)
+            if dep.size:
+                i, j = dep[0]
+                raise CamdynInputError(
+                    f"{m.name}: the acceleration {m.state_names[i]}'' depends on the velocity "
+                    f"{m.state_names[nq + j]} with these parameters (damping?), and rkn12 "
+                    "integrates q'' = g(t, q) alone. Use dop853")
 
     def run(self, params: dict | None = None) -> Result:
         """One run with these parameter values (defaults for the ones not given).
@@ -459,19 +512,20 @@ class Simulator:
 
 @lru_cache(maxsize=32)
 def _prepared(model, t_end, method, rtol, atol, step, law, theta, y0, t0, max_steps, modes,
-              exact_segments, dependent, notches) -> Simulator:
+              exact_segments, dependent, notches, dense_output) -> Simulator:
     return Simulator(model, t_end, method, rtol=rtol, atol=atol, step=step,
                      law=dict(law) if isinstance(law, tuple) else law,
                      theta=theta, y0=y0, t0=t0, max_steps=max_steps,
                      modes=dict(modes) if modes else None, exact_segments=exact_segments,
-                     dependent=dependent)
+                     dependent=dependent, dense_output=dense_output)
 
 
 def simulate(model, params: dict | None = None, t_end: float = 3.0, method="dp54", *,
              rtol: float | None = None, atol: float | None = None, step: float | None = None,
              law="cycloidal", theta: float | None = None, y0=None, t0: float = 0.0,
              max_steps: int = 5_000_000, modes: dict | None = None,
-             exact_segments: bool | None = None, dependent=None) -> Result:
+             exact_segments: bool | None = None, dependent=None,
+             dense_output: bool = False) -> Result:
     """Integrate ``model`` from t0 to t_end with ``params`` (see :class:`Simulator`).
 
     The prepared Simulator is kept for the next call with the same settings.
@@ -483,9 +537,11 @@ def simulate(model, params: dict | None = None, t_end: float = 3.0, method="dp54
     key_dep = dependent if dependent is None or isinstance(dependent, str) else tuple(dependent)
     try:
         sim = _prepared(model, t_end, method, rtol, atol, step, key_law, theta, key_y0, t0,
-                        max_steps, key_modes, exact_segments, key_dep, _methods.notches())
+                        max_steps, key_modes, exact_segments, key_dep, _methods.notches(),
+                        dense_output)
     except TypeError:  # unhashable settings: prepare without the cache
         sim = Simulator(model, t_end, method, rtol=rtol, atol=atol, step=step, law=law,
                         theta=theta, y0=y0, t0=t0, max_steps=max_steps, modes=modes,
-                        exact_segments=exact_segments, dependent=dependent)
+                        exact_segments=exact_segments, dependent=dependent,
+                        dense_output=dense_output)
     return sim.run(params)

@@ -12,7 +12,7 @@
 # a module at run time.
 
 cdef enum:
-    CAMDYN_ABI = 11
+    CAMDYN_ABI = 12
 
 # method codes
 cdef enum:
@@ -22,6 +22,7 @@ cdef enum:
     METHOD_RODAS = 3       # RODAS4, linearly implicit (stiff problems)
     METHOD_DOP853 = 4      # Dormand-Prince 8(5,3), explicit, high order
     METHOD_RADAU = 5       # Radau IIA of order 5 (RADAU5), implicit (stiff problems; ABI 9)
+    METHOD_RKN12 = 6       # Runge-Kutta-Nystrom 12(10), explicit, q'' free of q' (ABI 12)
 
 # run status codes
 cdef enum:
@@ -101,6 +102,9 @@ cdef struct Run:
     long n_checks          # Jacobians checked
     bint exact             # step over an interval exactly where the model is linear and time
                            # invariant there (loops.pxi, _loop_exact; ABI 7)
+    bint skip_dense        # DOP853 without events: leave out the dense output's three stages
+                           # (a sixth of a step's calls) and its extras (NaN); whoever needs the
+                           # dense output runs again without it (Result.record; ABI 12)
 
 ctypedef void (*prep_fn)(Ctx* ctx) noexcept nogil
 ctypedef void (*rhs_fn)(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil
@@ -161,15 +165,18 @@ cdef inline bint partition_ok(const ModelC* m, const int* part, Py_ssize_t n) no
 
 cdef inline bint adaptive_method(int method) noexcept nogil:
     return (method == METHOD_DP54 or method == METHOD_RODAS or method == METHOD_DOP853
-            or method == METHOD_RADAU)
+            or method == METHOD_RADAU or method == METHOD_RKN12)
 
 
 cdef inline int extra_terms(int method, bint exact) noexcept nogil:
-    """Dense-output terms beyond the cubic Hermite interpolant a record holds per step: DOP853's
-    four, DP54's one, none for the others; four for every adaptive method that steps over
+    """Dense-output terms beyond the cubic Hermite interpolant a record holds per step: RKN12's
+    eight (degree 11, fitted to interior steps; loops.pxi, _loop_rkn12), DOP853's four, DP54's
+    one, none for the others; four for every other adaptive method that steps over
     linear segments exactly, whose record there is a degree-7 extension through the exact
     state (loops.pxi, _loop_exact).  A method's own steps leave the terms it lacks zero, which
     is its own interpolant (dense.pxd)."""
+    if method == METHOD_RKN12:
+        return 8
     if method == METHOD_DOP853 or (exact and adaptive_method(method)):
         return 4
     return 1 if method == METHOD_DP54 else 0

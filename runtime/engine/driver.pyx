@@ -32,6 +32,7 @@ from camdyn.runtime.engine.partition cimport check_partition
 from camdyn.runtime.engine.dop853 cimport D8_A, D8_C, D8_D, D8_E3, D8_E5
 from camdyn.runtime.engine.linalg cimport clu_factor, clu_solve, lu_factor, lu_solve
 from camdyn.runtime.engine.radau cimport *
+from camdyn.runtime.engine.rkn12 cimport RK12_A, RK12_BP, RK12_BPL, RK12_BV, RK12_BVL, RK12_C
 
 RK4 = METHOD_RK4
 DP54 = METHOD_DP54
@@ -39,6 +40,7 @@ KOSTER = METHOD_KOSTER
 RODAS = METHOD_RODAS
 DOP853 = METHOD_DOP853
 RADAU = METHOD_RADAU
+RKN12 = METHOD_RKN12
 
 cdef class RunRecord:
     """What Integrator.run returns: the status (STATUS_TEXT), the record (``rows``: t, states and
@@ -75,7 +77,8 @@ STATUS_TEXT = {
     STATUS_NO_MEMORY: "out of memory while recording the trajectory",
     STATUS_NO_CONVERGENCE: ("the mid-step acceleration of the thesis scheme did not converge; "
                             "use a smaller step"),
-    STATUS_BAD_MODEL: "the model is not purely second order, which the thesis scheme requires",
+    STATUS_BAD_MODEL: ("the model is not purely second order (or has events), which the thesis "
+                       "scheme and RKN12 require"),
     STATUS_EVENT_STORM: "more events than max_events (chattering contact or friction?)",
     STATUS_UNSTABLE: "the step is beyond the method's stability boundary; use a smaller step",
 }
@@ -224,6 +227,10 @@ cdef class Integrator:
     fixed steps, a guess for DP54).  It returns a RunRecord: ``rows`` has one row
     [t, y, f, extra] per recorded point (see abi.pxd), ``modes`` the modes in force from
     each point, ``seconds`` the wall time of the compiled loops.
+
+    With ``dense`` False (or ``run(..., dense=False)``) a DOP853 run of a model without
+    events leaves out the three stages of its dense output, a sixth of its right-hand-side
+    calls, and records NaN for the step's extra terms; the steps are the same either way.
     """
 
     cdef ModelC* m
@@ -236,6 +243,7 @@ cdef class Integrator:
     cdef const int[::1] part
     cdef int stab_mode
     cdef bint exact
+    cdef readonly bint dense
     cdef readonly int width, n_states
     cdef object spare_rows, spare_modes     # the last run's record, for the next (run)
 
@@ -243,7 +251,7 @@ cdef class Integrator:
                  double[::1] y0, double t0, double h, double h_max, double rtol,
                  double[::1] atol, long max_steps, int[::1] modes0=None, long max_events=1000000,
                  int stab_mode=0, double[::1] stab_bound=None, bint exact=False,
-                 const int[::1] part=None):
+                 const int[::1] part=None, bint dense=True):
         self.m = model_pointer(capsule)
         check_partition(self.m, part)
         self.part = None if part is None else np.array(part, dtype=np.intc)
@@ -267,11 +275,12 @@ cdef class Integrator:
             raise ValueError("the stability check needs the method's boundary (stab_bound)")
         self.stab_mode = stab_mode
         self.exact = exact
+        self.dense = dense
         self.stab_bound = stab_bound.copy() if stab_mode else np.ones(1)
         self.n_states = ns
         self.width = 1 + (2 + extra_terms(method, exact)) * ns
 
-    def run(self, p, stops, Py_ssize_t cap, y0=None):
+    def run(self, p, stops, Py_ssize_t cap, y0=None, dense=None):
         cdef int nm = self.m.n_modes
         cdef Py_buffer pb, sb, rb, mb
         cdef RunRecord out
@@ -305,7 +314,8 @@ cdef class Integrator:
                     if pb.shape[0] != self.m.n_params:
                         raise ValueError("parameter vector of the wrong length")
                     out = self._run(<const double*> pb.buf, <const double*> sb.buf, sb.shape[0],
-                                    &y_start[0], <double*> rb.buf, <int*> mb.buf, rb.shape[0])
+                                    &y_start[0], <double*> rb.buf, <int*> mb.buf, rb.shape[0],
+                                    self.dense if dense is None else dense)
                 finally:
                     PyBuffer_Release(&sb)
             finally:
@@ -320,7 +330,8 @@ cdef class Integrator:
         return out
 
     cdef RunRecord _run(self, const double* p, const double* stops, Py_ssize_t n_stops,
-                        const double* y0, double* rows, int* modes, Py_ssize_t cap):
+                        const double* y0, double* rows, int* modes, Py_ssize_t cap,
+                        bint dense):
         """The compiled loops on the prepared buffers; a RunRecord without rows and modes
         unless the loops outgrew the ones given (cap points), whose copy it then holds."""
         cdef ModelC* m = self.m
@@ -388,6 +399,7 @@ cdef class Integrator:
         run.n_jac = 0
         run.n_lu = 0
         run.exact = self.exact
+        run.skip_dense = not dense
         cdef int status
         cdef timespec c0, c1
         with nogil:
@@ -429,6 +441,21 @@ cdef class Integrator:
         out.n_jac = run.n_jac
         out.n_lu = run.n_lu
         return out
+
+
+def rkn12_tableau():
+    """The RKN12(10) pair the loop runs (rkn12.pxd) as arrays: c (17), A (17 x 17, lower
+    triangle), the order-12 weights bp (positions) and bv (velocities), the order-10 ones bpl
+    and bvl."""
+    cdef int i, j
+    c, A = np.empty(17), np.zeros((17, 17))
+    bp, bv, bpl, bvl = np.empty(17), np.empty(17), np.empty(17), np.empty(17)
+    for i in range(17):
+        c[i] = RK12_C[i]
+        bp[i], bv[i], bpl[i], bvl[i] = RK12_BP[i], RK12_BV[i], RK12_BPL[i], RK12_BVL[i]
+        for j in range(i):
+            A[i, j] = RK12_A[i][j]
+    return {"c": c, "A": A, "bp": bp, "bv": bv, "bpl": bpl, "bvl": bvl}
 
 
 def dop853_tableau():

@@ -966,6 +966,7 @@ cdef int _chunk_run(Chunk* c, const double* p, const double* y0, const double* s
     c.run.n_jac = 0
     c.run.n_lu = 0
     c.run.exact = c.exact
+    c.run.skip_dense = False         # the figures' scans read the dense output
     status = m.run(&c.run)
     # keep the (possibly grown) buffers for the next run
     c.rows = c.run.rec.rows

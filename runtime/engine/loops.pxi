@@ -27,6 +27,7 @@ from camdyn.runtime.engine.dense cimport dense_component, fit_extras, fit_matrix
 from camdyn.runtime.engine.dop853 cimport D8_A, D8_C, D8_D, D8_E3, D8_E5
 from camdyn.runtime.engine.linalg cimport clu_factor, clu_solve, lu_factor, lu_solve
 from camdyn.runtime.engine.radau cimport *
+from camdyn.runtime.engine.rkn12 cimport RK12_A, RK12_BP, RK12_BPL, RK12_BV, RK12_BVL, RK12_C
 
 
 cdef int _rec_grow(Record* r) noexcept nogil:
@@ -1100,12 +1101,25 @@ cdef inline void _d8_sum(const double* w, int n, double h, const double* K, cons
                          double* out) noexcept nogil:
     """out = base + h sum_j<n w_j K_j (base NULL: 0)."""
     cdef int i, j
-    cdef double acc
+    cdef double a
+    cdef double acc[_NS]
+    # stage by stage, the tableau's zeros skipped (a quarter of its entries): the inner loop
+    # runs over the states, whose number is known when the model is compiled
     for i in range(_NS):
-        acc = 0.0
-        for j in range(n):
-            acc += w[j] * K[j * _NS + i]
-        out[i] = (base[i] if base != NULL else 0.0) + h * acc
+        acc[i] = 0.0
+    for j in range(n):
+        a = w[j]
+        if a != 0.0:
+            for i in range(_NS):
+                acc[i] += a * K[j * _NS + i]
+    for i in range(_NS):
+        out[i] = (base[i] if base != NULL else 0.0) + h * acc[i]
+
+
+cdef inline double _inv_root8(double x) noexcept nogil:
+    """x^(-1/8) by three square roots: the same value to rounding as pow(x, -0.125), in a
+    few instructions instead of libm's general power (a step's largest cost after its stages)."""
+    return 1.0 / sqrt(sqrt(sqrt(x)))
 
 
 cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
@@ -1176,7 +1190,7 @@ cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
             rejected = True
             continue
         if err <= 1.0:
-            fac = 6.0 if err == 0.0 else fmin(6.0, fmax(1.0 / 3.0, 0.9 * pow(err, -0.125)))
+            fac = 6.0 if err == 0.0 else fmin(6.0, fmax(1.0 / 3.0, 0.9 * _inv_root8(err)))
             if rejected:
                 fac = fmin(fac, 1.0)
             n_steps += 1
@@ -1190,13 +1204,18 @@ cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
                 if nonsti == 6:
                     iasti = 0
             # the dense output's three stages and its four extras, in the row of the step start
-            for st in range(13, 16):
-                _d8_sum(D8_A[st], st, h, K, y, ys)
-                rhs(t + D8_C[st] * h, ys, K + st * _NS, ctx)
-            n_rhs += 3
+            # (events are located on it; otherwise a run may leave it to be made on demand)
             ex = run.rec.rows + (run.rec.n - 1) * run.rec.width + 1 + 2 * _NS
-            for st in range(4):
-                _d8_sum(D8_D[st], 16, h, K, NULL, ex + st * _NS)
+            if _NE > 0 or not run.skip_dense:
+                for st in range(13, 16):
+                    _d8_sum(D8_A[st], st, h, K, y, ys)
+                    rhs(t + D8_C[st] * h, ys, K + st * _NS, ctx)
+                n_rhs += 3
+                for st in range(4):
+                    _d8_sum(D8_D[st], 16, h, K, NULL, ex + st * _NS)
+            else:
+                for i in range(4 * _NS):
+                    ex[i] = NAN
             if _NE > 0:
                 hit = _event_in_step(run, t, h, y, yn, K, K + 12 * _NS, ex, 4, g0, g1, &s_hit)
                 if hit >= 0:
@@ -1223,7 +1242,166 @@ cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
             h = fmin(h * fac, run.h_max)
             rejected = False
         else:
-            h *= fmax(1.0 / 3.0, 0.9 * pow(err, -0.125))
+            h *= fmax(1.0 / 3.0, 0.9 * _inv_root8(err))
+            n_rej += 1
+            rejected = True
+    memcpy(run.y, y, sizeof(y))
+    run.n_steps = n_steps
+    run.n_rejected = n_rej
+    run.n_rhs += n_rhs
+    if status != STATUS_OK:
+        run.t_fail = t
+    return status
+
+
+# -- RKN12(10): models whose accelerations do not depend on velocities -------------------
+#
+# Where q'' = g(t, q) and the state is (q, q') alone (CAMSHAFT-1 (4.15), the undamped one-DOF
+# follower (3.1), the chain), a Runge-Kutta-Nystrom method integrates q'' directly: its stages
+# take only positions, so it reaches order 12 with 17 stages where a first-order method of
+# that order would need many more.  The pair of Dormand, El-Mikkawy & Prince (1987; rkn12.pxd)
+# carries an embedded solution of order 10 whose difference from the order-12 one is the
+# error estimate (exponent 1/11, factors in [1/4, 4], 0.9 safety).  The slope at the new point
+# serves as the next step's first stage: 17 calls a step.  The method has no continuous
+# extension of its order, so its dense output is made from the method itself: the state at the
+# eight interior nodes s_j = j/9 by steps of length s_j h from the step's start (each as
+# accurate as the step), through which the extras (dense.pxd, eight of them: degree 11) are
+# fitted.  That costs 128 calls a step, so a run leaves it out unless asked (Run.skip_dense),
+# and whoever needs it runs again with it (Result.record).  Events are not offered.
+
+cdef void _rk12_stages(Ctx* ctx, double t, const double* y, double h, double* G,
+                       double* ys, double* dy) noexcept nogil:
+    """Stages 1 to 16 of a step of length h from (t, y) into G (G[i _NQ + k], stage i of
+    coordinate k); stage 0, g at (t, q), already in G."""
+    cdef int st, j, k
+    cdef double acc, c
+    for k in range(_NQ, _NS):
+        ys[k] = y[k]               # g does not read the velocities: any value serves
+    for st in range(1, 17):
+        c = RK12_C[st]
+        for k in range(_NQ):
+            acc = 0.0
+            for j in range(st):
+                acc += RK12_A[st][j] * G[j * _NQ + k]
+            ys[k] = y[k] + c * h * y[_NQ + k] + h * h * acc
+        rhs(t + c * h, ys, dy, ctx)
+        for k in range(_NQ):
+            G[st * _NQ + k] = dy[_NQ + k]
+
+
+cdef inline void _rk12_new(const double* y, double h, const double* G, double* yn,
+                           double* e) noexcept nogil:
+    """The order-12 state after the step into yn and, unless e is NULL, its difference from
+    the order-10 one (the error estimate) into e."""
+    cdef int j, k
+    cdef double p, pl, v, vl, g
+    for k in range(_NQ):
+        p = pl = v = vl = 0.0
+        for j in range(17):
+            g = G[j * _NQ + k]
+            p += RK12_BP[j] * g
+            v += RK12_BV[j] * g
+            if e != NULL:
+                pl += RK12_BPL[j] * g
+                vl += RK12_BVL[j] * g
+        yn[k] = y[k] + h * y[_NQ + k] + h * h * p
+        yn[_NQ + k] = y[_NQ + k] + h * v
+        if e != NULL:
+            e[k] = h * h * (p - pl)
+            e[_NQ + k] = h * (v - vl)
+
+
+cdef int _loop_rkn12(Run* run, double a, double b) noexcept nogil:
+    """RKN12(10) over [a, b] (see above): the embedded error estimate, step control with
+    exponent 1/11 and factors in [1/4, 4], the dense output from interior steps on request."""
+    cdef Ctx local_ctx = run.ctx[0]
+    cdef Ctx* ctx = &local_ctx
+    cdef int i, j, status = STATUS_OK
+    cdef double y[_NS]
+    cdef double yn[_NS]
+    cdef double ys[_NS]
+    cdef double dy[_NS]
+    cdef double f[_NS]
+    cdef double fn[_NS]
+    cdef double e[_NS]
+    cdef double G[17 * _NQ]
+    cdef double vals[8 * _NS]
+    cdef double W[64]
+    cdef double* ex
+    cdef double t = a, h, err, sc, fac, rtol = run.rtol
+    cdef const double* atol = run.atol
+    cdef long n_steps = run.n_steps, n_rej = run.n_rejected, n_rhs = 0, max_steps = run.max_steps
+    cdef bint last, rejected = False, dense = not run.skip_dense
+    if _NE > 0 or _NS != 2 * _NQ or run.rec.n_extra != 8 or fit_matrix(8, W) != 0:
+        return STATUS_BAD_MODEL
+    memcpy(y, run.y, sizeof(y))
+    rhs(t, y, f, ctx)
+    n_rhs += 1
+    if _rec_point(run, t, y, f) != 0:
+        return STATUS_NO_MEMORY
+    if run.h <= 0.0:
+        run.h = _dp_first_step(run, t, y, f, fmin(b - a, run.h_max), 12.0)
+    h = fmin(run.h, run.h_max)
+    while t < b:
+        if n_steps + n_rej >= max_steps:
+            status = STATUS_MAX_STEPS
+            break
+        if h < 16.0 * 2.220446049250313e-16 * fabs(t):
+            status = STATUS_STEP_UNDERFLOW
+            break
+        last = t + 1.01 * h >= b
+        if last:
+            h = b - t
+        memcpy(G, f + _NQ, _NQ * sizeof(double))
+        _rk12_stages(ctx, t, y, h, G, ys, dy)
+        n_rhs += 16
+        _rk12_new(y, h, G, yn, e)
+        err = 0.0
+        for i in range(_NS):
+            sc = atol[i] + rtol * _absmax(y[i], yn[i])
+            err += (e[i] / sc) * (e[i] / sc)
+        err = sqrt(err / _NS)
+        if not isfinite(err):
+            if not _finite(_NS, y):
+                status = STATUS_NOT_FINITE
+                break
+            h *= 0.25
+            n_rej += 1
+            rejected = True
+            continue
+        if err <= 1.0:
+            fac = 4.0 if err == 0.0 else fmin(4.0, fmax(0.25, 0.9 * pow(err, -1.0 / 11.0)))
+            if rejected:
+                fac = fmin(fac, 1.0)
+            rhs(t + h, yn, fn, ctx)
+            n_rhs += 1
+            n_steps += 1
+            ex = run.rec.rows + (run.rec.n - 1) * run.rec.width + 1 + 2 * _NS
+            if dense:
+                for j in range(8):
+                    memcpy(G, f + _NQ, _NQ * sizeof(double))
+                    _rk12_stages(ctx, t, y, (j + 1.0) / 9.0 * h, G, ys, dy)
+                    _rk12_new(y, (j + 1.0) / 9.0 * h, G, vals + j * _NS, NULL)
+                n_rhs += 8 * 16
+                fit_extras(8, _NS, W, h, y, yn, f, fn, vals, ex)
+            else:
+                for i in range(8 * _NS):
+                    ex[i] = NAN
+            t = b if last else t + h
+            memcpy(y, yn, sizeof(y))
+            memcpy(f, fn, sizeof(f))
+            status = _project_accepted(ctx, t, y, f, NULL, &n_rhs)
+            if status != STATUS_OK:
+                break
+            if _rec_point(run, t, y, f) != 0:
+                status = STATUS_NO_MEMORY
+                break
+            if not last:
+                run.h = h
+            h = fmin(h * fac, run.h_max)
+            rejected = False
+        else:
+            h *= fmax(0.25, 0.9 * pow(err, -1.0 / 11.0))
             n_rej += 1
             rejected = True
     memcpy(run.y, y, sizeof(y))
@@ -1938,8 +2116,8 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
 # s_j = j/(n_extra + 1), whose propagators are powers of the first one.  On a mode of
 # frequency w the interpolant then errs by (h w)^p/p! times max |s^2 (1 - s)^2 prod (s - s_j)|
 # of the amplitude, p = 4 + n_extra: (h w)^4/384 for the cubic Hermite one (RODAS4), about
-# (h w)^5/1.3e4 for DP54's quartic, (h w)^8/4.7e8 for DOP853's degree 7 (rounded down to
-# 10^4 and 10^8 below).
+# (h w)^5/1.3e4 for DP54's quartic, (h w)^8/4.7e8 for DOP853's degree 7, (h w)^12/9.4e14 for
+# RKN12's degree 11 (rounded down to 10^4, 10^8 and 10^14 below).
 
 cdef void _matmul(int m, const double* A, const double* B, double* C) noexcept nogil:
     cdef int i, j, k
@@ -2142,7 +2320,8 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
         return STATUS_NOT_FINITE
     if adaptive:
         rate = _lti_rate(A)
-        h = (pow(1e8 * fmax(run.rtol, 1e-14), 0.125) if nx == 4 else
+        h = (pow(1e14 * fmax(run.rtol, 1e-14), 1.0 / 12.0) if nx == 8 else
+             pow(1e8 * fmax(run.rtol, 1e-14), 0.125) if nx == 4 else
              pow(1e4 * fmax(run.rtol, 1e-14), 0.2) if nx == 1 else
              pow(384.0 * fmax(run.rtol, 1e-14), 0.25))
         h = h / rate if rate > 0.0 else b - a
@@ -2263,6 +2442,8 @@ cdef int run_loops(Run* run) noexcept nogil:
             status = _loop_dp54(run, a, b)
         elif run.method == METHOD_DOP853:
             status = _loop_dop853(run, a, b)
+        elif run.method == METHOD_RKN12:
+            status = _loop_rkn12(run, a, b)
         elif run.method == METHOD_RODAS:
             status = _loop_rodas(run, a, b)
         elif run.method == METHOD_RADAU:

@@ -21,7 +21,8 @@ the chart shows the error against CPU time, log-log, one line per method, SciPy'
 * timing: CPU time (time.process_time) of the integration alone, figures excluded; a run under
   0.05 s is repeated, three times in all, and the median taken.
 * failures: a fixed step beyond the stability boundary is "refused", a run that stops early or a
-  peer whose solver fails "failed", a peer that cannot run the model "skipped" (with the reason);
+  peer whose solver fails "failed", a peer or a method that cannot run the model "skipped" (with
+  the reason: rkn12 on a model with events or damping);
   none of them is a point of a line, all are rows of the CSV and JSON.
 """
 from __future__ import annotations
@@ -240,6 +241,10 @@ def camdyn_row(problem: Problem, ref: dict, name: str, setting: float, warm: boo
     row = Row(name, "camdyn", kind, setting, "ok")
     try:
         sim = problem.simulator(cls(rtol=setting) if cls.adaptive else cls(step=setting))
+    except CamdynInputError as exc:      # a method this model is not for (rkn12 on a contact)
+        row.status, row.message = "skipped", str(exc)
+        return row
+    try:
         res, cpu, reps = _timed(lambda: sim.run(problem.params), warm=warm)
         figs = problem.figures(res)
     except SimulationError as exc:
@@ -309,6 +314,9 @@ def study(problem: Problem, methods=None, peers=None, quick: bool = False,
         if METHODS[name].adaptive:
             for k, rtol in enumerate(rtol_ladder(quick)):
                 log(camdyn_row(problem, ref, name, rtol, warm=k == 0))
+                if rows[-1].status == "skipped":
+                    rows[-1].setting = None
+                    break
             continue
         if n_base is None:
             loose = problem.simulator(METHODS["dp54"](rtol=RTOL_LADDER[0])).run(problem.params)
