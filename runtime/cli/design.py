@@ -11,7 +11,8 @@ from .common import add_out_option, fail, law_names as law_names_, run_failed
 from .residual import name_argument
 
 HELP = ("design by the thesis's rules: tau, Fa, the envelope, the largest Fa and smallest t_m "
-        "meeting a requirement, sec. 8.5's rules, the motor (sec. 8.3), a check run")
+        "meeting a requirement, sec. 8.5's rules, the motor (sec. 8.3), a check run, the "
+        "follower spring and the flywheel")
 """The command's line in `camdyn --help`."""
 
 PROG = "camdyn design"
@@ -62,6 +63,17 @@ def add(sub):
       help="eta_g of the reduction gear, 0 < eta_g <= 1 (8.1) (with a motor; default 1)")
     a("--worm", type=float, nargs=2, default=None, metavar=("ALPHA", "MU"),
       help="worm gear lead angle and friction angle (rad): eta_g by (6.72)")
+    a("--spring-margin", type=float, default=None, metavar="MU",
+      help="size the follower spring: its force at least (1 + MU) times the inertia force "
+           "pulling the follower off the cam along the check run (secs 4.5.5, 7.5), 0 <= MU <= 10")
+    a("--spring-rate", type=float, default=None, metavar="N/M",
+      help="the spring's rate k: the least preload for it (default: both ends of the family)")
+    a("--spring-mass", type=float, default=None, metavar="KG",
+      help="the spring's active coils' mass: its surge frequency (1/2)(k/m_s)^(1/2) and the "
+           "vibration the rise leaves in it (needs --spring-rate)")
+    a("--speed-fluctuation", type=float, default=None, metavar="CS",
+      help="size the flywheel: the camshaft inertia J keeping (w_max - w_min)/w_s <= CS over "
+           "the check run, and its Fv (5.14b), 0 < CS < 1")
     a("--no-check", action="store_true", help="skip the check run")
     a("--json", action="store_true", help="one JSON object on stdout")
     add_out_option(ds, default=None, help="folder for design.json and design.png (the envelope "
@@ -89,7 +101,9 @@ def run(args) -> int:
             accuracy=args.accuracy, residual_acceleration=args.residual_acceleration,
             law=args.law, theta=args.theta, common_shaft=args.common_shaft, motor_args=motor,
             check=not args.no_check, progress=None if args.json or args.quiet else say,
-            chart_path=None if args.out is None else method.chart_file(args.out))
+            chart_path=None if args.out is None else method.chart_file(args.out),
+            spring_margin=args.spring_margin, spring_rate=args.spring_rate,
+            spring_mass=args.spring_mass, speed_fluctuation=args.speed_fluctuation)
         if args.out is not None:
             method.write(result, args.out)
     except ValueError as exc:

@@ -40,13 +40,20 @@ def least_model(U0_env_Fa: float, U0_env_0: float, Fa: float,
                          "needed; the flywheel effect is left out (Fv -> oo, sec. 8.2.5)")
 
 
-def check_run(model: str, tau: float, Fa: float, law: str, theta) -> dict:
+def check_answer(model: str, tau: float, Fa: float, law: str, theta):
+    """The check run at (tau, Fa) as the answer contract gives it: figures, errors, warnings,
+    the run and the run one notch tighter (runtime/measure/contract.py, Answer)."""
+    params = {"tau": tau} if model == "one-dof" else {"tau": tau, "Fa": Fa}
+    return answer(ModelTarget.of(MODELS[model], params, method="dp54", rtol=RTOL, law=law,
+                                 theta=theta))
+
+
+def check_run(model: str, tau: float, Fa: float, law: str, theta, a=None) -> dict:
     """U0, U0'', X''min and where it falls, of the run at (tau, Fa), each with its error
     estimate by the answer contract (the run one notch tighter, rtol/10, and the sampling
-    error of the scan that found the extreme), and the run's warnings."""
-    params = {"tau": tau} if model == "one-dof" else {"tau": tau, "Fa": Fa}
-    a = answer(ModelTarget.of(MODELS[model], params, method="dp54", rtol=RTOL, law=law,
-                              theta=theta))
+    error of the scan that found the extreme), and the run's warnings; ``a`` the check
+    run's Answer when already made (check_answer)."""
+    a = a if a is not None else check_answer(model, tau, Fa, law, theta)
     out = {k: a.figures[k] for k in FIGURES}
     out.update({f"{k}_error": a.errors[k] for k in FIGURES})
     out["warnings"] = list(a.warnings)

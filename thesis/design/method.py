@@ -30,24 +30,31 @@ from camdyn.runtime.core.outdir import write_text, writing
 from camdyn.runtime.measure.contract import chart_note
 from camdyn.thesis.theory import examples as ex
 
-from .check_run import check_run, least_model
+from .check_run import check_answer, check_run, least_model
 from .graphs import PER_DIP, Graphs, Upper, phase_factor, run_errors
 from .limits import Requirement, largest_Fa, largest_tau
 from .machine import Machine, machine, positive
 from .motor_sizing import motor
 from .rules import rules
+from .spring_flywheel import check_fluctuation, check_margin, flywheel, spring
 
 
 def design(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None, stiffness=None,
            tau=None, Fa=None, c_tan=None, pitch_radius=None, ratio=None, tan_alpha_me=None,
            accuracy=None, residual_acceleration=None, law="cycloidal", theta=None,
            common_shaft=False, motor_args: dict | None = None, check: bool = True,
-           per_dip: int = PER_DIP, progress=None, chart_path=None) -> dict:
-    """The thesis's design method (module doc) as one dict (the JSON of `camdyn design`)."""
+           per_dip: int = PER_DIP, progress=None, chart_path=None, spring_margin=None,
+           spring_rate=None, spring_mass=None, speed_fluctuation=None) -> dict:
+    """The thesis's design method (module doc) as one dict (the JSON of `camdyn design`);
+    with ``spring_margin`` also the least follower spring and with ``speed_fluctuation`` the
+    camshaft's flywheel, both read off the check run (:mod:`.spring_flywheel`)."""
     say = progress or (lambda msg: None)
     M = machine(stroke=stroke, rise_time=rise_time, cam_angle_rad=cam_angle_rad, speed=speed,
                 mass=mass, stiffness=stiffness, tau=tau, Fa=Fa, c_tan=c_tan,
                 pitch_radius=pitch_radius, ratio=ratio, tan_alpha_me=tan_alpha_me)
+    spring_rate = positive("spring rate", "--spring-rate", spring_rate, "N/m")
+    spring_mass = positive("spring mass", "--spring-mass", spring_mass, "kg, the active coils'")
+    _spring_inputs(M, check, spring_margin, spring_rate, spring_mass, speed_fluctuation)
     acc = positive("accuracy", "--accuracy", accuracy, "m, largest positional error u0")
     a_req = positive("acceleration", "--residual-acceleration", residual_acceleration,
                       "m/s^2, largest residual acceleration u0''")
@@ -129,13 +136,20 @@ def design(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None,
         out["motor"] = motor_out
     out["rules"] = rules(M, ratio_design or 0.0, common_shaft, motor_out,
                          req.which(U0f, U2f, M.t_m) if ratio_design else "accuracy", law)
+    extra_warnings = []
     if check:
         model, why = least_model(U0f, U00, M.Fa)
         say(f"check run: {model}")
+        a = None
         try:
-            run = check_run(model, M.tau, M.Fa, law, theta)
+            a = check_answer(model, M.tau, M.Fa, law, theta)
+            run = check_run(model, M.tau, M.Fa, law, theta, a)
         except SimulationError as exc:
             run = {"failed": str(exc)}
+        if a is not None and (spring_margin is not None or speed_fluctuation is not None):
+            extra_warnings = _spring_and_flywheel(out, a, M, law, theta, spring_margin,
+                                                  spring_rate, spring_mass, speed_fluctuation,
+                                                  run["U0"], say)
         run.update(model=model, why=why)
         if "U0" in run:
             run["u0"] = run["U0"] * M.stroke
@@ -150,12 +164,61 @@ def design(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None,
     # the answer's warnings, on every road (text, --json, design.json)
     out["warnings"] = ([f"check run: {w}" for w in out.get("check_run", {}).get("warnings", ())]
                        + ([f"check run failed: {out['check_run']['failed']}"]
-                          if "failed" in out.get("check_run", {}) else []))
+                          if "failed" in out.get("check_run", {}) else [])
+                       + extra_warnings)
     if chart_path is not None:
         say("chart")
         out["chart"] = chart(out, graphs, M, chart_path)
     out["graph_runs"] = graphs.runs
     return out
+
+
+def _spring_inputs(M: Machine, check: bool, margin, rate, spring_mass, fluctuation) -> None:
+    """Refuse, before any run, a spring or flywheel question the inputs cannot answer."""
+    if margin is not None:
+        check_margin(margin)
+    if fluctuation is not None:
+        check_fluctuation(fluctuation)
+    if margin is None:
+        for flag, v in (("--spring-rate", rate), ("--spring-mass", spring_mass)):
+            if v is not None:
+                raise CamdynInputError(f"argument {flag}: goes with --spring-margin MU (the "
+                                       "follower spring is sized for that margin)")
+    for flag, v in (("--spring-margin", margin), ("--speed-fluctuation", fluctuation)):
+        if v is None:
+            continue
+        if not check:
+            raise CamdynInputError(f"argument {flag}: is read off the check run; drop --no-check")
+        if M.mass is None or M.t_m is None:
+            raise CamdynInputError(f"argument {flag}: needs the output's mass (--mass) and the "
+                                   "rise time (--rise-time, or --cam-angle with --speed)")
+    if fluctuation is not None and (M.w_s is None or M.beta_m is None):
+        raise CamdynInputError("argument --speed-fluctuation: needs the camshaft's speed and the "
+                               "cam angle of the rise (--speed with --cam-angle or --rise-time)")
+
+
+def _spring_and_flywheel(out: dict, a, M: Machine, law, theta, margin, rate, spring_mass,
+                         fluctuation, U0_run: float, say) -> list:
+    """out["spring"] and out["flywheel"] from the check run's Answer ``a``; their warnings."""
+    warnings = []
+    preload = 0.0
+    if margin is not None:
+        say("follower spring (secs 4.5.5, 7.5)")
+        sp = spring(a, mass=M.mass, stroke=M.stroke, t_m=M.t_m, margin=margin, rate=rate,
+                    spring_mass=spring_mass,
+                    speed_rpm=None if M.w_s is None else M.w_s * 60.0 / (2 * math.pi),
+                    law=law, theta=theta, U0_design=U0_run)
+        out["spring"] = sp
+        warnings += sp["warnings"]
+        preload = sp["preload_min"]
+    if fluctuation is not None:
+        say("flywheel (ch. 5)")
+        # the follower's stiffness: given, else from T_e = 2 pi (m/c_c)^(1/2) (4.39)
+        c_c = M.stiffness if M.stiffness is not None else M.mass * (2 * math.pi / (M.tau * M.t_m)) ** 2
+        out["flywheel"] = flywheel(a, mass=M.mass, stroke=M.stroke, t_m=M.t_m, w_s=M.w_s,
+                                   beta_m=M.beta_m, stiffness=c_c, fluctuation=fluctuation,
+                                   preload=preload, rate=rate or 0.0)
+    return warnings
 
 
 FILES = ("design.json", "design.png")
@@ -338,4 +401,40 @@ def text(d: dict) -> str:
                 L.append(f"  the run against the requirement: {_g(c['ratio'])} "
                          f"({'met' if c['ratio'] <= 1 else 'NOT met'}; at a tuning dip the run "
                          "may meet what the envelope does not)")
+    if "spring" in d:
+        L += _spring_text(d["spring"])
+    if "flywheel" in d:
+        f = d["flywheel"]
+        L.append(f"flywheel (ch. 5) for a speed fluctuation C_s = {_g(f['speed_fluctuation'])}")
+        L.append(f"  energy swing over the run {_pm(f['energy_swing'], f['energy_swing_error'])} J"
+                 + (" (spring included)" if f["with_spring"] else ""))
+        L.append(f"  camshaft inertia J >= {_pm(f['J'], f['J_error'])} kg m^2, flywheel factor "
+                 f"Fv = {_pm(f['Fv'], f['Fv_error'])} (5.14b); the check run (Fv -> oo) bounds "
+                 "U0 from above (sec. 5.7)")
     return "\n".join(L)
+
+
+def _spring_text(sp: dict) -> list:
+    L = [f"follower spring (secs 4.5.5, 7.5), margin {_g(sp['margin'])} over the inertia force"]
+    L.append(f"  largest inertia force pulling the follower off the cam "
+             f"{_pm(sp['inertia_force_max'], sp['inertia_force_max_error'])} N")
+    if sp["rate"] is not None:
+        L.append(f"  at the rate k = {_g(sp['rate'])} N/m: least preload F0 = "
+                 f"{_pm(sp['preload_min'], sp['preload_min_error'])} N (binding at T = "
+                 f"{_g(sp['T_binding'], 4)}), peak spring force "
+                 f"{_pm(sp['peak_spring_force'], sp['peak_spring_force_error'])} N")
+    else:
+        L.append(f"  least preload with no rate F0 = {_pm(sp['preload_min'], sp['preload_min_error'])}"
+                 f" N (at T = {_g(sp['T_binding'], 4)}); least rate with no preload k = "
+                 f"{_pm(sp['rate_min_without_preload'], sp['rate_min_without_preload_error'])} N/m "
+                 f"(at T = {_g(sp['T_binding_rate'], 4)}); any spring on or above the line between "
+                 "holds the follower")
+    L.append(f"  least contact force with it {_pm(sp['contact_force_min'], sp['contact_force_min_error'])} N")
+    s = sp.get("surge")
+    if s is not None:
+        harm = f", {_g(s['harmonic'], 4)} times the camshaft's speed" if s["harmonic"] else ""
+        U0 = (f"; the coils' residual vibration U0(tau_s) = {_pm(s['U0'], s['U0_error'])} (3.1)"
+              if s.get("U0") is not None else "")
+        L.append(f"  surge frequency f_s = {_g(s['f_surge'])} Hz{harm}; tau_s = "
+                 f"{_g(s['tau_surge'])}{U0}")
+    return L
