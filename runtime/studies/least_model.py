@@ -278,7 +278,8 @@ def _camshaft_figures(sc, model: str, params: dict, rtol: float) -> tuple[dict, 
     rise, 1 < T < T_end for the dwell, as dynacam.summarize takes them)."""
     from ..core.simulator import simulate
 
-    res = simulate(model, params, sc.T_end, sc.method, rtol=rtol, law=sc.law, theta=sc.theta)
+    res = simulate(model, params, sc.T_end, sc.method, rtol=rtol, law=sc.law, theta=sc.theta,
+                   dense_output=True)
     xmin, tmin = extreme(res, "Xdd", 0.0, 1.0, absolute=False, minimum=True)
     xmax, _ = extreme(res, "Xdd", 0.0, 1.0, absolute=False, minimum=False)
     out = {"U0": extreme(res, "U", 1.0, sc.T_end, absolute=True, minimum=False)[0],

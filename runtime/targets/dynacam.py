@@ -170,7 +170,8 @@ def simulator_from(scene: DynacamScene, model, y0, t_end: float, method=None) ->
     """The Simulator of the scene's run from y0 (its equilibrium, :func:`equilibrium`) to t_end
     (:func:`placed`)."""
     return Simulator(model, t_end, scene_method(scene) if method is None else method,
-                     law=scene.cam_law(), modes=scene.modes, max_steps=MAX_STEPS, y0=y0)
+                     law=scene.cam_law(), modes=scene.modes, max_steps=MAX_STEPS, y0=y0,
+                     dense_output=True)
 
 
 MAX_STEPS = 2_000_000

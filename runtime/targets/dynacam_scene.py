@@ -255,7 +255,7 @@ class DynacamTarget(Target):
             sim = self.prepared.simulator if key == own else Simulator(
                 self.prepared.model, self.prepared.t_end, self.method(),
                 law=scenes[idx[0]].cam_law(), modes=self.scene.modes,
-                max_steps=dynacam.MAX_STEPS)
+                max_steps=dynacam.MAX_STEPS, dense_output=True)
             self._run_group(names, points, scenes, idx, sim, out, samp, warnings, steps)
         return Batch(out, samp, warnings, steps)
 

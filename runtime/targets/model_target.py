@@ -353,7 +353,7 @@ class ModelTarget(Target):
         budget = {} if self.max_steps is None else {"max_steps": self.max_steps}
         return Simulator(self.model, self.end, self.method(), law=self._law, theta=self.theta,
                          y0=self._y0, dependent=self.dependent or None,
-                         exact_segments=self.exact, **budget)
+                         exact_segments=self.exact, dense_output=True, **budget)
 
     def window(self) -> Window | None:
         sim = self.simulator

@@ -27,8 +27,9 @@ class Problem:
     modes: dict = field(default_factory=dict)
 
     def simulator(self, method, **options) -> Simulator:
+        # the figures read the dense output: made as the run goes, and timed with it
         return Simulator(self.model, self.t_end, method, law=self.law, theta=self.theta,
-                         y0=self.y0, modes=self.modes or None,
+                         y0=self.y0, modes=self.modes or None, dense_output=True,
                          max_steps=options.pop("max_steps", 5_000_000), **options)
 
     def figures(self, run) -> dict:
