@@ -126,6 +126,21 @@ def test_refused_without_the_mass():
         design(stroke=H_M, rise_time=T_M, tau=0.15, Fa=0.0, spring_margin=0.2)
 
 
+def test_a_rate_that_needs_no_preload_is_said(capsys):
+    """k = 3000 N/m at tau 0.12: k x exceeds 1.3 times the inertia force wherever the
+    follower decelerates (checked on SciPy's run), so the least preload is 0, and the text
+    says what that leaves: no force at rest on the base circle."""
+    T = np.linspace(0.0, 3.0, 30001)
+    X, _, Xdd, _ = _one_dof(0.12, T)
+    assert np.all(3000.0 * X * H_M >= 1.3 * (-MASS * Xdd * H_M / T_M**2) - 1e-9)
+    code = main(["design", "--stroke", str(H_M), "--rise-time", str(T_M), "--mass", str(MASS),
+                 "--tau", "0.12", "--fa", "0", "--spring-margin", "0.3", "--spring-rate", "3000",
+                 "--quiet"])
+    out = capsys.readouterr().out
+    assert code == 0 and "least preload F0 = 0 " in out
+    assert "without a preload the follower rests on the base circle with no force" in out
+
+
 def test_the_command_prints_spring_and_flywheel_with_errors(capsys):
     code = main(["design", "--stroke", "0.05", "--cam-angle", "90deg", "--speed", "150",
                  "--mass", "2", "--tau", "0.15", "--fa", "0", "--spring-margin", "0.3",

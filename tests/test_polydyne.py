@@ -97,3 +97,24 @@ def test_polydyne_command_charts_both(tmp_path, capsys):
     rc = main(["polydyne", "--design-tau", "1.2", "--out", str(tmp_path)])
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 2 and len(err) == 1 and "--design-tau" in err[0]
+
+
+def test_the_cam_of_a_polydyne_rise():
+    """camdyn profile with the polydyne law (tau_d 0.2): over the rise the lift is
+    h (P + (tau_d/2 pi)^2 P'')(phi/beta) to 1e-12 h, and the return mirrors it; its velocity
+    and acceleration against the same polynomial's derivatives, so the pressure angle and the
+    curvature come from the compensated motion, not the plain degree-9 rise."""
+    from camdyn.runtime.cam.profile import CamProfile
+
+    td, h, beta = 0.2, 0.015, math.radians(90)
+    cam = CamProfile(stroke=h, base_radius=0.03, roller_radius=0.005, offset=0.0,
+                     angles_deg=(90, 90, 90, 90), law="polydyne", law_parameter=td)
+    H = P9 + (td / (2 * math.pi))**2 * P9.deriv(2)
+    phi = np.linspace(0.0, beta, 721)
+    S = cam.cam.displacement(phi)
+    T = phi / beta
+    assert np.abs(S[0] - h * H(T)).max() < 1e-12 * h
+    assert np.abs(S[1] - h * H.deriv(1)(T) / beta).max() < 1e-10 * h / beta
+    assert np.abs(S[2] - h * H.deriv(2)(T) / beta**2).max() < 1e-9 * h / beta**2
+    ret = np.radians(180.0) + phi          # the return: H mirrored over its 90 deg
+    assert np.abs(cam.cam.displacement(ret)[0] - h * H(1.0 - T)).max() < 1e-12 * h

@@ -430,6 +430,9 @@ def _spring_text(sp: dict) -> list:
                  f"(at T = {_g(sp['T_binding_rate'], 4)}); any spring on or above the line between "
                  "holds the follower")
     L.append(f"  least contact force with it {_pm(sp['contact_force_min'], sp['contact_force_min_error'])} N")
+    if sp["rate"] is not None and sp["preload_min"] == 0.0:
+        L.append("  the rate alone meets the margin; without a preload the follower rests on the "
+                 "base circle with no force: give it one for the loads the run leaves out")
     s = sp.get("surge")
     if s is not None:
         harm = f", {_g(s['harmonic'], 4)} times the camshaft's speed" if s["harmonic"] else ""
