@@ -1101,19 +1101,12 @@ cdef inline void _d8_sum(const double* w, int n, double h, const double* K, cons
                          double* out) noexcept nogil:
     """out = base + h sum_j<n w_j K_j (base NULL: 0)."""
     cdef int i, j
-    cdef double a
-    cdef double acc[_NS]
-    # stage by stage, the tableau's zeros skipped (a quarter of its entries): the inner loop
-    # runs over the states, whose number is known when the model is compiled
+    cdef double acc
     for i in range(_NS):
-        acc[i] = 0.0
-    for j in range(n):
-        a = w[j]
-        if a != 0.0:
-            for i in range(_NS):
-                acc[i] += a * K[j * _NS + i]
-    for i in range(_NS):
-        out[i] = (base[i] if base != NULL else 0.0) + h * acc[i]
+        acc = 0.0
+        for j in range(n):
+            acc += w[j] * K[j * _NS + i]
+        out[i] = (base[i] if base != NULL else 0.0) + h * acc
 
 
 cdef inline double _inv_root8(double x) noexcept nogil:
