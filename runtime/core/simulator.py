@@ -269,9 +269,7 @@ class Simulator:
         if isinstance(max_steps, bool) or not isinstance(max_steps, int) or max_steps < 1:
             raise CamdynInputError(f"max_steps must be a positive integer, got {max_steps!r}")
         self.model, self.method, self.t0, self.t_end, self.max_steps = m, method, t0, t_end, max_steps
-        if not isinstance(check_stability, bool):
-            raise CamdynInputError(f"check_stability must be True or False, got {check_stability!r}")
-        self.check_stability = check_stability
+        self.check_stability = _flag("check_stability", check_stability)
         self.consistent = bool(consistent)
         self._project = self.consistent and hasattr(m.module, "consistent_state")
         self.laws, self.law_codes, self.law_pars = law_choices(m, law, theta)
@@ -300,9 +298,7 @@ class Simulator:
                 driver.CHECK_STOP if check_stability else driver.CHECK_ESTIMATE)
         if exact_segments is None:
             exact_segments = method.name in ("rk4", "dop853", "rkn12") and check_stability
-        elif not isinstance(exact_segments, bool):
-            raise CamdynInputError(f"exact_segments must be True or False, got {exact_segments!r}")
-        self.exact_segments = exact_segments
+        self.exact_segments = _flag("exact_segments", exact_segments)
         if method.name == "rkn12":
             self._nystrom_model()
         self.integrator = driver.Integrator(

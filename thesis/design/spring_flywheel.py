@@ -36,6 +36,7 @@ sampling's, the same figure from the run's dense output at half the spacing.
 from __future__ import annotations
 
 import math
+import weakref
 
 import numpy as np
 
@@ -48,12 +49,20 @@ SAMPLES = 3000
 error)."""
 
 
+_SAMPLED: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+"""The series of a run already sampled, per density: the spring and the flywheel read the
+same three series of the same check run."""
+
+
 def _series(result, per_unit: int) -> dict:
     """The run's dimensionless X, X', X'', H on an even grid, its recorded points added."""
-    T = np.union1d(np.linspace(result.t[0], result.t[-1], int(per_unit * (result.t[-1] - result.t[0])) + 1),
-                   result.t)
-    s = result.sample(T)
-    return {"T": T, "X": s["X"], "Xd": s["Xd"], "Xdd": s["Xdd"], "H": s["H"]}
+    done = _SAMPLED.setdefault(result, {})
+    if per_unit not in done:
+        span = result.t[-1] - result.t[0]
+        T = np.union1d(np.linspace(result.t[0], result.t[-1], int(per_unit * span) + 1), result.t)
+        s = result.sample(T)
+        done[per_unit] = {"T": T, "X": s["X"], "Xd": s["Xd"], "Xdd": s["Xdd"], "H": s["H"]}
+    return done[per_unit]
 
 
 def _spring_figures(S: dict, *, mass, stroke, t_m, margin, rate) -> dict:
