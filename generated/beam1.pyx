@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:2e6c90f85ba41a6c874f234c7f7ee4dbf0a8eb9d35d07a41dac2147727f2a368
-# Text hash: sha256:86e18d798a4884d834dc59541635a74f74d92fcf5aa002fa231c664a5f71457e
+# Derivation key: sha256:6819f9a3c4fa9d323071b181a0545cb16806ba2b700fcc506e0e5a24a6a37bf2
+# Text hash: sha256:320c04e50d62e408f58708e63570d908ad04dc9f00dbe1f101f2b429737ae090
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:c16b3556f450993e2cc9f2fd4a99c60d51901b4ed16007df3788e4358514ae33

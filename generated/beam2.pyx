@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4eb8bfeea9a783f17e76024b50db0db0b7547d1e8ac6425f58e750989efa8a23
-# Text hash: sha256:47e786f694c52ea7269238483b0fc68e3355d5df7583c6f92f0626b915873aee
+# Derivation key: sha256:27c573b572fcaf8719f624bc7779050ce31ed1b3a8328e3e6daa8026da280b8a
+# Text hash: sha256:0e4721882a4920d3d9c0fa9e2453633cfcae4a35a8a8ea9bae0f9767cc73bc98
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
 # Source hash: sha256:e6f5b38d9e7b1dd5f920d6438c12a96321d776db2c76dee854114e82adf9e94d

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:73e435b7177ecf50f16684b5c07a0e8a18ddf276dd1cf40229416756e9efb7e8
-# Text hash: sha256:8d0af1da06f5757a199359a4687e47937cfb0777f31bd3afe9fa902733bd4834
+# Derivation key: sha256:b27789f9a18061702291fb6fa9d186486c900cf6bb0cd050e30aaabcddace9de
+# Text hash: sha256:c0ab8fd0f55a43462edbe834105bacc4d1e1b8a67702e19b6a86f26ec9652fc5
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:a4c10ed1c7eeed79759d12da9812dfb2e08f6d7ceaf7defeb99a53905305f1ad

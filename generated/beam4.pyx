@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8f66d8b05fc559b43a1a12a336066f5bf364515dc6a49d9ceaa35530ee1fd67b
-# Text hash: sha256:e7d43b5703d7aff0a5fb21be6dc77e36efba890d900de41fd05fe68ca6627634
+# Derivation key: sha256:f67fe58e97a9e005db56da9910488b76ca2e5b9d5a85f59e5e56bc989ece1c9b
+# Text hash: sha256:353784b8b4d6023fb65a3ff8414a0ddc5257297df221eb7c7d6f836f815bce6d
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:64a7efcd9334b75fa69119f83904c9f9c8d47957738123d27eab23d9cd1693f4

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f0bff75f60f5d367cc5d229a09511558236e19d7c8f3c84aeee1bc3192c747e4
-# Text hash: sha256:80f190df8febc7bb292c01f7e0def280f05a2d0e99a44286d22bde7fdb7fb044
+# Derivation key: sha256:fb2ab916fb84c8aa9fa6499cd1841c804b651d44ba644d2d89ea816f0b37176c
+# Text hash: sha256:83aa8e7796a6dcb58d15c0f5b02e95d72e5bcfaaf66f40809ddbee1d7de482bd
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:611aaf7763e70cfb79e109e16ea0ebff594dfa47598c04509a2d122462a61666

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:3c0613f09247e584f8f0186d5558e369954fda340ba7c0a8fd380d8a0bdedc30
-# Text hash: sha256:6ccb1ddf377d28ba9208e5ad8566dcaa007a47a917878cf49e5443c9793d67db
+# Derivation key: sha256:42f78ef16f8be90fbb17adc2fc2f476bbaed76c4b1e4ecdcb3668f51f6c841da
+# Text hash: sha256:a3759c0776ee2abc3c86e7c0a938c6ef7e27c2021ba2e99d8011f9a80e587fbb
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:ba76292f91dfbbd6b8d39b0bd7d40b2000e3a575b4d3c5fd9aa69df4a2837883

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:73ec8a9f5248a6590bedac2d49f62690f3e78712b97566f126b282ea29af0c60
-# Text hash: sha256:46edde461aa4bd187bb18fda1ce3b49be091cf5c2b3baadc3333c78a62d09195
+# Derivation key: sha256:fe525f3d33b1910af9d4e8b8f518be7381136ca0196521b656d3c89be76d9118
+# Text hash: sha256:214a90ee58efd00dcf6e0d29fb330f515f7bbfbd81f6635617f0de517b1f80d7
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

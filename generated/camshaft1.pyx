@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:dec7f0f1081982f237dbf9d6052bad998ddb8c173491e9c0f0509211a88beccf
-# Text hash: sha256:27ae6094c17af85e86a1a84f02b9615577ccd1449495df5c07b547021cae15c2
+# Derivation key: sha256:594ad446c9e3701d10fa793794158af96b5b6481d4fc6335e8db5e1f771a785d
+# Text hash: sha256:0c665c79cd2a8139023e5b401617c67338a2bcf668d82cbae84aaebe2271d65f
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233
@@ -111,7 +111,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double Xd = _y[1]
     cdef double Xdd = _dy[1]
     cdef double _cam0[4]  # H(T) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
+    cdef double* _c
+    # rhs() has just evaluated this input at the same argument and kept it (outside a dwell)
+    _c = &ctx.cache[0]
+    if _c[0] == t:
+        _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+    else:
+        camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
     _out[0] = _dy[1]  # Xdd
     _out[1] = X - _cam0[0]  # U

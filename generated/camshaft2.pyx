@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:131a5ea5a834c6311a0600ba08682ab15ca21d9f6a7a4444e1400e12db1a1e60
-# Text hash: sha256:26d95bd98132ad7eb3a8c9f2b54fc4b32ff6d5b00f25028ddbc45ddc18675776
+# Derivation key: sha256:03633cc8abcb2ea81f9eb0ba64cd944ddad176bc9bd229ce3957c4dade57a22c
+# Text hash: sha256:074258c07926dd527a556fa8ffd4f8042018fa6a31b87f1e05337552029bdaf3
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a
@@ -137,7 +137,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double Xdd = _dy[2]
     cdef double Bdd = _dy[3]
     cdef double _cam0[4]  # H(B) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], B, _cam0)
+    cdef double* _c
+    # rhs() has just evaluated this input at the same argument and kept it (outside a dwell)
+    _c = &ctx.cache[0]
+    if _c[0] == B:
+        _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+    else:
+        camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], B, _cam0)
 
     _out[0] = _dy[2]  # Xdd
     _out[1] = X - _cam0[0]  # U

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6c1398cf1c883289a6998e6026b191324e22be301cecce1697e140412992227c
-# Text hash: sha256:569bcab3ec93320ef84e16937182ab656a2e99497a5b3fb4a1fa05354d1b84b2
+# Derivation key: sha256:8e017aedf83e29c78e3524c9b905f3589c8939e5a1818d5443b8770d680e477a
+# Text hash: sha256:7dfc2770806fb726e68209b20a70de5d1f9d05615eb6b6322e1380021d38b4ee
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f

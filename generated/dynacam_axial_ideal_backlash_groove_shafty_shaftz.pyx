@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:429131ed704a23cfe4ab69cd250bfc29a0212c8087616e051d43cea98786341d
-# Text hash: sha256:4537a5c70b34ec622334c87f11ab35112be850113c10dd7e29bc2a9c281b20c5
+# Derivation key: sha256:b232c39322748fe7383a80aeb6a28be0c39268bbb6def1a75c859c8ed69266a4
+# Text hash: sha256:7edc8262626b14aa92a8b98d853d6620910dd588ff403f4784a9a4f0e544e942
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc
@@ -381,7 +381,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double zdd = _dy[6]
     cdef double xdd = _dy[7]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
+    cdef double* _c
+    # rhs() has just evaluated this input at the same argument and kept it (outside a dwell)
+    _c = &ctx.cache[0]
+    if _c[0] == beta/beta_m - beta_0/beta_m:
+        _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+    else:
+        camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef double _o0 = _cam0[0]*_k27 + x
     cdef double _o1 = _k29*(betad - omega_s)

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:78730d12a5672c835a0053712bb1b12973117f37a06b46a58960171272426635
-# Text hash: sha256:3e8245b8bfff21eebeaebbb444c974c87af76d253f4b88a9514db08c4da725bd
+# Derivation key: sha256:a9e012f4bc95cadcc49a81438b9c687e364def0b24bc7d51675f1fab813bf9a5
+# Text hash: sha256:05e617e5fa72e474bef237cd8a0973a08c363469cdfdd5c1e62a6cb166e99389
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e
@@ -570,7 +570,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double zdd = _dy[6]
     cdef double xdd = _dy[7]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
+    cdef double* _c
+    # rhs() has just evaluated this input at the same argument and kept it (outside a dwell)
+    _c = &ctx.cache[0]
+    if _c[0] == beta/beta_m - beta_0/beta_m:
+        _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+    else:
+        camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     _out[0] = _k39*(_k38 + beta)  # B
     _out[1] = _k40*_dy[7]  # Xdd

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:eaf279e1612d5adfdde68246308dedd6e5a68c833d453a89d5aa974b112e89a9
-# Text hash: sha256:34625721361e6783a73c773b97d319d25e452ea42225758c4696a2fea4d3ad90
+# Derivation key: sha256:40dd1689ed27e59f3e48a97f2286f3f6a5394484eea19760140e25e6ab6360db
+# Text hash: sha256:7ed67ff0741cc1bcec78e5acfe5876ae2eb44603e84502920786f60a23d0da5e
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:747e34dbea18a7d307dc7101158b4419fb0642de73f52917507a7d1b1d7004c3
@@ -304,7 +304,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double betadd = _dy[2]
     cdef double xdd = _dy[3]
     cdef double _cam0[4]  # H((beta - beta_0)/beta_m) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], (beta - beta_0)/beta_m, _cam0)
+    cdef double* _c
+    # rhs() has just evaluated this input at the same argument and kept it (outside a dwell)
+    _c = &ctx.cache[0]
+    if _c[0] == (beta - beta_0)/beta_m:
+        _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+    else:
+        camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], (beta - beta_0)/beta_m, _cam0)
 
     _out[0] = _k13*(_k12 + beta)  # B
     _out[1] = _k14*_dy[3]  # Xdd

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6534d58377f2cf6ff127f48b35cc0eaebb10d231c11e4e00d655704646787195
-# Text hash: sha256:fdb6000e55e81655d5178eb0aea7cee36d20b8830a9a7ec14f8806ee6810b5d5
+# Derivation key: sha256:fab6f581a507d4e75c68e2b6a9c1e2306535b4ad20b5e59d79163926a56c6056
+# Text hash: sha256:57694994d419de2f1495e9609fa3dd81113929ee003c0e892be4ec9a62fed2da
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:478faccf329f7294d2cd47f536ad5f78fa53fe5d590d1d87b6cb5079502bd98d
@@ -776,7 +776,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double zdd = _dy[6]
     cdef double xdd = _dy[7]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
+    cdef double* _c
+    # rhs() has just evaluated this input at the same argument and kept it (outside a dwell)
+    _c = &ctx.cache[0]
+    if _c[0] == beta/beta_m - beta_0/beta_m:
+        _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+    else:
+        camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef double _o0 = R_b + _cam0[0]*h_m
     cdef double _o1 = (1.0/_o0)

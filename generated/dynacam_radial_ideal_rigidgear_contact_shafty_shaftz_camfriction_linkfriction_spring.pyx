@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a39cf7b66882c96f0988cc0b9bba0754e9a91db274df5a5136b1850667723da0
-# Text hash: sha256:09bced11525e04a9d559d80d17826ccfaddc8b945c39bcd5aa9bf29c312a9fd4
+# Derivation key: sha256:1ee177a0d5513f792a921a77e3d19a36d5de1dff664534b16ed2f3902c28b2b8
+# Text hash: sha256:7c51f6993c697d506d8c15fca5cfafd68e801b9b737a1db307148be7d7de83f4
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7df6f3da3414231df3e2e1f7adc385d77f7cfc0e35b975f115056fce8cb53bba
@@ -520,7 +520,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double zdd = _dy[6]
     cdef double xdd = _dy[7]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
+    cdef double* _c
+    # rhs() has just evaluated this input at the same argument and kept it (outside a dwell)
+    _c = &ctx.cache[0]
+    if _c[0] == beta/beta_m - beta_0/beta_m:
+        _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+    else:
+        camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef double _o0 = _cam0[0]*_k27 + x
     cdef double _o1 = R_b + _cam0[0]*h_m

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ff9434a1bbcaa382712b738d52c1919c6d40f44487388e8bac00650e79cad9e2
-# Text hash: sha256:fe0aa57147d0f4aadb56317241d332a81b9548e86fa098249aa957cdbf673b3b
+# Derivation key: sha256:81451f478c43f272dae506ec40c5c8ee7234e2bef02262e2051d7838911416b0
+# Text hash: sha256:6cc979e7154863dd0ba45a279c6d0c3324813d5068766bf6ba75b9ff0c88766a
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1
@@ -432,7 +432,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double zdd = _dy[6]
     cdef double xdd = _dy[7]
     cdef double _cam0[4]  # H(beta/beta_m - beta_0/beta_m) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
+    cdef double* _c
+    # rhs() has just evaluated this input at the same argument and kept it (outside a dwell)
+    _c = &ctx.cache[0]
+    if _c[0] == beta/beta_m - beta_0/beta_m:
+        _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+    else:
+        camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef double _o0 = _cam0[0]*_k34 + x
     cdef double _o1 = R_b + _cam0[0]*h_m

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:762f24fd626796466cd737e36771709fbf58323e56c9d40864f1f08d495eafe4
-# Text hash: sha256:24f649597306a05a3afd02919ee625ed98de5d3ac54921c7009197c8d732ee14
+# Derivation key: sha256:d821e323b8a8fb357b5f8e0691cdffd966d179b4188afcee8dec7fb9ef71b576
+# Text hash: sha256:f8a99d82d477f950773105b0094b54c67446a410ed1d6d2e5102e5fc04924462
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68
@@ -111,7 +111,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _k2 = ctx.k[2]
     cdef double dw = _y[0]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t/t_m, _cam0)
+    cdef double* _c
+    # rhs() has just evaluated this input at the same argument and kept it (outside a dwell)
+    _c = &ctx.cache[0]
+    if _c[0] == t/t_m:
+        _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+    else:
+        camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t/t_m, _cam0)
 
     _out[0] = Mc*_cam0[1]*_cam0[2]  # M_load
 

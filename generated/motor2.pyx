@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8436a8e4d220e72c2756ce963638bbcb0c7e96b2a09c83a15bbf00ca63293266
-# Text hash: sha256:8fcf31aff6762166f40f1bdebb6ec86d781e5250d7eb6de3a7f892c5239fa304
+# Derivation key: sha256:e14a0172344acd19bb9f17748a30c5ddb5a699d086a697d4f7462ef7c2970f67
+# Text hash: sha256:2e7179f110d3fe4e53086af4c302d73fef463a381ec98d999af5b3be602330b6
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71
@@ -124,7 +124,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double dw = _y[0]
     cdef double Mea = _y[1]
     cdef double _cam0[4]  # H(t/t_m) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t/t_m, _cam0)
+    cdef double* _c
+    # rhs() has just evaluated this input at the same argument and kept it (outside a dwell)
+    _c = &ctx.cache[0]
+    if _c[0] == t/t_m:
+        _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+    else:
+        camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t/t_m, _cam0)
 
     _out[0] = Mc*_cam0[1]*_cam0[2]  # M_load
 

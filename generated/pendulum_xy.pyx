@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4f43845ab8fd868baadc39ad1ba7a35ad4dda780c75ea01e8200647dee0b42b0
-# Text hash: sha256:fd356813e1e68096649f9b2326ad7d2d6af37023cbc6a48edc6d02057365ecb4
+# Derivation key: sha256:196360750557a8fc4f7a060235784a698ba9d93d3cbd264186c3a5187ea902f6
+# Text hash: sha256:2986ca3595af3a074d826ed841b492bbe6923f3dd0e442701840f55fb4b91c3f
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:161a1c58ca2d37fcefd956520d1151d5da9a8e1578200587452bf241fc0d81e3

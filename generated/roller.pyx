@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:eface2296b3c808e6eb2d83f91e048f25ef3966f93dc7aaccf79ef026556ea54
-# Text hash: sha256:4c559aab0aaee1b13c4856b505b2abe7bf3c0059d7792229ea99c85c33924bca
+# Derivation key: sha256:a96ff0272b2ce736868bd9162f5e06dca51edf64b2e03082b5311c3a5986930f
+# Text hash: sha256:1672ab950a714f2b923009f7cdb397e9be20e9e7b493b1dae689f0526c582986
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27
@@ -240,7 +240,13 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double Xdd = _dy[2]
     cdef double Rdd = _dy[3]
     cdef double _cam0[4]  # H(T) and its derivatives
-    camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
+    cdef double* _c
+    # rhs() has just evaluated this input at the same argument and kept it (outside a dwell)
+    _c = &ctx.cache[0]
+    if _c[0] == t:
+        _cam0[0], _cam0[1], _cam0[2], _cam0[3] = _c[1], _c[2], _c[3], _c[4]
+    else:
+        camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], t, _cam0)
 
     cdef double _o0 = -_cam0[0]
     cdef double _o1 = Rd - _cam0[1]

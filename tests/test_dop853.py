@@ -223,10 +223,12 @@ def test_cli_takes_dop853():
 
 def test_a_compiled_sweep_scans_dop853s_sparse_record_densely_enough():
     """DOP853 records about 8 points a period at rtol 1e-9 (DP54 about 87): the compiled
-    sweep's scan samples its steps as densely as DP54's (runtime/targets/model_target.py,
-    scan_density), so that its figures equal those read off each run by the Python path
-    (residual(), 12 samples a step) to 1e-7 of their scale, times included, on fig. 4.11's
-    fastest taus, where every third point alone once missed the deepest trough by 0.1 in T."""
+    sweep's scan samples its steps as densely as DP54's in the dwell and 18 times a period in
+    the rise (runtime/targets/model_target.py, scan_density), so that its figures equal those
+    read off each run by the Python path (residual(), 12 samples a step) to 1e-7 of their
+    scale, times included, on fig. 4.11's fastest taus, where every third point alone once
+    missed the deepest trough by 0.1 in T, and at tau = 0.2, whose two deepest troughs differ
+    by 6e-8 of their depth (the recorded points alone took the shallower one)."""
     from camdyn.runtime.measure.residual import residual
     from camdyn.runtime.studies import sweep as sw
     from camdyn.runtime.targets.model_target import ModelTarget

@@ -167,7 +167,9 @@ def test_residual_figures_of_an_exact_dwell_in_closed_form(q):
 def test_sweeps_and_single_runs_take_the_same_closed_form():
     """A sweep of CAMSHAFT-1 (4.15) with DOP853 (its dwell exact) gives the U0 and U0'' that
     single runs give, to rounding, with no sampling error; the scan of the same runs' dense
-    output (the exact steps off) agrees to the integration's error."""
+    output (the exact steps off) agrees to the integration's error.  The sweep needs only the
+    state at the end of the rise, so it steps over the dwell in one go: its runs take the
+    single run's steps in the rise and one more."""
     from camdyn.runtime.measure.residual import residual
     from camdyn.runtime.studies.sweep import sweep
     from camdyn.runtime.targets.model_target import ModelTarget
@@ -184,6 +186,35 @@ def test_sweeps_and_single_runs_take_the_same_closed_form():
         assert table.columns["U0dd"][k] == pytest.approx(one.U0dd, rel=1e-13, abs=1e-13)
         assert one.U0 == pytest.approx(scan.U0, rel=1e-7, abs=1e-12)
         assert one.U0dd == pytest.approx(scan.U0dd, rel=1e-7, abs=1e-9)
+        run = Simulator("camshaft1", 3.0, "dop853", rtol=1e-10).run(params)
+        t_rise = run.t[run.t <= 1.0]
+        assert table.columns["n_steps"][k] == np.unique(t_rise).size - 1 + 1
+
+
+def test_a_sweep_whose_dwell_has_no_closed_form_scans_it():
+    """The chain of three masses (six states: the closed form takes two) and the one-DOF
+    dwell (3.3) lightly damped (q = 0.1 in (6.47): the closed form): the sweep's U0, U0''
+    equal single runs' residual() to 1e-7 relative (two scans of one record for the chain,
+    the same closed form for the one-DOF), the chain's dwell recorded step by step, the
+    one-DOF's in one step."""
+    from camdyn.runtime.measure.residual import residual
+    from camdyn.runtime.studies.sweep import sweep
+    from camdyn.runtime.targets.model_target import ModelTarget
+
+    for name, grid in (("chain3", {"tau": [0.15, 0.4]}), ("one_dof", {"q": [0.1], "tau": [0.15, 0.4]})):
+        target = ModelTarget.of(name, t_end=3.0, method="dop853", rtol=1e-9)
+        table = sweep(target, grid, jobs=1, progress=False, estimate=False)
+        for k in range(len(table.columns["tau"])):
+            params = {a: float(table.columns[a][k]) for a in grid}
+            run = Simulator(name, 3.0, "dop853", rtol=1e-9).run(params)
+            one = residual(run)
+            assert table.columns["U0"][k] == pytest.approx(one.U0, rel=1e-7), params
+            assert table.columns["U0dd"][k] == pytest.approx(one.U0dd, rel=1e-7), params
+            in_rise = np.unique(run.t[run.t <= 1.0]).size - 1
+            if name == "chain3":
+                assert table.columns["n_steps"][k] == run.stats["n_steps"] > in_rise + 10
+            else:
+                assert table.columns["n_steps"][k] == in_rise + 1
 
 
 def test_the_record_of_a_damped_stiff_dwell_thins_out():

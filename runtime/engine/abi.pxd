@@ -12,7 +12,7 @@
 # a module at run time.
 
 cdef enum:
-    CAMDYN_ABI = 12
+    CAMDYN_ABI = 13
 
 # method codes
 cdef enum:
@@ -105,6 +105,10 @@ cdef struct Run:
     bint skip_dense        # DOP853 without events: leave out the dense output's three stages
                            # (a sixth of a step's calls) and its extras (NaN); whoever needs the
                            # dense output runs again without it (Result.record; ABI 12)
+    bint exact_whole       # with exact: every linear interval in one step, its end alone
+                           # recorded and no dense output across it (the extras zero): for a
+                           # figure read off its end state in closed form (finder.pyx's
+                           # sweep_residual; ABI 13)
 
 ctypedef void (*prep_fn)(Ctx* ctx) noexcept nogil
 ctypedef void (*rhs_fn)(double t, const double* y, double* dy, Ctx* ctx) noexcept nogil

@@ -400,6 +400,7 @@ cdef class Integrator:
         run.n_lu = 0
         run.exact = self.exact
         run.skip_dense = not dense
+        run.exact_whole = False
         cdef int status
         cdef timespec c0, c1
         with nogil:

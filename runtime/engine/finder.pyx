@@ -23,7 +23,11 @@ best refined).  A sweep samples fewer (every 3rd recorded point at rtol 1e-9, wh
 scan_density) and refines the 4 best peaks by the parabola through each and its neighbours;
 where several peaks are equal to within the integration error (the undamped dwell, every
 peak of U is U0), any of them is U0 to that error.  Samples on recorded points read a cache
-of the outputs there, filled by one evaluation of the model's outputs per point.
+of the outputs there, filled by one evaluation of the model's outputs per point.  The rise
+may take its own, lower density (``rise_per_step``: its peaks are not all equal as an undamped
+dwell's are, so the finder's 1e-3 cut-off asks less of the parabolas).  Where the dwell was
+stepped over exactly, U0 and U0'' come in closed form from the state at the end of the rise
+(``_dwell_closed_form``) and a sweep steps over that dwell in one go.
 
 ``sweep_residual`` runs a chunk of parameter sets through the model's compiled loops and these
 finders in one call that holds no GIL: one record buffer reused for every run, no Python object
@@ -543,6 +547,12 @@ cdef double _recorded(Rec* r, Py_ssize_t k, int which) noexcept nogil:
     return r.out[which - r.ns]
 
 
+cdef bint _recorded_at(Rec* r, double t) noexcept nogil:
+    """Whether t is a recorded point (the end of a step, not a time inside one)."""
+    cdef Py_ssize_t i = _step_of(r, t)
+    return _t(r, i) == t or (i + 1 < r.n and _t(r, i + 1) == t)
+
+
 cdef double _crossing(Rec* r, int which, double level, int* ok) noexcept nogil:
     """First time the state or output ``which`` (outputs after the ns states) reaches
     ``level``: the first recorded point at or past it, then bisection on the dense output of
@@ -573,14 +583,16 @@ cdef double _crossing(Rec* r, int which, double level, int* ok) noexcept nogil:
     return 0.5 * (lo + hi)
 
 
-cdef void _fill_cache(Rec* r, int w1, int w2, double* c1, double* c2, int stride) noexcept nogil:
-    """Figures w1 and w2 at every recorded point j > 0 as the dense output gives them there
-    (step j - 1 at its end), from one evaluation of the outputs per point."""
+cdef void _fill_cache(Rec* r, int w1, int w2, double* c1, double* c2, int stride,
+                      double t_stop=INFINITY) noexcept nogil:
+    """Figures w1 and w2 at every stride-th recorded point j > 0 up to the first at or past
+    t_stop as the dense output gives them there (step j - 1 at its end), from one evaluation
+    of the outputs per point."""
     cdef Py_ssize_t j
     c1[0] = NAN
     c2[0] = NAN
     j = stride
-    while j < r.n:
+    while j < r.n and _t(r, j - stride) < t_stop:
         if _t(r, j) > _t(r, j - 1):
             _pair_in(r, _t(r, j), j - 1, w1, w2, c1 + j, c2 + j)
         j += stride
@@ -865,6 +877,7 @@ cdef struct Chunk:
     const int* modes0
     const int* part    # the coordinate partition of the runs (Ctx.part), or NULL
     bint exact
+    bint whole         # with exact: a linear interval in one step (Run.exact_whole)
     int width
     Py_ssize_t cap
     double* rows
@@ -891,6 +904,7 @@ cdef int _chunk_open(Chunk* c, ModelC* m, int method, const int* law, const doub
     c.modes0 = modes0
     c.part = NULL
     c.exact = exact
+    c.whole = False
     c.width = 1 + (2 + extra_terms(method, exact)) * ns
     c.cap = cap if cap >= 64 else 64
     c.rows = <double*> malloc(c.cap * c.width * sizeof(double))
@@ -967,6 +981,7 @@ cdef int _chunk_run(Chunk* c, const double* p, const double* y0, const double* s
     c.run.n_lu = 0
     c.run.exact = c.exact
     c.run.skip_dense = False         # the figures' scans read the dense output
+    c.run.exact_whole = c.exact and c.whole
     status = m.run(&c.run)
     # keep the (possibly grown) buffers for the next run
     c.rows = c.run.rec.rows
@@ -1015,16 +1030,21 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
                    Py_ssize_t start, Py_ssize_t stop, Py_ssize_t cap=4096, int stride=1,
                    bint figures_too=True, bint exact=False, const int[::1] run_which=None,
                    const int[::1] run_kind=None, double[:, ::1] run_figures=None,
-                   const int[::1] part=None):
+                   const int[::1] part=None, int rise_per_step=0):
     """Run parameter sets start..stop-1 (rows of P, initial states Y0, stop times) and write
     the FIGURE_COLUMNS of each into ``figures`` and the STAT_COLUMNS into ``stats``; seconds[j]:
     wall time of run j with its figures.  i_error, i_acc: the error and acceleration outputs
     (index among states then outputs); i_rise: the state whose crossing of rise_end ends the
     rise, or -1 (the rise ends at time rise_end).  With per_step 1 the scan samples every
     ``stride``-th recorded point (its peaks are refined between the samples around them).
+    ``rise_per_step``: the rise's own density (0: per_step), for a dwell scanned more densely
+    than the rise needs.
     ``figures_too`` False: integrate only (bench/sweep.py splits the cost with it).  ``exact``:
     intervals where the model is linear and time invariant are stepped over exactly
-    (runtime/engine/loops.pxi, _loop_exact), as Simulator(exact_segments=True) does.
+    (runtime/engine/loops.pxi, _loop_exact), as Simulator(exact_segments=True) does; a run
+    whose U0 and U0'' then come in closed form from the state at the end of the rise
+    (_dwell_closed_form) takes each such interval in one step (Run.exact_whole), and a run
+    whose dwell has no closed form is run again with it recorded step by step.
     ``run_which``, ``run_kind``: extremes over the whole run besides (state or output, score
     as :func:`sweep_extremes` takes them), found as :func:`extreme` finds them on a recorded
     run (12 samples a step, the best refined: the same bits); value and sampling error of
@@ -1042,6 +1062,8 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
         raise ValueError(f"per_step >= 1, stride >= 1 and 1 <= n_cand <= {MAX_CAND}")
     if per_step > 1:
         stride = 1
+    # the rise's scan: its own density, or the dwell's
+    cdef int rise_ps = rise_per_step if rise_per_step > 0 else per_step
     cdef int n_run = 0 if run_which is None else run_which.shape[0]
     if n_run and (run_kind is None or run_kind.shape[0] != n_run or run_figures is None
                   or run_figures.shape[1] != 2 * n_run or run_figures.shape[0] < stop):
@@ -1063,84 +1085,96 @@ def sweep_residual(object capsule, int method, int[::1] law, double[::1] law_par
     cdef double t1, t_end, v, at, samp
     cdef double* rows
     cdef timespec c0, c1
+    # the figures of a dwell in closed form need its end state alone: each linear interval in
+    # one step, run again recorded step by step where the closed form is not taken
+    cdef bint whole = exact and figures_too and n_run == 0 and i_rise < 0
     with nogil:
         for g in range(start, stop):
             clock_gettime(CLOCK_MONOTONIC, &c0)
-            status = _chunk_run(&c, &P[g, 0], &Y0[g, 0], &stops[g, 0], n_stops[g], h_max)
-            stats[g, 0] = status
-            stats[g, 1] = c.run.n_steps
-            stats[g, 2] = c.run.n_rejected
-            stats[g, 3] = c.run.n_rhs
-            stats[g, 4] = c.run.rec.n
-            for j in range(8):
-                figures[g, j] = NAN
-            for j in range(2 * n_run):
-                run_figures[g, j] = NAN
-            if status == STATUS_OK and c.run.rec.n > 0 and figures_too:
-                _chunk_record(&c, &rec)
-                rows = c.rows
-                t_end = rows[(rec.n - 1) * width]
-                t1 = rise_end
-                ok = 1
-                if i_rise >= 0:
-                    t1 = _crossing(&rec, i_rise, rise_end, &ok)
-                if not ok or not (rows[0] <= 0.0 and t_end > t1):
-                    stats[g, 0] = -1
-                else:
-                    figures[g, 4] = t1
-                    if rec.n > ccap:
-                        free(cache)
-                        ccap = rec.n + rec.n // 4
-                        cache = <double*> malloc(2 * ccap * sizeof(double))
-                        if cache == NULL:
-                            ccap = 0
-                    n_samp = 0
-                    closed = exact and _dwell_closed_form(&rec, t1, t_end, i_error, i_acc, &v,
-                                                          &at)
-                    if closed:
-                        figures[g, 0] = v
-                        figures[g, 1] = at
-                        figures[g, 5] = 0.0
-                        figures[g, 6] = 0.0
-                    elif per_step > 1:
-                        # U0 and U0'' scan the same span: one evaluation of the outputs a
-                        # sample serves both
-                        n_samp = _walk(&rec, t1, t_end, per_step, 0, 0, NULL, samples, scap,
-                                       i_error, i_acc)
-                        if n_samp > scap:
-                            free(samples)
-                            scap = n_samp + n_samp // 4
-                            samples = <double*> malloc(3 * scap * sizeof(double))
-                            if samples == NULL:
-                                scap = 0
-                                n_samp = 0
-                            else:
-                                _walk(&rec, t1, t_end, per_step, 0, 0, NULL, samples, scap,
-                                      i_error, i_acc)
-                    elif cache != NULL:
-                        _fill_cache(&rec, i_error, i_acc, cache, cache + ccap, stride)
-                    if not closed:
-                        _extreme(&rec, i_error, t1, t_end, 0, per_step, n_cand, cache, stride,
-                                 &v, &at, &samp, samples if n_samp else NULL, samples + scap,
-                                 n_samp)
-                        figures[g, 0] = v
-                        figures[g, 5] = samp
-                        _extreme(&rec, i_acc, t1, t_end, 0, per_step, n_cand,
-                                 cache + ccap if cache != NULL else NULL, stride, &v, &at, &samp,
-                                 samples if n_samp else NULL, samples + 2 * scap, n_samp)
-                        figures[g, 1] = v
-                        figures[g, 6] = samp
-                    _extreme(&rec, i_acc, rows[0] if rows[0] > 0.0 else 0.0, t1, 2, per_step,
-                             n_cand, cache + ccap if cache != NULL else NULL, stride, &v, &at,
-                             &samp)
-                    figures[g, 2] = v
-                    figures[g, 3] = at
-                    figures[g, 7] = samp
-                    for j in range(n_run):
-                        _extreme(&rec, run_which[j], rows[0], t_end, run_kind[j], 12, 1, NULL,
-                                 1, &v, &at, &samp)
-                        run_figures[g, 2 * j] = v
-                        run_figures[g, 2 * j + 1] = samp
+            c.whole = whole
+            while True:
+                status = _chunk_run(&c, &P[g, 0], &Y0[g, 0], &stops[g, 0], n_stops[g], h_max)
+                stats[g, 0] = status
+                stats[g, 1] = c.run.n_steps
+                stats[g, 2] = c.run.n_rejected
+                stats[g, 3] = c.run.n_rhs
+                stats[g, 4] = c.run.rec.n
+                for j in range(8):
+                    figures[g, j] = NAN
+                for j in range(2 * n_run):
+                    run_figures[g, j] = NAN
+                if status == STATUS_OK and c.run.rec.n > 0 and figures_too:
+                    _chunk_record(&c, &rec)
+                    rows = c.rows
+                    t_end = rows[(rec.n - 1) * width]
+                    t1 = rise_end
+                    ok = 1
+                    if i_rise >= 0:
+                        t1 = _crossing(&rec, i_rise, rise_end, &ok)
+                    if not ok or not (rows[0] <= 0.0 and t_end > t1):
+                        stats[g, 0] = -1
+                    else:
+                        figures[g, 4] = t1
+                        if rec.n > ccap:
+                            free(cache)
+                            ccap = rec.n + rec.n // 4
+                            cache = <double*> malloc(2 * ccap * sizeof(double))
+                            if cache == NULL:
+                                ccap = 0
+                        n_samp = 0
+                        closed = exact and _dwell_closed_form(&rec, t1, t_end, i_error, i_acc, &v,
+                                                              &at)
+                        if c.whole and not (closed and _recorded_at(&rec, t1)):
+                            # the scan needs the dwell recorded step by step: run it again
+                            c.whole = False
+                            continue
+                        if closed:
+                            figures[g, 0] = v
+                            figures[g, 1] = at
+                            figures[g, 5] = 0.0
+                            figures[g, 6] = 0.0
+                        elif per_step > 1:
+                            # U0 and U0'' scan the same span: one evaluation of the outputs a
+                            # sample serves both
+                            n_samp = _walk(&rec, t1, t_end, per_step, 0, 0, NULL, samples, scap,
+                                           i_error, i_acc)
+                            if n_samp > scap:
+                                free(samples)
+                                scap = n_samp + n_samp // 4
+                                samples = <double*> malloc(3 * scap * sizeof(double))
+                                if samples == NULL:
+                                    scap = 0
+                                    n_samp = 0
+                                else:
+                                    _walk(&rec, t1, t_end, per_step, 0, 0, NULL, samples, scap,
+                                          i_error, i_acc)
+                        if cache != NULL and (rise_ps == 1 or (per_step == 1 and not closed)):
+                            # the scans that sample the recorded points alone read them here
+                            _fill_cache(&rec, i_error, i_acc, cache, cache + ccap, stride,
+                                        INFINITY if per_step == 1 and not closed else t1)
+                        if not closed:
+                            _extreme(&rec, i_error, t1, t_end, 0, per_step, n_cand, cache, stride,
+                                     &v, &at, &samp, samples if n_samp else NULL, samples + scap,
+                                     n_samp)
+                            figures[g, 0] = v
+                            figures[g, 5] = samp
+                            _extreme(&rec, i_acc, t1, t_end, 0, per_step, n_cand,
+                                     cache + ccap if cache != NULL else NULL, stride, &v, &at, &samp,
+                                     samples if n_samp else NULL, samples + 2 * scap, n_samp)
+                            figures[g, 1] = v
+                            figures[g, 6] = samp
+                        _extreme(&rec, i_acc, rows[0] if rows[0] > 0.0 else 0.0, t1, 2, rise_ps,
+                                 n_cand, cache + ccap if cache != NULL and rise_ps == 1 else NULL,
+                                 stride, &v, &at, &samp)
+                        figures[g, 2] = v
+                        figures[g, 3] = at
+                        figures[g, 7] = samp
+                        for j in range(n_run):
+                            _extreme(&rec, run_which[j], rows[0], t_end, run_kind[j], 12, 1, NULL,
+                                     1, &v, &at, &samp)
+                            run_figures[g, 2 * j] = v
+                            run_figures[g, 2 * j + 1] = samp
+                break
             clock_gettime(CLOCK_MONOTONIC, &c1)
             seconds[g] = (c1.tv_sec - c0.tv_sec) + 1e-9 * (c1.tv_nsec - c0.tv_nsec)
     cap = c.cap

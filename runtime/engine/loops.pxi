@@ -2270,12 +2270,13 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
     (the lowest one always holds), and the next step is as many rungs higher as keep 2^p times
     the error a rung within half of it (p = 4 + n_extra, the interpolant's order) with the
     position on that rung's grid.  A damped fast mode (a stiff contact) then sets the
-    record's density only while it rings."""
+    record's density only while it rings.  With run.exact_whole the interval is one step."""
     cdef Ctx* ctx = run.ctx
     cdef Record* r = &run.rec
     cdef int nx = r.n_extra, i, j, k = 0, K = 0, kmax, status = STATUS_OK
     cdef char ready[64]
-    cdef bint adaptive = adaptive_method(run.method)
+    cdef bint whole = run.exact_whole
+    cdef bint adaptive = adaptive_method(run.method) and not whole
     cdef double t = a, h, h0, H, rate, err = 0.0, grow, v
     cdef double y[_NS]
     cdef double yn[_NS]
@@ -2327,7 +2328,7 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
         while run.h_max > 0.0 and kmax > 0 and (b - a) / (<double> (1L << (K - kmax))) > run.h_max:
             kmax -= 1
     else:
-        n0 = fixed_steps(a, b, run.h) if run.h < b - a else 1
+        n0 = 1 if whole or run.h >= b - a else fixed_steps(a, b, run.h)
         kmax = 0
         if run.n_steps + n0 > run.max_steps:
             run.t_fail = t
@@ -2366,7 +2367,9 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
         H = h0 * stride
         _affine(L + nx * _NS * _NS, y, _gam(L, nx) + nx * _NS, yn)
         _affine(A, yn, c, fn)
-        if nx:     # the step's extras, X y + x0
+        if whole:      # no dense output across the interval: the Hermite part alone
+            memset(ex, 0, sizeof(ex))
+        elif nx:       # the step's extras, X y + x0
             row = L + (nx + 1) * (_NS * _NS + _NS)
             for j in range(nx * _NS):
                 v = row[nx * _NS * _NS + j]

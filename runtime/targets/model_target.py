@@ -63,16 +63,26 @@ refines its CANDIDATES best peaks on the dense output, then checks the others
 POINTS_PER_PERIOD = {"dop853": (0.45, 8.0), "rkn12": (0.37, 12.0)}
 
 
-def scan_density(method) -> tuple[int, int]:
-    """(per_step, stride) of a grid's compiled scan: about 1.4 SAMPLES (28) samples a period
-    of the fastest mode, whatever the method's step density (POINTS_PER_PERIOD; DP54's rule
-    for the others): DP54 every 3rd recorded point at rtol 1e-9, every point at 1e-8, 2 a step
-    at 1e-6; DOP853 4 a step at rtol 1e-9."""
+RISE_SAMPLES = 18.0
+"""Samples a period of the fastest mode in the rise's scan where the steps are sparser than
+that: the parabola through three samples then stands within 3.4e-4 of the peak of a sine it
+samples (14 a period: 9.4e-4), so that no peak the finder's 1e-3 cut-off passes over can be
+the deepest (runtime/engine/finder.pyx, _extreme).  The dwell's scan takes more (1.4
+SAMPLES, within 6e-5), its peaks being all equal where it is undamped."""
+
+
+def scan_density(method) -> tuple[int, int, int]:
+    """(per_step, stride, rise_per_step) of a grid's compiled scan: about 1.4 SAMPLES (28)
+    samples a period of the fastest mode in the dwell and RISE_SAMPLES in the rise, whatever
+    the method's step density (POINTS_PER_PERIOD; DP54's rule for the others): DP54 every 3rd
+    recorded point at rtol 1e-9 (the rise too), every point at 1e-8, 2 a step at 1e-6; DOP853
+    5 a step at rtol 1e-9, 3 in the rise."""
     factor, p = POINTS_PER_PERIOD.get(method.name, (1.4, 5.0))
-    k = factor * method.rtol ** (-1.0 / p) / 1.4
+    points = factor * method.rtol ** (-1.0 / p)       # recorded points a period, at least
+    k = points / 1.4
     if k >= SAMPLES:
-        return 1, int(k // SAMPLES)
-    return math.ceil(SAMPLES / k), 1
+        return 1, int(k // SAMPLES), 0
+    return math.ceil(SAMPLES / k), 1, math.ceil(RISE_SAMPLES / points)
 
 
 def model_file(name: str, scenes: bool = False) -> Path | None:
@@ -491,7 +501,7 @@ class ModelTarget(Target):
         index = {k: i for i, k in enumerate(model.state_names)}
         index.update({k: ns + i for i, k in enumerate(model.output_names)})
         i_rise = index[spec["rise_state"]] if spec.get("rise_state") else -1
-        per_step, stride = (12, 1) if reference else scan_density(sim.method)
+        per_step, stride, rise_per_step = (12, 1, 0) if reference else scan_density(sim.method)
         candidates = 1 if reference else CANDIDATES
         figures = np.empty((n, len(finder.FIGURE_COLUMNS)))
         stats = np.empty((n, len(finder.STAT_COLUMNS)), dtype=np.int64)
@@ -503,7 +513,7 @@ class ModelTarget(Target):
             b.t0, b.first_step, b.h_max, b.rtol, b.atol, b.max_steps, b.modes0, b.max_events,
             index[spec["error"]], index[spec["acceleration"]], float(spec["rise_end"]), i_rise,
             per_step, candidates, figures, stats, secs, 0, n, 4096, stride,
-            exact=sim.exact_segments, part=b.part,
+            exact=sim.exact_segments, part=b.part, rise_per_step=rise_per_step,
             run_which=np.array([index[RUN_WANTED[f.name].name] for f in extra], dtype=np.intc),
             run_kind=np.array([RUN_WANTED[f.name].kind for f in extra], dtype=np.intc),
             run_figures=run_figures)
