@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fe525f3d33b1910af9d4e8b8f518be7381136ca0196521b656d3c89be76d9118
-# Text hash: sha256:51a4e7db621ce23a8444d665f018826716fa497bdb6461979a0103bd4e2a77e2
+# Derivation key: sha256:da62fe081c84c6aa33a14192c3d115413dfc8f1a17cb78253fa38b9e15d6eb8f
+# Text hash: sha256:b361c90c35ef08b02d4f906407bdbee4e59c6b2466a8c249db74847cd395727e
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),
@@ -33,13 +33,15 @@ from libc.math cimport INFINITY, M_PI, cos, floor, pow, sin
 # The trigonometric laws evaluate sin and cos at every stage of a step, and libm's general
 # routines (any argument, several code paths, no inlining) cost several times the few
 # operations a law's argument needs: x = k pi/2 + r, |r| <= pi/4, with pi/2 split in three
-# parts of 30 bits (Cody and Waite's reduction: k * part exact for |k| < 2^23), then the
-# Taylor series of sin r to r^17 and of cos r to r^18, whose first omitted terms are below
-# 1e-19 on |r| <= pi/4, each summed in Estrin's scheme (pairs of terms side by side, then
-# pairs of pairs) rather than Horner's: the stages of a step wait on these sums, and three
-# levels of products finish sooner than eight nested ones.  Always inlined, so that sin and
-# cos of one argument share the reduction and both series.  Within 2 units in the last place of libm's
-# (tests/test_camlaws.py); beyond |x| = 1e6 libm's own.
+# parts of 30 bits (Cody and Waite's reduction: k * part exact for |k| < 2^23), then
+# polynomials in z = r^2 of least largest relative error on |r| <= pi/4, fitted for this
+# library (derive/trig_fit.py): sin r = r + r z P(z), degree 13, within 1.1e-17, and
+# cos r = 1 - z/2 + z^2 Q(z), degree 14, within 1.1e-18 (the Taylor series needs degrees 17
+# and 18 for that).  Each is summed in Estrin's scheme (pairs of terms side by side, then
+# pairs of pairs) rather than Horner's: the stages of a step wait on these sums, and a few
+# levels of products finish sooner than six nested ones.  Always inlined, so that sin and
+# cos of one argument share the reduction and both sums.  Within 2 units in the last place
+# of libm's (tests/test_camlaws.py); beyond |x| = 1e6 libm's own.
 cdef extern from *:
     """
     #include <math.h>
@@ -51,16 +53,14 @@ cdef extern from *:
         double r = ((x - kd * 1.570796325802803) - kd * 9.920935791635221e-10)
                    - kd * 5.170182981794105e-19;
         double z = r * r, z2 = z * z, z4 = z2 * z2;
-        double s = r + r * z * (((-1.0 / 6.0 + z * (1.0 / 120.0))
-                                 + z2 * (-1.0 / 5040.0 + z * (1.0 / 362880.0)))
-                                + z4 * ((-1.0 / 39916800.0 + z * (1.0 / 6227020800.0))
-                                        + z2 * (-1.0 / 1307674368000.0
-                                                + z * (1.0 / 355687428096000.0))));
-        double c = 1.0 - 0.5 * z + z2 * (((1.0 / 24.0 + z * (-1.0 / 720.0))
-                                          + z2 * (1.0 / 40320.0 + z * (-1.0 / 3628800.0)))
-                                         + z4 * ((1.0 / 479001600.0 + z * (-1.0 / 87178291200.0))
-                                                 + z2 * (1.0 / 20922789888000.0
-                                                         + z * (-1.0 / 6402373705728000.0))));
+        double s = r + r * z * ((-0.1666666666666663 + z * 0.008333333333322118)
+                                + z2 * (-0.0001984126982958973 + z * 2.755731362144534e-06)
+                                + z4 * (-2.5050747771327193e-08 + z * 1.5896230608868629e-10));
+        double c = 1.0 - 0.5 * z + z2 * ((0.041666666666666595 + z * -0.0013888888888873056)
+                                         + z2 * (2.4801587288851697e-05
+                                                 + z * -2.7557314179295777e-07)
+                                         + z4 * (2.087570084197554e-09
+                                                 + z * -1.1358536526119406e-11));
         long q = (k + (want_cos ? 1 : 0)) & 3;   /* cos x = sin(x + pi/2) */
         double v = (q & 1) ? c : s;
         return (q & 2) ? -v : v;

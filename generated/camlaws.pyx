@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fe525f3d33b1910af9d4e8b8f518be7381136ca0196521b656d3c89be76d9118
-# Text hash: sha256:214a90ee58efd00dcf6e0d29fb330f515f7bbfbd81f6635617f0de517b1f80d7
+# Derivation key: sha256:da62fe081c84c6aa33a14192c3d115413dfc8f1a17cb78253fa38b9e15d6eb8f
+# Text hash: sha256:003e4fb62c86bb55b801dfd77f077aba46ae02904a7fac2277c3f55a60b92002
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

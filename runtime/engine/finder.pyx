@@ -413,15 +413,17 @@ cdef Py_ssize_t _walk(Rec* r, double a, double b, int per_step, int which, int k
         while i < r.n and _t(r, i) <= tk:
             i += 1
         tk1 = _t(r, i) if i < r.n and _t(r, i) < b else b
+        # the step every sample in (tk, tk1] lies in, as _step_of finds it: the last point
+        # before the first one past tk
+        istep = i - 1 if i > 0 else 0
         if tk1 > tk and per_step > 1:
-            istep = _step_of(r, 0.5 * (tk + tk1))   # the step every sample inside lies in
             for q in range(1, per_step):
                 tq = tk + (tk1 - tk) * q / per_step
                 k = _sample(r, tq, istep, which, kind, S, out, cap, w1, w2, k)
         if tk1 >= b:
             more = False
         else:
-            k = _sample(r, tk1, _step_of(r, tk1), which, kind, S, out, cap, w1, w2, k)
+            k = _sample(r, tk1, istep, which, kind, S, out, cap, w1, w2, k)
         tk = tk1
     if b > a:
         k = _sample(r, b, _step_of(r, b), which, kind, S, out, cap, w1, w2, k)
