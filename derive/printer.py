@@ -15,6 +15,26 @@ MATH_FUNCTIONS = ("sin", "cos", "tan", "sqrt", "exp", "log", "fabs", "pow", "tan
                   "sinh", "cosh", "atan", "atan2", "asin", "acos", "copysign", "fmin", "fmax")
 
 
+MAX_SQUARING = 32
+"""Integer powers up to this one of a symbol are printed as products of its repeated squares
+(x^14 = x^8 x^4 x^2): one libm pow costs some twenty multiplications, and gcc computes the
+squares x^2, x^4, ... once for every power of the same symbol in a function, as they are the
+same expressions.  Within a few units in the last place of pow."""
+
+
+def _squarings(b: str, n: int) -> str:
+    """x^n as the product of the squares x^(2^k) of n's binary digits, each written out from
+    x so that every power of x shares them."""
+    squares, factors, k = [b], [], 0
+    while n >> k:
+        if k:
+            squares.append(f"({squares[-1]}*{squares[-1]})")
+        if (n >> k) & 1:
+            factors.append(squares[k])
+        k += 1
+    return "(" + "*".join(reversed(factors)) + ")"
+
+
 class CythonPrinter(C99CodePrinter):
     """C99 expressions that are also valid Cython expressions."""
 
@@ -48,6 +68,9 @@ class CythonPrinter(C99CodePrinter):
         if exp.is_Integer and 1 < abs(int(exp)) <= 4:
             b = self.parenthesize(base, sp.printing.precedence.PRECEDENCE["Mul"] + 1)
             prod = "(" + "*".join([b] * abs(int(exp))) + ")"
+            return prod if exp > 0 else f"(1.0/{prod})"
+        if exp.is_Integer and abs(int(exp)) <= MAX_SQUARING and base.is_Atom:
+            prod = _squarings(self._print(base), abs(int(exp)))
             return prod if exp > 0 else f"(1.0/{prod})"
         if exp == -1:
             return f"(1.0/{self.parenthesize(base, sp.printing.precedence.PRECEDENCE['Mul'] + 1)})"

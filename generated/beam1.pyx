@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6819f9a3c4fa9d323071b181a0545cb16806ba2b700fcc506e0e5a24a6a37bf2
-# Text hash: sha256:320c04e50d62e408f58708e63570d908ad04dc9f00dbe1f101f2b429737ae090
+# Derivation key: sha256:ab838018e69f4baf08ea7fc1e4c48cac91ce63a22fedd371f9e9e54eec88fdcc
+# Text hash: sha256:017d23f0f52edc2c1a00f5a182bf979a4204086f7c4bb2a586430107ff5fc9bd
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:c16b3556f450993e2cc9f2fd4a99c60d51901b4ed16007df3788e4358514ae33
@@ -75,7 +75,7 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport atan, cos, fabs, fmod, M_PI, pow, sin
+from libc.math cimport atan, cos, fabs, fmod, M_PI, sin
 
 from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport camlaw_d4, camlaw_eval, camlaw_segment
@@ -168,7 +168,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c2 = _c0*_c1*rayleigh
     cdef double _c3 = _c1*(a_rod*a_rod)
     cdef double _c4 = (d*d*d*d)
-    cdef double _c5 = (1.0/_c4)
+    cdef double _c5 = (1.0/(_c4))
     cdef double _c6 = 4.0*m_r
     cdef double _c7 = 0.5*_c5
     cdef double _c8 = _c5*_c6
@@ -213,13 +213,13 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c47 = 0.3333333333333333*_c5
     cdef double _c48 = _c5*m_r
     cdef double _c49 = J_r*_c26
-    cdef double _c50 = pow(r_r, 5.0)
-    cdef double _c51 = pow(r_b, 5.0)
-    cdef double _c52 = pow(S_T, 6.0)
+    cdef double _c50 = (((r_r*r_r)*(r_r*r_r))*r_r)
+    cdef double _c51 = (((r_b*r_b)*(r_b*r_b))*r_b)
+    cdef double _c52 = (((S_T*S_T)*(S_T*S_T))*(S_T*S_T))
     cdef double _c53 = _c17*_c21
     cdef double _c54 = _c18*_c20
     cdef double _c55 = 6.0*S_T*(5.0*_c11*r_r + 5.0*_c12*r_b + 10.0*_c13*_c15 + 10.0*_c14*_c16 + _c50 + _c51)
-    cdef double _c56 = pow(S_T, 5.0)
+    cdef double _c56 = (((S_T*S_T)*(S_T*S_T))*S_T)
     cdef double _c57 = _c26*_c56
     cdef double _c58 = 6.0*_c57
     cdef double _c59 = _c23*_c27
@@ -304,7 +304,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[48] = S_T*_c49  # _k48
     ctx.k[49] = -_c34  # _k49
     ctx.k[50] = _c38  # _k50
-    ctx.k[51] = 15.0*_c11*_c16 + 15.0*_c12*_c15 + 20.0*_c13*_c14 + 6.0*_c50*r_b + 6.0*_c51*r_r + pow(r_b, 6.0) + pow(r_r, 6.0)  # _k51
+    ctx.k[51] = 15.0*_c11*_c16 + 15.0*_c12*_c15 + 20.0*_c13*_c14 + 6.0*_c50*r_b + 6.0*_c51*r_r + (((r_b*r_b)*(r_b*r_b))*(r_b*r_b)) + (((r_r*r_r)*(r_r*r_r))*(r_r*r_r))  # _k51
     ctx.k[52] = _c52  # _k52
     ctx.k[53] = 3.0*_c52  # _k53
     ctx.k[54] = 3.0*_c53  # _k54
@@ -710,9 +710,9 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s46 = (_cam0[1]*_cam0[1]*_cam0[1])*_s40
     cdef double _s47 = _s16*_s46
     cdef double _s48 = _cam0[2]*_s46
-    cdef double _s49 = (1.0/(pow(_cam0[0], 6.0)*_k52 + pow(_cam0[0], 5.0)*_k57 + _cam0[0]*_k56 + _cam0[0]*_k57*_s11 + pow(_cam0[1], 6.0)*_k52 + _k51 + _k53*_s11*_s7 + _k53*_s13*_s8 + _k54*_s8 + _k55*_s11 + _k58*_s7 + _k59*_s13 + _k60*_s12 + _k61*_s14 + _k62*_s12*_s8 + _k63*_s15))
+    cdef double _s49 = (1.0/((((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*(_cam0[0]*_cam0[0]))*_k52 + (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*_cam0[0])*_k57 + _cam0[0]*_k56 + _cam0[0]*_k57*_s11 + (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*(_cam0[1]*_cam0[1]))*_k52 + _k51 + _k53*_s11*_s7 + _k53*_s13*_s8 + _k54*_s8 + _k55*_s11 + _k58*_s7 + _k59*_s13 + _k60*_s12 + _k61*_s14 + _k62*_s12*_s8 + _k63*_s15))
     cdef double _s50 = _s40*_s49
-    cdef double _s51 = pow(_cam0[1], 5.0)*_s50
+    cdef double _s51 = (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*_cam0[1])*_s50
     cdef double _s52 = _k64*_s51
     cdef double _s53 = _cam0[1]*_s50
     cdef double _s54 = _s18*_s53
@@ -1627,7 +1627,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j46 = (_cam0[0]*_cam0[0])
     cdef double _j47 = (_cam0[1]*_cam0[1])
     cdef double _j48 = _cam0[0]*_k21 + _j46*_k20 + _j47*_k20 + _k19
-    cdef double _j49 = (1.0/_j48)
+    cdef double _j49 = (1.0/(_j48))
     cdef double _j50 = (thetad*thetad)
     cdef double _j51 = _j49*_j50
     cdef double _j52 = _j51*_k47
@@ -1637,7 +1637,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j56 = _cam0[0]*_j47
     cdef double _j57 = _j46*_j47
     cdef double _j58 = _cam0[0]*_k15 + _j46*_k17 + _j47*_k14 + _j53*_k16 + _j54*_k12 + _j55*_k12 + _j56*_k16 + _j57*_k13 + _k11
-    cdef double _j59 = (1.0/_j58)
+    cdef double _j59 = (1.0/(_j58))
     cdef double _j60 = _cam0[2]*_j59
     cdef double _j61 = _j50*_k69
     cdef double _j62 = _cam0[0]*_j60
@@ -1657,11 +1657,11 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j76 = (_cam0[1]*_cam0[1]*_cam0[1])
     cdef double _j77 = _j59*_j76
     cdef double _j78 = _j50*_j77
-    cdef double _j79 = pow(_cam0[0], 5.0)
+    cdef double _j79 = (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*_cam0[0])
     cdef double _j80 = _cam0[0]*_j55
     cdef double _j81 = _j47*_j53
-    cdef double _j82 = pow(_cam0[0], 6.0)*_k52 + _cam0[0]*_k56 + pow(_cam0[1], 6.0)*_k52 + _j46*_j55*_k53 + _j46*_k58 + _j47*_j54*_k53 + _j47*_k54 + _j53*_k60 + _j54*_k59 + _j55*_k55 + _j56*_k61 + _j57*_k63 + _j79*_k57 + _j80*_k57 + _j81*_k62 + _k51
-    cdef double _j83 = (1.0/_j82)
+    cdef double _j82 = (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*(_cam0[0]*_cam0[0]))*_k52 + _cam0[0]*_k56 + (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*(_cam0[1]*_cam0[1]))*_k52 + _j46*_j55*_k53 + _j46*_k58 + _j47*_j54*_k53 + _j47*_k54 + _j53*_k60 + _j54*_k59 + _j55*_k55 + _j56*_k61 + _j57*_k63 + _j79*_k57 + _j80*_k57 + _j81*_k62 + _k51
+    cdef double _j83 = (1.0/(_j82))
     cdef double _j84 = _j50*_j83
     cdef double _j85 = _j76*_j84
     cdef double _j86 = _cam0[0]*_cam0[1]
@@ -1683,7 +1683,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j102 = _cam0[1]*_j53
     cdef double _j103 = _j102*_k138
     cdef double _j104 = _j95*_k140
-    cdef double _j105 = pow(_cam0[1], 5.0)
+    cdef double _j105 = (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*_cam0[1])
     cdef double _j106 = _j84*_k64
     cdef double _j107 = (_cam0[2]*_cam0[2])
     cdef double _j108 = _j107*_j84

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:27c573b572fcaf8719f624bc7779050ce31ed1b3a8328e3e6daa8026da280b8a
-# Text hash: sha256:0e4721882a4920d3d9c0fa9e2453633cfcae4a35a8a8ea9bae0f9767cc73bc98
+# Derivation key: sha256:d7ef7b71cd6cb2781d034f3b723534313d5b4bde7d967178b794aa53ef8c6ac9
+# Text hash: sha256:c5958e10d3ecb5fd84f08bbe91510f24a442e7cb59c1e84f3698a3c8f881d34e
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
 # Source hash: sha256:e6f5b38d9e7b1dd5f920d6438c12a96321d776db2c76dee854114e82adf9e94d
@@ -75,7 +75,7 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport atan, cos, fabs, fmod, M_PI, pow, sin
+from libc.math cimport atan, cos, fabs, fmod, M_PI, sin
 
 from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport camlaw_d4, camlaw_eval, camlaw_segment
@@ -169,10 +169,10 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c2 = _c0*_c1*rayleigh
     cdef double _c3 = _c1*(a_rod*a_rod)
     cdef double _c4 = (1.0/(d*d*d*d))
-    cdef double _c5 = pow(d, -5.0)
+    cdef double _c5 = (1.0/(((d*d)*(d*d))*d))
     cdef double _c6 = 4.0*m_r
-    cdef double _c7 = pow(d, 6.0)
-    cdef double _c8 = (1.0/_c7)
+    cdef double _c7 = (((d*d)*(d*d))*(d*d))
+    cdef double _c8 = (1.0/(_c7))
     cdef double _c9 = 24.0*m_r
     cdef double _c10 = 4.0*_c3
     cdef double _c11 = 9.0*_c2
@@ -221,7 +221,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c54 = 2.0*r_r
     cdef double _c55 = _c40*_c53 + _c53*_c54
     cdef double _c56 = (d*d)
-    cdef double _c57 = (1.0/_c56)
+    cdef double _c57 = (1.0/(_c56))
     cdef double _c58 = (1.0/(d*d*d))
     cdef double _c59 = 3.0*_c58
     cdef double _c60 = 2.0*_c57
@@ -244,12 +244,12 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c77 = _c64*_c8
     cdef double _c78 = 6.0*_c3
     cdef double _c79 = J_r*S_T
-    cdef double _c80 = 6.0*pow(r_r, 5.0)
-    cdef double _c81 = 6.0*pow(r_b, 5.0)
+    cdef double _c80 = 6.0*(((r_r*r_r)*(r_r*r_r))*r_r)
+    cdef double _c81 = 6.0*(((r_b*r_b)*(r_b*r_b))*r_b)
     cdef double _c82 = 15.0*_c15
     cdef double _c83 = 20.0*_c18
     cdef double _c84 = 15.0*_c14
-    cdef double _c85 = pow(S_T, 6.0)
+    cdef double _c85 = (((S_T*S_T)*(S_T*S_T))*(S_T*S_T))
     cdef double _c86 = 3.0*_c25
     cdef double _c87 = _c16*_c25
     cdef double _c88 = _c18*_c26
@@ -260,7 +260,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c93 = 30.0*S_T
     cdef double _c94 = 60.0*S_T
     cdef double _c95 = S_T*_c80 + S_T*_c81 + _c14*_c93*r_r + _c15*_c93*r_b + _c16*_c21*_c94 + _c18*_c20*_c94
-    cdef double _c96 = pow(S_T, 5.0)
+    cdef double _c96 = (((S_T*S_T)*(S_T*S_T))*S_T)
     cdef double _c97 = 6.0*_c96
     cdef double _c98 = _c97*r_b
     cdef double _c99 = _c97*r_r
@@ -435,7 +435,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[93] = _c79*r_b + _c79*r_r  # _k93
     ctx.k[94] = -_c46  # _k94
     ctx.k[95] = _c52  # _k95
-    ctx.k[96] = _c16*_c83 + _c20*_c84 + _c21*_c82 + _c80*r_b + _c81*r_r + pow(r_b, 6.0) + pow(r_r, 6.0)  # _k96
+    ctx.k[96] = _c16*_c83 + _c20*_c84 + _c21*_c82 + _c80*r_b + _c81*r_r + (((r_b*r_b)*(r_b*r_b))*(r_b*r_b)) + (((r_r*r_r)*(r_r*r_r))*(r_r*r_r))  # _k96
     ctx.k[97] = _c85  # _k97
     ctx.k[98] = 3.0*_c85  # _k98
     ctx.k[99] = _c14*_c86 + _c15*_c86 + _c37*_c87 + 12.0*_c88 + 18.0*_c89  # _k99
@@ -916,7 +916,7 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s6 = _k10*xE + _k11*_s2 + _k12
     cdef double _s7 = b2*xE
     cdef double _s8 = _k5*_s2*(_k9*_s5 + 0.2*_s6*_s7)
-    cdef double _s9 = pow(xE, 5.0)
+    cdef double _s9 = (((xE*xE)*(xE*xE))*xE)
     cdef double _s10 = _k17*_s2
     cdef double _s11 = _k15*_s0*(_k20*b1*(_k12 + _k19*xE + _s10) + 0.125*_s7*(_k16*xE + _k18 + _s10))
     cdef double _s12 = (b1*b1)
@@ -979,8 +979,8 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s69 = (_cam0[1]*_cam0[1]*_cam0[1])
     cdef double _s70 = _s63*_s69
     cdef double _s71 = _s25*_s70
-    cdef double _s72 = _s63/(pow(_cam0[0], 6.0)*_k97 + pow(_cam0[0], 5.0)*_k102 + _cam0[0]*_k101 + _cam0[0]*_k102*_s20 + pow(_cam0[1], 6.0)*_k97 + _k100*_s20 + _k103*_s16 + _k104*_s22 + _k105*_s21 + _k106*_s23 + _k107*_s17*_s21 + _k108*_s24 + _k96 + _k98*_s16*_s20 + _k98*_s17*_s22 + _k99*_s17)
-    cdef double _s73 = pow(_cam0[1], 5.0)*_s72
+    cdef double _s72 = _s63/((((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*(_cam0[0]*_cam0[0]))*_k97 + (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*_cam0[0])*_k102 + _cam0[0]*_k101 + _cam0[0]*_k102*_s20 + (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*(_cam0[1]*_cam0[1]))*_k97 + _k100*_s20 + _k103*_s16 + _k104*_s22 + _k105*_s21 + _k106*_s23 + _k107*_s17*_s21 + _k108*_s24 + _k96 + _k98*_s16*_s20 + _k98*_s17*_s22 + _k99*_s17)
+    cdef double _s73 = (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*_cam0[1])*_s72
     cdef double _s74 = _k109*_s73
     cdef double _s75 = _cam0[1]*_s72
     cdef double _s76 = _s27*_s75
@@ -1034,7 +1034,7 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     _A[34] = 0.0
     _A[35] = 0.0
     _b[0] = _k50*_s46 + _k50*_s55 + _k51*_s48 + _k52*_s53*_s56 + _k53*_s36 + _k54*_s13 + _k55*_s49 + _k56*_s51 + _k57*_s58 + _k58*_s60 + _k59*_s2*_s47 + _k60*_s52 + _k61*_s13*_s53
-    _b[1] = _k54*_s56 + _k62*_s51 + _k62*_s58 + _k63*_s49 + _k64*_s60 + _k65*_s54 + _k66*_s50*pow(xE, 6.0) + _k67*_s57*_s9 + _k68*_s47*_s9 + _k69*_s3*_s59 + _k70*_s48 + _k71*_s46 + _k72*_s55
+    _b[1] = _k54*_s56 + _k62*_s51 + _k62*_s58 + _k63*_s49 + _k64*_s60 + _k65*_s54 + _k66*_s50*(((xE*xE)*(xE*xE))*(xE*xE)) + _k67*_s57*_s9 + _k68*_s47*_s9 + _k69*_s3*_s59 + _k70*_s48 + _k71*_s46 + _k72*_s55
     _b[2] = _k51*_s62*xE + _k73*_s53 + _k74*_s15*_s53 + _k74*_s46*b2 + _k75*_s12 + _k76*_s13*_s59 + _k77*_s47*_s54 + _k77*_s52*b1 + _k78*_s47*_s56 + _k79*_s61 + _k80*_s36*b2 + _k81*_s2*_s62 + _k82*_s14*_s3*_s53 + _k83*_s62 + _k84*_s54*_s59 + _k85*_s46*b1 + _k85*_s49*b2 + _k86*_s51*b2 + _k87*_s53*_s61 + _k88*_s48*b1 + _k89*_s50*_s54 + _k90*_s13*_s47 + _k90*_s36*_s57 + _k90*_s50*_s56 + _k91*_s36*_s47
     _b[3] = _cam0[0]*_k115*_s80 + _cam0[0]*_k121*_s79 + _cam0[0]*_k122*_s67 + _cam0[0]*_k123*_s77 + _cam0[0]*_k124*_s76 + _cam0[0]*_k92*_s65 + _cam0[0]*_k95*_s71 + _cam0[0]*_s31*_s64 + _cam0[0]*_s74 + _cam0[2]*_s26*_s70 + _cam0[2]*_s74 + _k109*_s16*_s77 + _k109*_s21*_s76 + _k110*_s73 + _k111*_s17*_s25*_s64 + _k112*_s16*_s68 + _k112*_s29*_s66 + _k113*_s28*_s66 + _k114*_s68 + _k115*_s16*_s79 + _k116*_s79 + _k117*_s80 + _k118*_s67 + _k119*_s76 + _k120*_s77 + _k125*_s33*_s75 + _k44*_s71 + _k93*_s65 + _k94*_s19*_s66 + _s16*_s32*_s66 + _s23*_s26*_s64
     _b[4] = _k126*_s38 + _k127*_s59 + _k131*_s63*_s85 + _k132*_s47*xE + _k133*_s2*_s50 + _k133*_s53*_s7 + _s38*_s81 + _s38*_s82 + _s38*_s84 + _s38*_s86 + _s40*_s87 + _s83*_s85 + _s87*_s88
@@ -2155,7 +2155,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j45 = _k91*xEd
     cdef double _j46 = _j1*_j43*_k90 + _j39*_acc[4] + _j40*b2 + _j41*_k76 + _j42*_k84 + _j44*_j45 + _k53*b1
     cdef double _j47 = _j0*_k59
-    cdef double _j48 = pow(xE, 5.0)
+    cdef double _j48 = (((xE*xE)*(xE*xE))*xE)
     cdef double _j49 = _j48*_k56
     cdef double _j50 = _j9*b2d
     cdef double _j51 = _j3*b1d
@@ -2186,7 +2186,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j76 = _j4*b1
     cdef double _j77 = _j0*_k159
     cdef double _j78 = _j31*_k90 + _j40*b1 + _j58*_k168 + _j77*_acc[4]
-    cdef double _j79 = _k66*pow(xE, 6.0)
+    cdef double _j79 = _k66*(((xE*xE)*(xE*xE))*(xE*xE))
     cdef double _j80 = _j48*b2d
     cdef double _j81 = _j37*b1
     cdef double _j82 = _j73*b2
@@ -2223,7 +2223,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j113 = (_cam0[0]*_cam0[0])
     cdef double _j114 = (_cam0[1]*_cam0[1])
     cdef double _j115 = _cam0[0]*_k37 + _j113*_k36 + _j114*_k36 + _k35
-    cdef double _j116 = (1.0/_j115)
+    cdef double _j116 = (1.0/(_j115))
     cdef double _j117 = (thetad*thetad)
     cdef double _j118 = _j116*_j117
     cdef double _j119 = _j118*_k92
@@ -2233,7 +2233,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j123 = _cam0[0]*_j114
     cdef double _j124 = _j113*_j114
     cdef double _j125 = _cam0[0]*_k31 + _j113*_k33 + _j114*_k30 + _j120*_k32 + _j121*_k28 + _j122*_k28 + _j123*_k32 + _j124*_k29 + _k27
-    cdef double _j126 = (1.0/_j125)
+    cdef double _j126 = (1.0/(_j125))
     cdef double _j127 = _cam0[2]*_j126
     cdef double _j128 = _j117*_k114
     cdef double _j129 = _cam0[0]*_j127
@@ -2251,11 +2251,11 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j141 = _j117*_k94
     cdef double _j142 = _cam0[3]*_j126
     cdef double _j143 = (_cam0[1]*_cam0[1]*_cam0[1])
-    cdef double _j144 = pow(_cam0[0], 5.0)
+    cdef double _j144 = (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*_cam0[0])
     cdef double _j145 = _cam0[0]*_j122
     cdef double _j146 = _j114*_j120
-    cdef double _j147 = pow(_cam0[0], 6.0)*_k97 + _cam0[0]*_k101 + pow(_cam0[1], 6.0)*_k97 + _j113*_j122*_k98 + _j113*_k103 + _j114*_j121*_k98 + _j114*_k99 + _j120*_k105 + _j121*_k104 + _j122*_k100 + _j123*_k106 + _j124*_k108 + _j144*_k102 + _j145*_k102 + _j146*_k107 + _k96
-    cdef double _j148 = (1.0/_j147)
+    cdef double _j147 = (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*(_cam0[0]*_cam0[0]))*_k97 + _cam0[0]*_k101 + (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*(_cam0[1]*_cam0[1]))*_k97 + _j113*_j122*_k98 + _j113*_k103 + _j114*_j121*_k98 + _j114*_k99 + _j120*_k105 + _j121*_k104 + _j122*_k100 + _j123*_k106 + _j124*_k108 + _j144*_k102 + _j145*_k102 + _j146*_k107 + _k96
+    cdef double _j148 = (1.0/(_j147))
     cdef double _j149 = _j117*_j148
     cdef double _j150 = _j143*_j149
     cdef double _j151 = _j126*_j143
@@ -2279,7 +2279,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j169 = _cam0[1]*_j120
     cdef double _j170 = _j169*_k216
     cdef double _j171 = _j162*_k218
-    cdef double _j172 = pow(_cam0[1], 5.0)
+    cdef double _j172 = (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*_cam0[1])
     cdef double _j173 = _j149*_k109
     cdef double _j174 = (_cam0[2]*_cam0[2])
     cdef double _j175 = _j149*_j174

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b27789f9a18061702291fb6fa9d186486c900cf6bb0cd050e30aaabcddace9de
-# Text hash: sha256:c0ab8fd0f55a43462edbe834105bacc4d1e1b8a67702e19b6a86f26ec9652fc5
+# Derivation key: sha256:b24e4b0c5b132d4b5d357bec81f52c7eda29ae55b3d57ac010d6c6f6c26f9044
+# Text hash: sha256:6214c5134b1a18ec24a053247c23c3b6b38e5c7595acbc97c3e836cf73476068
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:a4c10ed1c7eeed79759d12da9812dfb2e08f6d7ceaf7defeb99a53905305f1ad
@@ -75,7 +75,7 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport atan, cos, fabs, fmod, M_PI, pow, sin
+from libc.math cimport atan, cos, fabs, fmod, M_PI, sin
 
 from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport camlaw_d4, camlaw_eval, camlaw_segment
@@ -170,17 +170,17 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c2 = _c0*_c1*rayleigh
     cdef double _c3 = _c1*(a_rod*a_rod)
     cdef double _c4 = (1.0/(d*d*d*d))
-    cdef double _c5 = pow(d, -5.0)
-    cdef double _c6 = pow(d, -6.0)
+    cdef double _c5 = (1.0/(((d*d)*(d*d))*d))
+    cdef double _c6 = (1.0/(((d*d)*(d*d))*(d*d)))
     cdef double _c7 = 4.0*m_r
     cdef double _c8 = (d*d)
     cdef double _c9 = 24.0*m_r
     cdef double _c10 = 4.0*_c3
     cdef double _c11 = 9.0*_c2
     cdef double _c12 = 3.0*_c3
-    cdef double _c13 = pow(d, -7.0)
+    cdef double _c13 = (1.0/(((d*d)*(d*d))*(d*d)*d))
     cdef double _c14 = 20.0*m_r
-    cdef double _c15 = pow(d, -8.0)
+    cdef double _c15 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))))
     cdef double _c16 = 12.0*m_r
     cdef double _c17 = 2.0*_c3
     cdef double _c18 = 3.0*_c2
@@ -248,7 +248,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c80 = J_r*_c60
     cdef double _c81 = 2.0*r_r
     cdef double _c82 = _c67*_c80 + _c80*_c81
-    cdef double _c83 = (1.0/_c8)
+    cdef double _c83 = (1.0/(_c8))
     cdef double _c84 = (1.0/(d*d*d))
     cdef double _c85 = 4.0*_c4
     cdef double _c86 = 3.0*_c84
@@ -282,12 +282,12 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c114 = 2.0*_c32
     cdef double _c115 = 14.4*_c37
     cdef double _c116 = J_r*S_T
-    cdef double _c117 = 6.0*pow(r_r, 5.0)
-    cdef double _c118 = 6.0*pow(r_b, 5.0)
+    cdef double _c117 = 6.0*(((r_r*r_r)*(r_r*r_r))*r_r)
+    cdef double _c118 = 6.0*(((r_b*r_b)*(r_b*r_b))*r_b)
     cdef double _c119 = 15.0*_c42
     cdef double _c120 = 20.0*_c45
     cdef double _c121 = 15.0*_c41
-    cdef double _c122 = pow(S_T, 6.0)
+    cdef double _c122 = (((S_T*S_T)*(S_T*S_T))*(S_T*S_T))
     cdef double _c123 = 3.0*_c52
     cdef double _c124 = _c43*_c52
     cdef double _c125 = _c45*_c53
@@ -298,7 +298,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c130 = 30.0*S_T
     cdef double _c131 = 60.0*S_T
     cdef double _c132 = S_T*_c117 + S_T*_c118 + _c130*_c41*r_r + _c130*_c42*r_b + _c131*_c43*_c48 + _c131*_c45*_c47
-    cdef double _c133 = pow(S_T, 5.0)
+    cdef double _c133 = (((S_T*S_T)*(S_T*S_T))*S_T)
     cdef double _c134 = 6.0*_c133
     cdef double _c135 = _c134*r_b
     cdef double _c136 = _c134*r_r
@@ -578,7 +578,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[181] = _c116*r_b + _c116*r_r  # _k181
     ctx.k[182] = -_c73  # _k182
     ctx.k[183] = _c79  # _k183
-    ctx.k[184] = _c117*r_b + _c118*r_r + _c119*_c48 + _c120*_c43 + _c121*_c47 + pow(r_b, 6.0) + pow(r_r, 6.0)  # _k184
+    ctx.k[184] = _c117*r_b + _c118*r_r + _c119*_c48 + _c120*_c43 + _c121*_c47 + (((r_b*r_b)*(r_b*r_b))*(r_b*r_b)) + (((r_r*r_r)*(r_r*r_r))*(r_r*r_r))  # _k184
     ctx.k[185] = _c122  # _k185
     ctx.k[186] = 3.0*_c122  # _k186
     ctx.k[187] = _c123*_c41 + _c123*_c42 + _c124*_c64 + 12.0*_c125 + 18.0*_c126  # _k187
@@ -1306,7 +1306,7 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s3 = (xE*xE*xE*xE)
     cdef double _s4 = _k5*_s3*(_k3*_s2 + _k4 + _s1)
     cdef double _s5 = _k6*_s2 + _s1
-    cdef double _s6 = pow(xE, 5.0)
+    cdef double _s6 = (((xE*xE)*(xE*xE))*xE)
     cdef double _s7 = _k8*_s6
     cdef double _s8 = _s7*(_k7 + _s5)
     cdef double _s9 = _k11*_s2
@@ -1315,10 +1315,10 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s12 = _k13*xE + _k15 + _s11
     cdef double _s13 = _s2*b3
     cdef double _s14 = _k8*_s2*(_k12*b1*(_k10 + _k9*xE + _s9) + _k19*_s10*(_k16*xE + _k17*_s2 + _k18) + 0.16666666666666666*_s12*_s13)
-    cdef double _s15 = pow(xE, 6.0)
+    cdef double _s15 = (((xE*xE)*(xE*xE))*(xE*xE))
     cdef double _s16 = _k23*_s15*(_k21 + _k22*_s2 + _s1)
     cdef double _s17 = _k23*_s0*(_k25*b1*(_k18 + _k24*xE + _s11) + _k29*_s10*_s12 + 0.02857142857142857*_s13*(_k26*xE + _k27*_s2 + _k28))
-    cdef double _s18 = pow(xE, 7.0)
+    cdef double _s18 = (((xE*xE)*(xE*xE))*(xE*xE)*xE)
     cdef double _s19 = _k43*_s3*(_k36*b1*(_k33*xE + _k34*_s2 + _k35) + _k42*_s10*(_k39*xE + _k40*_s2 + _k41) + 105.0*_s13*(_k37*xE + _k38 + _s9))
     cdef double _s20 = (b1*b1)
     cdef double _s21 = _s20*xE
@@ -1409,8 +1409,8 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s106 = (_cam0[1]*_cam0[1]*_cam0[1])
     cdef double _s107 = _s100*_s106
     cdef double _s108 = _s107*_s46
-    cdef double _s109 = _s100/(pow(_cam0[0], 6.0)*_k185 + pow(_cam0[0], 5.0)*_k190 + _cam0[0]*_k189 + _cam0[0]*_k190*_s41 + pow(_cam0[1], 6.0)*_k185 + _k184 + _k186*_s37*_s41 + _k186*_s38*_s43 + _k187*_s38 + _k188*_s41 + _k191*_s37 + _k192*_s43 + _k193*_s42 + _k194*_s44 + _k195*_s38*_s42 + _k196*_s45)
-    cdef double _s110 = pow(_cam0[1], 5.0)*_s109
+    cdef double _s109 = _s100/((((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*(_cam0[0]*_cam0[0]))*_k185 + (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*_cam0[0])*_k190 + _cam0[0]*_k189 + _cam0[0]*_k190*_s41 + (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*(_cam0[1]*_cam0[1]))*_k185 + _k184 + _k186*_s37*_s41 + _k186*_s38*_s43 + _k187*_s38 + _k188*_s41 + _k191*_s37 + _k192*_s43 + _k193*_s42 + _k194*_s44 + _k195*_s38*_s42 + _k196*_s45)
+    cdef double _s110 = (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*_cam0[1])*_s109
     cdef double _s111 = _k197*_s110
     cdef double _s112 = _cam0[1]*_s109
     cdef double _s113 = _s112*_s48
@@ -1478,7 +1478,7 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     _A[48] = 0.0
     _b[0] = _k100*_s79 + _k101*_s81 + _k102*_s2*_s67 + _k104*_s69 + _k105*_s0*_s70 + _k106*_s27*_s77 + _k88*_s83 + _k89*_s71 + _k90*_s72 + _k90*_s84 + _k91*_s73 + _k92*_s86 + _k93*_s58 + _k94*_s28 + _k95*_s27 + _k96*_s74 + _k97*_s87 + _k98*_s75 + _k99*_s76 + _s77*_s82
     _b[1] = _k107*_s87 + _k108*_s76 + _k109*_s75 + _k109*_s79 + _k110*_s74 + _k111*_s81 + _k112*_s22 + _k114*_s89 + _k115*_s93 + _k116*_s90 + _k117*_s95 + _k118*_s91 + _k119*_s97 + _k120*_s73 + _k121*_s71 + _k122*_s83 + _k123*_s72 + _k124*_s84 + _k95*_s85 + _s88*b3
-    _b[2] = _k125*_s93 + _k126*_s90 + _k127*_s89 + _k127*_s95 + _k128*_s91 + _k129*_s97 + _k130*_s24 + _k131*_s92*b2 + _k132*_s68*pow(xE, 8.0) + _k133*_s18*_s77*b3 + _k134*_s18*_s70 + _k135*_s15*_s67 + _k136*_s6*_s96 + _k137*_s74 + _k138*_s76 + _k139*_s87 + _k140*_s75 + _k141*_s79 + _k94*_s80 + _s88*b2
+    _b[2] = _k125*_s93 + _k126*_s90 + _k127*_s89 + _k127*_s95 + _k128*_s91 + _k129*_s97 + _k130*_s24 + _k131*_s92*b2 + _k132*_s68*((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))) + _k133*_s18*_s77*b3 + _k134*_s18*_s70 + _k135*_s15*_s67 + _k136*_s6*_s96 + _k137*_s74 + _k138*_s76 + _k139*_s87 + _k140*_s75 + _k141*_s79 + _k94*_s80 + _s88*b2
     _b[3] = _k103*_s68*_s80 + _k142*_s77 + _k143*_s36*_s77 + _k144*_s35*_s77 + _k144*_s72*b2 + _k145*_s20 + _k146*_s29*_s77 + _k147*_s28*_s96 + _k148*_s76*b3 + _k149*_s24*_s70 + _k149*_s71*b2 + _k150*_s98 + _k151*_s27*_s96 + _k152*_s23*_s68 + _k152*_s74*b3 + _k153*_s22*_s67 + _k153*_s70*_s80 + _k154*_s67*_s85 + _k155*_s99 + _k156*_s28*b2 + _k157*_s34*_s77 + _k158*_s85*b3 + _k159*_s58*b2 + _k160*_s30*_s77 + _k161*_s32*_s77 + _k162*_s20*_s77 + _k163*_s77*_s98 + _k164*_s25*_s77 + _k165*_s97*b3 + _k166*_s22*_s96 + _k167*_s76*b2 + _k167*_s89*b3 + _k168*_s23*_s70 + _k168*_s74*b2 + _k169*_s90*b3 + _k170*_s75*b2 + _k171*_s24*_s67 + _k171*_s71*b1 + _k172*_s77*_s99 + _k173*_s67*_s80 + _k174*_s28*_s94 + _k175*_s69*b2 + _k175*_s72*b3 + _k176*_s22*_s70 + _k176*_s86*b3 + _k177*_s27*_s67 + _k177*_s58*_s94 + _k177*_s70*_s85 + _k178*_s58*_s67 + _k179*_s24*_s68 + _k91*_s21*_s77 + _s67*_s82
     _b[4] = _cam0[0]*_k180*_s102 + _cam0[0]*_k183*_s108 + _cam0[0]*_k203*_s117 + _cam0[0]*_k209*_s116 + _cam0[0]*_k210*_s104 + _cam0[0]*_k211*_s114 + _cam0[0]*_k212*_s113 + _cam0[0]*_s101*_s52 + _cam0[0]*_s111 + _cam0[2]*_s107*_s47 + _cam0[2]*_s111 + _k181*_s102 + _k182*_s103*_s40 + _k197*_s113*_s42 + _k197*_s114*_s37 + _k198*_s110 + _k199*_s101*_s38*_s46 + _k200*_s103*_s50 + _k200*_s105*_s37 + _k201*_s103*_s49 + _k202*_s105 + _k203*_s116*_s37 + _k204*_s116 + _k205*_s117 + _k206*_s104 + _k207*_s113 + _k208*_s114 + _k213*_s112*_s54 + _k80*_s108 + _s101*_s44*_s47 + _s103*_s37*_s53
     _b[5] = _k214*_s60 + _k215*_s96 + _k219*_s100*_s122 + _k220*_s67*xE + _k221*_s10*_s77 + _k221*_s2*_s70 + _k222*_s0*_s68 + _k223*_s13*_s77 + _s118*_s60 + _s119*_s60 + _s120*_s122 + _s121*_s60 + _s123*_s60 + _s124*_s125 + _s124*_s62
@@ -3083,7 +3083,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j13 = _j3*_k17 + _k16*xE + _k18
     cdef double _j14 = _j13*_k232
     cdef double _j15 = _j0*_k94
-    cdef double _j16 = pow(xE, 5.0)
+    cdef double _j16 = (((xE*xE)*(xE*xE))*xE)
     cdef double _j17 = _j1*_j16
     cdef double _j18 = _j3*_k14
     cdef double _j19 = _j18 + _k13*xE + _k15
@@ -3141,7 +3141,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j71 = _k178*xEd
     cdef double _j72 = _j63*b3 + _j64*b2 + _j65*_acc[5] + _j66*_k151 + _j67*_k166 + _j68*_j69 + _j70*_j71 + _k93*b1
     cdef double _j73 = _j3*_k102
-    cdef double _j74 = pow(xE, 6.0)
+    cdef double _j74 = (((xE*xE)*(xE*xE))*(xE*xE))
     cdef double _j75 = _j74*_k99
     cdef double _j76 = _j10*b3d
     cdef double _j77 = _j0*b2d
@@ -3189,7 +3189,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j119 = _j3*_k260
     cdef double _j120 = _j17*b3
     cdef double _j121 = _j118*b3 + _j119*_acc[5] + _j120*_k164 + _j49*_k174 + _j54*_k177 + _j55*_k146 + _j64*b1 + _j91*_k269
-    cdef double _j122 = pow(xE, 7.0)
+    cdef double _j122 = (((xE*xE)*(xE*xE))*(xE*xE)*xE)
     cdef double _j123 = _j122*_k116
     cdef double _j124 = _j74*b3d
     cdef double _j125 = _j74*b2d
@@ -3221,7 +3221,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j151 = _j0*_k278
     cdef double _j152 = _j10*b3
     cdef double _j153 = _j118*b2 + _j151*_acc[5] + _j152*_k290 + _j56*_k103 + _j63*b1
-    cdef double _j154 = _k132*pow(xE, 8.0)
+    cdef double _j154 = _k132*((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE))))
     cdef double _j155 = _j122*b3d
     cdef double _j156 = _j112*b2
     cdef double _j157 = _j137*b3
@@ -3272,7 +3272,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j202 = (_cam0[0]*_cam0[0])
     cdef double _j203 = (_cam0[1]*_cam0[1])
     cdef double _j204 = _cam0[0]*_k73 + _j202*_k72 + _j203*_k72 + _k71
-    cdef double _j205 = (1.0/_j204)
+    cdef double _j205 = (1.0/(_j204))
     cdef double _j206 = (thetad*thetad)
     cdef double _j207 = _j205*_j206
     cdef double _j208 = _j207*_k180
@@ -3282,7 +3282,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j212 = _cam0[0]*_j203
     cdef double _j213 = _j202*_j203
     cdef double _j214 = _cam0[0]*_k67 + _j202*_k69 + _j203*_k66 + _j209*_k68 + _j210*_k64 + _j211*_k64 + _j212*_k68 + _j213*_k65 + _k63
-    cdef double _j215 = (1.0/_j214)
+    cdef double _j215 = (1.0/(_j214))
     cdef double _j216 = _cam0[2]*_j215
     cdef double _j217 = _j206*_k202
     cdef double _j218 = _cam0[0]*_j216
@@ -3300,11 +3300,11 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j230 = _cam0[1]*_j215
     cdef double _j231 = _cam0[3]*_j215
     cdef double _j232 = (_cam0[1]*_cam0[1]*_cam0[1])
-    cdef double _j233 = pow(_cam0[0], 5.0)
+    cdef double _j233 = (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*_cam0[0])
     cdef double _j234 = _cam0[0]*_j211
     cdef double _j235 = _j203*_j209
-    cdef double _j236 = pow(_cam0[0], 6.0)*_k185 + _cam0[0]*_k189 + pow(_cam0[1], 6.0)*_k185 + _j202*_j211*_k186 + _j202*_k191 + _j203*_j210*_k186 + _j203*_k187 + _j209*_k193 + _j210*_k192 + _j211*_k188 + _j212*_k194 + _j213*_k196 + _j233*_k190 + _j234*_k190 + _j235*_k195 + _k184
-    cdef double _j237 = (1.0/_j236)
+    cdef double _j236 = (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*(_cam0[0]*_cam0[0]))*_k185 + _cam0[0]*_k189 + (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*(_cam0[1]*_cam0[1]))*_k185 + _j202*_j211*_k186 + _j202*_k191 + _j203*_j210*_k186 + _j203*_k187 + _j209*_k193 + _j210*_k192 + _j211*_k188 + _j212*_k194 + _j213*_k196 + _j233*_k190 + _j234*_k190 + _j235*_k195 + _k184
+    cdef double _j237 = (1.0/(_j236))
     cdef double _j238 = _j206*_j237
     cdef double _j239 = _j232*_j238
     cdef double _j240 = _j215*_j232
@@ -3328,7 +3328,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j258 = _cam0[1]*_j209
     cdef double _j259 = _j258*_k383
     cdef double _j260 = _j251*_k385
-    cdef double _j261 = pow(_cam0[1], 5.0)
+    cdef double _j261 = (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*_cam0[1])
     cdef double _j262 = _j238*_k197
     cdef double _j263 = (_cam0[2]*_cam0[2])
     cdef double _j264 = _j238*_j263

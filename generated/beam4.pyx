@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f67fe58e97a9e005db56da9910488b76ca2e5b9d5a85f59e5e56bc989ece1c9b
-# Text hash: sha256:353784b8b4d6023fb65a3ff8414a0ddc5257297df221eb7c7d6f836f815bce6d
+# Derivation key: sha256:b2ad39061ec8829a00bcf48674ac27d653e03e394339334c159af51bccd418a7
+# Text hash: sha256:37e8734925e1ca6a228f6efa56f03a95af0981a2064df7cb64e8a4b38329a4dd
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:64a7efcd9334b75fa69119f83904c9f9c8d47957738123d27eab23d9cd1693f4
@@ -75,7 +75,7 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport atan, cos, fabs, fmod, M_PI, pow, sin
+from libc.math cimport atan, cos, fabs, fmod, M_PI, sin
 
 from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport camlaw_d4, camlaw_eval, camlaw_segment
@@ -171,9 +171,9 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c2 = _c0*_c1*rayleigh
     cdef double _c3 = _c1*(a_rod*a_rod)
     cdef double _c4 = (1.0/(d*d*d*d))
-    cdef double _c5 = pow(d, -5.0)
-    cdef double _c6 = pow(d, -6.0)
-    cdef double _c7 = pow(d, -7.0)
+    cdef double _c5 = (1.0/(((d*d)*(d*d))*d))
+    cdef double _c6 = (1.0/(((d*d)*(d*d))*(d*d)))
+    cdef double _c7 = (1.0/(((d*d)*(d*d))*(d*d)*d))
     cdef double _c8 = 4.0*m_r
     cdef double _c9 = (d*d*d)
     cdef double _c10 = 5.0*_c3
@@ -183,20 +183,20 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c14 = 24.0*m_r
     cdef double _c15 = 4.0*_c3
     cdef double _c16 = 9.0*_c2
-    cdef double _c17 = pow(d, -8.0)
+    cdef double _c17 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))))
     cdef double _c18 = 20.0*m_r
     cdef double _c19 = 8.0*m_r
     cdef double _c20 = 4.0*_c2
     cdef double _c21 = 140.0*m_r
     cdef double _c22 = 20.0*_c3
     cdef double _c23 = 0.0035714285714285713*_c17
-    cdef double _c24 = pow(d, -9.0)
+    cdef double _c24 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))*d))
     cdef double _c25 = 36.0*_c2
     cdef double _c26 = 12.0*m_r
     cdef double _c27 = 2.0*_c3
     cdef double _c28 = 3.0*_c2
     cdef double _c29 = 0.0015873015873015873*_c24
-    cdef double _c30 = pow(d, -10.0)
+    cdef double _c30 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))*(d*d)))
     cdef double _c31 = 40.0*m_r
     cdef double _c32 = 10.0*_c2
     cdef double _c33 = _c4*_c8
@@ -274,8 +274,8 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c105 = J_r*_c85
     cdef double _c106 = 2.0*r_r
     cdef double _c107 = _c105*_c106 + _c105*_c92
-    cdef double _c108 = (1.0/_c13)
-    cdef double _c109 = (1.0/_c9)
+    cdef double _c108 = (1.0/(_c13))
+    cdef double _c109 = (1.0/(_c9))
     cdef double _c110 = 5.0*_c5
     cdef double _c111 = 4.0*_c4
     cdef double _c112 = 3.0*_c109
@@ -315,12 +315,12 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c146 = 28.571428571428573*_c58
     cdef double _c147 = 14.4*_c57
     cdef double _c148 = J_r*S_T
-    cdef double _c149 = 6.0*pow(r_r, 5.0)
-    cdef double _c150 = 6.0*pow(r_b, 5.0)
+    cdef double _c149 = 6.0*(((r_r*r_r)*(r_r*r_r))*r_r)
+    cdef double _c150 = 6.0*(((r_b*r_b)*(r_b*r_b))*r_b)
     cdef double _c151 = 15.0*_c67
     cdef double _c152 = 20.0*_c70
     cdef double _c153 = 15.0*_c66
-    cdef double _c154 = pow(S_T, 6.0)
+    cdef double _c154 = (((S_T*S_T)*(S_T*S_T))*(S_T*S_T))
     cdef double _c155 = 3.0*_c77
     cdef double _c156 = _c68*_c77
     cdef double _c157 = _c70*_c78
@@ -331,7 +331,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c162 = 30.0*S_T
     cdef double _c163 = 60.0*S_T
     cdef double _c164 = S_T*_c149 + S_T*_c150 + _c162*_c66*r_r + _c162*_c67*r_b + _c163*_c68*_c73 + _c163*_c70*_c72
-    cdef double _c165 = pow(S_T, 5.0)
+    cdef double _c165 = (((S_T*S_T)*(S_T*S_T))*S_T)
     cdef double _c166 = 6.0*_c165
     cdef double _c167 = _c166*r_b
     cdef double _c168 = _c166*r_r
@@ -737,7 +737,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[291] = _c148*r_b + _c148*r_r  # _k291
     ctx.k[292] = -_c98  # _k292
     ctx.k[293] = _c104  # _k293
-    ctx.k[294] = _c149*r_b + _c150*r_r + _c151*_c73 + _c152*_c68 + _c153*_c72 + pow(r_b, 6.0) + pow(r_r, 6.0)  # _k294
+    ctx.k[294] = _c149*r_b + _c150*r_r + _c151*_c73 + _c152*_c68 + _c153*_c72 + (((r_b*r_b)*(r_b*r_b))*(r_b*r_b)) + (((r_r*r_r)*(r_r*r_r))*(r_r*r_r))  # _k294
     ctx.k[295] = _c154  # _k295
     ctx.k[296] = 3.0*_c154  # _k296
     ctx.k[297] = _c155*_c66 + _c155*_c67 + _c156*_c89 + 12.0*_c157 + 18.0*_c158  # _k297
@@ -1791,11 +1791,11 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s3 = (xE*xE*xE*xE)
     cdef double _s4 = _k5*_s3*(_k3*_s2 + _k4 + _s1)
     cdef double _s5 = _k6*_s2 + _s1
-    cdef double _s6 = pow(xE, 5.0)
+    cdef double _s6 = (((xE*xE)*(xE*xE))*xE)
     cdef double _s7 = _k8*_s6
     cdef double _s8 = _s7*(_k7 + _s5)
     cdef double _s9 = _k9*_s2 + _s1
-    cdef double _s10 = pow(xE, 6.0)
+    cdef double _s10 = (((xE*xE)*(xE*xE))*(xE*xE))
     cdef double _s11 = _k11*_s10
     cdef double _s12 = _s11*(_k10 + _s9)
     cdef double _s13 = _k14*_s2
@@ -1810,15 +1810,15 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s22 = _k11*_s2*(_k15*b1*(_k12*xE + _k13 + _s13) + _k22*_s15*(_k19*xE + _k21 + _s14) + _k26*_s20*_s21 + 0.14285714285714285*_s16*_s17)
     cdef double _s23 = _s11*(_k28 + _s9)
     cdef double _s24 = _k29*_s2 + _s1
-    cdef double _s25 = pow(xE, 7.0)
+    cdef double _s25 = (((xE*xE)*(xE*xE))*(xE*xE)*xE)
     cdef double _s26 = _k31*_s25
     cdef double _s27 = _s26*(_k30 + _s24)
     cdef double _s28 = _k34*xE + _k35 + _s13
     cdef double _s29 = _k41*_s0*(_k33*b1*(_k21 + _k32*xE + _s19) + _k39*_s21*(_k36*xE + _k37*_s2 + _k38) + _k40*_s15*_s20 + 175.0*_s17*_s28)
-    cdef double _s30 = pow(xE, 8.0)
+    cdef double _s30 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE))))
     cdef double _s31 = _k45*_s30*(_k43*_s2 + _k44 + _s1)
     cdef double _s32 = _k55*_s3*(_k52*b1*(_k49*xE + _k50*_s2 + _k51) + _k53*_s15*_s16 + _k54*_s21*_s28 + 50.0*_s17*(_k46*xE + _k47*_s2 + _k48))
-    cdef double _s33 = pow(xE, 9.0)
+    cdef double _s33 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*xE)
     cdef double _s34 = _k58*_s6*(_k63*b1*(_k61*xE + _k62 + _s19) + _k65*_s15*(_k64 + _s14 + _s18) + _k69*_s21*(_k66*xE + _k67*_s2 + _k68) + 0.125*_s17*(_k59*xE + _k60 + _s19))
     cdef double _s35 = (b1*b1)
     cdef double _s36 = _s35*xE
@@ -1947,9 +1947,9 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s159 = (_cam0[1]*_cam0[1]*_cam0[1])*_s153
     cdef double _s160 = _s159*_s74
     cdef double _s161 = _cam0[2]*_s159
-    cdef double _s162 = (1.0/(pow(_cam0[0], 6.0)*_k295 + pow(_cam0[0], 5.0)*_k300 + _cam0[0]*_k299 + _cam0[0]*_k300*_s69 + pow(_cam0[1], 6.0)*_k295 + _k294 + _k296*_s65*_s69 + _k296*_s66*_s71 + _k297*_s66 + _k298*_s69 + _k301*_s65 + _k302*_s71 + _k303*_s70 + _k304*_s72 + _k305*_s66*_s70 + _k306*_s73))
+    cdef double _s162 = (1.0/((((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*(_cam0[0]*_cam0[0]))*_k295 + (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*_cam0[0])*_k300 + _cam0[0]*_k299 + _cam0[0]*_k300*_s69 + (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*(_cam0[1]*_cam0[1]))*_k295 + _k294 + _k296*_s65*_s69 + _k296*_s66*_s71 + _k297*_s66 + _k298*_s69 + _k301*_s65 + _k302*_s71 + _k303*_s70 + _k304*_s72 + _k305*_s66*_s70 + _k306*_s73))
     cdef double _s163 = _s153*_s162
-    cdef double _s164 = pow(_cam0[1], 5.0)*_s163
+    cdef double _s164 = (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*_cam0[1])*_s163
     cdef double _s165 = _k307*_s164
     cdef double _s166 = _cam0[1]*_s163
     cdef double _s167 = _s166*_s76
@@ -2032,7 +2032,7 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     _b[0] = _k128*_s113 + _k129*_s115 + _k130*_s97 + _k131*_s99 + _k132*_s101 + _k132*_s116 + _k133*_s103 + _k134*_s118 + _k135*_s87 + _k136*_s51 + _k137*_s52 + _k138*_s50 + _k139*_s104 + _k140*_s119 + _k141*_s120 + _k142*_s105 + _k143*_s106 + _k144*_s108 + _k145*_s121 + _k146*_s123 + _k147*_s102*_s2 + _k149*_s109 + _k150*_s110 + _k151*_s0*_s111 + _k152*_s125 + _k153*_s112*_s50 + _s112*_s124
     _b[1] = _k138*_s117 + _k154*_s120 + _k155*_s119 + _k156*_s105 + _k157*_s108 + _k158*_s106 + _k158*_s121 + _k159*_s104 + _k160*_s123 + _k162*_s39 + _k164*_s128 + _k165*_s134 + _k166*_s135 + _k167*_s130 + _k168*_s137 + _k169*_s131 + _k170*_s132 + _k171*_s138 + _k172*_s103 + _k173*_s113 + _k174*_s97 + _k175*_s99 + _k176*_s115 + _k177*_s101 + _k178*_s116 + _s126*b4 + _s127*b3
     _b[2] = _k136*_s122 + _k179*_s135 + _k180*_s134 + _k181*_s131 + _k182*_s130 + _k183*_s128 + _k183*_s137 + _k184*_s132 + _k185*_s138 + _k187*_s43 + _k188*_s144 + _k189*_s140 + _k190*_s146 + _k191*_s141 + _k192*_s142 + _k193*_s147 + _k194*_s143 + _k195*_s149 + _k196*_s104 + _k197*_s120 + _k198*_s108 + _k199*_s105 + _k200*_s119 + _k201*_s106 + _k202*_s121 + _s127*b2 + _s139*b4
-    _b[3] = _k137*_s40 + _k203*_s147 + _k204*_s146 + _k205*_s141 + _k206*_s140 + _k207*_s142 + _k207*_s144 + _k208*_s143 + _k209*_s149 + _k210*_s46 + _k211*_s96*pow(xE, 10.0) + _k212*_s112*_s33*b4 + _k213*_s129*_s33 + _k214*_s136*_s25 + _k215*_s102*_s25 + _k216*_s145*_s30 + _k217*_s111*_s30 + _k218*_s10*_s148 + _k219*_s132 + _k220*_s134 + _k221*_s135 + _k222*_s130 + _k223*_s131 + _k224*_s128 + _k225*_s137 + _s126*b2 + _s139*b3
+    _b[3] = _k137*_s40 + _k203*_s147 + _k204*_s146 + _k205*_s141 + _k206*_s140 + _k207*_s142 + _k207*_s144 + _k208*_s143 + _k209*_s149 + _k210*_s46 + _k211*_s96*((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*(xE*xE)) + _k212*_s112*_s33*b4 + _k213*_s129*_s33 + _k214*_s136*_s25 + _k215*_s102*_s25 + _k216*_s145*_s30 + _k217*_s111*_s30 + _k218*_s10*_s148 + _k219*_s132 + _k220*_s134 + _k221*_s135 + _k222*_s130 + _k223*_s131 + _k224*_s128 + _k225*_s137 + _s126*b2 + _s139*b3
     _b[4] = _k128*_s102*_s42 + _k128*_s109*b1 + _k133*_s112*_s36 + _k141*_s102*_s37 + _k141*_s97*b1 + _k148*_s122*_s129 + _k226*_s112 + _k227*_s112*_s64 + _k228*_s112*_s63 + _k229*_s101*b2 + _k229*_s112*_s62 + _k230*_s35 + _k231*_s112*_s38 + _k232*_s112*_s54 + _k233*_s112*_s53 + _k234*_s150 + _k235*_s148*_s52 + _k236*_s49*_s96 + _k237*_s105*b3 + _k237*_s129*_s46 + _k238*_s148*_s51 + _k239*_s108*b3 + _k240*_s111*_s37 + _k240*_s97*b2 + _k241*_s111*_s43 + _k241*_s99*b2 + _k242*_s151 + _k243*_s148*_s50 + _k244*_s104*b3 + _k244*_s129*_s40 + _k245*_s102*_s39 + _k245*_s111*_s122 + _k246*_s102*_s117 + _k247*_s152 + _k248*_s43*b4 + _k249*_s52*b2 + _k250*_s51*b2 + _k251*_s122*b4 + _k252*_s112*_s59 + _k253*_s117*b3 + _k254*_s87*b2 + _k255*_s112*_s55 + _k256*_s112*_s61 + _k257*_s112*_s57 + _k258*_s112*_s35 + _k259*_s112*_s150 + _k260*_s112*_s47 + _k261*_s112*_s151 + _k262*_s112*_s45 + _k263*_s112*_s44 + _k264*_s148*_s42 + _k265*_s112*_s41 + _k266*_s148*_s39 + _k267*_s129*_s49 + _k267*_s131*b3 + _k268*_s108*b2 + _k268*_s128*b3 + _k269*_s104*b2 + _k269*_s111*_s40 + _k270*_s141*b4 + _k271*_s130*b3 + _k272*_s105*b2 + _k272*_s111*_s46 + _k273*_s106*b2 + _k274*_s102*_s43 + _k274*_s99*b1 + _k275*_s112*_s152 + _k276*_s102*_s122 + _k277*_s119*b4 + _k278*_s125*b2 + _k279*_s129*_s37 + _k279*_s97*b3 + _k280*_s136*_s51 + _k281*_s109*b2 + _k281*_s111*_s42 + _k282*_s123*b4 + _k283*_s101*b3 + _k283*_s110*b2 + _k284*_s111*_s39 + _k284*_s118*b3 + _k285*_s102*_s52 + _k285*_s40*_s96 + _k286*_s102*_s50 + _k286*_s111*_s117 + _k286*_s136*_s87 + _k287*_s102*_s87 + _k288*_s46*_s96 + _k289*_s129*_s43 + _s102*_s124
     _b[5] = _cam0[0]*_k290*_s155 + _cam0[0]*_k293*_s160 + _cam0[0]*_k313*_s170 + _cam0[0]*_k319*_s169 + _cam0[0]*_k320*_s157 + _cam0[0]*_k321*_s168 + _cam0[0]*_k322*_s167 + _cam0[0]*_s154*_s80 + _cam0[0]*_s165 + _cam0[2]*_s165 + _k118*_s160 + _k291*_s155 + _k292*_s156*_s68 + _k307*_s167*_s70 + _k307*_s168*_s65 + _k308*_s164 + _k309*_s154*_s66*_s74 + _k310*_s156*_s78 + _k310*_s158*_s65 + _k311*_s156*_s77 + _k312*_s158 + _k313*_s169*_s65 + _k314*_s169 + _k315*_s170 + _k316*_s157 + _k317*_s167 + _k318*_s168 + _k323*_s166*_s82 + _s154*_s72*_s75 + _s156*_s65*_s81 + _s161*_s75
     _b[6] = _k324*_s89 + _k325*_s148 + _k329*_s153*_s175 + _k330*_s102*xE + _k331*_s111*_s2 + _k331*_s112*_s15 + _k332*_s0*_s129 + _k333*_s3*_s96 + _k334*_s112*_s21 + _k335*_s112*_s17 + _s171*_s89 + _s172*_s89 + _s173*_s175 + _s174*_s89 + _s176*_s89 + _s177*_s178 + _s177*_s91
@@ -2734,7 +2734,7 @@ cdef inline void _constraints(double t, const double* _y, double* _g, double* _J
     cdef double _p2 = (xE*xE*xE)
     cdef double _p3 = _k120*_p2
     cdef double _p4 = _k121*(xE*xE*xE*xE)
-    cdef double _p5 = _k122*pow(xE, 5.0)
+    cdef double _p5 = _k122*(((xE*xE)*(xE*xE))*xE)
     cdef double _p6 = S_T*_cam0[0] + _k127
     cdef double _p7 = Omega*t - theta
     cdef double _p8 = sin(_p7)
@@ -3558,7 +3558,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _o3 = _k127 + _o2
     cdef double _o4 = Omega*t - theta
     _out[0] = _o0*(_k2*_o0*b3 + _k341*b1 + _k342*b2*xE + _k5*_o1*b4)  # vE
-    _out[1] = _k119*_o0*b1 + _k120*_o1*b2 + _k121*b3*(xE*xE*xE*xE) + _k122*b4*pow(xE, 5.0) + _o3*sin(_o4)  # Phi1
+    _out[1] = _k119*_o0*b1 + _k120*_o1*b2 + _k121*b3*(xE*xE*xE*xE) + _k122*b4*(((xE*xE)*(xE*xE))*xE) + _o3*sin(_o4)  # Phi1
     _out[2] = _k339 + _o3*cos(_o4) + xE  # Phi2
     _out[3] = _o2  # S
     _out[4] = atan(S_T*_cam0[1]/_o3)  # pressure_angle
@@ -4302,7 +4302,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j14 = _j13 + _k19*xE + _k21
     cdef double _j15 = _j14*_k344
     cdef double _j16 = _j3*_k136
-    cdef double _j17 = pow(xE, 5.0)
+    cdef double _j17 = (((xE*xE)*(xE*xE))*xE)
     cdef double _j18 = _j1*_j17
     cdef double _j19 = _k23*xE
     cdef double _j20 = _j0*_k24
@@ -4310,7 +4310,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j22 = _j10*_acc[4]
     cdef double _j23 = _j21*_j22
     cdef double _j24 = _j10*_k137
-    cdef double _j25 = pow(xE, 6.0)
+    cdef double _j25 = (((xE*xE)*(xE*xE))*(xE*xE))
     cdef double _j26 = _j1*_j25
     cdef double _j27 = _j0*_k17 + _k16*xE + _k18
     cdef double _j28 = _j17*_acc[4]
@@ -4385,7 +4385,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j97 = _k287*xEd
     cdef double _j98 = _j88*b4 + _j89*b3 + _j90*b2 + _j91*_acc[6] + _j92*_k243 + _j93*_k266 + _j94*_j95 + _j96*_j97 + _k135*b1
     cdef double _j99 = _j0*_k147
-    cdef double _j100 = pow(xE, 7.0)
+    cdef double _j100 = (((xE*xE)*(xE*xE))*(xE*xE)*xE)
     cdef double _j101 = _j100*_k142
     cdef double _j102 = _j25*b4d
     cdef double _j103 = _j17*b3d
@@ -4450,7 +4450,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j162 = _j0*_k385
     cdef double _j163 = _j18*b3
     cdef double _j164 = _j123*_k398 + _j160*b4 + _j161*b3 + _j162*_acc[6] + _j163*_k263 + _j74*_k280 + _j79*_k286 + _j81*_k233 + _j90*b1
-    cdef double _j165 = pow(xE, 8.0)
+    cdef double _j165 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE))))
     cdef double _j166 = _j165*_k169
     cdef double _j167 = _j100*b4d
     cdef double _j168 = _j25*b2d
@@ -4493,7 +4493,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j205 = _j10*b3
     cdef double _j206 = _j132*b4
     cdef double _j207 = _j152*_k231 + _j161*b2 + _j203*b4 + _j204*_acc[6] + _j205*_k426 + _j206*_k260 + _j80*_k277 + _j82*_k148 + _j89*b1
-    cdef double _j208 = pow(xE, 9.0)
+    cdef double _j208 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*xE)
     cdef double _j209 = _j208*_k191
     cdef double _j210 = _j165*b4d
     cdef double _j211 = _j165*b3d
@@ -4534,7 +4534,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j246 = _j10*_k445
     cdef double _j247 = _j25*b4
     cdef double _j248 = _j158*_k285 + _j160*b2 + _j203*b3 + _j246*_acc[6] + _j247*_k458 + _j88*b1
-    cdef double _j249 = _k211*pow(xE, 10.0)
+    cdef double _j249 = _k211*((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*(xE*xE))
     cdef double _j250 = _j208*b4d
     cdef double _j251 = _j153*b2
     cdef double _j252 = _j197*b3
@@ -4602,7 +4602,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j314 = (_cam0[0]*_cam0[0])
     cdef double _j315 = (_cam0[1]*_cam0[1])
     cdef double _j316 = _cam0[0]*_k111 + _j314*_k110 + _j315*_k110 + _k109
-    cdef double _j317 = (1.0/_j316)
+    cdef double _j317 = (1.0/(_j316))
     cdef double _j318 = (thetad*thetad)
     cdef double _j319 = _j317*_j318
     cdef double _j320 = _j319*_k290
@@ -4612,7 +4612,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j324 = _cam0[0]*_j315
     cdef double _j325 = _j314*_j315
     cdef double _j326 = _cam0[0]*_k105 + _j314*_k107 + _j315*_k104 + _j321*_k106 + _j322*_k102 + _j323*_k102 + _j324*_k106 + _j325*_k103 + _k101
-    cdef double _j327 = (1.0/_j326)
+    cdef double _j327 = (1.0/(_j326))
     cdef double _j328 = _cam0[2]*_j327
     cdef double _j329 = _j318*_k312
     cdef double _j330 = _cam0[0]*_j328
@@ -4632,11 +4632,11 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j344 = (_cam0[1]*_cam0[1]*_cam0[1])
     cdef double _j345 = _j327*_j344
     cdef double _j346 = _j318*_j345
-    cdef double _j347 = pow(_cam0[0], 5.0)
+    cdef double _j347 = (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*_cam0[0])
     cdef double _j348 = _cam0[0]*_j323
     cdef double _j349 = _j315*_j321
-    cdef double _j350 = pow(_cam0[0], 6.0)*_k295 + _cam0[0]*_k299 + pow(_cam0[1], 6.0)*_k295 + _j314*_j323*_k296 + _j314*_k301 + _j315*_j322*_k296 + _j315*_k297 + _j321*_k303 + _j322*_k302 + _j323*_k298 + _j324*_k304 + _j325*_k306 + _j347*_k300 + _j348*_k300 + _j349*_k305 + _k294
-    cdef double _j351 = (1.0/_j350)
+    cdef double _j350 = (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*(_cam0[0]*_cam0[0]))*_k295 + _cam0[0]*_k299 + (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*(_cam0[1]*_cam0[1]))*_k295 + _j314*_j323*_k296 + _j314*_k301 + _j315*_j322*_k296 + _j315*_k297 + _j321*_k303 + _j322*_k302 + _j323*_k298 + _j324*_k304 + _j325*_k306 + _j347*_k300 + _j348*_k300 + _j349*_k305 + _k294
+    cdef double _j351 = (1.0/(_j350))
     cdef double _j352 = _j318*_j351
     cdef double _j353 = _j344*_j352
     cdef double _j354 = _j318*_j327
@@ -4659,7 +4659,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j371 = _cam0[1]*_j321
     cdef double _j372 = _j371*_k598
     cdef double _j373 = _j364*_k600
-    cdef double _j374 = pow(_cam0[1], 5.0)
+    cdef double _j374 = (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*_cam0[1])
     cdef double _j375 = _j352*_k307
     cdef double _j376 = (_cam0[2]*_cam0[2])
     cdef double _j377 = _j352*_j376

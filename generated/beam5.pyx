@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fb2ab916fb84c8aa9fa6499cd1841c804b651d44ba644d2d89ea816f0b37176c
-# Text hash: sha256:83aa8e7796a6dcb58d15c0f5b02e95d72e5bcfaaf66f40809ddbee1d7de482bd
+# Derivation key: sha256:cc24cade7cdcbf91c22dae9a369d71e09bec1995ea0f8d90b16f6d7d2b207ee8
+# Text hash: sha256:c59be34f08474caef218bbb18b3930b5bf7e37d0097e6c2cd5945d7aed1ed8c4
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:611aaf7763e70cfb79e109e16ea0ebff594dfa47598c04509a2d122462a61666
@@ -75,7 +75,7 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport atan, cos, fabs, fmod, M_PI, pow, sin
+from libc.math cimport atan, cos, fabs, fmod, M_PI, sin
 
 from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport camlaw_d4, camlaw_eval, camlaw_segment
@@ -173,10 +173,10 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c3 = _c0*_c2
     cdef double _c4 = _c1*(a_rod*a_rod)
     cdef double _c5 = (1.0/(d*d*d*d))
-    cdef double _c6 = pow(d, -5.0)
-    cdef double _c7 = pow(d, -6.0)
-    cdef double _c8 = pow(d, -7.0)
-    cdef double _c9 = pow(d, -8.0)
+    cdef double _c6 = (1.0/(((d*d)*(d*d))*d))
+    cdef double _c7 = (1.0/(((d*d)*(d*d))*(d*d)))
+    cdef double _c8 = (1.0/(((d*d)*(d*d))*(d*d)*d))
+    cdef double _c9 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))))
     cdef double _c10 = 2.0*m_r
     cdef double _c11 = _c10*_c5
     cdef double _c12 = 3.0*m_r
@@ -202,7 +202,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c32 = _c3*_c9
     cdef double _c33 = 2.5*_c32
     cdef double _c34 = 0.5*_c3
-    cdef double _c35 = pow(d, -9.0)
+    cdef double _c35 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))*d))
     cdef double _c36 = _c10*_c6
     cdef double _c37 = _c13*_c8
     cdef double _c38 = _c16*_c35
@@ -211,7 +211,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c41 = 0.4*_c4
     cdef double _c42 = 0.5714285714285714*_c24
     cdef double _c43 = _c3*_c35
-    cdef double _c44 = pow(d, -10.0)
+    cdef double _c44 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))*(d*d)))
     cdef double _c45 = _c10*_c7
     cdef double _c46 = _c13*_c9
     cdef double _c47 = 0.5*_c21
@@ -219,12 +219,12 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c49 = _c3*_c44
     cdef double _c50 = 12.0*m_r
     cdef double _c51 = 9.0*_c3
-    cdef double _c52 = pow(d, -11.0)
+    cdef double _c52 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))*(d*d)*d))
     cdef double _c53 = 0.08333333333333333*_c52
     cdef double _c54 = _c10*_c8
     cdef double _c55 = _c4*_c52
     cdef double _c56 = _c3*_c52
-    cdef double _c57 = pow(d, -12.0)
+    cdef double _c57 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))*((d*d)*(d*d))))
     cdef double _c58 = _c10*_c9
     cdef double _c59 = _c4*_c57
     cdef double _c60 = 0.3333333333333333*_c4
@@ -363,12 +363,12 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c193 = 28.571428571428573*_c49
     cdef double _c194 = 14.4*_c32
     cdef double _c195 = J_r*S_T
-    cdef double _c196 = 6.0*pow(r_r, 5.0)
-    cdef double _c197 = 6.0*pow(r_b, 5.0)
+    cdef double _c196 = 6.0*(((r_r*r_r)*(r_r*r_r))*r_r)
+    cdef double _c197 = 6.0*(((r_b*r_b)*(r_b*r_b))*r_b)
     cdef double _c198 = 15.0*_c104
     cdef double _c199 = 20.0*_c107
     cdef double _c200 = 15.0*_c103
-    cdef double _c201 = pow(S_T, 6.0)
+    cdef double _c201 = (((S_T*S_T)*(S_T*S_T))*(S_T*S_T))
     cdef double _c202 = 3.0*_c114
     cdef double _c203 = _c105*_c114
     cdef double _c204 = _c107*_c115
@@ -379,7 +379,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c209 = 30.0*S_T
     cdef double _c210 = 60.0*S_T
     cdef double _c211 = S_T*_c196 + S_T*_c197 + _c103*_c209*r_r + _c104*_c209*r_b + _c105*_c110*_c210 + _c107*_c109*_c210
-    cdef double _c212 = pow(S_T, 5.0)
+    cdef double _c212 = (((S_T*S_T)*(S_T*S_T))*S_T)
     cdef double _c213 = 6.0*_c212
     cdef double _c214 = _c213*r_b
     cdef double _c215 = _c213*r_r
@@ -952,7 +952,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[430] = _c195*r_b + _c195*r_r  # _k430
     ctx.k[431] = -_c135  # _k431
     ctx.k[432] = _c141  # _k432
-    ctx.k[433] = _c105*_c199 + _c109*_c200 + _c110*_c198 + _c196*r_b + _c197*r_r + pow(r_b, 6.0) + pow(r_r, 6.0)  # _k433
+    ctx.k[433] = _c105*_c199 + _c109*_c200 + _c110*_c198 + _c196*r_b + _c197*r_r + (((r_b*r_b)*(r_b*r_b))*(r_b*r_b)) + (((r_r*r_r)*(r_r*r_r))*(r_r*r_r))  # _k433
     ctx.k[434] = _c201  # _k434
     ctx.k[435] = 3.0*_c201  # _k435
     ctx.k[436] = _c103*_c202 + _c104*_c202 + _c126*_c203 + 12.0*_c204 + 18.0*_c205  # _k436
@@ -2433,15 +2433,15 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s3 = (xE*xE*xE*xE)
     cdef double _s4 = _k5*_s3*(_k3*_s2 + _k4 + _s1)
     cdef double _s5 = _k6*_s2 + _s1
-    cdef double _s6 = pow(xE, 5.0)
+    cdef double _s6 = (((xE*xE)*(xE*xE))*xE)
     cdef double _s7 = _k8*_s6
     cdef double _s8 = _s7*(_k7 + _s5)
     cdef double _s9 = _k9*_s2 + _s1
-    cdef double _s10 = pow(xE, 6.0)
+    cdef double _s10 = (((xE*xE)*(xE*xE))*(xE*xE))
     cdef double _s11 = _k11*_s10
     cdef double _s12 = _s11*(_k10 + _s9)
     cdef double _s13 = _k12*_s2 + _s1
-    cdef double _s14 = pow(xE, 7.0)
+    cdef double _s14 = (((xE*xE)*(xE*xE))*(xE*xE)*xE)
     cdef double _s15 = _k14*_s14
     cdef double _s16 = _s15*(_k13 + _s13)
     cdef double _s17 = _s0*b1
@@ -2451,7 +2451,7 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s21 = _s14*b5
     cdef double _s22 = _s3*b1
     cdef double _s23 = _s10*b3
-    cdef double _s24 = pow(xE, 8.0)
+    cdef double _s24 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE))))
     cdef double _s25 = _s24*b5
     cdef double _s26 = _s6*b2
     cdef double _s27 = _s14*b4
@@ -2467,7 +2467,7 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s37 = _k35*_s24
     cdef double _s38 = _s37*(_k34 + _s36)
     cdef double _s39 = _s10*b2
-    cdef double _s40 = pow(xE, 9.0)
+    cdef double _s40 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*xE)
     cdef double _s41 = _s40*b5
     cdef double _s42 = _s6*b1
     cdef double _s43 = _s14*b3
@@ -2479,7 +2479,7 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s49 = _s48*(_k53 + _s47)
     cdef double _s50 = _s24*b3
     cdef double _s51 = _s10*b1
-    cdef double _s52 = pow(xE, 10.0)
+    cdef double _s52 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*(xE*xE))
     cdef double _s53 = _s52*b5
     cdef double _s54 = _s14*b2
     cdef double _s55 = _s40*b4
@@ -2489,10 +2489,10 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s59 = _s14*b1
     cdef double _s60 = _s24*b2
     cdef double _s61 = _s40*b3
-    cdef double _s62 = pow(xE, 11.0)
+    cdef double _s62 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*(xE*xE)*xE)
     cdef double _s63 = _s62*b5
     cdef double _s64 = _k75*_s51 + _k76*_s54 + _k77*_s50 + _k78*_s55 + _k79*_s53 + _k80*_s58 + _k81*_s59 + _k82*_s60 + _k83*_s61 + _k84*_s63 + _k85*_s42 + _k86*_s39 + _k87*_s43 + _k88*_s41 + _k89*_s44
-    cdef double _s65 = pow(xE, 12.0)
+    cdef double _s65 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*((xE*xE)*(xE*xE)))
     cdef double _s66 = _k100*_s24*b1 + _k101*_s52*b3 + _k102*_s62*b4 + _k103*_s51 + _k104*_s53 + _k105*_s50 + _k106*_s54 + _k107*_s55 + _k93*_s59 + _k94*_s60 + _k95*_s61 + _k96*_s58 + _k97*_s63 + _k98*_s65*b5 + _k99*_s40*b2
     cdef double _s67 = (b1*b1)
     cdef double _s68 = _s67*xE
@@ -2642,9 +2642,9 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s212 = (_cam0[1]*_cam0[1]*_cam0[1])*_s206
     cdef double _s213 = _s109*_s212
     cdef double _s214 = _cam0[2]*_s212
-    cdef double _s215 = (1.0/(pow(_cam0[0], 6.0)*_k434 + pow(_cam0[0], 5.0)*_k439 + _cam0[0]*_k438 + _cam0[0]*_k439*_s104 + pow(_cam0[1], 6.0)*_k434 + _k433 + _k435*_s100*_s104 + _k435*_s101*_s106 + _k436*_s101 + _k437*_s104 + _k440*_s100 + _k441*_s106 + _k442*_s105 + _k443*_s107 + _k444*_s101*_s105 + _k445*_s108))
+    cdef double _s215 = (1.0/((((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*(_cam0[0]*_cam0[0]))*_k434 + (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*_cam0[0])*_k439 + _cam0[0]*_k438 + _cam0[0]*_k439*_s104 + (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*(_cam0[1]*_cam0[1]))*_k434 + _k433 + _k435*_s100*_s104 + _k435*_s101*_s106 + _k436*_s101 + _k437*_s104 + _k440*_s100 + _k441*_s106 + _k442*_s105 + _k443*_s107 + _k444*_s101*_s105 + _k445*_s108))
     cdef double _s216 = _s206*_s215
-    cdef double _s217 = pow(_cam0[1], 5.0)*_s216
+    cdef double _s217 = (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*_cam0[1])*_s216
     cdef double _s218 = _k446*_s217
     cdef double _s219 = _cam0[1]*_s216
     cdef double _s220 = _s111*_s219
@@ -3732,8 +3732,8 @@ cdef inline void _constraints(double t, const double* _y, double* _g, double* _J
     cdef double _p3 = _k173*_p2
     cdef double _p4 = (xE*xE*xE*xE)
     cdef double _p5 = _k174*_p4
-    cdef double _p6 = _k175*pow(xE, 5.0)
-    cdef double _p7 = _k176*pow(xE, 6.0)
+    cdef double _p6 = _k175*(((xE*xE)*(xE*xE))*xE)
+    cdef double _p7 = _k176*(((xE*xE)*(xE*xE))*(xE*xE))
     cdef double _p8 = S_T*_cam0[0] + _k182
     cdef double _p9 = Omega*t - theta
     cdef double _p10 = sin(_p9)
@@ -4844,7 +4844,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _o4 = _k182 + _o3
     cdef double _o5 = Omega*t - theta
     _out[0] = _o0*(_k2*_o0*b3 + _k482*b1 + _k483*b2*xE + _k5*_o1*b4 + _k8*_o2*b5)  # vE
-    _out[1] = _k172*_o0*b1 + _k173*_o1*b2 + _k174*_o2*b3 + _k175*b4*pow(xE, 5.0) + _k176*b5*pow(xE, 6.0) + _o4*sin(_o5)  # Phi1
+    _out[1] = _k172*_o0*b1 + _k173*_o1*b2 + _k174*_o2*b3 + _k175*b4*(((xE*xE)*(xE*xE))*xE) + _k176*b5*(((xE*xE)*(xE*xE))*(xE*xE)) + _o4*sin(_o5)  # Phi1
     _out[2] = _k480 + _o4*cos(_o5) + xE  # Phi2
     _out[3] = _o3  # S
     _out[4] = atan(S_T*_cam0[1]/_o4)  # pressure_angle
@@ -5866,19 +5866,19 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j6 = _j0*_k26 + _j3*_k15 + _j5*_k20
     cdef double _j7 = _j0*_k196
     cdef double _j8 = _j1*_j5
-    cdef double _j9 = pow(xE, 5.0)
+    cdef double _j9 = (((xE*xE)*(xE*xE))*xE)
     cdef double _j10 = _j3*_k25 + _j5*_k16 + _j9*_k23
     cdef double _j11 = _j3*_k194
     cdef double _j12 = _j1*_j9
-    cdef double _j13 = pow(xE, 6.0)
+    cdef double _j13 = (((xE*xE)*(xE*xE))*(xE*xE))
     cdef double _j14 = _j13*_k21 + _j5*_k28 + _j9*_k17
     cdef double _j15 = _j5*_k195
     cdef double _j16 = _j1*_j13
-    cdef double _j17 = pow(xE, 7.0)
+    cdef double _j17 = (((xE*xE)*(xE*xE))*(xE*xE)*xE)
     cdef double _j18 = _j13*_k18 + _j17*_k24 + _j9*_k27
     cdef double _j19 = _j9*_k193
     cdef double _j20 = _j1*_j17
-    cdef double _j21 = pow(xE, 8.0)
+    cdef double _j21 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE))))
     cdef double _j22 = _j13*_k29
     cdef double _j23 = _j17*_k19 + _j21*_k22 + _j22
     cdef double _j24 = b1*xE
@@ -5997,7 +5997,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j137 = _j17*_k39 + _j21*_k45 + _j22
     cdef double _j138 = _j13*_k227
     cdef double _j139 = _j1*_j21
-    cdef double _j140 = pow(xE, 9.0)
+    cdef double _j140 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*xE)
     cdef double _j141 = _j140*_k42 + _j17*_k49 + _j21*_k40
     cdef double _j142 = _j5*b1
     cdef double _j143 = _j9*b2
@@ -6047,7 +6047,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j187 = _j140*_k64 + _j17*_k69 + _j21*_k58
     cdef double _j188 = _j17*_k256
     cdef double _j189 = _j1*_j140
-    cdef double _j190 = pow(xE, 10.0)
+    cdef double _j190 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*(xE*xE))
     cdef double _j191 = _j140*_k59 + _j190*_k62 + _j21*_k68
     cdef double _j192 = _j9*b1
     cdef double _j193 = _j13*b2
@@ -6093,7 +6093,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j233 = _j140*_k78 + _j190*_k80 + _j21*_k89
     cdef double _j234 = _j21*_k286
     cdef double _j235 = _j1*_j190
-    cdef double _j236 = pow(xE, 11.0)
+    cdef double _j236 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*(xE*xE)*xE)
     cdef double _j237 = _j140*_k88 + _j190*_k79 + _j236*_k84
     cdef double _j238 = _j13*b1
     cdef double _j239 = _j17*b2
@@ -6135,7 +6135,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j275 = _j140*_k99 + _j17*_k106 + _j21*_k94
     cdef double _j276 = _j140*_k95 + _j190*_k101 + _j21*_k105
     cdef double _j277 = _j140*_k107 + _j190*_k96 + _j236*_k102
-    cdef double _j278 = pow(xE, 12.0)
+    cdef double _j278 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*((xE*xE)*(xE*xE)))
     cdef double _j279 = _j190*_k104 + _j236*_k97 + _j278*_k98
     cdef double _j280 = _j17*b1
     cdef double _j281 = _j21*b2
@@ -6225,7 +6225,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j365 = (_cam0[0]*_cam0[0])
     cdef double _j366 = (_cam0[1]*_cam0[1])
     cdef double _j367 = _cam0[0]*_k164 + _j365*_k163 + _j366*_k163 + _k162
-    cdef double _j368 = (1.0/_j367)
+    cdef double _j368 = (1.0/(_j367))
     cdef double _j369 = (thetad*thetad)
     cdef double _j370 = _j368*_j369
     cdef double _j371 = _j370*_k429
@@ -6235,7 +6235,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j375 = _cam0[0]*_j366
     cdef double _j376 = _j365*_j366
     cdef double _j377 = _cam0[0]*_k158 + _j365*_k160 + _j366*_k157 + _j372*_k159 + _j373*_k155 + _j374*_k155 + _j375*_k159 + _j376*_k156 + _k154
-    cdef double _j378 = (1.0/_j377)
+    cdef double _j378 = (1.0/(_j377))
     cdef double _j379 = _cam0[2]*_j378
     cdef double _j380 = _j369*_k451
     cdef double _j381 = _cam0[0]*_j379
@@ -6255,11 +6255,11 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j395 = (_cam0[1]*_cam0[1]*_cam0[1])
     cdef double _j396 = _j378*_j395
     cdef double _j397 = _j369*_j396
-    cdef double _j398 = pow(_cam0[0], 5.0)
+    cdef double _j398 = (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*_cam0[0])
     cdef double _j399 = _cam0[0]*_j374
     cdef double _j400 = _j366*_j372
-    cdef double _j401 = pow(_cam0[0], 6.0)*_k434 + _cam0[0]*_k438 + pow(_cam0[1], 6.0)*_k434 + _j365*_j374*_k435 + _j365*_k440 + _j366*_j373*_k435 + _j366*_k436 + _j372*_k442 + _j373*_k441 + _j374*_k437 + _j375*_k443 + _j376*_k445 + _j398*_k439 + _j399*_k439 + _j400*_k444 + _k433
-    cdef double _j402 = (1.0/_j401)
+    cdef double _j401 = (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*(_cam0[0]*_cam0[0]))*_k434 + _cam0[0]*_k438 + (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*(_cam0[1]*_cam0[1]))*_k434 + _j365*_j374*_k435 + _j365*_k440 + _j366*_j373*_k435 + _j366*_k436 + _j372*_k442 + _j373*_k441 + _j374*_k437 + _j375*_k443 + _j376*_k445 + _j398*_k439 + _j399*_k439 + _j400*_k444 + _k433
+    cdef double _j402 = (1.0/(_j401))
     cdef double _j403 = _j369*_j402
     cdef double _j404 = _j395*_j403
     cdef double _j405 = _j369*_j378
@@ -6282,7 +6282,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j422 = _cam0[1]*_j372
     cdef double _j423 = _j422*_k878
     cdef double _j424 = _j415*_k880
-    cdef double _j425 = pow(_cam0[1], 5.0)
+    cdef double _j425 = (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*_cam0[1])
     cdef double _j426 = _j403*_k446
     cdef double _j427 = (_cam0[2]*_cam0[2])
     cdef double _j428 = _j403*_j427

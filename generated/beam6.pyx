@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:42f78ef16f8be90fbb17adc2fc2f476bbaed76c4b1e4ecdcb3668f51f6c841da
-# Text hash: sha256:a3759c0776ee2abc3c86e7c0a938c6ef7e27c2021ba2e99d8011f9a80e587fbb
+# Derivation key: sha256:eacd6829a51a1ccdc57d16691c78ae3d7044a170ef9fc9bdd393583e8e604438
+# Text hash: sha256:75810bcdad3b22ba61b675b22d0aa0039657292ed8e38f8795e50b7b90a5de19
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:ba76292f91dfbbd6b8d39b0bd7d40b2000e3a575b4d3c5fd9aa69df4a2837883
@@ -75,7 +75,7 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport atan, cos, fabs, fmod, M_PI, pow, sin
+from libc.math cimport atan, cos, fabs, fmod, M_PI, sin
 
 from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport camlaw_d4, camlaw_eval, camlaw_segment
@@ -174,11 +174,11 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c3 = _c0*_c2
     cdef double _c4 = _c1*(a_rod*a_rod)
     cdef double _c5 = (1.0/(d*d*d*d))
-    cdef double _c6 = pow(d, -5.0)
-    cdef double _c7 = pow(d, -6.0)
-    cdef double _c8 = pow(d, -7.0)
-    cdef double _c9 = pow(d, -8.0)
-    cdef double _c10 = pow(d, -9.0)
+    cdef double _c6 = (1.0/(((d*d)*(d*d))*d))
+    cdef double _c7 = (1.0/(((d*d)*(d*d))*(d*d)))
+    cdef double _c8 = (1.0/(((d*d)*(d*d))*(d*d)*d))
+    cdef double _c9 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))))
+    cdef double _c10 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))*d))
     cdef double _c11 = 2.0*m_r
     cdef double _c12 = _c11*_c5
     cdef double _c13 = 3.0*m_r
@@ -208,7 +208,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c37 = _c3*_c9
     cdef double _c38 = 2.5*_c37
     cdef double _c39 = 0.5*_c3
-    cdef double _c40 = pow(d, -10.0)
+    cdef double _c40 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))*(d*d)))
     cdef double _c41 = _c11*_c6
     cdef double _c42 = _c14*_c8
     cdef double _c43 = _c10*_c17
@@ -217,7 +217,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c46 = 0.5714285714285714*_c26
     cdef double _c47 = _c4*_c40
     cdef double _c48 = _c3*_c40
-    cdef double _c49 = pow(d, -11.0)
+    cdef double _c49 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))*(d*d)*d))
     cdef double _c50 = _c11*_c7
     cdef double _c51 = _c14*_c9
     cdef double _c52 = _c17*_c40
@@ -229,18 +229,18 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c58 = 12.0*m_r
     cdef double _c59 = 9.0*_c3
     cdef double _c60 = 0.08333333333333333*_c49
-    cdef double _c61 = pow(d, -12.0)
+    cdef double _c61 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))*((d*d)*(d*d))))
     cdef double _c62 = _c11*_c8
     cdef double _c63 = _c10*_c14
     cdef double _c64 = 0.4444444444444444*_c27
     cdef double _c65 = _c4*_c61
     cdef double _c66 = _c3*_c61
-    cdef double _c67 = pow(d, -13.0)
+    cdef double _c67 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))*((d*d)*(d*d))*d))
     cdef double _c68 = _c11*_c9
     cdef double _c69 = 0.3333333333333333*_c4
     cdef double _c70 = _c4*_c67
     cdef double _c71 = _c3*_c67
-    cdef double _c72 = pow(d, -14.0)
+    cdef double _c72 = (1.0/((((d*d)*(d*d))*((d*d)*(d*d)))*((d*d)*(d*d))*(d*d)))
     cdef double _c73 = _c10*_c11
     cdef double _c74 = _c4*_c72
     cdef double _c75 = 0.2222222222222222*_c4
@@ -406,12 +406,12 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c235 = 28.571428571428573*_c48
     cdef double _c236 = 14.4*_c37
     cdef double _c237 = J_r*S_T
-    cdef double _c238 = 6.0*pow(r_r, 5.0)
-    cdef double _c239 = 6.0*pow(r_b, 5.0)
+    cdef double _c238 = 6.0*(((r_r*r_r)*(r_r*r_r))*r_r)
+    cdef double _c239 = 6.0*(((r_b*r_b)*(r_b*r_b))*r_b)
     cdef double _c240 = 15.0*_c137
     cdef double _c241 = 20.0*_c140
     cdef double _c242 = 15.0*_c136
-    cdef double _c243 = pow(S_T, 6.0)
+    cdef double _c243 = (((S_T*S_T)*(S_T*S_T))*(S_T*S_T))
     cdef double _c244 = 3.0*_c147
     cdef double _c245 = _c138*_c147
     cdef double _c246 = _c140*_c148
@@ -422,7 +422,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c251 = 30.0*S_T
     cdef double _c252 = 60.0*S_T
     cdef double _c253 = S_T*_c238 + S_T*_c239 + _c136*_c251*r_r + _c137*_c251*r_b + _c138*_c143*_c252 + _c140*_c142*_c252
-    cdef double _c254 = pow(S_T, 5.0)
+    cdef double _c254 = (((S_T*S_T)*(S_T*S_T))*S_T)
     cdef double _c255 = 6.0*_c254
     cdef double _c256 = _c255*r_b
     cdef double _c257 = _c255*r_r
@@ -1198,7 +1198,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[604] = _c237*r_b + _c237*r_r  # _k604
     ctx.k[605] = -_c168  # _k605
     ctx.k[606] = _c174  # _k606
-    ctx.k[607] = _c138*_c241 + _c142*_c242 + _c143*_c240 + _c238*r_b + _c239*r_r + pow(r_b, 6.0) + pow(r_r, 6.0)  # _k607
+    ctx.k[607] = _c138*_c241 + _c142*_c242 + _c143*_c240 + _c238*r_b + _c239*r_r + (((r_b*r_b)*(r_b*r_b))*(r_b*r_b)) + (((r_r*r_r)*(r_r*r_r))*(r_r*r_r))  # _k607
     ctx.k[608] = _c243  # _k608
     ctx.k[609] = 3.0*_c243  # _k609
     ctx.k[610] = _c136*_c244 + _c137*_c244 + _c159*_c245 + 12.0*_c246 + 18.0*_c247  # _k610
@@ -3217,19 +3217,19 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s3 = (xE*xE*xE*xE)
     cdef double _s4 = _k5*_s3*(_k3*_s2 + _k4 + _s1)
     cdef double _s5 = _k6*_s2 + _s1
-    cdef double _s6 = pow(xE, 5.0)
+    cdef double _s6 = (((xE*xE)*(xE*xE))*xE)
     cdef double _s7 = _k8*_s6
     cdef double _s8 = _s7*(_k7 + _s5)
     cdef double _s9 = _k9*_s2 + _s1
-    cdef double _s10 = pow(xE, 6.0)
+    cdef double _s10 = (((xE*xE)*(xE*xE))*(xE*xE))
     cdef double _s11 = _k11*_s10
     cdef double _s12 = _s11*(_k10 + _s9)
     cdef double _s13 = _k12*_s2 + _s1
-    cdef double _s14 = pow(xE, 7.0)
+    cdef double _s14 = (((xE*xE)*(xE*xE))*(xE*xE)*xE)
     cdef double _s15 = _k14*_s14
     cdef double _s16 = _s15*(_k13 + _s13)
     cdef double _s17 = _k15*_s2 + _s1
-    cdef double _s18 = pow(xE, 8.0)
+    cdef double _s18 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE))))
     cdef double _s19 = _k17*_s18
     cdef double _s20 = _s19*(_k16 + _s17)
     cdef double _s21 = _s0*b1
@@ -3243,7 +3243,7 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s29 = _s18*b5
     cdef double _s30 = _s6*b2
     cdef double _s31 = _s14*b4
-    cdef double _s32 = pow(xE, 9.0)
+    cdef double _s32 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*xE)
     cdef double _s33 = _s32*b6
     cdef double _s34 = _s0*b2
     cdef double _s35 = _s2*b1
@@ -3263,7 +3263,7 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s49 = _s6*b1
     cdef double _s50 = _s14*b3
     cdef double _s51 = _s18*b4
-    cdef double _s52 = pow(xE, 10.0)
+    cdef double _s52 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*(xE*xE))
     cdef double _s53 = _s52*b6
     cdef double _s54 = _k35*_s24 + _k43*_s27 + _k44*_s30 + _k45*_s28 + _k46*_s31 + _k47*_s29 + _k48*_s33 + _k49*_s47 + _k50*_s48 + _k51*_s49 + _k52*_s50 + _k53*_s51 + _k54*_s53 + _k55*_s21 + _k56*_s23 + _k57*_s22 + _k58*_s25 + _k59*_s26
     cdef double _s55 = _s19*(_k61 + _s17)
@@ -3274,7 +3274,7 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s60 = _s52*b5
     cdef double _s61 = _s14*b2
     cdef double _s62 = _s32*b4
-    cdef double _s63 = pow(xE, 11.0)
+    cdef double _s63 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*(xE*xE)*xE)
     cdef double _s64 = _s63*b6
     cdef double _s65 = _k66*_s49 + _k67*_s47 + _k68*_s50 + _k69*_s51 + _k70*_s48 + _k71*_s53 + _k72*_s58 + _k73*_s59 + _k74*_s60 + _k75*_s61 + _k76*_s62 + _k77*_s64 + _k78*_s27 + _k79*_s28 + _k80*_s30 + _k81*_s33 + _k82*_s29 + _k83*_s31
     cdef double _s66 = _k88*_s52*(_k85*xE + _k86*_s2 + _k87)
@@ -3284,7 +3284,7 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s70 = _s18*b2
     cdef double _s71 = _s32*b3
     cdef double _s72 = _s63*b5
-    cdef double _s73 = pow(xE, 12.0)
+    cdef double _s73 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*((xE*xE)*(xE*xE)))
     cdef double _s74 = _s73*b6
     cdef double _s75 = _s52*b4
     cdef double _s76 = _s14*b1
@@ -3295,10 +3295,10 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s81 = _s18*b1
     cdef double _s82 = _s52*b3
     cdef double _s83 = _s63*b4
-    cdef double _s84 = pow(xE, 13.0)
+    cdef double _s84 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*((xE*xE)*(xE*xE))*xE)
     cdef double _s85 = _s84*b6
     cdef double _s86 = _k114*_s76 + _k115*_s70 + _k116*_s71 + _k117*_s75 + _k118*_s72 + _k119*_s74 + _k120*_s79 + _k121*_s80 + _k122*_s81 + _k123*_s82 + _k124*_s83 + _k125*_s85 + _k126*_s59 + _k127*_s60 + _k128*_s58 + _k129*_s61 + _k130*_s62 + _k131*_s64
-    cdef double _s87 = pow(xE, 14.0)
+    cdef double _s87 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*((xE*xE)*(xE*xE))*(xE*xE))
     cdef double _s88 = _k135*_s81 + _k136*_s80 + _k137*_s82 + _k138*_s83 + _k139*_s79 + _k140*_s85 + _k141*_s87*b6 + _k142*_s32*b1 + _k143*_s52*b2 + _k144*_s63*b3 + _k145*_s73*b4 + _k146*_s84*b5 + _k147*_s76 + _k148*_s75 + _k149*_s71 + _k150*_s70 + _k151*_s74 + _k152*_s72
     cdef double _s89 = (b1*b1)
     cdef double _s90 = _s89*xE
@@ -3487,9 +3487,9 @@ cdef inline void _system(double t, const double* _y, double* _A, double* _b, dou
     cdef double _s273 = (_cam0[1]*_cam0[1]*_cam0[1])*_s267
     cdef double _s274 = _s143*_s273
     cdef double _s275 = _cam0[2]*_s273
-    cdef double _s276 = (1.0/(pow(_cam0[0], 6.0)*_k608 + pow(_cam0[0], 5.0)*_k613 + _cam0[0]*_k612 + _cam0[0]*_k613*_s138 + pow(_cam0[1], 6.0)*_k608 + _k607 + _k609*_s134*_s138 + _k609*_s135*_s140 + _k610*_s135 + _k611*_s138 + _k614*_s134 + _k615*_s140 + _k616*_s139 + _k617*_s141 + _k618*_s135*_s139 + _k619*_s142))
+    cdef double _s276 = (1.0/((((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*(_cam0[0]*_cam0[0]))*_k608 + (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*_cam0[0])*_k613 + _cam0[0]*_k612 + _cam0[0]*_k613*_s138 + (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*(_cam0[1]*_cam0[1]))*_k608 + _k607 + _k609*_s134*_s138 + _k609*_s135*_s140 + _k610*_s135 + _k611*_s138 + _k614*_s134 + _k615*_s140 + _k616*_s139 + _k617*_s141 + _k618*_s135*_s139 + _k619*_s142))
     cdef double _s277 = _s267*_s276
-    cdef double _s278 = pow(_cam0[1], 5.0)*_s277
+    cdef double _s278 = (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*_cam0[1])*_s277
     cdef double _s279 = _k620*_s278
     cdef double _s280 = _cam0[1]*_s277
     cdef double _s281 = _s145*_s280
@@ -4954,10 +4954,10 @@ cdef inline void _constraints(double t, const double* _y, double* _g, double* _J
     cdef double _p3 = _k236*_p2
     cdef double _p4 = (xE*xE*xE*xE)
     cdef double _p5 = _k237*_p4
-    cdef double _p6 = pow(xE, 5.0)
+    cdef double _p6 = (((xE*xE)*(xE*xE))*xE)
     cdef double _p7 = _k238*_p6
-    cdef double _p8 = _k239*pow(xE, 6.0)
-    cdef double _p9 = _k240*pow(xE, 7.0)
+    cdef double _p8 = _k239*(((xE*xE)*(xE*xE))*(xE*xE))
+    cdef double _p9 = _k240*(((xE*xE)*(xE*xE))*(xE*xE)*xE)
     cdef double _p10 = S_T*_cam0[0] + _k247
     cdef double _p11 = Omega*t - theta
     cdef double _p12 = sin(_p11)
@@ -6421,14 +6421,14 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     _profile(ctx, theta, beta_r, _cam0, 0)
 
     cdef double _o0 = (xE*xE)
-    cdef double _o1 = pow(xE, 5.0)
+    cdef double _o1 = (((xE*xE)*(xE*xE))*xE)
     cdef double _o2 = (xE*xE*xE)
     cdef double _o3 = (xE*xE*xE*xE)
     cdef double _o4 = S_T*_cam0[0]
     cdef double _o5 = _k247 + _o4
     cdef double _o6 = Omega*t - theta
     _out[0] = _o0*(_k11*_o1*b6 + _k2*_o0*b3 + _k5*_o2*b4 + _k658*b1 + _k659*b2*xE + _k8*_o3*b5)  # vE
-    _out[1] = _k235*_o0*b1 + _k236*_o2*b2 + _k237*_o3*b3 + _k238*_o1*b4 + _k239*b5*pow(xE, 6.0) + _k240*b6*pow(xE, 7.0) + _o5*sin(_o6)  # Phi1
+    _out[1] = _k235*_o0*b1 + _k236*_o2*b2 + _k237*_o3*b3 + _k238*_o1*b4 + _k239*b5*(((xE*xE)*(xE*xE))*(xE*xE)) + _k240*b6*(((xE*xE)*(xE*xE))*(xE*xE)*xE) + _o5*sin(_o6)  # Phi1
     _out[2] = _k656 + _o5*cos(_o6) + xE  # Phi2
     _out[3] = _o4  # S
     _out[4] = atan(S_T*_cam0[1]/_o5)  # pressure_angle
@@ -7809,24 +7809,24 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j6 = _j0*_k31 + _j3*_k18 + _j5*_k24
     cdef double _j7 = _j0*_k264
     cdef double _j8 = _j1*_j5
-    cdef double _j9 = pow(xE, 5.0)
+    cdef double _j9 = (((xE*xE)*(xE*xE))*xE)
     cdef double _j10 = _j3*_k30 + _j5*_k19 + _j9*_k27
     cdef double _j11 = _j3*_k261
     cdef double _j12 = _j1*_j9
-    cdef double _j13 = pow(xE, 6.0)
+    cdef double _j13 = (((xE*xE)*(xE*xE))*(xE*xE))
     cdef double _j14 = _j13*_k25 + _j5*_k34 + _j9*_k20
     cdef double _j15 = _j5*_k263
     cdef double _j16 = _j1*_j13
-    cdef double _j17 = pow(xE, 7.0)
+    cdef double _j17 = (((xE*xE)*(xE*xE))*(xE*xE)*xE)
     cdef double _j18 = _j13*_k21 + _j17*_k28 + _j9*_k32
     cdef double _j19 = _j9*_k260
     cdef double _j20 = _j1*_j17
-    cdef double _j21 = pow(xE, 8.0)
+    cdef double _j21 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE))))
     cdef double _j22 = _j13*_k35
     cdef double _j23 = _j17*_k22 + _j21*_k26 + _j22
     cdef double _j24 = _j13*_k262
     cdef double _j25 = _j1*_j21
-    cdef double _j26 = pow(xE, 9.0)
+    cdef double _j26 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*xE)
     cdef double _j27 = _j17*_k33 + _j21*_k23 + _j26*_k29
     cdef double _j28 = b1*xE
     cdef double _j29 = _j0*b1
@@ -7968,7 +7968,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j165 = _j17*_k58 + _j21*_k47 + _j26*_k50
     cdef double _j166 = _j17*_k299
     cdef double _j167 = _j1*_j26
-    cdef double _j168 = pow(xE, 10.0)
+    cdef double _j168 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*(xE*xE))
     cdef double _j169 = _j168*_k54 + _j21*_k59 + _j26*_k48
     cdef double _j170 = _j5*b1
     cdef double _j171 = _j9*b2
@@ -8027,7 +8027,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j224 = _j168*_k74 + _j21*_k82 + _j26*_k70
     cdef double _j225 = _j21*_k338
     cdef double _j226 = _j1*_j168
-    cdef double _j227 = pow(xE, 11.0)
+    cdef double _j227 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*(xE*xE)*xE)
     cdef double _j228 = _j168*_k71 + _j227*_k77 + _j26*_k81
     cdef double _j229 = _j9*b1
     cdef double _j230 = _j13*b2
@@ -8081,7 +8081,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j278 = _j168*_k96 + _j227*_k102 + _j26*_k108
     cdef double _j279 = _j26*_k375
     cdef double _j280 = _j1*_j227
-    cdef double _j281 = pow(xE, 12.0)
+    cdef double _j281 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*((xE*xE)*(xE*xE)))
     cdef double _j282 = _j168*_k107 + _j227*_k97 + _j281*_k103
     cdef double _j283 = _j13*b1
     cdef double _j284 = _j17*b2
@@ -8134,7 +8134,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j331 = _j168*_k127 + _j227*_k118 + _j281*_k120
     cdef double _j332 = _j168*_k410
     cdef double _j333 = _j1*_j281
-    cdef double _j334 = pow(xE, 13.0)
+    cdef double _j334 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*((xE*xE)*(xE*xE))*xE)
     cdef double _j335 = _j227*_k131 + _j281*_k119 + _j334*_k125
     cdef double _j336 = _j17*b1
     cdef double _j337 = _j21*b2
@@ -8183,7 +8183,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j380 = _j168*_k137 + _j227*_k144 + _j26*_k149
     cdef double _j381 = _j168*_k148 + _j227*_k138 + _j281*_k145
     cdef double _j382 = _j227*_k152 + _j281*_k139 + _j334*_k146
-    cdef double _j383 = pow(xE, 14.0)
+    cdef double _j383 = ((((xE*xE)*(xE*xE))*((xE*xE)*(xE*xE)))*((xE*xE)*(xE*xE))*(xE*xE))
     cdef double _j384 = _j281*_k151 + _j334*_k140 + _j383*_k141
     cdef double _j385 = _j21*b1
     cdef double _j386 = _j26*b2
@@ -8293,7 +8293,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j490 = (_cam0[0]*_cam0[0])
     cdef double _j491 = (_cam0[1]*_cam0[1])
     cdef double _j492 = _cam0[0]*_k227 + _j490*_k226 + _j491*_k226 + _k225
-    cdef double _j493 = (1.0/_j492)
+    cdef double _j493 = (1.0/(_j492))
     cdef double _j494 = (thetad*thetad)
     cdef double _j495 = _j493*_j494
     cdef double _j496 = _j495*_k603
@@ -8303,7 +8303,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j500 = _cam0[0]*_j491
     cdef double _j501 = _j490*_j491
     cdef double _j502 = _cam0[0]*_k221 + _j490*_k223 + _j491*_k220 + _j497*_k222 + _j498*_k218 + _j499*_k218 + _j500*_k222 + _j501*_k219 + _k217
-    cdef double _j503 = (1.0/_j502)
+    cdef double _j503 = (1.0/(_j502))
     cdef double _j504 = _cam0[2]*_j503
     cdef double _j505 = _j494*_k625
     cdef double _j506 = _cam0[0]*_j504
@@ -8323,11 +8323,11 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j520 = (_cam0[1]*_cam0[1]*_cam0[1])
     cdef double _j521 = _j503*_j520
     cdef double _j522 = _j494*_j521
-    cdef double _j523 = pow(_cam0[0], 5.0)
+    cdef double _j523 = (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*_cam0[0])
     cdef double _j524 = _cam0[0]*_j499
     cdef double _j525 = _j491*_j497
-    cdef double _j526 = pow(_cam0[0], 6.0)*_k608 + _cam0[0]*_k612 + pow(_cam0[1], 6.0)*_k608 + _j490*_j499*_k609 + _j490*_k614 + _j491*_j498*_k609 + _j491*_k610 + _j497*_k616 + _j498*_k615 + _j499*_k611 + _j500*_k617 + _j501*_k619 + _j523*_k613 + _j524*_k613 + _j525*_k618 + _k607
-    cdef double _j527 = (1.0/_j526)
+    cdef double _j526 = (((_cam0[0]*_cam0[0])*(_cam0[0]*_cam0[0]))*(_cam0[0]*_cam0[0]))*_k608 + _cam0[0]*_k612 + (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*(_cam0[1]*_cam0[1]))*_k608 + _j490*_j499*_k609 + _j490*_k614 + _j491*_j498*_k609 + _j491*_k610 + _j497*_k616 + _j498*_k615 + _j499*_k611 + _j500*_k617 + _j501*_k619 + _j523*_k613 + _j524*_k613 + _j525*_k618 + _k607
+    cdef double _j527 = (1.0/(_j526))
     cdef double _j528 = _j494*_j527
     cdef double _j529 = _j520*_j528
     cdef double _j530 = _cam0[0]*_cam0[1]
@@ -8349,7 +8349,7 @@ cdef inline void _jac_parts(double t, const double* _y, const double* _acc, doub
     cdef double _j546 = _cam0[1]*_j497
     cdef double _j547 = _j546*_k1231
     cdef double _j548 = _j539*_k1233
-    cdef double _j549 = pow(_cam0[1], 5.0)
+    cdef double _j549 = (((_cam0[1]*_cam0[1])*(_cam0[1]*_cam0[1]))*_cam0[1])
     cdef double _j550 = _j528*_k620
     cdef double _j551 = (_cam0[2]*_cam0[2])
     cdef double _j552 = _j528*_j551

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:da62fe081c84c6aa33a14192c3d115413dfc8f1a17cb78253fa38b9e15d6eb8f
-# Text hash: sha256:b361c90c35ef08b02d4f906407bdbee4e59c6b2466a8c249db74847cd395727e
+# Derivation key: sha256:7f3a1de117ae8a5d87216d7f4cd471df874212ac89ab43703ab0b296fb4e6f7a
+# Text hash: sha256:1511845ae0bbd5aca492e3586bcc7705dc7b21ac115db8f7af6aa066fc94ff53
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),
@@ -443,7 +443,7 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             c0 = 3.141592653589793*par
             c1 = (1.0/(c0 - 4.0*par + 1.0))
             c2 = 3.141592653589793*T
-            c3 = (1.0/par)
+            c3 = (1.0/(par))
             c4 = 0.5*c2*c3
             c5 = camlaw_sin(c4)
             c6 = camlaw_cos(c4)
@@ -471,7 +471,7 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             c1 = 1.0 - 4.0*par
             c2 = (1.0/(c0 + c1))
             c3 = T - 1.0
-            c4 = (1.0/par)
+            c4 = (1.0/(par))
             c5 = 1.5707963267948966*c4
             c6 = c3*c5
             c7 = c5*(c3 + 2.0*par)
@@ -738,12 +738,12 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             out[3] = 0.0
         elif seg == 1:
             c0 = (M_PI*M_PI)
-            c1 = (1.0/c0)
+            c1 = (1.0/(c0))
             c2 = (T*T*T)
             c3 = (par*par)
             c4 = 3150.0*c3
             c5 = 2.0*T - 9.0
-            c6 = pow(T, 5.0)*c0
+            c6 = (((T*T)*(T*T))*T)*c0
             c7 = c5*c6
             c8 = (T*T)
             c9 = c0 + 45.0*c3
@@ -779,7 +779,7 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             c1 = (T*T*T)
             c2 = (T*T*T*T)
             c3 = -420.0*T + 540.0*c0 - 315.0*c1 + 70.0*c2 + 126.0
-            out[0] = pow(T, 5.0)*c3
+            out[0] = (((T*T)*(T*T))*T)*c3
             out[1] = 5.0*c2*(T*(216.0*T - 189.0*c0 + 56.0*c1 - 84.0) + c3)
             out[2] = 2520.0*c1*(-5.0*T + 9.0*c0 - 7.0*c1 + 2.0*c2 + 1.0)
             out[3] = 2520.0*c0*(T*(18.0*T - 21.0*c0 + 8.0*c1 - 5.0) - 15.0*T + 27.0*c0 - 21.0*c1 + 6.0*c2 + 3.0)

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:da62fe081c84c6aa33a14192c3d115413dfc8f1a17cb78253fa38b9e15d6eb8f
-# Text hash: sha256:003e4fb62c86bb55b801dfd77f077aba46ae02904a7fac2277c3f55a60b92002
+# Derivation key: sha256:7f3a1de117ae8a5d87216d7f4cd471df874212ac89ab43703ab0b296fb4e6f7a
+# Text hash: sha256:afe2d342f11afea7f614e5b0a11c56cfbd962b2d953d9cb8964edba61b56a40c
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.

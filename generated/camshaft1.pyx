@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:594ad446c9e3701d10fa793794158af96b5b6481d4fc6335e8db5e1f771a785d
-# Text hash: sha256:0c665c79cd2a8139023e5b401617c67338a2bcf668d82cbae84aaebe2271d65f
+# Derivation key: sha256:992c3a17609f74321ba423d5ac2f9c64738bf80fcec9e1058ea0fc231de59828
+# Text hash: sha256:1bf544f8dfc70dce0ab9444be0b9c47b4fabdc6b4a9f0570eb0c7e329daafe98
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:03633cc8abcb2ea81f9eb0ba64cd944ddad176bc9bd229ce3957c4dade57a22c
-# Text hash: sha256:074258c07926dd527a556fa8ffd4f8042018fa6a31b87f1e05337552029bdaf3
+# Derivation key: sha256:b571b8565ec252f7845195e739607b2f31c55ce130e160f29b341a5e526c6ea5
+# Text hash: sha256:3520a9b43f06e93d4dddc75391daad746cc56adde703af0c35e6dcef3f1ef9d3
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a
@@ -177,7 +177,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Mm[0] = 1.0
     _Mm[1] = 0.0
     _Mm[2] = 0.0
-    _Mm[3] = (1.0/Fv)
+    _Mm[3] = (1.0/(Fv))
     _Km[0] = _m0
     _Km[1] = _m1
     _Km[2] = _m1

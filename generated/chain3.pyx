@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8e017aedf83e29c78e3524c9b905f3589c8939e5a1818d5443b8770d680e477a
-# Text hash: sha256:7dfc2770806fb726e68209b20a70de5d1f9d05615eb6b6322e1380021d38b4ee
+# Derivation key: sha256:7956c453d241c0e315f6622050def572d0f03475db45f8738dafabfaaf75c3dd
+# Text hash: sha256:1601a4c7756838a5dc8c2ee20e9dbcbcfb861a5a4312a4e9ac5ecd1305812390
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b232c39322748fe7383a80aeb6a28be0c39268bbb6def1a75c859c8ed69266a4
-# Text hash: sha256:7edc8262626b14aa92a8b98d853d6620910dd588ff403f4784a9a4f0e544e942
+# Derivation key: sha256:f84bd2e2e8fded2e9fd556fe033d45b2bf57003cf6be9d62ebc10047788b46ff
+# Text hash: sha256:21260b15b1596273f33a5f6ef6c4fba7202294dc0c4ccd0cfce598a48691a994
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc
@@ -120,19 +120,19 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double s_r = ctx.p[18]
     cdef double _c0 = c_x*h_m
     cdef double _c1 = 2.0*sqrt(c_x)*sqrt(m_x)*q_x
-    cdef double _c2 = (1.0/beta_m)
-    cdef double _c3 = (1.0/R_b)
+    cdef double _c2 = (1.0/(beta_m))
+    cdef double _c3 = (1.0/(R_b))
     cdef double _c4 = _c2*h_m
     cdef double _c5 = _c3*_c4
     cdef double _c6 = (beta_m*beta_m)
     cdef double _c7 = _c3*h_m/_c6
     cdef double _c8 = 2.0*sqrt(J)*sqrt(k)*q_b
     cdef double _c9 = _c8*omega_s
-    cdef double _c10 = (1.0/J)
-    cdef double _c11 = (1.0/m_y)
-    cdef double _c12 = (1.0/m_z)
-    cdef double _c13 = (1.0/m_x)
-    cdef double _c14 = (1.0/h_m)
+    cdef double _c10 = (1.0/(J))
+    cdef double _c11 = (1.0/(m_y))
+    cdef double _c12 = (1.0/(m_z))
+    cdef double _c13 = (1.0/(m_x))
+    cdef double _c14 = (1.0/(h_m))
     cdef double _c15 = (1.0/(omega_s*omega_s))
     ctx.k[0] = -c_x  # _k0
     ctx.k[1] = _c0  # _k1
@@ -171,7 +171,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[34] = -s_r  # _k34
     ctx.k[35] = _c5  # _k35
     ctx.k[36] = -_c3  # _k36
-    ctx.k[37] = (1.0/omega_s)  # _k37
+    ctx.k[37] = (1.0/(omega_s))  # _k37
     ctx.k[38] = -s_g  # _k38
     ctx.k[39] = _c10*_c2  # _k39
     ctx.k[40] = -_c10*_c4  # _k40

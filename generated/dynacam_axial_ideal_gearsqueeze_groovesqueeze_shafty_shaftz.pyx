@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f50b0d8e5fccf2a22779208db8526de702c0d1793adc44ca24169850bdbb799f
-# Text hash: sha256:7773f981e3c6ded4a2db50697e1dd2b6733c373676b251886bc91c694b651f86
+# Derivation key: sha256:9e092cdea9d469f3d69a21d6d5f7eec6d5a9d188c96ac0cbc36afd54c2259793
+# Text hash: sha256:c5accae2de1a0b6cdf79b0061fdf84d23fd98d47da88f570bb740f3fb569a4f4
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:244320aa74994aa9e669e9639536961ba92c6b1c23be07561292a0c9dea13c5c
@@ -115,11 +115,11 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c0 = sqrt(J)
     cdef double _c1 = 2.0*sqrt(k)*q_b
     cdef double _c2 = _c0*_c1
-    cdef double _c3 = (1.0/J)
+    cdef double _c3 = (1.0/(J))
     cdef double _c4 = _c3*k
     cdef double _c5 = V_T*_c4
-    cdef double _c6 = (1.0/R_b)
-    cdef double _c7 = (1.0/beta_m)
+    cdef double _c6 = (1.0/(R_b))
+    cdef double _c7 = (1.0/(beta_m))
     cdef double _c8 = _c7*h_m
     cdef double _c9 = _c6*_c8
     cdef double _c10 = sqrt(m_x)
@@ -127,7 +127,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c12 = 2.0*_c11*q_x
     cdef double _c13 = _c10*_c12
     cdef double _c14 = (beta_m*beta_m)
-    cdef double _c15 = (1.0/_c14)
+    cdef double _c15 = (1.0/(_c14))
     cdef double _c16 = _c15*_c6*h_m
     cdef double _c17 = V_R*beta_m
     cdef double _c18 = _c13*beta_m
@@ -154,23 +154,23 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c39 = 4.0*_c10*_c11*_c27*q_x
     cdef double _c40 = V_R*_c39
     cdef double _c41 = _c3*_c40
-    cdef double _c42 = (1.0/m_y)
+    cdef double _c42 = (1.0/(m_y))
     cdef double _c43 = R_b*_c18
     cdef double _c44 = _c20*_c42
     cdef double _c45 = _c25*_c34
     cdef double _c46 = _c29*_c42
-    cdef double _c47 = (1.0/m_z)
+    cdef double _c47 = (1.0/(m_z))
     cdef double _c48 = _c19*_c47
     cdef double _c49 = _c28*_c47
     cdef double _c50 = _c49*h_m
-    cdef double _c51 = (1.0/m_x)
+    cdef double _c51 = (1.0/(m_x))
     cdef double _c52 = _c19*_c51
     cdef double _c53 = _c12/_c10
     cdef double _c54 = V_R*_c53
     cdef double _c55 = _c54*h_m
-    cdef double _c56 = (1.0/h_m)
+    cdef double _c56 = (1.0/(h_m))
     cdef double _c57 = (omega_s*omega_s)
-    cdef double _c58 = (1.0/_c57)
+    cdef double _c58 = (1.0/(_c57))
     cdef double _c59 = 0.5*h_m
     cdef double _c60 = 0.5*_c27
     cdef double _c61 = (V_R*V_R)
@@ -278,7 +278,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[65] = _c58*beta_m  # _k65
     ctx.k[66] = _c56  # _k66
     ctx.k[67] = -_c6  # _k67
-    ctx.k[68] = (1.0/omega_s)  # _k68
+    ctx.k[68] = (1.0/(omega_s))  # _k68
     ctx.k[69] = _c59  # _k69
     ctx.k[70] = -_c60  # _k70
     ctx.k[71] = _c6*_c60*_c7  # _k71
@@ -1123,10 +1123,10 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m11 = 2.0*_m10
     cdef double _m12 = _m11*beta_m
     cdef double _m13 = _cam0[0]*h_m
-    cdef double _m14 = (1.0/beta_m)
+    cdef double _m14 = (1.0/(beta_m))
     cdef double _m15 = _cam0[1]*_m14
     cdef double _m16 = _m15*h_m
-    cdef double _m17 = (1.0/R_b)
+    cdef double _m17 = (1.0/(R_b))
     cdef double _m18 = _m17*y
     cdef double _m19 = _m16*_m18
     cdef double _m20 = -_m13 + _m19 + hr + z
@@ -1141,7 +1141,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m29 = _m16*_m17
     cdef double _m30 = _m11*yd
     cdef double _m31 = (beta_m*beta_m)
-    cdef double _m32 = (1.0/_m31)
+    cdef double _m32 = (1.0/(_m31))
     cdef double _m33 = _cam0[2]*_m18*_m32*h_m
     cdef double _m34 = (-_m16*_m28 + _m25 + _m26 + _m27 + _m28*_m33 + _m29*_m30 - _m7 < 0.0)
     cdef double _m35 = _m20 - s_r
@@ -1149,11 +1149,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m37 = _m16*_m36
     cdef double _m38 = _cam0[0]*_m36*h_m - _m18*_m37 - _m36*hr + _m36*s_r - _m36*z
     cdef double _m39 = (_m35 < -1.0/1000000000000.0)
-    cdef double _m40 = (((((1.0/_m23)) if (_m24) else (1e+18))) if (_m34) else ((((1.0/_m38)) if (_m39) else (1e+18))))
+    cdef double _m40 = (((((1.0/(_m23))) if (_m24) else (1e+18))) if (_m34) else ((((1.0/(_m38))) if (_m39) else (1e+18))))
     cdef double _m41 = V_R*_m40
     cdef double _m42 = _m41*beta_m
     cdef double _m43 = _m12 + _m42
-    cdef double _m44 = (1.0/_m43)
+    cdef double _m44 = (1.0/(_m43))
     cdef double _m45 = _m44*h_m
     cdef double _m46 = _m14*_m41
     cdef double _m47 = _cam0[2]*_m46
@@ -1164,12 +1164,12 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m52 = R_b*_m51
     cdef double _m53 = _m31*_m41
     cdef double _m54 = R_b*_m53 + _m52
-    cdef double _m55 = (1.0/_m54)
+    cdef double _m55 = (1.0/(_m54))
     cdef double _m56 = _cam0[3]*_m46*_m55
     cdef double _m57 = _m7*h_m
     cdef double _m58 = _m57*y
     cdef double _m59 = _m51 + _m53
-    cdef double _m60 = (1.0/_m59)
+    cdef double _m60 = (1.0/(_m59))
     cdef double _m61 = (h_m*h_m)
     cdef double _m62 = _m61*betad
     cdef double _m63 = _cam0[2]*_m41
@@ -1197,7 +1197,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m85 = _m74*_m84
     cdef double _m86 = _m41*_m83
     cdef double _m87 = _m74*_m86 + _m85
-    cdef double _m88 = (1.0/_m87)
+    cdef double _m88 = (1.0/(_m87))
     cdef double _m89 = _m61*_m88
     cdef double _m90 = _m30*_m89
     cdef double _m91 = _m41*_m80*y
@@ -1206,14 +1206,14 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m94 = (beta_m*beta_m*beta_m*beta_m)
     cdef double _m95 = _m84*_m94
     cdef double _m96 = _m86*_m94 + _m95
-    cdef double _m97 = (1.0/_m96)
+    cdef double _m97 = (1.0/(_m96))
     cdef double _m98 = (1.0/(_m23*_m23))
-    cdef double _m99 = (1.0/_m21)
+    cdef double _m99 = (1.0/(_m21))
     cdef double _m100 = -0.5*_cam0[2]*_m17*_m32*h_m*y + 0.5*_m15*h_m
     cdef double _m101 = -_m100
     cdef double _m102 = _m101*_m99
     cdef double _m103 = (1.0/(_m38*_m38))
-    cdef double _m104 = (1.0/_m36)
+    cdef double _m104 = (1.0/(_m36))
     cdef double _m105 = _m100*_m104
     cdef double _m106 = ((((_m98*(_cam0[0]*_m101*_m99*h_m + _cam0[1]*_m14*_m21*h_m - _m102*_m19 - _m102*hr - _m102*z - _m21*_m33)) if (_m24) else (0.0))) if (_m34) else (((_m103*(-_m105*_m13 + _m105*_m19 + _m105*hr - _m105*s_r + _m105*z + _m33*_m36 - _m37)) if (_m39) else (0.0))))
     cdef double _m107 = _m106*_m7
@@ -1305,11 +1305,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m193 = _cam0[1]*_m192*h_m
     cdef double _m194 = R_b*_m12
     cdef double _m195 = R_b*_m42 + _m194
-    cdef double _m196 = (1.0/_m195)
+    cdef double _m196 = (1.0/(_m195))
     cdef double _m197 = _m196*_m47
     cdef double _m198 = _m51*_m83
     cdef double _m199 = _m198 + _m53*_m83
-    cdef double _m200 = (1.0/_m199)
+    cdef double _m200 = (1.0/(_m199))
     cdef double _m201 = _m28*_m89
     cdef double _m202 = _m108*_m196
     cdef double _m203 = _m106*_m202
@@ -1329,7 +1329,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m217 = _m30*h_m
     cdef double _m218 = _m28*h_m
     cdef double _m219 = _m11 + _m41
-    cdef double _m220 = (1.0/_m219)
+    cdef double _m220 = (1.0/(_m219))
     cdef double _m221 = V_R*_m220
     cdef double _m222 = _m221*_m7
     cdef double _m223 = _m106*_m221
@@ -1612,9 +1612,9 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j10 = sqrt(_j9)
     cdef double _j11 = _j10*_j5 - _j10*phir + _j10*s_g
     cdef double _j12 = (_j9 > 1.0/1000000000000.0)
-    cdef double _j13 = (((((1.0/_j3)) if (_j7) else (1e+18))) if (_j8) else ((((1.0/_j11)) if (_j12) else (1e+18))))
+    cdef double _j13 = (((((1.0/(_j3))) if (_j7) else (1e+18))) if (_j8) else ((((1.0/(_j11))) if (_j12) else (1e+18))))
     cdef double _j14 = V_T*_j13 + _k3
-    cdef double _j15 = (1.0/_j14)
+    cdef double _j15 = (1.0/(_j14))
     cdef double _j16 = _j13*_j15
     cdef double _j17 = _k73*hr
     cdef double _j18 = _cam0[0]*_k6
@@ -1636,42 +1636,42 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j34 = sqrt(_j33)
     cdef double _j35 = _j30*_j34 + _j32*_j34 - _j34*hr + _j34*s_r - _j34*z
     cdef double _j36 = (_j21 + _k14 < -1.0/1000000000000.0)
-    cdef double _j37 = (((((1.0/_j23)) if (_j24) else (1e+18))) if (_j29) else ((((1.0/_j35)) if (_j36) else (1e+18))))
+    cdef double _j37 = (((((1.0/(_j23))) if (_j24) else (1e+18))) if (_j29) else ((((1.0/(_j35))) if (_j36) else (1e+18))))
     cdef double _j38 = _j37*_k21 + _k22
-    cdef double _j39 = (1.0/_j38)
+    cdef double _j39 = (1.0/(_j38))
     cdef double _j40 = _j37*_j39
     cdef double _j41 = _j40*y
     cdef double _j42 = _k74*x
     cdef double _j43 = _j41*_k80
     cdef double _j44 = _cam0[1]*_j37
     cdef double _j45 = _j37*_k31 + _k32
-    cdef double _j46 = (1.0/_j45)
+    cdef double _j46 = (1.0/(_j45))
     cdef double _j47 = _j46*yd
     cdef double _j48 = _j47*_k77
     cdef double _j49 = _j37*_k85
     cdef double _j50 = _j25*_j49
     cdef double _j51 = _j37*_k33 + _k34
-    cdef double _j52 = (1.0/_j51)
+    cdef double _j52 = (1.0/(_j51))
     cdef double _j53 = _j52*y
     cdef double _j54 = _j37*_k95
     cdef double _j55 = (y*y)
     cdef double _j56 = _j37*_k29 + _k30
-    cdef double _j57 = (1.0/_j56)
+    cdef double _j57 = (1.0/(_j56))
     cdef double _j58 = _j55*_j57
     cdef double _j59 = _k73*x
     cdef double _j60 = (1.0/(_j23*_j23))
-    cdef double _j61 = (1.0/_j22)
+    cdef double _j61 = (1.0/(_j22))
     cdef double _j62 = _cam0[0]*_k70
     cdef double _j63 = _j61*_k69
     cdef double _j64 = _cam0[1]*_j61
     cdef double _j65 = _k71*y
     cdef double _j66 = (1.0/(_j35*_j35))
-    cdef double _j67 = (1.0/_j34)
+    cdef double _j67 = (1.0/(_j34))
     cdef double _j68 = _j67*_k69
     cdef double _j69 = _j65*_j67
     cdef double _j70 = ((((_j60*(_j22*h_m + _j61*_j62 + _j63*hr + _j63*z + _j64*_j65)) if (_j24) else (0.0))) if (_j29) else (((_j66*(_cam0[1]*_j69 + _j34*_k6 + _j62*_j67 + _j67*_k72 + _j68*hr + _j68*z)) if (_j36) else (0.0))))
     cdef double _j71 = _j37*_k15 + _k16
-    cdef double _j72 = (1.0/_j71)
+    cdef double _j72 = (1.0/(_j71))
     cdef double _j73 = _cam0[1]*_j72
     cdef double _j74 = _j70*_j73
     cdef double _j75 = _k74*hr
@@ -1684,7 +1684,7 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j82 = (_cam0[1]*_cam0[1])
     cdef double _j83 = _j70*_j82
     cdef double _j84 = _j37*_k23 + _k24
-    cdef double _j85 = (1.0/_j84)
+    cdef double _j85 = (1.0/(_j84))
     cdef double _j86 = _k77*betad
     cdef double _j87 = _j85*_j86
     cdef double _j88 = _j39*yd
@@ -1815,10 +1815,10 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j213 = _j46*_j78
     cdef double _j214 = _j210*_k26 + _j211*_k28
     cdef double _j215 = (1.0/(_j3*_j3))
-    cdef double _j216 = (1.0/_j2)
+    cdef double _j216 = (1.0/(_j2))
     cdef double _j217 = 0.5*phir
     cdef double _j218 = (1.0/(_j11*_j11))
-    cdef double _j219 = (1.0/_j10)
+    cdef double _j219 = (1.0/(_j10))
     cdef double _j220 = ((((_j215*(-_j2 - _j216*_j217 + _j216*_k109*t)) if (_j7) else (0.0))) if (_j8) else (((_j218*(_j10 - _j217*_j219 + _j219*_k109*t + _j219*_k110)) if (_j12) else (0.0))))
     cdef double _j221 = _j15*_k20
     cdef double _j222 = _j15*_j220
@@ -1832,12 +1832,12 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j230 = _k112*phir
     cdef double _j231 = _k114*betad
     cdef double _j232 = _j37*_k38 + _k39
-    cdef double _j233 = (1.0/_j232)
+    cdef double _j233 = (1.0/(_j232))
     cdef double _j234 = _cam0[1]*_j233
     cdef double _j235 = _j234*_j70
     cdef double _j236 = _j235*_k80
     cdef double _j237 = _j37*_k43 + _k44
-    cdef double _j238 = (1.0/_j237)
+    cdef double _j238 = (1.0/(_j237))
     cdef double _j239 = _j238*yd
     cdef double _j240 = _j239*_k77
     cdef double _j241 = _j39*betad
@@ -1885,7 +1885,7 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j283 = _j282*_k42
     cdef double _j284 = _cam0[3]*_j41*betad
     cdef double _j285 = V_R*_j37 + _k9
-    cdef double _j286 = (1.0/_j285)
+    cdef double _j286 = (1.0/(_j285))
     cdef double _j287 = _j286*_j70
     cdef double _j288 = _k127*hr
     cdef double _j289 = _k128*x
@@ -1950,7 +1950,7 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j348 = _k3*(-betad + omega_s) + k*(-_j4 - beta)
     cdef double _j349 = (_j348 > 0.0)
     cdef double _j350 = V_T*((((pow(_j1, -3.0/2.0)) if (_j7) else (1e+18))) if (_j349) else (((pow(_j9, -3.0/2.0)) if (_j12) else (1e+18)))) + _k3
-    cdef double _j351 = (1.0/_j350)
+    cdef double _j351 = (1.0/(_j350))
     cdef double _j352 = pow(_j1, -5.0/2.0)
     cdef double _j353 = pow(_j9, -5.0/2.0)
     cdef double _j354 = V_T*_j348/(_j350*_j350)
@@ -1960,7 +1960,7 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j358 = _k9*(_cam0[1]*_j356 + _j357*betad - xd - zd) + c_x*(hr - x)
     cdef double _j359 = (_j358 > 0.0)
     cdef double _j360 = V_R*((((pow(_j21, -3.0/2.0)) if (_j24) else (1e+18))) if (_j359) else (((pow(_j33, -3.0/2.0)) if (_j36) else (1e+18)))) + _k9
-    cdef double _j361 = (1.0/_j360)
+    cdef double _j361 = (1.0/(_j360))
     cdef double _j362 = pow(_j21, -5.0/2.0)
     cdef double _j363 = pow(_j33, -5.0/2.0)
     cdef double _j364 = _j358/(_j360*_j360)

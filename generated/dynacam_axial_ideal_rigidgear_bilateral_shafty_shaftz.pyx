@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a9e012f4bc95cadcc49a81438b9c687e364def0b24bc7d51675f1fab813bf9a5
-# Text hash: sha256:05e617e5fa72e474bef237cd8a0973a08c363469cdfdd5c1e62a6cb166e99389
+# Derivation key: sha256:8b7c49da54ad038d32ed7bb7d745a4c4ca8ad4700cbe9fbc974f4446cd0dca6b
+# Text hash: sha256:d3546986fa19460bee0defdb4c81f9d673f7c66a7896d8b11a1c4363e3a8af9e
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e
@@ -64,7 +64,7 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport pow, sqrt
+from libc.math cimport sqrt
 
 from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
@@ -108,16 +108,16 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double m_z = ctx.p[14]
     cdef double c_z = ctx.p[15]
     cdef double q_z = ctx.p[16]
-    cdef double _c0 = (1.0/J)
+    cdef double _c0 = (1.0/(J))
     cdef double _c1 = _c0*k
     cdef double _c2 = sqrt(J)
     cdef double _c3 = 2.0*sqrt(k)*q_b
     cdef double _c4 = _c3/_c2
     cdef double _c5 = (h_m*h_m)
     cdef double _c6 = _c5*c_x
-    cdef double _c7 = (1.0/R_b)
+    cdef double _c7 = (1.0/(R_b))
     cdef double _c8 = (beta_m*beta_m)
-    cdef double _c9 = (1.0/_c8)
+    cdef double _c9 = (1.0/(_c8))
     cdef double _c10 = _c7*_c9
     cdef double _c11 = _c0*_c10
     cdef double _c12 = c_x*h_m
@@ -128,13 +128,13 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c17 = 2.0*_c16
     cdef double _c18 = _c0*_c17
     cdef double _c19 = _c17*_c5
-    cdef double _c20 = (1.0/beta_m)
+    cdef double _c20 = (1.0/(beta_m))
     cdef double _c21 = _c20*h_m
     cdef double _c22 = _c0*_c21
     cdef double _c23 = (beta_m*beta_m*beta_m)
-    cdef double _c24 = (1.0/_c23)
+    cdef double _c24 = (1.0/(_c23))
     cdef double _c25 = (R_b*R_b)
-    cdef double _c26 = (1.0/_c25)
+    cdef double _c26 = (1.0/(_c25))
     cdef double _c27 = _c0*_c26
     cdef double _c28 = _c27*_c5
     cdef double _c29 = _c24*_c28
@@ -144,23 +144,23 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c33 = _c24*_c7
     cdef double _c34 = 4.0*_c16
     cdef double _c35 = _c34*_c5
-    cdef double _c36 = (1.0/m_y)
+    cdef double _c36 = (1.0/(m_y))
     cdef double _c37 = _c26*_c36
     cdef double _c38 = _c32*_c37
     cdef double _c39 = _c21*_c7
     cdef double _c40 = _c36*_c39
     cdef double _c41 = _c10*_c36
-    cdef double _c42 = (1.0/m_z)
+    cdef double _c42 = (1.0/(m_z))
     cdef double _c43 = -_c42*(c_x + c_z)
     cdef double _c44 = _c12*_c42
     cdef double _c45 = 2.0*_c42
     cdef double _c46 = _c16*_c45
     cdef double _c47 = sqrt(m_z)
     cdef double _c48 = sqrt(c_z)*q_z
-    cdef double _c49 = (1.0/m_x)
+    cdef double _c49 = (1.0/(m_x))
     cdef double _c50 = _c12*_c49
     cdef double _c51 = 2.0*_c15/_c14
-    cdef double _c52 = (1.0/h_m)
+    cdef double _c52 = (1.0/(h_m))
     cdef double _c53 = (1.0/(omega_s*omega_s))
     cdef double _c54 = _c12*_c20
     cdef double _c55 = _c54*_c7
@@ -226,11 +226,11 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[49] = -_c13  # _k49
     ctx.k[50] = -_c39  # _k50
     ctx.k[51] = -_c7  # _k51
-    ctx.k[52] = (1.0/omega_s)  # _k52
+    ctx.k[52] = (1.0/(omega_s))  # _k52
     ctx.k[53] = _c39  # _k53
     ctx.k[54] = -_c56*_c6  # _k54
     ctx.k[55] = _c58  # _k55
-    ctx.k[56] = _c27/pow(beta_m, 5.0)  # _k56
+    ctx.k[56] = _c27/(((beta_m*beta_m)*(beta_m*beta_m))*beta_m)  # _k56
     ctx.k[57] = 2.0*_c58  # _k57
     ctx.k[58] = _c35*_c57  # _k58
     ctx.k[59] = _c12*_c56  # _k59
@@ -727,7 +727,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m9 = _m6*_m8
     cdef double _m10 = c_x*y
     cdef double _m11 = _m10*h_m
-    cdef double _m12 = (1.0/R_b)
+    cdef double _m12 = (1.0/(R_b))
     cdef double _m13 = (1.0/(beta_m*beta_m*beta_m))
     cdef double _m14 = _m12*_m13
     cdef double _m15 = _cam0[3]*_m14
@@ -757,7 +757,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m39 = _cam0[1]*_m30
     cdef double _m40 = betad*y
     cdef double _m41 = _m12*_m34*_m40
-    cdef double _m42 = (1.0/beta_m)
+    cdef double _m42 = (1.0/(beta_m))
     cdef double _m43 = _m12*_m42
     cdef double _m44 = _cam0[1]*_cam0[2]*_m43
     cdef double _m45 = _m44*h_m
@@ -789,7 +789,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     _Mm[13] = 0.0
     _Mm[14] = 0.0
     _Mm[15] = m_x
-    _Km[0] = -_cam0[0]*_m15*_m17 + _cam0[2]*_cam0[3]*_m28*_m33*betad/pow(beta_m, 5.0) - _m1*_m3 + _m13*_m34*_m35 + _m16*x + _m16*z - 3.0*_m17*_m19 - _m19*_m34*yd - _m23*_m3 - _m24*_m3 + _m25*_m28*_m30 + _m28*_m32*c_x - _m3*_m4 + _m32*_m38 - _m32*_m41 + _m36*xd + _m36*zd + _m38*_m39 - _m39*_m41 + _m6*_m7 + _m9 + k
+    _Km[0] = -_cam0[0]*_m15*_m17 + _cam0[2]*_cam0[3]*_m28*_m33*betad/(((beta_m*beta_m)*(beta_m*beta_m))*beta_m) - _m1*_m3 + _m13*_m34*_m35 + _m16*x + _m16*z - 3.0*_m17*_m19 - _m19*_m34*yd - _m23*_m3 - _m24*_m3 + _m25*_m28*_m30 + _m28*_m32*c_x - _m3*_m4 + _m32*_m38 - _m32*_m41 + _m36*xd + _m36*zd + _m38*_m39 - _m39*_m41 + _m6*_m7 + _m9 + k
     _Km[1] = _m46*(_m33*_m40*_m47 + _m37*_m45 + _m49)
     _Km[2] = _m50
     _Km[3] = _m50

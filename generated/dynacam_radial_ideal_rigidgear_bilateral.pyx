@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:40dd1689ed27e59f3e48a97f2286f3f6a5394484eea19760140e25e6ab6360db
-# Text hash: sha256:7ed67ff0741cc1bcec78e5acfe5876ae2eb44603e84502920786f60a23d0da5e
+# Derivation key: sha256:6d4b364385390ea7a66876fee4a9c9357ee2eb702b3da7791c42726359a15f89
+# Text hash: sha256:aad31ff71ed87d32e5f91413cbfd583c29646eb4d509e6d65db441e85f086d15
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:747e34dbea18a7d307dc7101158b4419fb0642de73f52917507a7d1b1d7004c3
@@ -102,7 +102,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double m_x = ctx.p[8]
     cdef double c_x = ctx.p[9]
     cdef double q_x = ctx.p[10]
-    cdef double _c0 = (1.0/J)
+    cdef double _c0 = (1.0/(J))
     cdef double _c1 = _c0*k
     cdef double _c2 = sqrt(J)
     cdef double _c3 = 2.0*sqrt(k)*q_b
@@ -112,17 +112,17 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c7 = sqrt(c_x)
     cdef double _c8 = 2.0*_c7*q_x
     cdef double _c9 = _c6*_c8
-    cdef double _c10 = (1.0/beta_m)
+    cdef double _c10 = (1.0/(beta_m))
     cdef double _c11 = _c10*h_m
     cdef double _c12 = _c0*_c11
     cdef double _c13 = (h_m*h_m)
     cdef double _c14 = (beta_m*beta_m)
-    cdef double _c15 = (1.0/_c14)
+    cdef double _c15 = (1.0/(_c14))
     cdef double _c16 = _c0*_c15
-    cdef double _c17 = (1.0/m_x)
+    cdef double _c17 = (1.0/(m_x))
     cdef double _c18 = _c17*_c5
     cdef double _c19 = _c8/_c6
-    cdef double _c20 = (1.0/h_m)
+    cdef double _c20 = (1.0/(h_m))
     cdef double _c21 = (1.0/(omega_s*omega_s))
     cdef double _c22 = _c13*c_x
     ctx.k[0] = -_c1  # _k0
@@ -150,7 +150,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[22] = _c5  # _k22
     ctx.k[23] = -_c9  # _k23
     ctx.k[24] = _c11*_c9  # _k24
-    ctx.k[25] = (1.0/omega_s)  # _k25
+    ctx.k[25] = (1.0/(omega_s))  # _k25
     ctx.k[26] = _c11  # _k26
     ctx.k[27] = _c5*beta_m  # _k27
     ctx.k[28] = -_c22*beta_m  # _k28
@@ -383,7 +383,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m0 = (beta_m*beta_m)
     cdef double _m1 = (h_m*h_m)
     cdef double _m2 = sqrt(c_x)*sqrt(m_x)*q_x
-    cdef double _m3 = (1.0/beta_m)
+    cdef double _m3 = (1.0/(beta_m))
     cdef double _m4 = _cam0[2]*_m3*betad
     cdef double _m5 = 2.0*_m2
     cdef double _m6 = _cam0[1]*c_x

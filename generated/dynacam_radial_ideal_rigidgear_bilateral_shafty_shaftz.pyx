@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fab6f581a507d4e75c68e2b6a9c1e2306535b4ad20b5e59d79163926a56c6056
-# Text hash: sha256:57694994d419de2f1495e9609fa3dd81113929ee003c0e892be4ec9a62fed2da
+# Derivation key: sha256:c88d130b1ec396d00054e4826c38e957578bcbf7c16856789e85172eca308c87
+# Text hash: sha256:d79acbcd75b5070275815306660566dcaeb668e8d1a8afc8315685e19b274666
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:478faccf329f7294d2cd47f536ad5f78fa53fe5d590d1d87b6cb5079502bd98d
@@ -64,7 +64,7 @@
 import json
 
 from cpython.pycapsule cimport PyCapsule_New
-from libc.math cimport pow, sqrt
+from libc.math cimport sqrt
 
 from camdyn.runtime.engine.abi cimport *
 from camdyn.generated.camlaws cimport (camlaw_dwell, camlaw_dwell_value, camlaw_eval, camlaw_hi,
@@ -146,8 +146,8 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c35 = _c16*_c34
     cdef double _c36 = _c16*_c5
     cdef double _c37 = 4.0*_c16
-    cdef double _c38 = (1.0/J)
-    cdef double _c39 = (1.0/_c25)
+    cdef double _c38 = (1.0/(J))
+    cdef double _c39 = (1.0/(_c25))
     cdef double _c40 = _c38*_c39
     cdef double _c41 = sqrt(m_y)
     cdef double _c42 = 2.0*sqrt(c_y)*q_y
@@ -155,18 +155,18 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c44 = _c17*_c5
     cdef double _c45 = 2.0*_c30
     cdef double _c46 = _c16*_c45
-    cdef double _c47 = (1.0/_c26)
-    cdef double _c48 = (1.0/m_y)
+    cdef double _c47 = (1.0/(_c26))
+    cdef double _c48 = (1.0/(m_y))
     cdef double _c49 = _c47*_c48
     cdef double _c50 = c_x + c_z
     cdef double _c51 = sqrt(m_z)
     cdef double _c52 = sqrt(c_z)*q_z
     cdef double _c53 = _c16 + _c51*_c52
     cdef double _c54 = beta_m*h_m
-    cdef double _c55 = (1.0/_c19)
-    cdef double _c56 = (1.0/m_z)
+    cdef double _c55 = (1.0/(_c19))
+    cdef double _c56 = (1.0/(m_z))
     cdef double _c57 = _c55*_c56
-    cdef double _c58 = (1.0/m_x)
+    cdef double _c58 = (1.0/(m_x))
     cdef double _c59 = _c55*_c58
     cdef double _c60 = _c23/_c22
     cdef double _c61 = -_c50*_c56
@@ -174,8 +174,8 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c63 = _c16*_c62
     cdef double _c64 = _c15/_c14
     cdef double _c65 = 2.0*_c64
-    cdef double _c66 = (1.0/beta_m)
-    cdef double _c67 = (1.0/h_m)
+    cdef double _c66 = (1.0/(beta_m))
+    cdef double _c67 = (1.0/(h_m))
     cdef double _c68 = (1.0/(omega_s*omega_s))
     cdef double _c69 = _c13*_c66
     cdef double _c70 = _c66*h_m
@@ -268,7 +268,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[73] = _c1*_c55  # _k73
     ctx.k[74] = -_c55*h_m  # _k74
     ctx.k[75] = -_c70  # _k75
-    ctx.k[76] = (1.0/omega_s)  # _k76
+    ctx.k[76] = (1.0/(omega_s))  # _k76
     ctx.k[77] = _c32  # _k77
     ctx.k[78] = _c71  # _k78
     ctx.k[79] = _c72  # _k79
@@ -283,7 +283,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[88] = _c29*c_x  # _k88
     ctx.k[89] = -_c76*c_x  # _k89
     ctx.k[90] = -_c77*c_x  # _k90
-    ctx.k[91] = -_c17*pow(h_m, 5.0)  # _k91
+    ctx.k[91] = -_c17*(((h_m*h_m)*(h_m*h_m))*h_m)  # _k91
     ctx.k[92] = -_c44  # _k92
     ctx.k[93] = -_c17*_c77  # _k93
     ctx.k[94] = _c78  # _k94
@@ -304,7 +304,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[109] = -_c28*_c79  # _k109
     ctx.k[110] = -_c29*_c37  # _k110
     ctx.k[111] = 8.0*_c36  # _k111
-    ctx.k[112] = _c38/pow(beta_m, 5.0)  # _k112
+    ctx.k[112] = _c38/(((beta_m*beta_m)*(beta_m*beta_m))*beta_m)  # _k112
     ctx.k[113] = -_c80  # _k113
     ctx.k[114] = _c28*c_x  # _k114
     ctx.k[115] = -_c30*c_x  # _k115
@@ -785,7 +785,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
         camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef double _o0 = R_b + _cam0[0]*h_m
-    cdef double _o1 = (1.0/_o0)
+    cdef double _o1 = (1.0/(_o0))
     cdef double _o2 = _o1*y
     cdef double _o3 = _o1*yd
     cdef double _o4 = _cam0[1]*_k72
@@ -981,7 +981,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     camlaw_eval(ctx.law[0], ctx.law_par[0], ctx.mode[0], beta/beta_m - beta_0/beta_m, _cam0)
 
     cdef double _m0 = (beta_m*beta_m)
-    cdef double _m1 = (1.0/_m0)
+    cdef double _m1 = (1.0/(_m0))
     cdef double _m2 = _cam0[2]*_m1*c_x*h_m
     cdef double _m3 = (h_m*h_m)
     cdef double _m4 = (_cam0[1]*_cam0[1])
@@ -994,11 +994,11 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m11 = _m1*_m10
     cdef double _m12 = _m8*zd
     cdef double _m13 = (beta_m*beta_m*beta_m)
-    cdef double _m14 = (1.0/beta_m)
+    cdef double _m14 = (1.0/(beta_m))
     cdef double _m15 = R_b*_m0
     cdef double _m16 = _cam0[0]*h_m
     cdef double _m17 = _m0*_m16 + _m15
-    cdef double _m18 = (1.0/_m17)
+    cdef double _m18 = (1.0/(_m17))
     cdef double _m19 = x*y
     cdef double _m20 = _cam0[2]*_m3*c_x
     cdef double _m21 = (1.0/(_m17*_m17))
@@ -1028,7 +1028,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m45 = _m44*y
     cdef double _m46 = R_b*_m13
     cdef double _m47 = _m13*_m16 + _m46
-    cdef double _m48 = (1.0/_m47)
+    cdef double _m48 = (1.0/(_m47))
     cdef double _m49 = _m14*_m48
     cdef double _m50 = (_cam0[2]*_cam0[2])
     cdef double _m51 = _m3*_m50
@@ -1039,13 +1039,13 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m56 = (_cam0[0]*_cam0[0])
     cdef double _m57 = _m3*_m56
     cdef double _m58 = _m0*_m57 + _m15*_m55 + _m54
-    cdef double _m59 = (1.0/_m58)
+    cdef double _m59 = (1.0/(_m58))
     cdef double _m60 = _cam0[2]*_m29*_m59
     cdef double _m61 = 2.0*_m32*_m60
     cdef double _m62 = (y*y)
     cdef double _m63 = _m13*_m53
     cdef double _m64 = _m13*_m57 + _m46*_m55 + _m63
-    cdef double _m65 = (1.0/_m64)
+    cdef double _m65 = (1.0/(_m64))
     cdef double _m66 = _m14*_m59
     cdef double _m67 = _m33*_m66
     cdef double _m68 = 4.0*_m67
@@ -1053,7 +1053,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m70 = _m53*_m69
     cdef double _m71 = _m57*_m69
     cdef double _m72 = R_b*_m55*_m69 + _m70 + _m71
-    cdef double _m73 = (1.0/_m72)
+    cdef double _m73 = (1.0/(_m72))
     cdef double _m74 = _m3*_m4
     cdef double _m75 = _m74*c_x
     cdef double _m76 = (1.0/(_m58*_m58))
@@ -1075,7 +1075,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m92 = _m27*_m91
     cdef double _m93 = 3.0*_m16
     cdef double _m94 = _m13*_m92 + 3.0*_m46*_m57 + _m63*_m93 + _m90
-    cdef double _m95 = (1.0/_m94)
+    cdef double _m95 = (1.0/(_m94))
     cdef double _m96 = _m4*_m95
     cdef double _m97 = _cam0[2]*_m62
     cdef double _m98 = _m74*_m83
@@ -1085,14 +1085,14 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m102 = _m69*_m89
     cdef double _m103 = _m69*_m92
     cdef double _m104 = 3.0*R_b*_m71 + _m102 + _m103 + _m70*_m93
-    cdef double _m105 = (1.0/_m104)
+    cdef double _m105 = (1.0/(_m104))
     cdef double _m106 = 8.0*_m105*_m43
     cdef double _m107 = _m14*_m62
     cdef double _m108 = _m27*_m4*_m44
     cdef double _m109 = _cam0[1]*_m13
     cdef double _m110 = (h_m*h_m*h_m*h_m)
     cdef double _m111 = (R_b*R_b*R_b*R_b)*_m69 + 4.0*R_b*_m103 + (_cam0[0]*_cam0[0]*_cam0[0]*_cam0[0])*_m110*_m69 + 4.0*_m102*_m16 + 6.0*_m57*_m70
-    cdef double _m112 = (1.0/_m111)
+    cdef double _m112 = (1.0/(_m111))
     cdef double _m113 = _m27*c_x
     cdef double _m114 = 3.0*_m78
     cdef double _m115 = _cam0[1]*_m28
@@ -1121,7 +1121,7 @@ cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, C
     cdef double _m138 = _m29*_m78
     cdef double _m139 = _cam0[2]*_m18*c_x*h_m*y - _m132*y - _m138
     cdef double _m140 = _m16*beta_m + _m77
-    cdef double _m141 = (1.0/_m140)
+    cdef double _m141 = (1.0/(_m140))
     cdef double _m142 = _m141*_m29
     cdef double _m143 = (1.0/(_m140*_m140))
     cdef double _m144 = _m143*_m75
@@ -1395,12 +1395,12 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j33 = _j32*xd
     cdef double _j34 = _j32*zd
     cdef double _j35 = _j18*_k16
-    cdef double _j36 = (1.0/_j12)
-    cdef double _j37 = (1.0/_j8)
-    cdef double _j38 = (1.0/_j9)
+    cdef double _j36 = (1.0/(_j12))
+    cdef double _j37 = (1.0/(_j8))
+    cdef double _j38 = (1.0/(_j9))
     cdef double _j39 = _j37*_j38
     cdef double _j40 = _j36*_j39
-    cdef double _j41 = (1.0/_j4)
+    cdef double _j41 = (1.0/(_j4))
     cdef double _j42 = _j41*_k112
     cdef double _j43 = (_cam0[1]*_cam0[1]*_cam0[1])
     cdef double _j44 = _j10*_j12

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1ee177a0d5513f792a921a77e3d19a36d5de1dff664534b16ed2f3902c28b2b8
-# Text hash: sha256:7c51f6993c697d506d8c15fca5cfafd68e801b9b737a1db307148be7d7de83f4
+# Derivation key: sha256:45c939b8b2d3e7053e2d7b3063aa2e04393bf10efc50806475aed4ae2159c335
+# Text hash: sha256:5f0abeb7e9469091685fa87911bec07d822f1de6a46dd4a89b2ef26a9bb70f59
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7df6f3da3414231df3e2e1f7adc385d77f7cfc0e35b975f115056fce8cb53bba
@@ -124,7 +124,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c1 = c_x*h_m
     cdef double _c2 = sqrt(c_x)*sqrt(m_x)*q_x
     cdef double _c3 = 2.0*_c2
-    cdef double _c4 = (1.0/beta_m)
+    cdef double _c4 = (1.0/(beta_m))
     cdef double _c5 = _c4*h_m
     cdef double _c6 = (beta_m*beta_m)
     cdef double _c7 = R_b*_c6
@@ -136,13 +136,13 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c13 = _c12*omega_s
     cdef double _c14 = R_b*nu_b
     cdef double _c15 = h_m*nu_b
-    cdef double _c16 = (1.0/J)
-    cdef double _c17 = (1.0/m_y)
-    cdef double _c18 = (1.0/m_z)
-    cdef double _c19 = (1.0/m_x)
-    cdef double _c20 = (1.0/h_m)
+    cdef double _c16 = (1.0/(J))
+    cdef double _c17 = (1.0/(m_y))
+    cdef double _c18 = (1.0/(m_z))
+    cdef double _c19 = (1.0/(m_x))
+    cdef double _c20 = (1.0/(h_m))
     cdef double _c21 = (1.0/(omega_s*omega_s))
-    cdef double _c22 = (1.0/_c6)
+    cdef double _c22 = (1.0/(_c6))
     cdef double _c23 = _c8*beta_m
     cdef double _c24 = _c11*beta_m
     cdef double _c25 = 2.0*_c9
@@ -202,7 +202,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[47] = -_c1*_c4  # _k47
     ctx.k[48] = _c22*_c8  # _k48
     ctx.k[49] = -_c22*h_m  # _k49
-    ctx.k[50] = (1.0/omega_s)  # _k50
+    ctx.k[50] = (1.0/(omega_s))  # _k50
     ctx.k[51] = _c23*c_x  # _k51
     ctx.k[52] = _c2*_c24  # _k52
     ctx.k[53] = _c2*_c25  # _k53
@@ -530,7 +530,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
 
     cdef double _o0 = _cam0[0]*_k27 + x
     cdef double _o1 = R_b + _cam0[0]*h_m
-    cdef double _o2 = (1.0/_o1)
+    cdef double _o2 = (1.0/(_o1))
     cdef double _o3 = _o2*y
     cdef double _o4 = _o2*yd
     cdef double _o5 = _cam0[1]*_k24
@@ -827,7 +827,7 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j0 = (ctx.mode[2] == 0.0)
     cdef double _j1 = (ctx.mode[2] == 1.0)
     cdef double _j2 = _cam0[0]*_k11 + _k10
-    cdef double _j3 = (1.0/_j2)
+    cdef double _j3 = (1.0/(_j2))
     cdef double _j4 = _j3*y
     cdef double _j5 = _k8*betad
     cdef double _j6 = _j4*_j5
@@ -838,13 +838,13 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j11 = _j10*_j8
     cdef double _j12 = (_cam0[1]*_cam0[1])
     cdef double _j13 = (_cam0[0]*_cam0[0])*_k13 + _cam0[0]*_k14 + _k12
-    cdef double _j14 = (1.0/_j13)
+    cdef double _j14 = (1.0/(_j13))
     cdef double _j15 = _j12*_j14
     cdef double _j16 = _j15*_k19
     cdef double _j17 = _j8*y
     cdef double _j18 = _k9*betad
     cdef double _j19 = _cam0[0]*_k6 + _k5
-    cdef double _j20 = (1.0/_j19)
+    cdef double _j20 = (1.0/(_j19))
     cdef double _j21 = _j20*y
     cdef double _j22 = _j21*_k7
     cdef double _j23 = _j20*yd

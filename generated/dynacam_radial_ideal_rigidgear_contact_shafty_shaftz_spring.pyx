@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:81451f478c43f272dae506ec40c5c8ee7234e2bef02262e2051d7838911416b0
-# Text hash: sha256:6cc979e7154863dd0ba45a279c6d0c3324813d5068766bf6ba75b9ff0c88766a
+# Derivation key: sha256:20d66d3c7df3d3e4b3e79f6c508f68d81efa2bb5a231816b9280af9fbd63de17
+# Text hash: sha256:08b2f763d2529da2f834fb3a46f29e7c90cfa6da61fa78df34a139ab4be496b1
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1
@@ -112,12 +112,12 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double q_z = ctx.p[16]
     cdef double F_0 = ctx.p[17]
     cdef double c_s = ctx.p[18]
-    cdef double _c0 = (1.0/J)
+    cdef double _c0 = (1.0/(J))
     cdef double _c1 = _c0*k
     cdef double _c2 = c_x*h_m
     cdef double _c3 = sqrt(c_x)*sqrt(m_x)*q_x
     cdef double _c4 = 2.0*_c3
-    cdef double _c5 = (1.0/beta_m)
+    cdef double _c5 = (1.0/(beta_m))
     cdef double _c6 = _c5*h_m
     cdef double _c7 = (beta_m*beta_m)
     cdef double _c8 = R_b*_c7
@@ -130,13 +130,13 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c15 = sqrt(J)
     cdef double _c16 = 2.0*sqrt(k)*q_b
     cdef double _c17 = _c16/_c15
-    cdef double _c18 = (1.0/m_y)
+    cdef double _c18 = (1.0/(m_y))
     cdef double _c19 = _c18*h_m
-    cdef double _c20 = (1.0/m_z)
-    cdef double _c21 = (1.0/m_x)
-    cdef double _c22 = (1.0/h_m)
+    cdef double _c20 = (1.0/(m_z))
+    cdef double _c21 = (1.0/(m_x))
+    cdef double _c22 = (1.0/(h_m))
     cdef double _c23 = (1.0/(omega_s*omega_s))
-    cdef double _c24 = (1.0/_c7)
+    cdef double _c24 = (1.0/(_c7))
     cdef double _c25 = _c9*beta_m
     cdef double _c26 = 2.0*_c10
     ctx.k[0] = -_c1  # _k0
@@ -184,7 +184,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[42] = -_c24*h_m  # _k42
     ctx.k[43] = -_c6  # _k43
     ctx.k[44] = _c4  # _k44
-    ctx.k[45] = (1.0/omega_s)  # _k45
+    ctx.k[45] = (1.0/(omega_s))  # _k45
     ctx.k[46] = _c25*c_x  # _k46
     ctx.k[47] = _c13*beta_m  # _k47
     ctx.k[48] = _c26*_c3  # _k48
@@ -442,7 +442,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
 
     cdef double _o0 = _cam0[0]*_k34 + x
     cdef double _o1 = R_b + _cam0[0]*h_m
-    cdef double _o2 = (1.0/_o1)
+    cdef double _o2 = (1.0/(_o1))
     cdef double _o3 = _o2*y
     cdef double _o4 = _o2*yd
     cdef double _o5 = _cam0[1]*_k40
@@ -691,7 +691,7 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     for _k in range(4):
         _J[_k * 9 + 4] = 1.0  # d q'/d q'
     cdef double _j0 = _cam0[0]*_k11 + _k10
-    cdef double _j1 = (1.0/_j0)
+    cdef double _j1 = (1.0/(_j0))
     cdef double _j2 = _j1*y
     cdef double _j3 = _k8*betad
     cdef double _j4 = _j2*_j3
@@ -700,12 +700,12 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j7 = _j2*h_m
     cdef double _j8 = (_cam0[1]*_cam0[1])
     cdef double _j9 = (_cam0[0]*_cam0[0])*_k13 + _cam0[0]*_k14 + _k12
-    cdef double _j10 = (1.0/_j9)
+    cdef double _j10 = (1.0/(_j9))
     cdef double _j11 = _j10*_j8
     cdef double _j12 = _j11*_k51*y
     cdef double _j13 = _k9*betad
     cdef double _j14 = _cam0[0]*_k6 + _k5
-    cdef double _j15 = (1.0/_j14)
+    cdef double _j15 = (1.0/(_j14))
     cdef double _j16 = _j15*_k7
     cdef double _j17 = _j16*y
     cdef double _j18 = _j15*_k8

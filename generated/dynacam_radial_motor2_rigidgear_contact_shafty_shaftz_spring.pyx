@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:af36956fb41158727225c40e02e81df2b310ec79297f7af4fc1bf34a93156e78
-# Text hash: sha256:e2a0682978b13627d6286f5e523dcdb6b062b451163d16a22672fa1aeb523635
+# Derivation key: sha256:de2aaa61e9522f1dbc378ce1c09114d9b99817f5e93c96ded34fcb2ae616245f
+# Text hash: sha256:3195158191938d31dd085c32e3233e7b703fe60915f31e8db3f9535692b73962
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:775dc74d7dd69da69bafb1940d40799b0a663f4cd304542cf146150dfdb0178d
@@ -119,12 +119,12 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double T_el = ctx.p[21]
     cdef double F_0 = ctx.p[22]
     cdef double c_s = ctx.p[23]
-    cdef double _c0 = (1.0/J)
+    cdef double _c0 = (1.0/(J))
     cdef double _c1 = _c0*k
     cdef double _c2 = c_x*h_m
     cdef double _c3 = sqrt(c_x)*sqrt(m_x)*q_x
     cdef double _c4 = 2.0*_c3
-    cdef double _c5 = (1.0/beta_m)
+    cdef double _c5 = (1.0/(beta_m))
     cdef double _c6 = _c5*h_m
     cdef double _c7 = (beta_m*beta_m)
     cdef double _c8 = R_b*_c7
@@ -137,10 +137,10 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c15 = sqrt(J)
     cdef double _c16 = 2.0*sqrt(k)*q_b
     cdef double _c17 = _c16/_c15
-    cdef double _c18 = (1.0/m_y)
+    cdef double _c18 = (1.0/(m_y))
     cdef double _c19 = _c18*h_m
-    cdef double _c20 = (1.0/m_z)
-    cdef double _c21 = (1.0/m_x)
+    cdef double _c20 = (1.0/(m_z))
+    cdef double _c21 = (1.0/(m_x))
     cdef double _c22 = tan(alpha_w + mu_w)
     cdef double _c23 = (1.0/tan(alpha_w))
     cdef double _c24 = _c23*k
@@ -151,11 +151,11 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double _c29 = tan(alpha_w - mu_w)
     cdef double _c30 = _c24*_c29
     cdef double _c31 = _c27*_c29
-    cdef double _c32 = (1.0/J_ma)
-    cdef double _c33 = (1.0/T_el)
-    cdef double _c34 = (1.0/h_m)
+    cdef double _c32 = (1.0/(J_ma))
+    cdef double _c33 = (1.0/(T_el))
+    cdef double _c34 = (1.0/(h_m))
     cdef double _c35 = (1.0/(omega_s*omega_s))
-    cdef double _c36 = (1.0/_c7)
+    cdef double _c36 = (1.0/(_c7))
     cdef double _c37 = _c9*beta_m
     cdef double _c38 = 2.0*_c10
     ctx.k[0] = _c1  # _k0
@@ -209,7 +209,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     ctx.k[48] = -_c36*h_m  # _k48
     ctx.k[49] = -_c6  # _k49
     ctx.k[50] = _c4  # _k50
-    ctx.k[51] = (1.0/omega_s)  # _k51
+    ctx.k[51] = (1.0/(omega_s))  # _k51
     ctx.k[52] = _c37*c_x  # _k52
     ctx.k[53] = _c13*beta_m  # _k53
     ctx.k[54] = _c3*_c38  # _k54
@@ -522,7 +522,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
 
     cdef double _o0 = _cam0[0]*_k42 + x
     cdef double _o1 = R_b + _cam0[0]*h_m
-    cdef double _o2 = (1.0/_o1)
+    cdef double _o2 = (1.0/(_o1))
     cdef double _o3 = _o2*y
     cdef double _o4 = _o2*yd
     cdef double _o5 = _cam0[1]*_k46
@@ -811,7 +811,7 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     for _k in range(4):
         _J[_k * 12 + 4] = 1.0  # d q'/d q'
     cdef double _j0 = _cam0[0]*_k11 + _k10
-    cdef double _j1 = (1.0/_j0)
+    cdef double _j1 = (1.0/(_j0))
     cdef double _j2 = _j1*y
     cdef double _j3 = _k8*betad
     cdef double _j4 = _j2*_j3
@@ -820,12 +820,12 @@ cdef void jacobian(double t, const double* _y, double* _J, double* _ft, Ctx* ctx
     cdef double _j7 = _j2*h_m
     cdef double _j8 = (_cam0[1]*_cam0[1])
     cdef double _j9 = (_cam0[0]*_cam0[0])*_k13 + _cam0[0]*_k14 + _k12
-    cdef double _j10 = (1.0/_j9)
+    cdef double _j10 = (1.0/(_j9))
     cdef double _j11 = _j10*_j8
     cdef double _j12 = _j11*_k57*y
     cdef double _j13 = _k9*betad
     cdef double _j14 = _cam0[0]*_k6 + _k5
-    cdef double _j15 = (1.0/_j14)
+    cdef double _j15 = (1.0/(_j14))
     cdef double _j16 = _j15*_k7
     cdef double _j17 = _j16*y
     cdef double _j18 = _j15*_k8

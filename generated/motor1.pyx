@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d821e323b8a8fb357b5f8e0691cdffd966d179b4188afcee8dec7fb9ef71b576
-# Text hash: sha256:f8a99d82d477f950773105b0094b54c67446a410ed1d6d2e5102e5fc04924462
+# Derivation key: sha256:b85006e7ea92a6223fb22536b3c3ddc0a055aaad9c552b5702b39788958aac32
+# Text hash: sha256:8209315ca00289210b29640cd677b2e6c1d6f1251d0f895b03d640cb6db59869
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68
@@ -58,7 +58,7 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double G_a = ctx.p[1]
     cdef double t_m = ctx.p[2]
     cdef double Mc = ctx.p[3]
-    cdef double _c0 = (1.0/J_ma)
+    cdef double _c0 = (1.0/(J_ma))
     cdef double _c1 = Mc*_c0
     ctx.k[0] = -G_a*_c0  # _k0
     ctx.k[1] = -_c1  # _k1
@@ -237,7 +237,7 @@ def cam_time_affine(p):
     cdef double G_a = p[1]
     cdef double t_m = p[2]
     cdef double Mc = p[3]
-    return [((1.0/t_m), 0.0)]
+    return [((1.0/(t_m)), 0.0)]
 
 
 cdef ModelC _model

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e14a0172344acd19bb9f17748a30c5ddb5a699d086a697d4f7462ef7c2970f67
-# Text hash: sha256:2e7179f110d3fe4e53086af4c302d73fef463a381ec98d999af5b3be602330b6
+# Derivation key: sha256:e1610bb6b47a2b656c8c6c00a904c79de4136392607560299c6a8ab67702708c
+# Text hash: sha256:4a5c4c10f6fd808719fbb932ce09c59701c0423ecc84855d43fdf19924f766ec
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71
@@ -59,8 +59,8 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double T_el = ctx.p[2]
     cdef double t_m = ctx.p[3]
     cdef double Mc = ctx.p[4]
-    cdef double _c0 = (1.0/J_ma)
-    cdef double _c1 = (1.0/T_el)
+    cdef double _c0 = (1.0/(J_ma))
+    cdef double _c1 = (1.0/(T_el))
     ctx.k[0] = -Mc  # _k0
     ctx.k[1] = _c0  # _k1
     ctx.k[2] = -_c1  # _k2
@@ -266,7 +266,7 @@ def cam_time_affine(p):
     cdef double T_el = p[2]
     cdef double t_m = p[3]
     cdef double Mc = p[4]
-    return [((1.0/t_m), 0.0)]
+    return [((1.0/(t_m)), 0.0)]
 
 
 cdef ModelC _model

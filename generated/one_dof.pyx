@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:87341fd2dbb321ffcb50d194110b1b618b19f90b7c04fd2d2904a2c2b778fce1
-# Text hash: sha256:1036dd8224b5c6d1d1e5b7063e723c9c8d8729b7674eb9977a2aabffabe1b5c9
+# Derivation key: sha256:e64a7b3435e892d640e0525752a1efb9bc086d34d08f163ce51840c0a381c6ce
+# Text hash: sha256:66f8d94108377bf8419e99c09f8b6be497712b75d247f705001552236c054124
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073

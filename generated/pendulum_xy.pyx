@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:196360750557a8fc4f7a060235784a698ba9d93d3cbd264186c3a5187ea902f6
-# Text hash: sha256:2986ca3595af3a074d826ed841b492bbe6923f3dd0e442701840f55fb4b91c3f
+# Derivation key: sha256:ae58674a9ae6cf798254288e487641625682cb958557a6e7eada8db2ac794c30
+# Text hash: sha256:0886e79940ee828964c8fde334db2867440c30eb8e3f7673fd799025e38a50eb
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:161a1c58ca2d37fcefd956520d1151d5da9a8e1578200587452bf241fc0d81e3

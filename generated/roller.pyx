@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a96ff0272b2ce736868bd9162f5e06dca51edf64b2e03082b5311c3a5986930f
-# Text hash: sha256:1672ab950a714f2b923009f7cdb397e9be20e9e7b493b1dae689f0526c582986
+# Derivation key: sha256:32631f52f4380363b9f7aad4211b3ed4fc7bc4132912f81f3b566284b9b7f649
+# Text hash: sha256:e90bbc749ae3681520becf93fcf0b8acab06f2bb15b30b3389800beae8a9f114
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27
@@ -89,14 +89,14 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double n_c = ctx.p[6]
     cdef double delta_s = ctx.p[7]
     cdef double _c0 = 39.47841760435743*(1.0/(tau*tau))
-    cdef double _c1 = 12.566370614359172*(1.0/tau)
+    cdef double _c1 = 12.566370614359172*(1.0/(tau))
     cdef double _c2 = _c1*q
-    cdef double _c3 = (1.0/delta_s)
+    cdef double _c3 = (1.0/(delta_s))
     cdef double _c4 = _c0*kappa
     cdef double _c5 = _c4*delta_s
     cdef double _c6 = _c1*sqrt(kappa)*sqrt(mu)*zeta
     cdef double _c7 = S*_c4
-    cdef double _c8 = (1.0/mu)
+    cdef double _c8 = (1.0/(mu))
     cdef double _c9 = _c3*n_c
     ctx.k[0] = _c0  # _k0
     ctx.k[1] = _c2  # _k1

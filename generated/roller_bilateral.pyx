@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d63386b6c81f89a041177a70db0747c1b614af88774e7f2b8f4befda6538d6f7
-# Text hash: sha256:f6d65effb36212d906575e047dcea84a4786ab24f8d21b067fb291426890b9e0
+# Derivation key: sha256:76e42d3423221b18d4f541a1c23d372cfbc362469182c851a7469b2ecd941c7a
+# Text hash: sha256:6827538431a6dbfae2bf6f37b3d1f6b71517f90e07a16a5533df691d3e0134de
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360
@@ -48,10 +48,10 @@ cdef void prepare(Ctx* ctx) noexcept nogil:
     cdef double kappa = ctx.p[3]
     cdef double zeta = ctx.p[4]
     cdef double _c0 = 39.47841760435743*(1.0/(tau*tau))
-    cdef double _c1 = 12.566370614359172*(1.0/tau)
+    cdef double _c1 = 12.566370614359172*(1.0/(tau))
     cdef double _c2 = _c1*q
     cdef double _c3 = kappa + 1.0
-    cdef double _c4 = (1.0/mu)
+    cdef double _c4 = (1.0/(mu))
     cdef double _c5 = _c0*_c4
     cdef double _c6 = _c4*q
     cdef double _c7 = sqrt(mu)

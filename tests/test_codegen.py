@@ -323,3 +323,25 @@ def test_common_subexpressions_are_shared():
     assert "/" not in dwell
     prepare = text.split("cdef void prepare")[1].split("cdef inline void rhs")[0]
     assert "(tau*tau)" in prepare
+
+
+@pytest.mark.parametrize("n", [5, 6, 7, 13, 14, 31, 32, -5, -14])
+def test_integer_powers_print_as_squares(n, rng):
+    """x^n of a symbol, 4 < |n| <= 32, prints as products of repeated squares (no libm pow) and
+    equals x**n to a few units in the last place (independent: Python's float power)."""
+    from camdyn.derive.printer import CythonPrinter
+
+    x = sp.Symbol("x")
+    code = CythonPrinter().doprint(x ** n)
+    assert "pow" not in code
+    for v in rng.uniform(0.5, 2.0, 50):
+        assert eval(code, {"x": float(v)}) == pytest.approx(float(v) ** n, rel=8 * 2.0 ** -52)
+
+
+def test_powers_beyond_the_squarings_stay_pow():
+    from camdyn.derive.printer import MAX_SQUARING, CythonPrinter
+
+    x, y = sp.symbols("x y")
+    assert CythonPrinter().doprint(x ** (MAX_SQUARING + 1)).startswith("pow(")
+    # a compound base is not written out several times
+    assert CythonPrinter().doprint((x + y) ** 7).startswith("pow(")
