@@ -348,6 +348,16 @@ TURN_SLOTS = 256
 """Different turns one process can hold at once."""
 assert TURN_CODE not in LAW_BY_CODE
 
+SHAPED_CODE = 1001
+"""Law code of a rise shaped by the user: a piecewise polynomial H(T) on [0, 1] (blend
+segments, a B-spline, a spline through a table), built at run time
+(camdyn.runtime.core.shaped); its par is the index of its description in the library."""
+SHAPED_SLOTS = 64
+"""Different shaped rises one process can hold at once."""
+SHAPED_POOL = 1 << 18
+"""Doubles for all their breakpoints and coefficients (2 MB)."""
+assert SHAPED_CODE not in LAW_BY_CODE
+
 
 def get(key: str) -> CamLaw:
     """The law named ``key``; a clear error listing the known names otherwise."""

@@ -51,7 +51,10 @@ def camlaws_context() -> dict:
         })
     info = [{k: v for k, v in law.items() if k not in ("segments",)} for law in laws]
     turn = {"code": camlaws.TURN_CODE, "slots": camlaws.TURN_SLOTS, "width": 13}
-    return {"laws": laws, "laws_json": json.dumps(info, indent=1, sort_keys=True), "turn": turn}
+    shaped = {"code": camlaws.SHAPED_CODE, "slots": camlaws.SHAPED_SLOTS,
+              "pool": camlaws.SHAPED_POOL}
+    return {"laws": laws, "laws_json": json.dumps(info, indent=1, sort_keys=True), "turn": turn,
+            "shaped": shaped}
 
 
 def render_camlaws() -> dict[str, str]:

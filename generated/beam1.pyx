@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ab838018e69f4baf08ea7fc1e4c48cac91ce63a22fedd371f9e9e54eec88fdcc
-# Text hash: sha256:017d23f0f52edc2c1a00f5a182bf979a4204086f7c4bb2a586430107ff5fc9bd
+# Derivation key: sha256:860788ff4e1ca2dc64705295f56a195d96ef6d168fb63f808f6529575ff63282
+# Text hash: sha256:af90018650f660953c836bae84b2b45eddf0c9e934ef0fd6b22ccb23f7059bb0
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:c16b3556f450993e2cc9f2fd4a99c60d51901b4ed16007df3788e4358514ae33

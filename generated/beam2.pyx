@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:d7ef7b71cd6cb2781d034f3b723534313d5b4bde7d967178b794aa53ef8c6ac9
-# Text hash: sha256:c5958e10d3ecb5fd84f08bbe91510f24a442e7cb59c1e84f3698a3c8f881d34e
+# Derivation key: sha256:e2b6af487f298a13fe75ade9504741b6ec8568624d1582c0739c5de9f21f2a4b
+# Text hash: sha256:23337f2f312f6e1aa3254e44893ad007ecf65311495b19beedd340a5a0b16ff6
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
 # Source hash: sha256:e6f5b38d9e7b1dd5f920d6438c12a96321d776db2c76dee854114e82adf9e94d

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b24e4b0c5b132d4b5d357bec81f52c7eda29ae55b3d57ac010d6c6f6c26f9044
-# Text hash: sha256:6214c5134b1a18ec24a053247c23c3b6b38e5c7595acbc97c3e836cf73476068
+# Derivation key: sha256:4d98f49235f2c4c61776bf10b3bf2ebb1f15e18154dd31af8eb4475f6e907b59
+# Text hash: sha256:4476bcbb199c48395c581e99c6645fdae6125f87589eadbd2854b379d672a7c5
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:a4c10ed1c7eeed79759d12da9812dfb2e08f6d7ceaf7defeb99a53905305f1ad

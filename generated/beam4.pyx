@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b2ad39061ec8829a00bcf48674ac27d653e03e394339334c159af51bccd418a7
-# Text hash: sha256:37e8734925e1ca6a228f6efa56f03a95af0981a2064df7cb64e8a4b38329a4dd
+# Derivation key: sha256:119ad7a74645b959e6d1d31b3d7f428cc6015781446afce52e3b5c148a2abd61
+# Text hash: sha256:877898891a760a619f0513a42532e8930a24de537a85f267046cc22651862ce7
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:64a7efcd9334b75fa69119f83904c9f9c8d47957738123d27eab23d9cd1693f4

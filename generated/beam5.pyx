@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:cc24cade7cdcbf91c22dae9a369d71e09bec1995ea0f8d90b16f6d7d2b207ee8
-# Text hash: sha256:c59be34f08474caef218bbb18b3930b5bf7e37d0097e6c2cd5945d7aed1ed8c4
+# Derivation key: sha256:572413bc757e42e0f7155e58f81f2885edaafa2ad45ee5ee4b7aa216abb4480b
+# Text hash: sha256:3185386c9573966962e43bd04124b0cec9b07084d3c3d51e6fba647f439174ac
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:611aaf7763e70cfb79e109e16ea0ebff594dfa47598c04509a2d122462a61666

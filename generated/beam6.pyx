@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:eacd6829a51a1ccdc57d16691c78ae3d7044a170ef9fc9bdd393583e8e604438
-# Text hash: sha256:75810bcdad3b22ba61b675b22d0aa0039657292ed8e38f8795e50b7b90a5de19
+# Derivation key: sha256:e44332a44541fa335f4b4a1ddf20ae0a6c61ab8c00e9031014c4ec74e0635cd0
+# Text hash: sha256:082ee5e6928971d7cbe2763d410d40b1bb352a89f85287222d3da8e38489dc01
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:ba76292f91dfbbd6b8d39b0bd7d40b2000e3a575b4d3c5fd9aa69df4a2837883

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7f3a1de117ae8a5d87216d7f4cd471df874212ac89ab43703ab0b296fb4e6f7a
-# Text hash: sha256:1511845ae0bbd5aca492e3586bcc7705dc7b21ac115db8f7af6aa066fc94ff53
+# Derivation key: sha256:038530a315671603e7bdc5160370fa5f680c2994e93b557388cab4c326d4a5e1
+# Text hash: sha256:0af6b60a13c1d60b0511578c6ea8124aa018549f87f63b058c8d748b434856ff
 #
 # Cam laws of thesis App. 2 and common industrial laws, H(T) and its first three
 # derivatives per segment.  Segment 0 is the dwell before the rise (T < 0),
@@ -26,6 +26,8 @@
 #
 #   1000 (turn)               dwell-rise-dwell-return over a full cam turn, periodic in T
 #        (below); `par` is the slot of camlaw_turns that describes it.
+#   1001 (shaped)             a rise shaped by the user, piecewise polynomial in T (below);
+#        `par` is the slot of camlaw_shaped that describes it.
 
 from libc.math cimport INFINITY, M_PI, cos, floor, pow, sin
 
@@ -91,6 +93,79 @@ cdef double camlaw_turns[256][13]
 # pieces, 10 S segments per turn, 11 1.0 if there is an upper dwell, 12 1.0 if a lower one
 
 
+# -- a rise shaped by the user (law code 1001) ------------------------------------------
+# H(T) on [0, 1] is a piecewise polynomial (blend segments, a B-spline, a spline through a
+# table: camdyn.runtime.core.shaped builds it), dwells before and after as for a plain law.
+# Its segments are the intervals between the points where H loses smoothness the model
+# needs, segment s = 1..S ending at e_s (e_S = 1); each holds one or more polynomial pieces
+# b_i <= T < b_(i+1), found by bisection, so a spline through a long table steps as one
+# segment.  Slot fields: 0 offset of its data in camlaw_shaped_pool, 1 S, 2 pieces N,
+# 3 degree D.  The data: e_1..e_S; the first piece of segments 1..S+1 (the last: N); the
+# breaks b_0..b_N; the coefficients of each piece in powers of T - b_i, D + 1 a piece.
+cdef double camlaw_shaped[64][4]
+cdef double camlaw_shaped_pool[262144]
+
+
+cdef inline int _shaped_segment(const double* q, double T) noexcept nogil:
+    cdef const double* e = &camlaw_shaped_pool[<int>q[0]]
+    cdef int s, S = <int>q[1]
+    if T < 0.0:
+        return 0
+    for s in range(S):
+        if T < e[s]:
+            return s + 1
+    return S + 1
+
+
+cdef inline double _shaped_lo(const double* q, int seg) noexcept nogil:
+    if seg <= 1:
+        return 0.0
+    if seg > <int>q[1] + 1:
+        return INFINITY
+    return camlaw_shaped_pool[<int>q[0] + seg - 2]
+
+
+cdef inline void _shaped_horner(const double* q, int seg, double T, double* d, int n) noexcept nogil:
+    """d[k] = d^k H/dT^k, k < n (n <= 5), with the piece of segment `seg` that holds T (the
+    segment's first or last piece beyond its ends, as a plain law's formula)."""
+    cdef const double* p = &camlaw_shaped_pool[<int>q[0]]
+    cdef int S = <int>q[1], N = <int>q[2], D = <int>q[3]
+    cdef const double* b = p + 2 * S + 1
+    cdef const double* c
+    cdef int lo, hi, mid, k
+    cdef double x, h0, h1, h2, h3, h4
+    if seg <= 0 or seg > S:
+        d[0] = 0.0 if seg <= 0 else 1.0
+        for k in range(1, n):
+            d[k] = 0.0
+        return
+    lo = <int>p[S + seg - 1]
+    hi = <int>p[S + seg] - 1
+    while lo < hi:
+        mid = (lo + hi + 1) >> 1
+        if b[mid] <= T:
+            lo = mid
+        else:
+            hi = mid - 1
+    x = T - b[lo]
+    c = b + N + 1 + lo * (D + 1)
+    # Horner's scheme carried to the fourth derivative: h_k = p^(k)(x)/k!
+    h0 = c[D]
+    h1 = h2 = h3 = h4 = 0.0
+    for k in range(D - 1, -1, -1):
+        h4 = h4 * x + h3
+        h3 = h3 * x + h2
+        h2 = h2 * x + h1
+        h1 = h1 * x + h0
+        h0 = h0 * x + c[k]
+    d[0] = h0
+    d[1] = h1
+    d[2] = 2.0 * h2
+    d[3] = 6.0 * h3
+    if n > 4:
+        d[4] = 24.0 * h4
+
+
 cdef inline int camlaw_segment(int law, double par, double T) noexcept nogil:
     """Segment of `law` that contains T (right-continuous); -1 for an unknown law."""
     if law == 1000:
@@ -99,6 +174,8 @@ cdef inline int camlaw_segment(int law, double par, double T) noexcept nogil:
 
 
 cdef inline int _plain_segment(int law, double par, double T) noexcept nogil:
+    if law == 1001:
+        return _shaped_segment(&camlaw_shaped[<int>par][0], T)
     if law == 0:  # cycloidal
         if T < 0.0:
             return 0
@@ -190,10 +267,12 @@ cdef inline int _plain_segment(int law, double par, double T) noexcept nogil:
     return -1
 
 
-cdef inline bint camlaw_dwell(int law, int seg) noexcept nogil:
+cdef inline bint camlaw_dwell(int law, double par, int seg) noexcept nogil:
     """True in the dwell segments (before and after the rise), where H is constant."""
     if seg == 0:
         return True
+    if law == 1001:
+        return seg == <int>camlaw_shaped[<int>par][1] + 1
     if law == 0:
         return seg == 2
     elif law == 1:
@@ -231,6 +310,8 @@ cdef inline double camlaw_lo(int law, double par, int seg) noexcept nogil:
 cdef inline double _plain_lo(int law, double par, int seg) noexcept nogil:
     if seg <= 0:
         return -INFINITY
+    if law == 1001:
+        return _shaped_lo(&camlaw_shaped[<int>par][0], seg)
     if law == 0:
         if seg == 1:
             return 0.0
@@ -790,6 +871,8 @@ cdef inline void _plain_eval(int law, double par, int seg, double T, double* out
             out[3] = 0.0
         else:
             out[0] = out[1] = out[2] = out[3] = 0.0
+    elif law == 1001:
+        _shaped_horner(&camlaw_shaped[<int>par][0], seg, T, out, 4)
     else:
         out[0] = out[1] = out[2] = out[3] = 0.0
 
@@ -817,6 +900,7 @@ cdef inline double camlaw_d4(int law, double par, int seg, double T) noexcept no
 
 
 cdef inline double _plain_d4(int law, double par, int seg, double T) noexcept nogil:
+    cdef double d[5]
     cdef double c0, c1, c2
     if law == 0:  # cycloidal
         if seg == 0:
@@ -932,4 +1016,7 @@ cdef inline double _plain_d4(int law, double par, int seg, double T) noexcept no
             return 15120.0*T*(2.0*(T*T*T*T) + T*(18.0*T - 21.0*c0 + 8.0*c1 - 5.0) - 5.0*T + c0*(-7.0*T + 4.0*c0 + 3.0) + 9.0*c0 - 7.0*c1 + 1.0)
         elif seg == 2:
             return 0.0
+    if law == 1001:
+        _shaped_horner(&camlaw_shaped[<int>par][0], seg, T, d, 5)
+        return d[4]
     return 0.0

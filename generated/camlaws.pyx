@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/camlaws.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7f3a1de117ae8a5d87216d7f4cd471df874212ac89ab43703ab0b296fb4e6f7a
-# Text hash: sha256:afe2d342f11afea7f614e5b0a11c56cfbd962b2d953d9cb8964edba61b56a40c
+# Derivation key: sha256:038530a315671603e7bdc5160370fa5f680c2994e93b557388cab4c326d4a5e1
+# Text hash: sha256:5c73cb904afa1b0992a09802f9d716540dca923d7165b98fbf6bbb5506f8614c
 #
 # Python access to the generated cam-law library (camlaws.pxd): evaluation on
 # arrays, segment lookup and breakpoints.  Compiled models cimport the .pxd.
@@ -213,6 +213,52 @@ def turn_slot(int rise, double rise_par, int ret, double ret_par, double up, dou
     return s
 
 
+SHAPED = 1001
+"""Law code of a rise shaped by the user (see camlaws.pxd); its par is a slot index."""
+SHAPED_SLOTS = 64
+SHAPED_POOL = 262144
+
+_shaped_index = {}
+_shaped_used = 0
+
+
+def shaped_slot(ends, first, breaks, coefs):
+    """Slot of camlaw_shaped describing a piecewise polynomial rise: segment ends e_1..e_S
+    (e_S = 1), the first piece of each segment and N after them, the breaks b_0 = 0 < ... <
+    b_N = 1, and an (N, D + 1) array of coefficients in powers of T - b_i.
+
+    Equal rises share a slot and a written slot never changes, so runs in other threads keep
+    reading what they were given.  The caller checks the values (camdyn.runtime.core.shaped)."""
+    global _shaped_used
+    e = np.ascontiguousarray(ends, dtype=float).ravel()
+    f = np.ascontiguousarray(first, dtype=float).ravel()
+    b = np.ascontiguousarray(breaks, dtype=float).ravel()
+    c = np.ascontiguousarray(coefs, dtype=float)
+    cdef int S = e.shape[0], N = b.shape[0] - 1, D = c.shape[1] - 1
+    if f.shape[0] != S + 1 or c.shape[0] != N or S < 1 or N < 1:
+        raise ValueError("shaped_slot: inconsistent sizes")
+    key = (e.tobytes(), f.tobytes(), b.tobytes(), c.tobytes(), D)
+    if key in _shaped_index:
+        return _shaped_index[key]
+    data = np.concatenate([e, f, b, c.ravel()])
+    if len(_shaped_index) >= SHAPED_SLOTS:
+        raise RuntimeError(f"more than {SHAPED_SLOTS} different shaped rises in one process")
+    if _shaped_used + data.shape[0] > SHAPED_POOL:
+        raise RuntimeError(f"the shaped rises of this process need more than {SHAPED_POOL} "
+                           f"numbers (breaks and coefficients)")
+    cdef int slot = len(_shaped_index), i
+    cdef double[::1] v = data
+    for i in range(v.shape[0]):
+        camlaw_shaped_pool[_shaped_used + i] = v[i]
+    camlaw_shaped[slot][0] = _shaped_used
+    camlaw_shaped[slot][1] = S
+    camlaw_shaped[slot][2] = N
+    camlaw_shaped[slot][3] = D
+    _shaped_used += v.shape[0]
+    _shaped_index[key] = slot
+    return slot
+
+
 def law_trig(x):
     """(sin x, cos x) as the laws compute them (camlaw_sin, camlaw_cos of camlaws.pxd), for
     checking them against libm's."""
@@ -246,6 +292,10 @@ def segment(int law, double par, double T):
 
 def breakpoints(int law, double par):
     """Breakpoints 0 = b0 < ... < bK = 1 of the rise of `law`."""
+    cdef int i
+    if law == SHAPED:
+        return [0.0] + [camlaw_shaped_pool[<int>camlaw_shaped[<int>par][0] + i]
+                        for i in range(<int>camlaw_shaped[<int>par][1])]
     if law == 0:  # cycloidal
         return [0.0, 1.0]
     elif law == 1:  # modified-sine

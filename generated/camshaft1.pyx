@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:992c3a17609f74321ba423d5ac2f9c64738bf80fcec9e1058ea0fc231de59828
-# Text hash: sha256:1bf544f8dfc70dce0ab9444be0b9c47b4fabdc6b4a9f0570eb0c7e329daafe98
+# Derivation key: sha256:ea717025cbeecfcfa7891811ff8ca12407a65edb7de7304029e30bbd9b7378ee
+# Text hash: sha256:ec450ba5b84f61b9abcbd9c012ac0ec5cc101951a385c13c18af79e5db0cef1f
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
-# Source hash: sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233
+# Source hash: sha256:0967543da0f352acab2824c9a32218d1be61c185b8c772967bbcece4be157c13
 #
 # CAMSHAFT-1: one DOF with variable fictitious angular velocity, thesis ch. 4.
 #
@@ -180,14 +180,14 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
 cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
     """Whether y' = A y + c with A and c constant in the segments now in force, so that the
     loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): every cam input in a dwell."""
-    return camlaw_dwell(ctx.law[0], ctx.mode[0])
+    return camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0])
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
@@ -277,6 +277,7 @@ _MANIFEST_JSON = """
   {
    "argument": "T",
    "family": "H",
+   "order": 2,
    "time_affine": true
   }
  ],
@@ -349,7 +350,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:1da113865c441abbd75fe24e470be5ec7aaa8d7f3e943e698b6f6ea66a5fa233",
+ "source_hash": "sha256:0967543da0f352acab2824c9a32218d1be61c185b8c772967bbcece4be157c13",
  "states": [
   {
    "doc": "follower position over the stroke, X = x/h_m'",

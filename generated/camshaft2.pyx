@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b571b8565ec252f7845195e739607b2f31c55ce130e160f29b341a5e526c6ea5
-# Text hash: sha256:3520a9b43f06e93d4dddc75391daad746cc56adde703af0c35e6dcef3f1ef9d3
+# Derivation key: sha256:1b5763790b967df076ccc74875c7f542bbade643ae6ea6d0597a19acd248e848
+# Text hash: sha256:a38a07187aa4d1a8243f9691697c447f67593be412033133eeb8256cfbdd4536
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
-# Source hash: sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a
+# Source hash: sha256:ba85420c7d793b48841104cb2caceda457d7114297efae4aa828a6d651b0c422
 #
 # CAMSHAFT-2: follower and cam angle, thesis ch. 5, figs 5.1-5.3.
 #
@@ -229,7 +229,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
@@ -371,6 +371,7 @@ _MANIFEST_JSON = """
   {
    "argument": "B",
    "family": "H",
+   "order": 2,
    "time_affine": false
   }
  ],
@@ -462,7 +463,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:776069634bf5c5f104a2804d3286595966d060256284df086593ef75916a3f3a",
+ "source_hash": "sha256:ba85420c7d793b48841104cb2caceda457d7114297efae4aa828a6d651b0c422",
  "states": [
   {
    "doc": "follower position over the stroke, X = x/h_m'",

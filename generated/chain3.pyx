@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7956c453d241c0e315f6622050def572d0f03475db45f8738dafabfaaf75c3dd
-# Text hash: sha256:1601a4c7756838a5dc8c2ee20e9dbcbcfb861a5a4312a4e9ac5ecd1305812390
+# Derivation key: sha256:1536a559bfea2bc15b9fa8b3734494b59ffa23dff5b478580df9561393d88026
+# Text hash: sha256:73416df36fbe4869e9ae33ab251e28514afbe65c98a124bc97c05e12fc444c26
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
-# Source hash: sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f
+# Source hash: sha256:a1735f89202c97c2b444182398f9af26803e80bf78837315ac6167321477d309
 #
 # Three-DOF chain at constant fictitious angular velocity, thesis sec. 3.7, figs 3.6 and 3.7.
 #
@@ -269,7 +269,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
 cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
     """Whether y' = A y + c with A and c constant in the segments now in force, so that the
     loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): every cam input in a dwell."""
-    return camlaw_dwell(ctx.law[0], ctx.mode[0])
+    return camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0])
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
@@ -385,6 +385,7 @@ _MANIFEST_JSON = """
   {
    "argument": "T",
    "family": "H",
+   "order": 0,
    "time_affine": true
   }
  ],
@@ -507,7 +508,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:855e62f73ddb3683a6caa07c7516f3006ba5de73097122a6d7450f90e3934f6f",
+ "source_hash": "sha256:a1735f89202c97c2b444182398f9af26803e80bf78837315ac6167321477d309",
  "states": [
   {
    "doc": "position of mass 1 over the stroke",

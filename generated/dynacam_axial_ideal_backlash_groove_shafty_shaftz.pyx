@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f84bd2e2e8fded2e9fd556fe033d45b2bf57003cf6be9d62ebc10047788b46ff
-# Text hash: sha256:21260b15b1596273f33a5f6ef6c4fba7202294dc0c4ccd0cfce598a48691a994
+# Derivation key: sha256:ed14e637dca89c0544890e6456f7dd30919faf29083fa5fea8660b71737ac146
+# Text hash: sha256:9cfe0109a106f82b6462621f850382d1e5e28029c77db2394db48a2f2d821e2c
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc
+# Source hash: sha256:41f6a09a74de0748a6af39731b366e5cb675a3ff3e9ac42f0e41f62c54b4f410
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -697,7 +697,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
@@ -1083,6 +1083,7 @@ _MANIFEST_JSON = """
   {
    "argument": "beta/beta_m - beta_0/beta_m",
    "family": "H",
+   "order": 2,
    "time_affine": false
   }
  ],
@@ -1440,7 +1441,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:dfdbee64ec72cd4b6c79b0307aee892ea2152e84be9813f83143d4ab0323d5dc",
+ "source_hash": "sha256:41f6a09a74de0748a6af39731b366e5cb675a3ff3e9ac42f0e41f62c54b4f410",
  "states": [
   {
    "doc": "cam angle",

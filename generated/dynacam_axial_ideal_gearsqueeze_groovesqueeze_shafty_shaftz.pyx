@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:9e092cdea9d469f3d69a21d6d5f7eec6d5a9d188c96ac0cbc36afd54c2259793
-# Text hash: sha256:c5accae2de1a0b6cdf79b0061fdf84d23fd98d47da88f570bb740f3fb569a4f4
+# Derivation key: sha256:6480cbe550bdb242bfad612fa9e3ecf0c47552f15ad5e549721d26adfa215485
+# Text hash: sha256:475997df4cdac943eb1dc61d5841e20aa7042b33f053947f0aa7f3e188f1472d
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:244320aa74994aa9e669e9639536961ba92c6b1c23be07561292a0c9dea13c5c
+# Source hash: sha256:22aa19a82ce8967025784a92feac93cc2018fcdebbf00db8a01db85a3d5213b5
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -2038,7 +2038,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
@@ -2744,6 +2744,7 @@ _MANIFEST_JSON = """
   {
    "argument": "beta/beta_m - beta_0/beta_m",
    "family": "H",
+   "order": 3,
    "time_affine": false
   }
  ],
@@ -3094,7 +3095,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:244320aa74994aa9e669e9639536961ba92c6b1c23be07561292a0c9dea13c5c",
+ "source_hash": "sha256:22aa19a82ce8967025784a92feac93cc2018fcdebbf00db8a01db85a3d5213b5",
  "states": [
   {
    "doc": "cam angle",

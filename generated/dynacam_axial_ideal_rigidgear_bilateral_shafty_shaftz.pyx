@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8b7c49da54ad038d32ed7bb7d745a4c4ca8ad4700cbe9fbc974f4446cd0dca6b
-# Text hash: sha256:d3546986fa19460bee0defdb4c81f9d673f7c66a7896d8b11a1c4363e3a8af9e
+# Derivation key: sha256:de0b2d554765be8f127f6fc13d0fbe5b42b060860ea5d176cb45d757f9f2b913
+# Text hash: sha256:3b9169975fbc6976b9165996598c3c7437e646eaa327e97fe66da56863ad509d
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e
+# Source hash: sha256:640632216abb31d42a8a229473260e0d7d961a5af1f60a5d512bfabb26f6b202
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -1009,7 +1009,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
@@ -1503,6 +1503,7 @@ _MANIFEST_JSON = """
   {
    "argument": "beta/beta_m - beta_0/beta_m",
    "family": "H",
+   "order": 3,
    "time_affine": false
   }
  ],
@@ -1799,7 +1800,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:810d123013fff1d0bd1c7e289830cf3529a4e5c0e9dde45b4bb3d738357f802e",
+ "source_hash": "sha256:640632216abb31d42a8a229473260e0d7d961a5af1f60a5d512bfabb26f6b202",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6d4b364385390ea7a66876fee4a9c9357ee2eb702b3da7791c42726359a15f89
-# Text hash: sha256:aad31ff71ed87d32e5f91413cbfd583c29646eb4d509e6d65db441e85f086d15
+# Derivation key: sha256:9ca09b2e21431d8018f5d864d8d6fa245b5f5afc649865b3843752bc594d3ce8
+# Text hash: sha256:9e72e5b65a6ab1a3b94c6ea28d8310ae25d5d3cacd8309478d3614e81af7108b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:747e34dbea18a7d307dc7101158b4419fb0642de73f52917507a7d1b1d7004c3
+# Source hash: sha256:38687cb5090847d4fab317dc808b5922442b72defa6c4292176e38630702b181
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -487,7 +487,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
@@ -762,6 +762,7 @@ _MANIFEST_JSON = """
   {
    "argument": "(beta - beta_0)/beta_m",
    "family": "H",
+   "order": 2,
    "time_affine": false
   }
  ],
@@ -992,7 +993,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:747e34dbea18a7d307dc7101158b4419fb0642de73f52917507a7d1b1d7004c3",
+ "source_hash": "sha256:38687cb5090847d4fab317dc808b5922442b72defa6c4292176e38630702b181",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c88d130b1ec396d00054e4826c38e957578bcbf7c16856789e85172eca308c87
-# Text hash: sha256:d79acbcd75b5070275815306660566dcaeb668e8d1a8afc8315685e19b274666
+# Derivation key: sha256:ab3c3221ee36312e3084dcbcd8c7c0a9c9b57805db30aaf298826f6b7da9fc82
+# Text hash: sha256:f8648e02bf85d2cbcea0e40356911ff413cc616232a58b7491b3905881da31a4
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:478faccf329f7294d2cd47f536ad5f78fa53fe5d590d1d87b6cb5079502bd98d
+# Source hash: sha256:d314503d8a9cd1bf30613f7692c4b3c4c6df3983fe95f8d9142a70da6a15a311
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -1586,7 +1586,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
@@ -2242,6 +2242,7 @@ _MANIFEST_JSON = """
   {
    "argument": "beta/beta_m - beta_0/beta_m",
    "family": "H",
+   "order": 3,
    "time_affine": false
   }
  ],
@@ -2538,7 +2539,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:478faccf329f7294d2cd47f536ad5f78fa53fe5d590d1d87b6cb5079502bd98d",
+ "source_hash": "sha256:d314503d8a9cd1bf30613f7692c4b3c4c6df3983fe95f8d9142a70da6a15a311",
  "states": [
   {
    "doc": "cam angle",

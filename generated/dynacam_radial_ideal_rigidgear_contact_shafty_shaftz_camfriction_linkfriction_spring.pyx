@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:45c939b8b2d3e7053e2d7b3063aa2e04393bf10efc50806475aed4ae2159c335
-# Text hash: sha256:5f0abeb7e9469091685fa87911bec07d822f1de6a46dd4a89b2ef26a9bb70f59
+# Derivation key: sha256:557b62b4426bb43819873e9712f1b65e2174180bfb8d194d845389ef14c700f2
+# Text hash: sha256:dbaaae71801bcaa58531613e110f9e0b745cdc83a69bda14eec5ef0b1c1c01eb
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:7df6f3da3414231df3e2e1f7adc385d77f7cfc0e35b975f115056fce8cb53bba
+# Source hash: sha256:e1eb0a3a86083e97b569e940f3a3ce02faa99a7c74dcb83ed315aae4c20441e5
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -993,7 +993,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
@@ -1513,6 +1513,7 @@ _MANIFEST_JSON = """
   {
    "argument": "beta/beta_m - beta_0/beta_m",
    "family": "H",
+   "order": 2,
    "time_affine": false
   }
  ],
@@ -1896,7 +1897,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:7df6f3da3414231df3e2e1f7adc385d77f7cfc0e35b975f115056fce8cb53bba",
+ "source_hash": "sha256:e1eb0a3a86083e97b569e940f3a3ce02faa99a7c74dcb83ed315aae4c20441e5",
  "states": [
   {
    "doc": "cam angle",

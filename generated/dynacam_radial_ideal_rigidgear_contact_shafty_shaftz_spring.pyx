@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:20d66d3c7df3d3e4b3e79f6c508f68d81efa2bb5a231816b9280af9fbd63de17
-# Text hash: sha256:08b2f763d2529da2f834fb3a46f29e7c90cfa6da61fa78df34a139ab4be496b1
+# Derivation key: sha256:675b05d5350b1e29b05f55686a47e77dd13f5d7ee1bd469dbf1846d9ffc51d26
+# Text hash: sha256:d94283418ea55618794fdb3e65a0384123b73ef9a923b7631977e91bbaef676f
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1
+# Source hash: sha256:dcd89b047c0b805f1bfce1de048981402bb3821ffaa62bae75e2677970f0d321
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -789,7 +789,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
@@ -1196,6 +1196,7 @@ _MANIFEST_JSON = """
   {
    "argument": "beta/beta_m - beta_0/beta_m",
    "family": "H",
+   "order": 2,
    "time_affine": false
   }
  ],
@@ -1531,7 +1532,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:7468f27af7ac977b9b348357eff6df2a9db51de790ccde2908e7fe6f56b39de1",
+ "source_hash": "sha256:dcd89b047c0b805f1bfce1de048981402bb3821ffaa62bae75e2677970f0d321",
  "states": [
   {
    "doc": "cam angle",

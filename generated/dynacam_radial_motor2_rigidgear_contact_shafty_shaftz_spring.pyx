@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:de2aaa61e9522f1dbc378ce1c09114d9b99817f5e93c96ded34fcb2ae616245f
-# Text hash: sha256:3195158191938d31dd085c32e3233e7b703fe60915f31e8db3f9535692b73962
+# Derivation key: sha256:095faf4af92abb0080c693c08b56c3bc3e9883ffb1f24b20a3f0875037de3a6b
+# Text hash: sha256:e4f97a49485b53f0c837ff149761935d71bf62bca430527d70b1df2fd299a76c
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:775dc74d7dd69da69bafb1940d40799b0a663f4cd304542cf146150dfdb0178d
+# Source hash: sha256:385259177b6fc5a5e22dadcde0196ca8013d5bbbd8866e045f88ca4799a781b3
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -919,7 +919,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
@@ -1401,6 +1401,7 @@ _MANIFEST_JSON = """
   {
    "argument": "beta/beta_m - beta_0/beta_m",
    "family": "H",
+   "order": 2,
    "time_affine": false
   }
  ],
@@ -1812,7 +1813,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:775dc74d7dd69da69bafb1940d40799b0a663f4cd304542cf146150dfdb0178d",
+ "source_hash": "sha256:385259177b6fc5a5e22dadcde0196ca8013d5bbbd8866e045f88ca4799a781b3",
  "states": [
   {
    "doc": "cam angle",

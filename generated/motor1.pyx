@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b85006e7ea92a6223fb22536b3c3ddc0a055aaad9c552b5702b39788958aac32
-# Text hash: sha256:8209315ca00289210b29640cd677b2e6c1d6f1251d0f895b03d640cb6db59869
+# Derivation key: sha256:b4974b2aa54722a972404f21237103864eb5a81ff9187e8ef587ae81590cb20f
+# Text hash: sha256:a3bae348e940f8df55136ac8f9cc599f24ed83fdce210f1c1eb429fa22c12d20
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
-# Source hash: sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68
+# Source hash: sha256:5315b62110449092ed4fbe9bea35b87a6d10bad4792d9ef82b7feb5db7eda537
 #
 # The asynchronous motor driving a cam mechanism, thesis App. 5 (and sec. 6.7).
 #
@@ -174,14 +174,14 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
 cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
     """Whether y' = A y + c with A and c constant in the segments now in force, so that the
     loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): every cam input in a dwell."""
-    return camlaw_dwell(ctx.law[0], ctx.mode[0])
+    return camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0])
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
@@ -276,6 +276,7 @@ _MANIFEST_JSON = """
   {
    "argument": "t/t_m",
    "family": "H",
+   "order": 2,
    "time_affine": true
   }
  ],
@@ -340,7 +341,7 @@ _MANIFEST_JSON = """
  ],
  "reference": "thesis sec. A.5.4.2",
  "residual": null,
- "source_hash": "sha256:2b26fe4578fbc6468f2d13b121ba3a82230ef17a11583603319af75358dc6a68",
+ "source_hash": "sha256:5315b62110449092ed4fbe9bea35b87a6d10bad4792d9ef82b7feb5db7eda537",
  "states": [
   {
    "doc": "speed deviation of the drive, reduced to the camshaft",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e1610bb6b47a2b656c8c6c00a904c79de4136392607560299c6a8ab67702708c
-# Text hash: sha256:4a5c4c10f6fd808719fbb932ce09c59701c0423ecc84855d43fdf19924f766ec
+# Derivation key: sha256:51f4ae715241b61bc81253d937ba057999b5b7adc4d52d2dbedcb65f9f7b9907
+# Text hash: sha256:c0ed39a61a37bab8264fc8e45b102179ccda9643ec3defe506a96557508c34c7
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
-# Source hash: sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71
+# Source hash: sha256:19e06e8b0095c03a2beab7439588f8137c56e297d573674a4c354a8eee7ec886
 #
 # The asynchronous motor driving a cam mechanism, thesis App. 5 (and sec. 6.7).
 #
@@ -197,14 +197,14 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
 cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
     """Whether y' = A y + c with A and c constant in the segments now in force, so that the
     loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): every cam input in a dwell."""
-    return camlaw_dwell(ctx.law[0], ctx.mode[0])
+    return camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0])
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
@@ -305,6 +305,7 @@ _MANIFEST_JSON = """
   {
    "argument": "t/t_m",
    "family": "H",
+   "order": 2,
    "time_affine": true
   }
  ],
@@ -380,7 +381,7 @@ _MANIFEST_JSON = """
  ],
  "reference": "thesis (A.5.6)-(A.5.13)",
  "residual": null,
- "source_hash": "sha256:2e4338da31bf1fe7006d32f07ab5354db8516a5c06ef9566ca7ceef626d91a71",
+ "source_hash": "sha256:19e06e8b0095c03a2beab7439588f8137c56e297d573674a4c354a8eee7ec886",
  "states": [
   {
    "doc": "speed deviation of the drive, reduced to the camshaft",

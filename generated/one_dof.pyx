@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e64a7b3435e892d640e0525752a1efb9bc086d34d08f163ce51840c0a381c6ce
-# Text hash: sha256:66f8d94108377bf8419e99c09f8b6be497712b75d247f705001552236c054124
+# Derivation key: sha256:08abc39e8fe850c6a137edb1530c8c9e862dc7cf0c786f99f47b1c4ef26fbd74
+# Text hash: sha256:6f70b91af6f617bf8ef322715fcd613bf9261092764487f1325e20c8f25d180a
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
-# Source hash: sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073
+# Source hash: sha256:7be31bd6aed90cb3c3dd785c585a5abdada86ed4b0a88d608d7b6508231d5b38
 #
 # One DOF with constant fictitious angular velocity, thesis ch. 3, fig. 3.2.
 #
@@ -181,14 +181,14 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
 cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
     """Whether y' = A y + c with A and c constant in the segments now in force, so that the
     loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): every cam input in a dwell."""
-    return camlaw_dwell(ctx.law[0], ctx.mode[0])
+    return camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0])
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
@@ -279,6 +279,7 @@ _MANIFEST_JSON = """
   {
    "argument": "T",
    "family": "H",
+   "order": 2,
    "time_affine": true
   }
  ],
@@ -346,7 +347,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:69e4e577f43bc2083c8eecfc7b299374af675384543400cf6c29b966644ed073",
+ "source_hash": "sha256:7be31bd6aed90cb3c3dd785c585a5abdada86ed4b0a88d608d7b6508231d5b38",
  "states": [
   {
    "doc": "follower position over the stroke, X = x/h_m'",

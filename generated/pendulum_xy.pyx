@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ae58674a9ae6cf798254288e487641625682cb958557a6e7eada8db2ac794c30
-# Text hash: sha256:0886e79940ee828964c8fde334db2867440c30eb8e3f7673fd799025e38a50eb
+# Derivation key: sha256:0b7c25653df500fb149df4799d2781c92bb6076cca1c512aa8def83d2bdf4b41
+# Text hash: sha256:1ae8fe5d7a718cc2e70958d872f400aea89472bf3f57885fec548b3c8de26d5b
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:161a1c58ca2d37fcefd956520d1151d5da9a8e1578200587452bf241fc0d81e3

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:32631f52f4380363b9f7aad4211b3ed4fc7bc4132912f81f3b566284b9b7f649
-# Text hash: sha256:e90bbc749ae3681520becf93fcf0b8acab06f2bb15b30b3389800beae8a9f114
+# Derivation key: sha256:bd3b3be9a86ca3147fb70634679cc96866f213105f3c7be05abfa87c320763c0
+# Text hash: sha256:8740f7a50b307541eca7133f47afbe42dbb1854b5bd3066bd209ffe79e287d71
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
-# Source hash: sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27
+# Source hash: sha256:27e1ce034622d3d74be6f8876c4c36db202e6589f148e1c301e5f081e69de353
 #
 # Roller vibration: the roller's mass and the contact stiffness between roller and cam, in
 # series with the follower linkage (thesis sec. 9.2.1).
@@ -399,7 +399,7 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
@@ -621,6 +621,7 @@ _MANIFEST_JSON = """
   {
    "argument": "T",
    "family": "H",
+   "order": 1,
    "time_affine": true
   }
  ],
@@ -775,7 +776,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:bec3a1aeb204c8131d1bf959be64e8ef4d4a592d7f3c12db0666ce06a9483a27",
+ "source_hash": "sha256:27e1ce034622d3d74be6f8876c4c36db202e6589f148e1c301e5f081e69de353",
  "states": [
   {
    "doc": "follower output position over the stroke, X = x/h_m",

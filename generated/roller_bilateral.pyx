@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:76e42d3423221b18d4f541a1c23d372cfbc362469182c851a7469b2ecd941c7a
-# Text hash: sha256:6827538431a6dbfae2bf6f37b3d1f6b71517f90e07a16a5533df691d3e0134de
+# Derivation key: sha256:715c4389b94ec9b5cf28b413226be7cef62861a2eaa7bf6220d9740b0717d5ec
+# Text hash: sha256:b427b629b1e5f7013ecc0350d75fb906825279c28d63642a1d88c834d6a04897
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
-# Source hash: sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360
+# Source hash: sha256:e9e5870f5ef080f71b3082004a824cdf8c772265063561f75e0f0fbbf4258b5a
 #
 # The roller held in a groove without backlash: the contact spring and damper act both
 #     ways (F_c = kappa omega^2 delta + 2 zeta sqrt(mu kappa) omega delta', linear), so the
@@ -284,14 +284,14 @@ cdef void refresh(Ctx* ctx) noexcept nogil:
     ctx.variant = 0
     ctx.cache[0] = 0.0 / 0.0
     ctx.cache[1] = camlaw_dwell_value(ctx.mode[0])
-    if camlaw_dwell(ctx.law[0], ctx.mode[0]):
+    if camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0]):
         ctx.variant |= 1
 
 
 cdef inline bint _lti_now(Ctx* ctx) noexcept nogil:
     """Whether y' = A y + c with A and c constant in the segments now in force, so that the
     loops may step over the interval exactly (derive/codegen.py, _linear_in_dwell): every cam input in a dwell."""
-    return camlaw_dwell(ctx.law[0], ctx.mode[0])
+    return camlaw_dwell(ctx.law[0], ctx.law_par[0], ctx.mode[0])
 
 
 cdef void update_modes(double t, const double* _y, Ctx* ctx) noexcept nogil:
@@ -405,6 +405,7 @@ _MANIFEST_JSON = """
   {
    "argument": "T",
    "family": "H",
+   "order": 1,
    "time_affine": true
   }
  ],
@@ -500,7 +501,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": ""
  },
- "source_hash": "sha256:c0a261f960a2f826dc9c7923ee3b7385f19ed7c0425276ba3a2d6dec7a57d360",
+ "source_hash": "sha256:e9e5870f5ef080f71b3082004a824cdf8c772265063561f75e0f0fbbf4258b5a",
  "states": [
   {
    "doc": "follower output position over the stroke, X = x/h_m",

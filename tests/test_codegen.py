@@ -306,7 +306,9 @@ def test_manifest_describes_the_model():
     assert [s["name"] for s in m["states"]] == ["X", "Xd"]
     assert [p["name"] for p in m["parameters"]] == ["tau", "Fa"]
     assert {o["name"] for o in m["outputs"]} >= {"Xdd", "U", "H", "Hd", "Hdd", "c_rel"}
-    assert m["cam_instances"] == [{"argument": "T", "family": "H", "time_affine": True}]
+    # order: the highest derivative of H its equations and outputs use (the output Hdd)
+    assert m["cam_instances"] == [{"argument": "T", "family": "H", "time_affine": True,
+                                   "order": 2}]
     assert m["parameters"][1]["range"] == "0 <= Fa <= 100"
     assert m["time"] == {"name": "T", "unit": "t_m"}
 

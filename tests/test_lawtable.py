@@ -64,3 +64,35 @@ def test_json_has_no_infinity():
         json.dumps(properties(key).as_dict(), allow_nan=False)
     d = properties("uniform").as_dict()
     assert d["H2_max"] is None and d["H2_min"] is None and d["H1_max"] == 1.0
+
+
+# The characteristic values of the motion laws as VDI 2143 Blatt 1 tabulates them (and the
+# cam handbooks after it, e.g. Norton, Cam Design and Manufacturing Handbook): C_v = H'max,
+# C_a = |H''|max, C_j = |H'''|max (None: an impulse, the acceleration jumps), C_Mdyn =
+# max H'H''.  Printed to 3-4 figures; the modified sine at its usual theta = 1/8.
+VDI_2143 = {
+    "parabolic": (2.0, 4.0, None, 8.0),
+    "simple-harmonic": (1.571, 4.935, None, 3.876),
+    "cycloidal": (2.0, 6.283, 39.48, 8.162),
+    "3-4-5": (1.875, 5.774, 60.0, 6.694),
+    "4-5-6-7": (2.188, 7.513, 52.5, 10.75),
+    "modified-trapezoid": (2.0, 4.888, 61.43, 8.09),
+    "modified-sine": (1.760, 5.528, 69.47, None),
+}
+
+
+@pytest.mark.parametrize("key", sorted(VDI_2143))
+def test_characteristic_values_of_vdi_2143(key):
+    """C_v, C_a, C_j and C_Mdyn of `camdyn laws` against VDI 2143's table, to the last figure
+    printed there (relative 5e-4)."""
+    cv, ca, cj, cm = VDI_2143[key]
+    pr = properties(key, 0.125 if key == "modified-sine" else None)
+    assert pr.H1_max == pytest.approx(cv, rel=5e-4)
+    assert max(pr.H2_max, -pr.H2_min) == pytest.approx(ca, rel=5e-4)
+    jerks = [pr.jerk_0, pr.jerk_half, pr.jerk_1]
+    if cj is None:
+        assert None in jerks
+    else:
+        assert max(abs(j) for j in jerks) == pytest.approx(cj, rel=5e-4)
+    if cm is not None:
+        assert pr.torque_max == pytest.approx(cm, rel=5e-4)

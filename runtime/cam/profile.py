@@ -77,10 +77,13 @@ def _law(flag: str, key: str, parameter):
     """choose(key, parameter), its refusal naming the option (laws.choose says theta, the
     option is --law-parameter or --return-law-parameter)."""
     try:
-        return choose(key, parameter)
+        law = choose(key, parameter)
     except CamdynInputError as exc:
         which = f"{flag}-parameter" if parameter is not None else flag
         raise CamdynInputError(f"{which} ({key}): {exc}") from None
+    if hasattr(law, "check_for"):       # a rise from a table: its curvature takes H''
+        law.check_for("the cam profile", 2)
+    return law
 
 
 MAX_LENGTH = 1000.0
@@ -650,7 +653,16 @@ class CamProfile:
                 **self.extremes(),
                 "checks": [c.as_dict() for c in self.checks],
                 "ok": not self.failures,
-                "warnings": [c.message for c in self.failures]}
+                "warnings": [c.message for c in self.failures] + self.law_warnings()}
+
+    def law_warnings(self) -> list:
+        """What the laws say of themselves (a rise from a table: how well it is known)."""
+        from ..core.laws import Shaped
+
+        laws = {_law("law", self.law, self.law_parameter)}
+        if self.return_law is not None:
+            laws.add(_law("return-law", self.return_law, self.return_law_parameter))
+        return [w for law in laws if isinstance(law, Shaped) for w in law.warnings()]
 
     # -- writers -----------------------------------------------------------------------
     def write_csv(self, path) -> Path:

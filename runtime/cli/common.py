@@ -82,6 +82,23 @@ def law_names() -> list:
     return laws.NAMES
 
 
+LAW_HELP = ("a law of the library (camdyn laws) or a file: a table of angle and lift (.csv, "
+            ".txt, .dat) or a blend or B-spline (.toml)")
+
+
+def law_argument(text: str) -> str:
+    """--law: a law's name or a shaped rise's file (checked when the run is set up)."""
+    import argparse
+
+    from ..core import laws, shaped
+
+    if text in laws.NAMES or shaped.is_law_file(text):
+        return text
+    raise argparse.ArgumentTypeError(f"unknown cam law {text!r}; choose one of "
+                                     f"{', '.join(laws.NAMES)}, or a file: a table of angle "
+                                     f"and lift (.csv, .txt, .dat) or a blend or B-spline (.toml)")
+
+
 def say_on_stderr(quiet: bool = False):
     """A progress callback: one line on stderr per message (nothing when quiet)."""
     if quiet:

@@ -4,8 +4,8 @@ from __future__ import annotations
 import json
 
 from ..core.errors import CamdynInputError, SimulationError
-from .common import (add_dependent_option, add_estimate_option, add_out_option,
-                     add_tolerance_options, assignments, fail, law_names, method_names,
+from .common import (LAW_HELP, add_dependent_option, add_estimate_option, add_out_option,
+                     add_tolerance_options, assignments, fail, law_argument, law_names, method_names,
                      report_health, run_failed, say_on_stderr, tolerance_argument, tolerances)
 
 HELP = "any model: a model file (built on first use) or a built-in model, to t_end"
@@ -37,7 +37,8 @@ def add(sub):
                          "spreading out as the vibration fades; default: on for rk4 and "
                          "dop853, off for the others (on pays for rodas4 and radau5 where a "
                          "stiff mode is damped, e.g. a contact with damping)")
-    ig.add_argument("--law", default="cycloidal", choices=law_names(), help="cam law of the inputs")
+    ig.add_argument("--law", default="cycloidal", type=law_argument, metavar="LAW",
+                    help=f"cam law of the inputs: {LAW_HELP} (default cycloidal)")
     ig.add_argument("--theta", type=float, default=None, help="shape parameter of the law")
     ig.add_argument("--turn", default=None, metavar="RISE,UP,RETURN,LOW",
                     help="a full cam turn, repeated: rise by --law, upper dwell, return by "

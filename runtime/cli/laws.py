@@ -96,7 +96,8 @@ def _print_characteristics(rows) -> None:
     _print_table(table)
     print("\nNominal characteristics, thesis App. 2 (jerk = H''', 'impulse' where H'' jumps); "
           "torque M = m h_m^2/(w_s t_m^3) H' H'' (A.2.7); one-DOF residual envelope "
-          "U0 <= C tau^p for tau << 1 (ch. 3).")
+          "U0 <= C tau^p for tau << 1 (ch. 3). VDI 2143's characteristic values: C_v = H'max, "
+          "C_a = H''max, C_j the largest jerk, C_Mdyn = max H'H''.")
 
 
 def _stray_option(args) -> str | None:

@@ -7,7 +7,7 @@ import sys
 from ..core.errors import CamdynInputError
 from ..core.outdir import out_folder, write_text
 from ..cam.names import KINDS, MATERIALS
-from .common import add_out_option, fail, law_names
+from .common import LAW_HELP, add_out_option, fail, law_argument
 
 HELP = ("the cam itself: profile(s) of a disk cam for a translating or oscillating, roller or "
         "flat-faced follower, as CSV, DXF and PNG")
@@ -15,7 +15,6 @@ HELP = ("the cam itself: profile(s) of a disk cam for a translating or oscillati
 
 
 def add(sub):
-    names = law_names()
     p = sub.add_parser(
         "profile", help=HELP,
         description="A radial disk cam over a full turn (rise, upper dwell, return with the "
@@ -33,12 +32,12 @@ def add(sub):
                         "--stroke (and --offset), an oscillating one --pivot-distance and "
                         "--swing, a roller --roller-radius, an oscillating roller "
                         "--arm-length, an oscillating flat face --face-offset")
-    p.add_argument("--law", default="cycloidal", choices=names,
-                   help="cam law of the rise (the return is its mirror unless --return-law; "
-                        "default cycloidal)")
+    p.add_argument("--law", default="cycloidal", type=law_argument, metavar="LAW",
+                   help=f"cam law of the rise: {LAW_HELP} (the return is its mirror unless "
+                        f"--return-law; default cycloidal)")
     p.add_argument("--law-parameter", type=float, default=None, metavar="X",
                    help="the law's shape parameter, for laws that have one")
-    p.add_argument("--return-law", default=None, choices=names,
+    p.add_argument("--return-law", default=None, type=law_argument, metavar="LAW",
                    help="cam law of the return, S = h (1 - H(u)) (default: the rise's)")
     p.add_argument("--return-law-parameter", type=float, default=None, metavar="X",
                    help="the return law's shape parameter")

@@ -4,7 +4,8 @@ from __future__ import annotations
 import json
 
 from ..core.errors import CamdynInputError, SimulationError
-from .common import (add_estimate_option, add_tolerance_options, fail, law_names, method_names,
+from .common import (LAW_HELP, add_estimate_option, add_tolerance_options, fail, law_argument,
+                     method_names,
                      report_health, run_failed, tolerance_argument, tolerances)
 
 HELP = "residual vibration after one rise (thesis ch. 3-5)"
@@ -32,7 +33,8 @@ def add(sub):
                    help="flywheel factor Fv (5.14): camshaft2 only, required there")
     r.add_argument("--q", type=float, default=0.0,
                    help="relative damping q (6.47), one-dof only; default 0")
-    r.add_argument("--law", default="cycloidal", choices=law_names())
+    r.add_argument("--law", default="cycloidal", type=law_argument, metavar="LAW",
+                   help=f"cam law of the rise: {LAW_HELP} (default cycloidal)")
     r.add_argument("--theta", type=float, default=None,
                    help="the law's shape parameter (modified sine: peak position; "
                         "sine-constant-cosine: c; polydyne: the design tau)")

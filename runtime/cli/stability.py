@@ -6,7 +6,8 @@ import sys
 
 from ..core.errors import CamdynInputError, SimulationError
 from ..core.outdir import out_folder
-from .common import add_out_option, assignments, fail, law_names, method_names, run_failed
+from .common import (LAW_HELP, add_out_option, assignments, fail, law_argument, method_names,
+                     run_failed)
 
 HELP = "stability map: each method over a grid of step (or rtol) x a stiffness parameter"
 """The command's line in `camdyn --help`."""
@@ -36,7 +37,8 @@ def add(sub):
     st.add_argument("--t-end", type=float, default=None,
                     help="end of each run (default: for a model with a rise, 3 or one period of "
                          "the slowest mode its U0 sees past the rise if longer; else 3)")
-    st.add_argument("--law", default="cycloidal", choices=law_names())
+    st.add_argument("--law", default="cycloidal", type=law_argument, metavar="LAW",
+                    help=f"cam law: {LAW_HELP} (default cycloidal)")
     st.add_argument("--run-refused", action="store_true",
                     help="run refused steps anyway and show what they do (stability check off)")
     add_out_option(st, default="out", help="folder for PNG, CSV, JSON (default out/)")

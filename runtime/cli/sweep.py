@@ -5,8 +5,8 @@ import sys
 
 from ..core.errors import CamdynInputError, SimulationError
 from ..core.outdir import out_folder
-from .common import (add_dependent_option, add_estimate_option, add_out_option,
-                     add_tolerance_options, fail, law_names, method_names, run_failed,
+from .common import (LAW_HELP, add_dependent_option, add_estimate_option, add_out_option,
+                     add_tolerance_options, fail, law_argument, method_names, run_failed,
                      tolerance_argument, tolerances)
 
 HELP = ("headline figures over a grid of parameters: table (CSV, Parquet) and a chart per figure,"
@@ -16,7 +16,6 @@ HELP = ("headline figures over a grid of parameters: table (CSV, Parquet) and a 
 
 def add(sub):
     all_methods, _ = method_names()
-    names = law_names()
     sw = sub.add_parser("sweep", help=HELP)
     sw.add_argument("target", metavar="SCENE_OR_MODEL",
                     help="a model (camshaft1, camshaft2, one_dof, ...), a model file (.py) or a "
@@ -44,8 +43,8 @@ def add(sub):
                          "model's time unit; not with dp54/dop853/rodas4")
     add_tolerance_options(sw)
     add_dependent_option(sw)
-    sw.add_argument("--law", choices=names, default=None,
-                    help="cam law of a model (default: the scene's, cycloidal)")
+    sw.add_argument("--law", type=law_argument, metavar="LAW", default=None,
+                    help=f"cam law of a model: {LAW_HELP} (default: the scene's, cycloidal)")
     sw.add_argument("--error-estimate", action="store_true",
                     help="the default: every figure with its error estimate, a column "
                          "<figure>_error from the grid run again one notch tighter (rtol/10, "

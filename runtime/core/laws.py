@@ -14,7 +14,9 @@ import numpy as np
 
 from camdyn.generated import camlaws as _lib
 
+from . import shaped
 from .errors import CamdynInputError
+from .shaped import Shaped
 
 LAWS = tuple(_lib.LAWS)
 """Every law of the generated library: key, code, its shape parameter (name, range, default)."""
@@ -43,7 +45,14 @@ class LawChoice:
 
 
 def choose(key: str, theta: float | None = None) -> LawChoice:
-    """Check a law name and its parameter; errors name the argument and the range."""
+    """Check a law name and its parameter; errors name the argument and the range.  A file
+    name (.csv, .txt, .dat, .toml) is a rise shaped by the user (camdyn.runtime.core.shaped)."""
+    if isinstance(key, Shaped):
+        return key
+    if isinstance(key, str) and shaped.is_law_file(key):
+        if theta is not None:
+            raise CamdynInputError(f"a shaped rise ({key}) has no shape parameter; drop theta")
+        return shaped.load(key)
     if key not in _BY_KEY:
         raise CamdynInputError(f"unknown cam law {key!r}; choose one of {', '.join(NAMES)}")
     law = _BY_KEY[key]
@@ -159,3 +168,16 @@ def compose(rise: str = "cycloidal", ret: str | None = None, angles_deg=(90, 90,
         raise CamdynInputError(f"turn angles must sum to 360 deg (rise + upper dwell + return + "
                                f"lower dwell), got {sum(ang):g}")
     return Turn(rise_law, ret_law, ang)
+
+
+CHOSEN = (LawChoice, Turn, Shaped)
+"""What a model takes as the law of a cam input, chosen and checked."""
+
+
+def orders_used(manifest: dict) -> int:
+    """Highest derivative of H a model's equations use: from its cam inputs, H''' for a
+    constrained model's cam profile (its curvature's rate), else H''."""
+    orders = [inst.get("order", 2) for inst in manifest.get("cam_instances", [])]
+    if orders:
+        return max(orders)
+    return 3 if manifest.get("cam_profile") else 2

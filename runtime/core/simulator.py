@@ -34,12 +34,16 @@ def law_choices(model: CompiledModel, law, theta):
         missing = set(fams) - set(law)
         if missing:
             raise CamdynInputError(f"no cam law given for input {', '.join(sorted(missing))}")
-        chosen = {f: law[f] if isinstance(law[f], (_laws.LawChoice, _laws.Turn))
+        chosen = {f: law[f] if isinstance(law[f], _laws.CHOSEN)
                   else _laws.choose(law[f], theta)
                   for f in fams}
     else:
-        choice = law if isinstance(law, (_laws.LawChoice, _laws.Turn)) else _laws.choose(law, theta)
+        choice = law if isinstance(law, _laws.CHOSEN) else _laws.choose(law, theta)
         chosen = {f: choice for f in fams}
+    order = _laws.orders_used(model.manifest)
+    for c in set(chosen.values()):
+        if isinstance(c, _laws.Shaped):
+            c.check_for(model.name, order)
     codes = np.array([chosen[f].code for f in fams] or [0], dtype=np.intc)
     pars = np.array([chosen[f].par for f in fams] or [0.0], dtype=float)
     return chosen, codes, pars
@@ -273,6 +277,9 @@ class Simulator:
         self.consistent = bool(consistent)
         self._project = self.consistent and hasattr(m.module, "consistent_state")
         self.laws, self.law_codes, self.law_pars = law_choices(m, law, theta)
+        # what a run with a rise from a table says about the table's accuracy
+        self.law_notes = [w for c in dict.fromkeys(self.laws.values())
+                           if isinstance(c, _laws.Shaped) for w in c.warnings()]
         n = len(m.state_names)
         # a default initial state that depends on the parameters is worked out per run
         self._y0_given = y0 is not None or all(
@@ -440,6 +447,8 @@ class Simulator:
         res = Result(self, p, out)
         if note:
             res.warnings.append(note)
+        if self.law_notes:
+            res.warnings.extend(self.law_notes)
         # near the boundary (the warning) or beyond it, read off the loop's check without
         # building the estimate: far inside, the common case, this costs two comparisons
         h = self._fixed_step

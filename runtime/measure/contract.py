@@ -208,7 +208,9 @@ def grid_columns(target, base, tight) -> dict:
         with np.errstate(invalid="ignore"):
             flagged |= (np.isfinite(e) & np.isfinite(v)
                         & (e > UNRESOLVED * (np.abs(v) + scales.get(f, 0.0))))
-    warnings = [list(w) for w in base.warnings]
+    # what the run's inputs say of every point (a rise from a table: how well it is known)
+    notes = list(getattr(getattr(target, "simulator", None), "law_notes", ()))
+    warnings = [notes + list(w) for w in base.warnings]
     if tight is not None:       # a chunk whose tighter runs failed says so (Twin)
         for j, w in enumerate(tight.warnings):
             warnings[j] += [x for x in w if x.startswith(UNAVAILABLE)]

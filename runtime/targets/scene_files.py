@@ -417,6 +417,15 @@ def expect_kind(data: dict, where: str, kind: str) -> None:
                                f"any kind")
 
 
+def beside(law: str, scene: str) -> str:
+    """A law file named in a scene, relative to the scene file's folder."""
+    from ..core.shaped import is_law_file
+
+    if not is_law_file(law) or Path(law).is_absolute() or scene.startswith("<"):
+        return law
+    return str(Path(scene).parent / law)
+
+
 def load(path) -> DynacamScene:
     """Read and check a DYNACAM scene file (or a built-in scene name)."""
     data, where = read(path)
@@ -508,7 +517,8 @@ def from_dict(data: dict, path: str = "<scene>") -> DynacamScene:
     if theta is not None:
         theta = _number("theta", theta)
     if not isinstance(law, str):
-        raise CamdynInputError(f"law must be a cam-law name, got {law!r}")
+        raise CamdynInputError(f"law must be a cam-law name or a law file, got {law!r}")
+    law = beside(law, path)
     choose(law, theta)   # raises with the list of laws
     options = _options(data["options"])
     params = check_parameters(options, data["parameters"])
