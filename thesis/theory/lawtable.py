@@ -68,8 +68,24 @@ def _extreme(exprs, bounds, order: int, sign: int):
         lo, hi = bounds[k], bounds[k + 1]
         f = sp.diff(h, T, order)
         cands = [lo, hi]
-        sol = sp.solveset(sp.diff(f, T), T, sp.Interval(lo, hi))
-        if isinstance(sol, sp.FiniteSet):
+        df = sp.diff(f, T)
+        poly = sp.Poly(df, T) if df.is_polynomial(T) and df.free_symbols <= {T} else None
+        if poly is not None and poly.degree() > 4:
+            # beyond quartics solveset answers in CRootOf, which took a minute for the
+            # polydyne's degree-8 jerk; its real roots to 30 digits serve as well
+            # (on the square-free factors: the rest of a dwell makes multiple roots at the
+            # ends, where the root finder converges slowly)
+            for factor, _ in sp.sqf_list(poly)[1]:
+                if factor.degree() < 1:
+                    continue
+                cands += [sp.re(r) for r in factor.nroots(n=30, maxsteps=500)
+                          if abs(sp.im(r)) < 1e-25 and lo <= sp.re(r) <= hi]
+            sol = None
+        else:
+            sol = sp.solveset(df, T, sp.Interval(lo, hi))
+        if sol is None:
+            pass
+        elif isinstance(sol, sp.FiniteSet):
             cands += list(sol)
         else:  # fall back to a fine scan refined by nsolve when solveset cannot say
             fn = sp.lambdify(T, sp.diff(f, T))
