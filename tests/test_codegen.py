@@ -1,4 +1,5 @@
 """Generated code: equal to the symbolic equations, deterministic, never stale."""
+import functools
 import os
 import shutil
 import subprocess
@@ -21,26 +22,26 @@ from camdyn.runtime.core.compiled import load
 ROOT = Path(__file__).resolve().parents[1]
 
 
-def _lambdified(model_name: str, law_key: str, par):
-    """dy/dt and outputs of a model by plain lambdify of the derived equations, the cam
-    input replaced by the law's sympy Piecewise."""
+@functools.lru_cache(maxsize=None)
+def _model_functions(model_name: str):
+    """dy/dt, the outputs and the cam inputs' arguments of a model by plain lambdify of the
+    derived equations, each cam value H^(k)(arg) an argument of its own: derived and solved
+    once a model, whatever the law."""
     model = REGISTRY[model_name]()
     eq = derive(model)
     t = model.time
-    law = camlaws.LAWS[law_key]
-    lsub = {law.parameter.symbol: par} if law.parameter else {}
+    exprs = [*eq.M, *eq.f, *[st.rate for st in model.first_order], *[o.expr for o in model.outputs]]
+    atoms = sorted(set().union(*(sp.sympify(e).atoms(CamFunction) for e in exprs)), key=sp.srepr)
+    cams = [sp.Symbol(f"cam{j}", real=True) for j in range(len(atoms))]
 
     def plain(e):
-        e = sp.sympify(e)
-        for a in sorted(e.atoms(CamFunction), key=sp.srepr):
-            e = e.subs(a, law.piecewise(a.order, a.args[0]).subs(lsub))
-        return e
+        return sp.sympify(e).xreplace(dict(zip(atoms, cams)))
 
     q, z = model.q, model.z
     qs = [sp.Symbol(f"q{i}", real=True) for i in range(len(q))]
     vs = [sp.Symbol(f"v{i}", real=True) for i in range(len(q))]
     zs = [sp.Symbol(f"z{i}", real=True) for i in range(len(z))]
-    acc = eq.M.LUsolve(eq.f).applyfunc(plain) if q else sp.Matrix([])
+    acc = eq.M.applyfunc(plain).LUsolve(eq.f.applyfunc(plain)) if q else sp.Matrix([])
 
     def to_syms(e):
         e = plain(e)
@@ -53,9 +54,25 @@ def _lambdified(model_name: str, law_key: str, par):
     modes = [m.symbol for m in model.modes]
     args = [t, *qs, *vs, *zs, *params, *modes]  # in the order of the state vector
     dy = [*vs, *[to_syms(a) for a in acc], *[to_syms(st.rate) for st in model.first_order]]
-    f_dy = sp.lambdify(args, dy, "math")
-    f_out = sp.lambdify(args, [to_syms(o.expr) for o in model.outputs], "math")
-    return f_dy, f_out, model
+    f_dy = sp.lambdify(args + cams, dy, "math")
+    f_out = sp.lambdify(args + cams, [to_syms(o.expr) for o in model.outputs], "math")
+    f_arg = [sp.lambdify(args, to_syms(a.args[0]), "math") for a in atoms]
+    return f_dy, f_out, f_arg, [a.order for a in atoms], model
+
+
+def _lambdified(model_name: str, law_key: str, par):
+    """dy/dt and outputs of a model by plain lambdify of the derived equations, the cam
+    values from the law's sympy Piecewise (derive/camlaws.py, lambdified on its own)."""
+    f_dy, f_out, f_arg, orders, model = _model_functions(model_name)
+    law = camlaws.LAWS[law_key]
+    value = par if law.parameter else None
+    H = {k: law.numeric(k, value) for k in set(orders)}
+
+    def cams(args):
+        return [float(H[k](g(*args))) for g, k in zip(f_arg, orders)]
+
+    return (lambda *args: f_dy(*args, *cams(args)), lambda *args: f_out(*args, *cams(args)),
+            model)
 
 
 # the constrained models solve an augmented system: tests/test_beam.py and
