@@ -247,3 +247,29 @@ def test_a_profile_of_a_shaped_rise(tmp_path):
     rough.write_text("".join(f"{float(x)!r},{float(y)!r}\n" for x, y in zip(deg, lift)))
     with pytest.raises(CamdynInputError, match="rough.csv: too rough for the cam profile"):
         CamProfile(law=str(rough), **kw).summary()
+
+
+def test_characteristic_values_of_a_shaped_rise(tmp_path, capsys):
+    """camdyn laws --rise: the blend that is the 3-4-5 law has VDI 2143's C_v, C_a, C_j,
+    C_Mdyn of the 3-4-5 polynomial (1.875, 5.774, 60, 6.694, and as the App. 2 table derives
+    them to 1e-10); the two-segment parabolic blend has no C_j (H'' jumps); a 121-point
+    table of the cycloidal law has (A.2.8)-(A.2.11)'s 2, 2 pi, 4 pi^2 within its errors."""
+    from camdyn.thesis.theory.lawtable import properties
+
+    f = tmp_path / "b345.toml"
+    f.write_text('[[point]]\nT = 0\nH = 0\n"H\'" = 0\n"H\'\'" = 0\n'
+                 '[[point]]\nT = 1\nH = 1\n"H\'" = 0\n"H\'\'" = 0\n')
+    assert main(["laws", "--rise", str(f), "--json"]) == 0
+    got = json.loads(capsys.readouterr().out)
+    ref = properties("3-4-5")
+    for key, want in (("C_v", ref.H1_max), ("C_a", ref.H2_max), ("C_j", ref.jerk_0),
+                      ("C_Mdyn", ref.torque_max)):
+        assert got[key]["value"] == pytest.approx(want, rel=1e-10), key
+    assert got["C_Mdyn"]["at_T"] == pytest.approx(ref.T_torque_max, abs=1e-9)
+    par = shaped.blend([{"T": 0, "H": 0, "H'": 0}, {"T": 0.5, "H": 0.5, "H'": 2},
+                        {"T": 1, "H": 1, "H'": 0}]).characteristics()
+    assert par["C_a"]["value"] == pytest.approx(4.0, rel=1e-12) and par["C_j"]["value"] is None
+    deg, lift = _cycloidal_table(121)
+    table = shaped.table(deg, lift).characteristics()
+    for key, want in (("C_v", 2.0), ("C_a", 2 * np.pi), ("C_j", 4 * np.pi ** 2)):
+        assert abs(table[key]["value"] - want) <= table[key]["error"], key

@@ -42,6 +42,9 @@ def add(sub):
                          "velocity variation against it (thesis fig. 8.8)")
     lw.add_argument("--law", default=None, choices=law_names(),
                     help="with --sweep: the law whose parameter is swept (default modified-sine)")
+    lw.add_argument("--rise", default=None, metavar="FILE",
+                    help="the characteristic values of a rise you shaped (a blend or B-spline "
+                         ".toml, a table .csv/.txt/.dat, as --law of residual takes it)")
     lw.add_argument("--n", type=int, default=None, help="with --sweep: grid points, 2 to 200 (default 9)")
     lw.add_argument("--values", default=None, metavar="V1,V2,...",
                     help="with --sweep: these parameter values instead of the grid")
@@ -54,6 +57,8 @@ def add(sub):
 def run(args) -> int:
     from camdyn.thesis.design import selection, shape_sweep
 
+    if args.rise is not None:
+        return _rise(args)
     stray = _stray_option(args)
     if stray:
         return fail(PROG, stray)
@@ -98,6 +103,47 @@ def _print_characteristics(rows) -> None:
           "torque M = m h_m^2/(w_s t_m^3) H' H'' (A.2.7); one-DOF residual envelope "
           "U0 <= C tau^p for tau << 1 (ch. 3). VDI 2143's characteristic values: C_v = H'max, "
           "C_a = H''max, C_j the largest jerk, C_Mdyn = max H'H''.")
+
+
+def _rise(args) -> int:
+    """camdyn laws --rise FILE: VDI 2143's characteristic values of a shaped rise, each with
+    its error and where it is reached."""
+    from ..core import shaped
+    from ..core.errors import CamdynInputError
+
+    others = [n for n in ("tau", "fa", "sweep", "law", "theta", "stroke", "out") if
+              getattr(args, n, None) is not None]
+    if others:
+        return fail(PROG, f"argument --{others[0]}: not with --rise")
+    try:
+        if not shaped.is_law_file(args.rise):
+            raise CamdynInputError(f"--rise {args.rise!r}: a blend or B-spline (.toml) or a "
+                                   f"table (.csv, .txt, .dat)")
+        rise = shaped.load(args.rise)
+        values = rise.characteristics()
+    except CamdynInputError as exc:
+        return fail(PROG, str(exc))
+    warnings = rise.warnings()
+    for w in warnings:
+        print(f"{PROG}: warning: {w}", file=sys.stderr)
+    if args.json:
+        print(json.dumps({"rise": rise.name, "segment_ends": rise.breakpoints()[1:],
+                          "continuity": rise.continuity, **values, "warnings": warnings},
+                         indent=1))
+        return 0
+    names = {"C_v": "C_v = H'max", "C_a": "C_a = |H''|max", "C_j": "C_j = |H'''|max",
+             "C_Mdyn": "C_Mdyn = max H'H''"}
+    table = [("characteristic", "value", "+-", "at T")]
+    for key, v in values.items():
+        table.append((names[key], "impulse" if v["value"] is None else _num(v["value"]),
+                      "" if v["error"] is None else f"{v['error']:.2g}",
+                      "" if v["at_T"] is None else f"{v['at_T']:.4g}"))
+    smooth = "H" + "'" * max(rise.continuity, 0)
+    print(f"{rise.name}: segments end at T = "
+          f"{', '.join(f'{b:g}' for b in rise.breakpoints()[1:])}; {smooth} continuous over "
+          f"the cam motion, dwells included")
+    _print_table(table)
+    return 0
 
 
 def _stray_option(args) -> str | None:

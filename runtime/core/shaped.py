@@ -103,6 +103,47 @@ class Shaped:
         """Largest |H|, |H'|, |H''|, |H'''| over the rise (16 points a piece)."""
         return tuple(float(v) for v in _peaks(self.breaks, np.array(self.coefs)))
 
+    def characteristics(self) -> dict:
+        """VDI 2143's characteristic values of the rise, C_v = H'max, C_a = |H''|max,
+        C_j = |H'''|max, C_Mdyn = max H'H'', each where it is reached (T) and with its error:
+        the table's estimate times the value (zero for a rise given exactly) and the rounding
+        of the roots that locate it.  C_a and C_j are None (an impulse) where H' or H''
+        jumps, dwells included."""
+        c = [np.array(row) for row in self.coefs]
+        b = self.breaks
+        smooth = self.continuity
+
+        def peak(poly_of, sign_free: bool):
+            best, at = -np.inf, 0.0
+            for i, row in enumerate(c):
+                p = poly_of(row)
+                dp = P.polyder(p)
+                x = [0.0, b[i + 1] - b[i]]
+                if dp.size > 1 and np.any(dp):
+                    r = P.polyroots(np.trim_zeros(dp, "b")) if np.any(dp[1:]) else []
+                    x += [v.real for v in r if abs(v.imag) < 1e-9 and 0.0 < v.real < x[1]]
+                vals = P.polyval(np.array(x), p)
+                vals = np.abs(vals) if sign_free else vals
+                k = int(np.argmax(vals))
+                if vals[k] > best:
+                    best, at = float(vals[k]), b[i] + x[k]
+            return best, at
+
+        e = self.errors
+        out = {}
+        for name, poly_of, sign_free, err, ok in (
+                ("C_v", lambda r: P.polyder(r, 1), False, e[1], True),
+                ("C_a", lambda r: P.polyder(r, 2), True, e[2], smooth >= 1),
+                ("C_j", lambda r: P.polyder(r, 3), True, e[3], smooth >= 2),
+                ("C_Mdyn", lambda r: P.polymul(P.polyder(r, 1), P.polyder(r, 2)), False,
+                 e[1] + e[2], smooth >= 1)):
+            if not ok:
+                out[name] = {"value": None, "error": None, "at_T": None}
+                continue
+            v, at = peak(poly_of, sign_free)
+            out[name] = {"value": v, "error": abs(v) * (err + 1e-12), "at_T": float(at)}
+        return out
+
     def check_for(self, model_name: str, order: int, limit: float = ROUGH_LIMIT) -> None:
         """Refuse this rise for a model whose equations use H .. H^(order) when the estimated
         error of one of them exceeds ``limit`` of its largest value (a table too rough)."""
