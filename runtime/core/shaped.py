@@ -26,9 +26,10 @@ H, H', H'' or H''' jumps; a spline's smooth knots lie inside one segment.
 from __future__ import annotations
 
 import csv
+import functools
 import math
 import tomllib
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -46,6 +47,8 @@ conditions of a blend are ill-conditioned in the power basis)."""
 JUMP = 1e-9
 """A derivative jumps at a break when its two sides differ by more than this times the
 derivative's largest value over the rise."""
+TABLE_SUFFIXES = (".csv", ".txt", ".dat")
+"""Files read as a table of (angle, lift); a .toml file is a blend or a B-spline."""
 ROUGH_LIMIT = 0.01
 """Default largest estimated error of a table's derivative, relative to its largest value,
 for the derivatives a model uses (:meth:`Shaped.check_for`)."""
@@ -63,7 +66,6 @@ class Shaped:
     errors: tuple = (0.0, 0.0, 0.0, 0.0)
     """Estimated error of H .. H''' relative to each one's largest value over the rise (a
     table's; 0 for a rise given exactly)."""
-    source: str = field(default="", compare=False)
 
     key = "shaped"
     code = _lib.SHAPED
@@ -93,7 +95,7 @@ class Shaped:
         jumps = set()
         for k in range(4):
             start = math.factorial(k) * c[0, k]
-            end = _derivative(c[-1], b[-1] - b[-2], k) - (1.0 if k == 0 else 0.0)
+            end = P.polyval(b[-1] - b[-2], P.polyder(c[-1], k)) - (1.0 if k == 0 else 0.0)
             if max(abs(start), abs(end)) > JUMP * max(peaks[k], 1.0):
                 jumps.add(k)
         jumps |= _jumps(b, c, peaks)[1]
@@ -165,14 +167,6 @@ class Shaped:
                 f"point against every point)"]
 
 
-def _derivative(c: np.ndarray, x: float, order: int) -> float:
-    """d^order/dx^order of sum c_j x^j at x."""
-    total = 0.0
-    for j in range(order, c.size):
-        total += c[j] * math.perm(j, order) * x ** (j - order)
-    return total
-
-
 def _peaks(breaks, coefs) -> np.ndarray:
     """Largest |H^(k)|, k = 0..3, on 16 points of each piece."""
     u = np.linspace(0.0, 1.0, 16)
@@ -190,7 +184,7 @@ def _jumps(breaks, coefs, peaks) -> tuple:
     for i in range(1, len(breaks) - 1):
         x = breaks[i] - breaks[i - 1]
         bad = {k for k in range(4)
-               if abs(_derivative(coefs[i - 1], x, k) - math.factorial(k) * coefs[i][k])
+               if abs(P.polyval(x, P.polyder(coefs[i - 1], k)) - math.factorial(k) * coefs[i][k])
                > JUMP * max(peaks[k], 1e-300)}
         if bad:
             where.append(i)
@@ -206,8 +200,7 @@ def _segments(breaks, coefs) -> tuple:
     return ends, first
 
 
-def from_pieces(name: str, breaks, coefs, errors=(0.0, 0.0, 0.0, 0.0),
-                source: str = "") -> Shaped:
+def from_pieces(name: str, breaks, coefs, errors=(0.0, 0.0, 0.0, 0.0)) -> Shaped:
     """A :class:`Shaped` rise from its breaks and ascending coefficients, checked: breaks from
     0 to 1 increasing, H(0) = 0 and H(1) = 1 to 1e-9, finite coefficients."""
     b = np.asarray(breaks, dtype=float)
@@ -224,14 +217,14 @@ def from_pieces(name: str, breaks, coefs, errors=(0.0, 0.0, 0.0, 0.0),
         raise CamdynInputError(f"{name}: breaks and coefficients must be finite numbers")
     if b[0] != 0.0 or b[-1] != 1.0 or np.any(np.diff(b) <= 0):
         raise CamdynInputError(f"{name}: the breaks must rise from T = 0 to T = 1")
-    h0, h1 = c[0, 0], _derivative(c[-1], b[-1] - b[-2], 0)
+    h0, h1 = c[0, 0], P.polyval(b[-1] - b[-2], c[-1])
     if abs(h0) > 1e-9 or abs(h1 - 1.0) > 1e-9:
         raise CamdynInputError(f"{name}: a rise goes from H = 0 at T = 0 to H = 1 at T = 1, "
                                f"this one from {h0:.6g} to {h1:.6g}")
     c[0, 0] = 0.0
     ends, first = _segments(b, c)
     return Shaped(name, tuple(float(x) for x in b), tuple(tuple(float(v) for v in row) for row in c),
-                  ends, first, tuple(float(e) for e in errors), source)
+                  ends, first, tuple(float(e) for e in errors))
 
 
 # -- blend segments ---------------------------------------------------------------------
@@ -287,7 +280,7 @@ def blend(points, name: str = "blend") -> Shaped:
         rows, rhs = [], []
         for order, v in sorted(conds[i].items()):
             if v == "match":
-                v = 0.0 if prev is None else _derivative(prev[0], prev[1], order)
+                v = 0.0 if prev is None else P.polyval(prev[1], P.polyder(prev[0], order))
             rows.append((0.0, order))
             rhs.append(v)
         for order, v in sorted(conds[i + 1].items()):
@@ -341,13 +334,13 @@ def bspline(control, degree: int = 5, name: str = "B-spline") -> Shaped:
     return _from_ppoly(pp, name)
 
 
-def _from_ppoly(pp, name: str, errors=(0.0, 0.0, 0.0, 0.0), source: str = "") -> Shaped:
+def _from_ppoly(pp, name: str, errors=(0.0, 0.0, 0.0, 0.0)) -> Shaped:
     """SciPy's PPoly (descending powers, possibly empty intervals) on [0, 1] as a Shaped."""
     x, c = pp.x, pp.c
     keep = [i for i in range(len(x) - 1) if x[i + 1] > x[i] and x[i] >= 0.0 and x[i + 1] <= 1.0]
     breaks = [float(x[keep[0]])] + [float(x[i + 1]) for i in keep]
     coefs = [c[::-1, i] for i in keep]
-    return from_pieces(name, breaks, coefs, errors, source)
+    return from_pieces(name, breaks, coefs, errors)
 
 
 # -- a table of H(T) ----------------------------------------------------------------------
@@ -359,7 +352,7 @@ def _quintic(T, H):
     return PPoly.from_spline(make_interp_spline(T, H, k=5, bc_type=(bc, bc)))
 
 
-def table(T, H, name: str = "table", source: str = "") -> Shaped:
+def table(T, H, name: str = "table") -> Shaped:
     """The rise through the points (T_i, H_i) - any units: T is scaled to 0..1 over the first
     and last points and H to 0..1 from the first to the last value - with its error estimate
     (see the module's docstring).  At least 8 points, T strictly increasing."""
@@ -392,7 +385,7 @@ def table(T, H, name: str = "table", source: str = "") -> Shaped:
         a = full.derivative(k)(x) if k else full(x)
         b = half.derivative(k)(x) if k else half(x)
         errors.append(float(np.max(np.abs(a - b)) / max(np.max(np.abs(a)), 1e-300)))
-    return _from_ppoly(full, name, errors, source)
+    return _from_ppoly(full, name, errors)
 
 
 def read_table(path: Path) -> tuple[np.ndarray, np.ndarray]:
@@ -428,13 +421,23 @@ def read_table(path: Path) -> tuple[np.ndarray, np.ndarray]:
 
 def load(path) -> Shaped:
     """A shaped rise from a file: .csv/.txt/.dat a table of (angle, lift); .toml a blend
-    ([[point]] tables) or a B-spline ([bspline] with control and degree)."""
+    ([[point]] tables) or a B-spline ([bspline] with control and degree).
+
+    Every Simulator and check that is given the file's name asks for it (a residual with
+    its error estimate builds two, a profile reads it for the cam and its warnings): the
+    rise is read and fitted once per version of the file (its path, size and time)."""
     p = Path(path)
     if not p.is_file():
         raise CamdynInputError(f"law file {str(path)!r} not found")
-    if p.suffix.lower() in (".csv", ".txt", ".dat"):
+    st = p.stat()
+    return _load(p.resolve(), st.st_size, st.st_mtime_ns)
+
+
+@functools.lru_cache(maxsize=64)
+def _load(p: Path, size: int, mtime_ns: int) -> Shaped:
+    if p.suffix.lower() in TABLE_SUFFIXES:
         T, H = read_table(p)
-        return table(T, H, name=p.name, source=str(p))
+        return table(T, H, name=p.name)
     if p.suffix.lower() == ".toml":
         try:
             spec = tomllib.loads(p.read_text())
@@ -455,4 +458,4 @@ def load(path) -> Shaped:
 
 def is_law_file(text: str) -> bool:
     """Whether a --law argument names a file rather than a law of the library."""
-    return Path(text).suffix.lower() in (".csv", ".txt", ".dat", ".toml")
+    return Path(text).suffix.lower() in (*TABLE_SUFFIXES, ".toml")
