@@ -61,6 +61,18 @@ def _pieces(law: CamLaw, theta):
     return bounds, exprs
 
 
+def _real_roots(poly: sp.Poly, lo, hi) -> list:
+    """The real roots of ``poly`` in [lo, hi] to 30 digits, found on its square-free factors
+    (the rest of a dwell makes multiple roots at the ends, where the root finder converges
+    slowly)."""
+    out = []
+    for factor, _ in sp.sqf_list(poly)[1]:
+        if factor.degree() >= 1:
+            out += [sp.re(r) for r in factor.nroots(n=30, maxsteps=500)
+                    if abs(sp.im(r)) < 1e-25 and lo <= sp.re(r) <= hi]
+    return out
+
+
 def _extreme(exprs, bounds, order: int, sign: int):
     """Largest value of sign * d^order H over the rise, and where (exact candidates)."""
     best, where = None, None
@@ -73,27 +85,18 @@ def _extreme(exprs, bounds, order: int, sign: int):
         if poly is not None and poly.degree() > 4:
             # beyond quartics solveset answers in CRootOf, which took a minute for the
             # polydyne's degree-8 jerk; its real roots to 30 digits serve as well
-            # (on the square-free factors: the rest of a dwell makes multiple roots at the
-            # ends, where the root finder converges slowly)
-            for factor, _ in sp.sqf_list(poly)[1]:
-                if factor.degree() < 1:
-                    continue
-                cands += [sp.re(r) for r in factor.nroots(n=30, maxsteps=500)
-                          if abs(sp.im(r)) < 1e-25 and lo <= sp.re(r) <= hi]
-            sol = None
+            cands += _real_roots(poly, lo, hi)
         else:
             sol = sp.solveset(df, T, sp.Interval(lo, hi))
-        if sol is None:
-            pass
-        elif isinstance(sol, sp.FiniteSet):
-            cands += list(sol)
-        else:  # fall back to a fine scan refined by nsolve when solveset cannot say
-            fn = sp.lambdify(T, sp.diff(f, T))
-            import numpy as np
-            grid = np.linspace(float(lo), float(hi), 2001)
-            vals = fn(grid) * np.ones_like(grid)
-            for i in np.flatnonzero(np.sign(vals[:-1]) != np.sign(vals[1:])):
-                cands.append(sp.Float(sp.nsolve(sp.diff(f, T), T, (grid[i] + grid[i + 1]) / 2)))
+            if isinstance(sol, sp.FiniteSet):
+                cands += list(sol)
+            else:  # fall back to a fine scan refined by nsolve when solveset cannot say
+                fn = sp.lambdify(T, df)
+                import numpy as np
+                grid = np.linspace(float(lo), float(hi), 2001)
+                vals = fn(grid) * np.ones_like(grid)
+                for i in np.flatnonzero(np.sign(vals[:-1]) != np.sign(vals[1:])):
+                    cands.append(sp.Float(sp.nsolve(df, T, (grid[i] + grid[i + 1]) / 2)))
         for c in cands:
             v = sign * f.subs(T, c)
             if best is None or float(v) > float(best):
