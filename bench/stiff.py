@@ -31,7 +31,10 @@ per call, the generated Jacobian).  Times: CPU time of the integration, median o
 (camdyn 5, each of enough runs to last 5 ms; a peer 3 when a run is under 0.5 s, else 1;
 the beam: 5 when a run is under 1 s, else 1).  Matched error: the cost of a method
 at a target error is read off its work-precision curve (log-log interpolation between the two
-rungs around the target; the cheapest run if that is already below it).
+rungs around the target; the cheapest run if that is already below it).  A goal's ratio is
+paired: the runs on both sides timed in interleaved rounds, the median of the rounds' ratios
+(PAIRED_ROUNDS), so that the machine's drift between two ladders does not enter it; the tables'
+ratios are the quotients of the ladders' own times.
 
     python bench/stiff.py            writes bench/results/BENCHMARKS-stiff.md and its charts,
                                      bench/results/charts/stiff_*.png
@@ -82,6 +85,8 @@ class Point:
     rhs: int | None
     status: str = "ok"
     note: str = ""
+    rungs: tuple = ()       # the runs (method, rtol) an interpolated cost is read between
+    frac: float = 0.0       # ... and where between them, in logarithms of the error
 
 
 @dataclass
@@ -89,6 +94,7 @@ class CaseResult:
     key: str
     title: str
     points: list = field(default_factory=list)
+    timers: dict = field(default_factory=dict)   # (method, rtol) -> a batch of its runs
 
     def best_at(self, methods, target: float) -> Point | None:
         """The cheapest of ``methods`` at ``target`` (cost_at), None where none reaches it."""
@@ -110,7 +116,8 @@ class CaseResult:
                 f = math.log(prev.error / target) / math.log(prev.error / p.error)
                 cpu = math.exp(math.log(prev.cpu) + f * math.log(p.cpu / prev.cpu))
                 return Point(method, p.rtol, target, cpu, None, None, "interpolated",
-                             f"between rtol {prev.rtol:.0e} and {p.rtol:.0e}")
+                             f"between rtol {prev.rtol:.0e} and {p.rtol:.0e}",
+                             ((method, prev.rtol), (method, p.rtol)), f)
             if prev is None or p.error < prev.error:
                 prev = p
         return None
@@ -124,18 +131,51 @@ is at the mercy of the machine's scheduler (the ratios of two such runs moved by
 between repeats), so short runs are timed in batches, as timeit does."""
 
 
-def _median_cpu(fn, repeat: int):
-    """(median CPU seconds of one call over ``repeat`` batches, the last result)."""
-    c0 = time.process_time()
-    out = fn()
-    inner = max(1, math.ceil(BATCH_CPU / max(time.process_time() - c0, 1e-7)))
-    times = []
-    for _ in range(repeat):
+class Batch:
+    """Calls of ``fn`` timed together, as many as last BATCH_CPU."""
+
+    def __init__(self, fn):
+        self.fn = fn
         c0 = time.process_time()
-        for _ in range(inner):
-            out = fn()
-        times.append((time.process_time() - c0) / inner)
-    return statistics.median(times), out
+        self.out = fn()
+        self.inner = max(1, math.ceil(BATCH_CPU / max(time.process_time() - c0, 1e-7)))
+
+    def __call__(self) -> float:
+        """CPU seconds of one call, from a batch."""
+        c0 = time.process_time()
+        for _ in range(self.inner):
+            self.out = self.fn()
+        return (time.process_time() - c0) / self.inner
+
+
+def _median_cpu(fn, repeat: int):
+    """(median CPU seconds of one call over ``repeat`` batches, the last result, the batch)."""
+    batch = Batch(fn)
+    return statistics.median(batch() for _ in range(repeat)), batch.out, batch
+
+
+PAIRED_ROUNDS = 9
+"""Rounds of a paired ratio.  The machine's speed drifts over seconds (one method's ladder
+ran 1.7x slower than minutes before), so a goal's ratio is not the quotient of two costs timed
+apart: each round times both sides' batches back to back, in alternating order, and the ratio
+is the median of the rounds' ratios."""
+
+
+def paired_ratio(res: CaseResult, fast: Point, slow: Point, rounds: int = PAIRED_ROUNDS) -> float:
+    """slow's cost over fast's, both as cost_at read them, timed in interleaved rounds."""
+    def cost(p: Point, times: dict) -> float:
+        if not p.rungs:
+            return times[(p.method, p.rtol)]
+        t0, t1 = (times[k] for k in p.rungs)
+        return math.exp(math.log(t0) + p.frac * math.log(t1 / t0))
+
+    keys = list(dict.fromkeys((fast.rungs or ((fast.method, fast.rtol),))
+                              + (slow.rungs or ((slow.method, slow.rtol),))))
+    ratios = []
+    for k in range(rounds):
+        times = {key: res.timers[key]() for key in (keys if k % 2 == 0 else keys[::-1])}
+        ratios.append(cost(slow, times) / cost(fast, times))
+    return statistics.median(ratios)
 
 
 def roller_case(model: str, params: dict, rtols, peer_rtols, repeat: int) -> CaseResult:
@@ -165,12 +205,13 @@ def roller_case(model: str, params: dict, rtols, peer_rtols, repeat: int) -> Cas
             sim = Simulator(model, 3.0, make(rtol), exact_segments=exact)
             try:
                 sim.run(params)                                    # warm the caches
-                cpu, r = _median_cpu(lambda: sim.run(params), repeat)
+                cpu, r, batch = _median_cpu(lambda sim=sim: sim.run(params), repeat)
             except SimulationError as exc:
                 res.points.append(Point(name, rtol, None, None, None, None, "failed", str(exc)))
                 continue
             err = float(np.max(np.abs(r.sample(T_GRID)["X"] - x_ref)))
             res.points.append(Point(name, rtol, err, cpu, r.stats["n_steps"], r.stats["n_rhs"]))
+            res.timers[(name, rtol)] = batch
         _progress(f"  {name}: done")
     m = load(model)
     for name in ("Radau", "BDF", "LSODA"):
@@ -367,11 +408,15 @@ def verdict(results: list) -> list[str]:
                 parts, ok = [], []
                 for target in TARGETS:
                     a, b = r.best_at(mine, target), r.best_at(other, target)
-                    parts.append(f"{target:.0e}: " + ("-" if a is None or b is None else
-                                                      f"{b.cpu / a.cpu:.1f} ({a.method} against "
-                                                      f"{b.method})"))
-                    if a is not None and b is not None:
-                        ok.append(b.cpu / a.cpu >= goal)
+                    if a is None or b is None:
+                        parts.append(f"{target:.0e}: -")
+                        continue
+                    # the peers' runs are not batched: their costs are compared as timed
+                    q = (paired_ratio(r, a, b) if all(
+                        k in r.timers for p in (a, b) for k in (p.rungs or ((p.method, p.rtol),)))
+                        else b.cpu / a.cpu)
+                    parts.append(f"{target:.0e}: {q:.1f} ({a.method} against {b.method})")
+                    ok.append(q >= goal)
                 other = " or ".join(other)
                 state = "MET at every target" if len(ok) == len(TARGETS) and all(ok) else (
                     "MET at some targets" if any(ok) else "NOT MET")

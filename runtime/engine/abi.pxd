@@ -12,7 +12,7 @@
 # a module at run time.
 
 cdef enum:
-    CAMDYN_ABI = 13
+    CAMDYN_ABI = 14
 
 # method codes
 cdef enum:
@@ -54,8 +54,9 @@ cdef struct Record:
     # one row per recorded point: [t, y (ns), f (ns), extra (n_extra x ns)]; f is
     # the slope there (left limit at the end of an interval), `extra` the higher
     # dense-output terms of the step that starts at the point (dense.pxd): none for
-    # the cubic Hermite interpolant (RK4, the thesis scheme, RODAS4, RADAU5), one for DP54's
-    # quartic, four for DOP853's degree-7 extension (ABI 8).
+    # the cubic Hermite interpolant (RK4, the thesis scheme), one for DP54's quartic, two
+    # for RADAU5's and RODAS4's quintic over three points (ABI 14), four for DOP853's
+    # degree-7 extension (ABI 8).
     # `mode` holds the modes in force from the point on.
     Py_ssize_t n
     Py_ssize_t cap
@@ -175,14 +176,17 @@ cdef inline bint adaptive_method(int method) noexcept nogil:
 cdef inline int extra_terms(int method, bint exact) noexcept nogil:
     """Dense-output terms beyond the cubic Hermite interpolant a record holds per step: RKN12's
     eight (degree 11, fitted to interior steps; loops.pxi, _loop_rkn12), DOP853's four, DP54's
-    one, none for the others; four for every other adaptive method that steps over
-    linear segments exactly, whose record there is a degree-7 extension through the exact
-    state (loops.pxi, _loop_exact).  A method's own steps leave the terms it lacks zero, which
-    is its own interpolant (dense.pxd)."""
+    one, RADAU5's and RODAS4's two (the quintic Hermite interpolant over three points,
+    loops.pxi, _rec_three_point), none for the others; four for every other adaptive method
+    that steps over linear segments exactly, whose record there is a degree-7 extension
+    through the exact state (loops.pxi, _loop_exact).  A method's own steps leave the terms it
+    lacks zero, which is its own interpolant (dense.pxd)."""
     if method == METHOD_RKN12:
         return 8
     if method == METHOD_DOP853 or (exact and adaptive_method(method)):
         return 4
+    if method == METHOD_RADAU or method == METHOD_RODAS:
+        return 2
     return 1 if method == METHOD_DP54 else 0
 
 

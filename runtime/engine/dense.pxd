@@ -9,7 +9,8 @@
 #     v0 = y_i+1 - y_i,  v1 = h f_i - v0,  v2 = v0 - h f_i+1 - v1,  v3... = the step's extras
 #
 # the multipliers alternating s1, s, s1, ...  With no extra it is the cubic Hermite
-# interpolant (RK4, the thesis scheme, RODAS4, RADAU5), with one DP54's quartic, with four DOP853's
+# interpolant (RK4, the thesis scheme), with one DP54's quartic, with two the quintic of
+# RADAU5 and RODAS4 (the Hermite interpolant over three points), with four DOP853's
 # polynomial of degree 7.  The extras multiply s^2 s1^2, so any choice of them keeps the
 # values and slopes at both ends.
 #

@@ -16,8 +16,9 @@
 #
 # Dense output.  Every point stores its slope f and the step starting there its
 # extras, the terms of Hairer's continuous extension beyond the cubic Hermite
-# interpolant (dense.pxd): none for RK4, the thesis scheme, RODAS4 and RADAU5, DP54's
-# fourth-order term, DOP853's four terms of its seventh-order extension.
+# interpolant (dense.pxd): none for RK4 and the thesis scheme, DP54's fourth-order term,
+# two for RODAS4 and RADAU5 (the quintic over the step and the start of the one before,
+# _rec_three_point), DOP853's four terms of its seventh-order extension.
 
 from libc.math cimport NAN, cos, exp, fabs, fmax, fmin, isfinite, isnan, log, pow, sin, sqrt
 from libc.stdlib cimport free, malloc
@@ -70,6 +71,52 @@ cdef inline int _rec_point(Run* run, double t, const double* y, const double* f)
         memcpy(&r.mode[n * _NM], run.ctx.mode, _NM * sizeof(int))
     r.n = n + 1
     return 0
+
+
+cdef inline void _rec_three_point(Run* run) noexcept nogil:
+    """The extras of the record's last step (rows n-2 to n-1) that make its interpolant the
+    quintic through the value and slope at both its ends and at the start of the step before
+    (row n-3): a Hermite interpolant over three accepted points, O(h^6) like the methods' own
+    values there, where the cubic Hermite one is O(h^4).  For RADAU5 (order 5) and RODAS4
+    (order 4), whose collocation or Rosenbrock stages give no interpolant better than the
+    cubic one (stage order 3); they call it from their second step of an interval on, and a
+    record without two extras keeps the cubic one.
+
+    With h the step, r h the one before, and s in units of h from the step's start, the
+    quintic is H3(s) + s^2 (1 - s)^2 (e0 + e1 s), H3 the cubic Hermite part (dense.pxd); its
+    value and slope at s = -r fix e0 - r e1 and then e1."""
+    cdef Record* rec = &run.rec
+    cdef const double* p
+    cdef const double* a
+    cdef const double* b
+    cdef double* ex
+    cdef double h, r, s1, q, dq, v0, v1, v2, g, H, dH, e1, u
+    cdef int c
+    if rec.n_extra < 2 or rec.n < 3:
+        return
+    b = rec.rows + (rec.n - 1) * rec.width
+    a = b - rec.width
+    p = a - rec.width
+    h = b[0] - a[0]
+    if not (p[0] < a[0] and h > 0.0):
+        return
+    r = (a[0] - p[0]) / h
+    s1 = 1.0 + r                            # 1 - s at s = -r
+    q = r * r * s1 * s1
+    dq = -2.0 * r * s1 * (1.0 + 2.0 * r)
+    ex = <double*> a + 1 + 2 * _NS
+    for c in range(_NS):
+        v0 = b[1 + c] - a[1 + c]
+        v1 = h * a[1 + _NS + c] - v0
+        v2 = v0 - h * b[1 + _NS + c] - v1
+        u = v1 - r * v2                     # v1 + s v2 at s = -r
+        g = v0 + s1 * u
+        H = a[1 + c] - r * g
+        dH = g - r * (s1 * v2 - u)
+        u = (p[1 + c] - H) / q              # e0 - r e1
+        e1 = (h * p[1 + _NS + c] - dH - dq * u) / q
+        ex[c] = u + r * e1
+        ex[_NS + c] = e1
 
 
 cdef inline bint _finite(int n, const double* y) noexcept nogil:
@@ -1585,6 +1632,7 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
     cdef const double* atol = run.atol
     cdef long n_steps = run.n_steps, n_rej = run.n_rejected, n_rhs = 0, max_steps = run.max_steps
     cdef bint last, rejected = False, have_jac = False
+    cdef long n_acc = 0         # steps recorded since the interval's start or the last event
     # heap, not stack: _NS^2 grows fast for models built from user files
     cdef double* J = <double*> malloc(2 * _NS * _NS * sizeof(double))
     cdef double* W
@@ -1707,6 +1755,7 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
                     # the event refreshed run.ctx (the rhs variant of the new cam segments)
                     local_ctx = run.ctx[0]
                     rejected = False
+                    n_acc = 0
                     continue
                 memcpy(g0, g1, sizeof(g0))
             t = tn
@@ -1720,6 +1769,9 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
             if _rec_point(run, t, y, f0) != 0:
                 status = STATUS_NO_MEMORY
                 break
+            n_acc += 1
+            if n_acc >= 2:
+                _rec_three_point(run)
             if not last:
                 run.h = h
             h = fmin(h * fac, run.h_max)
@@ -2059,6 +2111,8 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
             if _rec_point(run, t, y, f0) != 0:
                 status = STATUS_NO_MEMORY
                 break
+            if n_acc >= 2:
+                _rec_three_point(run)
             if not last:
                 run.h = h
             hnew = fmin(hnew, run.h_max)
