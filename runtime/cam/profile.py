@@ -92,6 +92,10 @@ enough below the square root of the largest float for every formula of the profi
 MIN_RADIUS = 1e-6
 """The smallest base and roller radius (m): a micrometre is below any cam, and far enough
 above the smallest float that curvatures (1/radius, squared) stay finite."""
+ARC_TOLERANCE = 1e-6
+"""How far (m) the tangent arcs of a curve may stray from it where the cam states no
+``arc_tolerance`` of its own (the STEP plate's profile): a micrometre, a tenth of what a
+milling machine holds."""
 
 
 def _a(kind: str) -> str:
@@ -739,7 +743,7 @@ class CamProfile:
     def _fit_arcs(self, layer: str) -> list:
         from .biarc import fit
 
-        tol = self.arc_tolerance if self.arc_tolerance is not None else 1e-6
+        tol = self.arc_tolerance if self.arc_tolerance is not None else ARC_TOLERANCE
         rr, rc = self.roller_radius or 0.0, self.cutter_radius or 0.0
         shift = {"PROFILE": 0.0, "PITCH": rr, "CUTTER": rc, "PROFILE_OUTER": 2 * rr}[layer]
 

@@ -104,8 +104,18 @@ def add(sub):
                    help="a crowned roller's crown radius across the cam, m (point contact)")
     g.add_argument("--allowable-stress", type=float, default=None, metavar="PA",
                    help="the allowable peak contact pressure, Pa, for the check")
+    g = p.add_argument_group(
+        "solid", "the cam plate as a STEP solid (optional extra: pip install 'camdyn[cad]')")
+    g.add_argument("--step", action="store_true",
+                   help="also write cam.step: the profile (tangent arcs within --arcs, 1e-6 m "
+                        "unless given) extruded to the plate's thickness --cam-width, less the "
+                        "bore; an open cam")
+    g.add_argument("--bore", type=float, default=0.0, metavar="M",
+                   help="with --step: the bore's diameter, m, below twice the profile's least "
+                        "radius (default 0, none)")
     add_out_option(p, default="out/cam", metavar="DIR",
-                   help="folder for cam.csv, cam.dxf, cam.png, cam.json (default out/cam)")
+                   help="folder for cam.csv, cam.dxf, cam.png, cam.json and cam.step (default "
+                        "out/cam)")
     p.add_argument("--json", action="store_true", help="one JSON object on stdout")
     return p
 
@@ -150,12 +160,25 @@ def run(args) -> int:
             out["hertz_stress_max_error"] = stress["hertz_stress_max_error"]
             out["warnings"] = out["warnings"] + stress["warnings"]
             out["ok"] = out["ok"] and not stress["warnings"]
-        elif any(v is not None for v in (args.roller_width, args.cam_width, args.crown_radius,
-                                          args.allowable_stress)):
+        elif any(v is not None for v in (args.roller_width, args.crown_radius,
+                                          args.allowable_stress,
+                                          None if args.step else args.cam_width)):
             return fail(prog, "the contact stress needs its force: --contact-force N, or "
                               "--speed RPM with --follower-mass, --spring-rate, --spring-preload")
-        folder = out_folder(args.out, files=[f"cam.{x}" for x in ("csv", "dxf", "png", "json")])
+        if args.step and args.cam_width is None:
+            return fail(prog, "--step needs the plate's thickness: --cam-width M")
+        if args.bore and not args.step:
+            return fail(prog, "--bore goes with --step")
+        if args.step:
+            from ..cam.step import plate_checks
+            plate_checks(cam, args.cam_width, args.bore, "cam-width")   # before any file
+        kinds = ("csv", "dxf", "png", "json") + (("step",) if args.step else ())
+        folder = out_folder(args.out, files=[f"cam.{x}" for x in kinds])
         out["files"] = cam.write_all(folder)
+        if args.step:
+            from ..cam.step import write_step
+            out["step"] = write_step(cam, folder / "cam.step", args.cam_width, args.bore)
+            out["files"]["step"] = str(folder / "cam.step")
         out["files"]["json"] = str(folder / "cam.json")
         write_text(folder / "cam.json", json.dumps(out, indent=1))
     except CamdynInputError as exc:
@@ -199,6 +222,12 @@ def run(args) -> int:
                   f"{st['hertz_stress_max_angle_deg']:.2f} deg")
         for c in st["checks"]:
             print(f"{'ok  ' if c['ok'] else 'FAIL'} {c['message']}")
+    if "step" in out:
+        st = out["step"]
+        print(f"     STEP plate {st['thickness'] * 1e3:g} mm thick"
+              + (f", bore {st['bore'] * 1e3:g} mm" if st["bore"] else "")
+              + f": {st['arcs']} arcs within {st['tolerance'] * 1e3:g} mm of the profile, "
+              f"volume {st['volume'] * 1e6:.6g}{plus_minus(st['volume_error'] * 1e6)} cm^3")
     print("     (refined between the samples; ± what the sampling leaves)")
     for f in out["files"].values():
         print(f"wrote {f}")
