@@ -168,7 +168,7 @@ def test_cli_hertz_json_and_refusals(tmp_path, capsys):
                        (["--roller-width", "0.01"], "--contact-force"),
                        (["--contact-force", "-5", "--roller-width", "0.01"], "contact-force"),
                        (["--contact-force", "5", "--speed", "100", "--roller-width", "0.01"],
-                        "not both"),
+                        "one way"),
                        (["--contact-force", "5", "--roller-width", "0.01", "--materials",
                          "steel,1e9:0.7"], "Poisson")):
         rc = main(["profile", "--stroke", "0.015", "--base-radius", "0.026", "--roller-radius",

@@ -347,7 +347,7 @@ class CamProfile:
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
         M = self.cam.displacement(phi)[:3]
         c = self.geometry.contact(phi, M)
-        force = spec.load.normal_force(M, c.lever)
+        force = spec.load.normal_force(M, c.lever, phi)
         curv = c.kappa_profile + (1.0 / self.roller_radius if self.roller else 0.0)
         ok = curv > 0
         p0 = np.full(phi.shape, np.inf)
@@ -407,12 +407,16 @@ class CamProfile:
                 checks.append(Check("contact stress", not bad, math.degrees(at), pmax,
                                     spec.allowable, (), msg, abs(pmax - sampled)))
         if not spec.load.constant:
-            runs = failing_spans(th, f_grid < 0, lambda x: float(f(np.array([x]))[0]))
+            # a run's force is zero, not negative, where the roller has left the cam: the
+            # spans end where it falls below a billionth of its largest
+            eps = 1e-9 * fmax if spec.load.history is not None else 0.0
+            runs = failing_spans(th, f_grid < eps,
+                                 lambda x: float(f(np.array([x]))[0]) - eps)
             if runs:
                 spans = _span_text(runs)
-                msg = (f"follower leaves the cam: at {spec.load.speed_rpm:g} rpm the contact "
+                msg = (f"follower leaves the cam: {spec.load.leaves_where()} the contact "
                        f"force falls to {-neg:.4g} N at cam angle {math.degrees(lo_at):.2f} deg "
-                       f"(negative for phi in {spans} deg): the spring cannot hold the "
+                       f"(not positive for phi in {spans} deg): the spring cannot hold the "
                        f"follower there. Raise the spring's preload or rate, or lower the speed.")
             else:
                 msg = (f"follower stays on the cam: least contact force {-neg:.4g} N at "

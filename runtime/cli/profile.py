@@ -27,12 +27,12 @@ def add(sub):
                     "PROFILE, PROFILE_OUTER, BASE_CIRCLE) and PNG. The undercut (roller), cusp "
                     "(flat face) and pressure-angle checks that fail are warnings naming the "
                     "cam angle where they are worst (and in the JSON). SI units.")
-    p.add_argument("--follower", default="translating-roller", choices=KINDS,
+    p.add_argument("--follower", default=None, choices=KINDS,
                    help="the follower (default translating-roller); a translating one takes "
                         "--stroke (and --offset), an oscillating one --pivot-distance and "
                         "--swing, a roller --roller-radius, an oscillating roller "
                         "--arm-length, an oscillating flat face --face-offset")
-    p.add_argument("--law", default="cycloidal", type=law_argument, metavar="LAW",
+    p.add_argument("--law", default=None, type=law_argument, metavar="LAW",
                    help=f"cam law of the rise: {LAW_HELP} (the return is its mirror unless "
                         f"--return-law; default cycloidal)")
     p.add_argument("--law-parameter", type=float, default=None, metavar="X",
@@ -52,15 +52,16 @@ def add(sub):
     p.add_argument("--face-offset", type=float, default=0.0, metavar="M",
                    help="oscillating flat face: distance of the face's line from the pivot f, m "
                         "(default 0, the face through the pivot; |r_b - f| < a)")
-    p.add_argument("--base-radius", type=float, required=True, metavar="M",
+    p.add_argument("--base-radius", type=float, default=None, metavar="M",
                    help="base circle of the cam profile r_b, m, 1e-6 <= r_b < 1000 (roller centre on the "
-                        "prime circle r_b + r_r at the bottom of the stroke)")
+                        "prime circle r_b + r_r at the bottom of the stroke); required unless "
+                        "--contact-force-from gives the cam")
     p.add_argument("--roller-radius", type=float, default=None, metavar="M",
                    help="roller radius r_r of a roller follower, m, 1e-6 <= r_r < 1000")
     p.add_argument("--offset", type=float, default=None, metavar="M",
                    help="translating follower: offset e of its axis, m, |e| < r_b + r_r "
                         "(default 0; e > 0 lowers a roller's pressure angle on the rise)")
-    p.add_argument("--angles", default="90,90,90,90", metavar="R,D,F,D",
+    p.add_argument("--angles", default=None, metavar="R,D,F,D",
                    help="rise, upper dwell, return, lower dwell in deg, summing to 360 "
                         "(default 90,90,90,90)")
     p.add_argument("--groove", action="store_true", help="a groove cam: both walls")
@@ -77,10 +78,15 @@ def add(sub):
                         "exact curves, 1e-9 <= TOL <= 1, instead of sampled polylines")
     g = p.add_argument_group(
         "contact stress", "Hertz's peak contact pressure along the cam (line contact; a crowned "
-        "roller's point contact), from a constant normal force or the kinetostatic one at a "
-        "cam speed")
+        "roller's point contact), from a constant normal force, the kinetostatic one at a "
+        "cam speed, or the force of a dynamic run")
     g.add_argument("--contact-force", type=float, default=None, metavar="N",
                    help="a constant normal force between cam and follower, N")
+    g.add_argument("--contact-force-from", default=None, metavar="SCENE",
+                   help="the force F_x (6.42) of a dynamic run of a DYNACAM scene (file or "
+                        "built-in; a radial cam with a [turn]) over its last full turn; the cam "
+                        "is the scene's (stroke h_m, a translating roller on the prime circle "
+                        "R_b, its law and turn), the roller's radius --roller-radius")
     g.add_argument("--speed", type=float, default=None, metavar="RPM",
                    help="cam speed for the kinetostatic force: the follower driven through its "
                         "motion against its mass and spring")
@@ -120,6 +126,12 @@ def add(sub):
     return p
 
 
+_GIVEN_BY_SCENE = ("stroke", "base-radius", "law", "law-parameter", "return-law",
+                   "return-law-parameter", "angles", "offset", "follower", "swing",
+                   "pivot-distance", "arm-length", "face-offset")
+"""The cam's settings a scene gives with --contact-force-from (refused beside it)."""
+
+
 def run(args) -> int:
     from ..cam.load import ContactLoad
     from ..cam.profile import CamProfile
@@ -127,34 +139,66 @@ def run(args) -> int:
     from ..measure.contract import plus_minus
 
     prog = "camdyn profile"
+    scene = None
+    if args.contact_force_from is not None:
+        given = [n for n in _GIVEN_BY_SCENE if getattr(args, n.replace("-", "_")) not in
+                 (None, 0.0)]
+        if given:
+            return fail(prog, f"--{given[0]} comes from the scene with --contact-force-from "
+                              f"(its h_m, R_b, law and turn): leave it out")
+        if args.contact_force is not None or args.speed is not None:
+            return fail(prog, "give the contact force one way: --contact-force, --speed, or "
+                              "--contact-force-from")
+    elif args.base_radius is None:
+        return fail(prog, "--base-radius M is required (or --contact-force-from SCENE, whose "
+                          "R_b gives the cam)")
+    angles_text = args.angles or "90,90,90,90"
     try:
-        angles = [float(a) for a in args.angles.split(",")]
+        angles = [float(a) for a in angles_text.split(",")]
     except ValueError:
         return fail(prog, f"--angles must be four numbers in deg, rise,upper dwell,return,lower "
-                          f"dwell summing to 360, got {args.angles!r}")
+                          f"dwell summing to 360, got {angles_text!r}")
     try:
-        cam = CamProfile(stroke=args.stroke, base_radius=args.base_radius,
-                         roller_radius=args.roller_radius,
-                         offset=0.0 if args.offset is None else args.offset,
-                         follower=args.follower, pivot_distance=args.pivot_distance,
-                         arm_length=args.arm_length, swing_deg=args.swing,
-                         face_offset=args.face_offset, cutter_radius=args.cutter_radius,
-                         arc_tolerance=args.arcs,
-                         angles_deg=tuple(angles), law=args.law, law_parameter=args.law_parameter,
-                         return_law=args.return_law,
-                         return_law_parameter=args.return_law_parameter,
+        if args.contact_force_from is not None:
+            from ..targets import scene_force
+
+            scene = scene_force.load(args.contact_force_from, args.roller_radius)
+            geometry = dict(scene.cam)
+        else:
+            geometry = dict(stroke=args.stroke, base_radius=args.base_radius,
+                            roller_radius=args.roller_radius,
+                            offset=0.0 if args.offset is None else args.offset,
+                            follower=args.follower or "translating-roller",
+                            pivot_distance=args.pivot_distance, arm_length=args.arm_length,
+                            swing_deg=args.swing, face_offset=args.face_offset,
+                            angles_deg=tuple(angles), law=args.law or "cycloidal",
+                            law_parameter=args.law_parameter, return_law=args.return_law,
+                            return_law_parameter=args.return_law_parameter)
+        cam = CamProfile(**geometry, cutter_radius=args.cutter_radius, arc_tolerance=args.arcs,
                          groove=args.groove, points_per_degree=args.points_per_degree,
                          max_pressure_angle_deg=args.max_pressure_angle)
         out = cam.summary()
-        if args.contact_force is not None or args.speed is not None:
-            spec = ContactSpec(
-                ContactLoad(force=args.contact_force, speed_rpm=args.speed,
-                            mass=args.follower_mass, spring_rate=args.spring_rate,
-                            preload=args.spring_preload),
-                roller_width=args.roller_width, cam_width=args.cam_width,
-                materials=tuple(args.materials.split(",")), crown_radius=args.crown_radius,
-                allowable=args.allowable_stress)
-            stress = cam.stress_summary(spec)
+        if scene is not None:
+            out["contact_force_from"] = args.contact_force_from
+        if args.contact_force is not None or args.speed is not None or scene is not None:
+            def spec(history=None):
+                load = (ContactLoad(history=history) if history is not None else
+                        ContactLoad(force=args.contact_force, speed_rpm=args.speed,
+                                    mass=args.follower_mass, spring_rate=args.spring_rate,
+                                    preload=args.spring_preload))
+                return ContactSpec(load, roller_width=args.roller_width,
+                                   cam_width=args.cam_width,
+                                   materials=tuple(args.materials.split(",")),
+                                   crown_radius=args.crown_radius,
+                                   allowable=args.allowable_stress)
+            if scene is None:
+                stress = cam.stress_summary(spec())
+            else:
+                from ..targets.scene_force import with_run_error
+
+                stress = with_run_error(cam.stress_summary(spec(scene.history)),
+                                        None if scene.tighter is None else
+                                        cam.stress_summary(spec(scene.tighter)))
             out["contact_stress"] = stress
             out["hertz_stress_max"] = stress["hertz_stress_max"]
             out["hertz_stress_max_error"] = stress["hertz_stress_max_error"]
@@ -163,8 +207,9 @@ def run(args) -> int:
         elif any(v is not None for v in (args.roller_width, args.crown_radius,
                                           args.allowable_stress,
                                           None if args.step else args.cam_width)):
-            return fail(prog, "the contact stress needs its force: --contact-force N, or "
-                              "--speed RPM with --follower-mass, --spring-rate, --spring-preload")
+            return fail(prog, "the contact stress needs its force: --contact-force N, "
+                              "--speed RPM with --follower-mass, --spring-rate, "
+                              "--spring-preload, or --contact-force-from SCENE")
         if args.step and args.cam_width is None:
             return fail(prog, "--step needs the plate's thickness: --cam-width M")
         if args.bore and not args.step:
