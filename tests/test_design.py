@@ -338,3 +338,32 @@ def test_envelope_past_the_last_maximum_holds_it():
     assert d["envelope"]["U0"] == pytest.approx(-r.fun, rel=1e-4)
     assert d["largest_tau"]["tau_max"] < 0.47
     assert d["requirement"]["ratio"] > 1
+
+
+def test_a_shaped_rise_designs_as_the_law_it_reproduces(capsys, tmp_path):
+    """`--law FILE`: the blend with H, H', H'' set to rest at both ends is the 3-4-5 law
+    (runtime/core/shaped.py), so the design through it is the 3-4-5 design, every figure to
+    1e-9 relative (the largest tau within the two searches' errors); a table of the cycloid (121 points) designs as the cycloid within the
+    estimate its warning gives (measured 2e-9 relative on U0), and the warning reaches the
+    answer."""
+    (tmp_path / "rise.toml").write_text(
+        "[[point]]\nT = 0\nH = 0\n\"H'\" = 0\n\"H''\" = 0\n\n"
+        "[[point]]\nT = 1\nH = 1\n\"H'\" = 0\n\"H''\" = 0\n")
+    T = np.linspace(0.0, 1.0, 121)
+    np.savetxt(tmp_path / "cycloid.csv", np.column_stack(
+        [120 * T, 25.1 * (T - np.sin(2 * np.pi * T) / (2 * np.pi))]), delimiter=",")
+    base = ["design", "--stroke", "0.0251", "--cam-angle", "120deg", "--speed", "300",
+            "--mass", "0.61", "--stiffness", "2e6", "--fa", "0", "--accuracy", "20e-6", "--json"]
+
+    def answer(law):
+        assert main([*base, "--law", law, "--out", str(tmp_path / law.replace("/", "_"))]) == 0
+        return json.loads(capsys.readouterr().out)
+    shaped, law = answer(str(tmp_path / "rise.toml")), answer("3-4-5")
+    for key in ("U0", "U0dd"):
+        assert shaped["check_run"][key] == pytest.approx(law["check_run"][key], rel=1e-9), key
+        assert shaped["envelope"][key] == pytest.approx(law["envelope"][key], rel=1e-9), key
+    a, b = shaped["largest_tau"], law["largest_tau"]
+    assert abs(a["tau_max"] - b["tau_max"]) <= a["tau_max_error"] + b["tau_max_error"]
+    table, cycloid = answer(str(tmp_path / "cycloid.csv")), answer("cycloidal")
+    assert table["check_run"]["U0"] == pytest.approx(cycloid["check_run"]["U0"], rel=1e-6)
+    assert any("the table fixes H" in w for w in table["warnings"])

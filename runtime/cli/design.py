@@ -7,7 +7,7 @@ import sys
 
 from ..core.errors import SimulationError
 from ..core.outdir import out_folder
-from .common import add_out_option, fail, law_names as law_names_, run_failed
+from .common import LAW_HELP, add_out_option, fail, law_argument, law_names as law_names_, run_failed
 from .residual import name_argument
 
 HELP = ("design by the thesis's rules: tau, Fa, the envelope, the largest Fa and smallest t_m "
@@ -44,7 +44,8 @@ def add(sub):
     a("--accuracy", type=float, default=None, metavar="M", help="largest positional error u0 (m)")
     a("--residual-acceleration", type=float, default=None, metavar="M/S2",
       help="largest residual acceleration u0'' after the rise (m/s^2)")
-    a("--law", default="cycloidal", choices=law_names, help="cam law of the rise (default cycloidal)")
+    a("--law", default="cycloidal", type=law_argument, metavar="LAW",
+      help=f"cam law of the rise: {LAW_HELP} (default cycloidal)")
     a("--theta", type=float, default=None,
       help="the law's shape parameter, for laws that have one (default: the law's own)")
     a("--common-shaft", action="store_true", help="the shaft drives other mechanisms (Fa <= 0.3, sec. 8.5)")
