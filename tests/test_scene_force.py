@@ -133,11 +133,18 @@ def test_a_follower_that_leaves_the_cam_is_named(tmp_path, capsys):
     (["--contact-force-from", "{scene}", "--roller-radius", "0.01", "--contact-force", "5"],
      ["one way"]),
     (["--stroke", "0.01"], ["--base-radius"]),
+    (["--contact-force-from", "{bilateral}", "--roller-radius", "0.01"],
+     ["held on both sides", "bilateral", "contact"]),
 ])
 def test_refused_in_one_line(tmp_path, capsys, argv, words):
     scene = _scene(tmp_path)
     (tmp_path / "short.toml").write_text(SCENE.format(T_end=6.0))
-    argv = [a.format(scene=scene, short=tmp_path / "short.toml") for a in argv]
+    # the built-in variant with a bilateral roller has no spring
+    (tmp_path / "bilateral.toml").write_text(
+        SCENE.format(T_end=6.5).replace('roller = "contact"\nspring = true', 'roller = "bilateral"')
+        .replace("F_0 = 50.0\n", "").replace("c_s = 1000.0\n", ""))
+    argv = [a.format(scene=scene, short=tmp_path / "short.toml",
+                     bilateral=tmp_path / "bilateral.toml") for a in argv]
     rc = main(["profile", *argv, "--out", str(tmp_path / "o")])
     err = capsys.readouterr().err.strip().splitlines()
     assert rc == 2 and len(err) == 1 and err[0].startswith("camdyn profile: error:")

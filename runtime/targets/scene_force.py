@@ -12,8 +12,7 @@ force Q of runtime/cam/load.py; the normal force is F_x / cos(alpha).  A reduced
 Where the roller's mode is "free" (a spring-held roller that has lifted, sec. 7.5) the force is
 zero, and a spring-held roller's force is never below zero (the linkage damper's share makes
 F_x negative for an instant as the roller leaves; a cam cannot pull).  A roller held on both
-sides (bilateral, groove) keeps the sign: a negative F_x loads the other wall, which the
-profile's stress does not cover.  The run's last full turn of the cam is used (the start's transient left behind): its cam
+sides (bilateral, groove) is refused: its negative F_x loads the other wall.  The run's last full turn of the cam is used (the start's transient left behind): its cam
 angle phi = beta_m B, B = (beta - beta_0)/beta_m the output "B" (6.17), taken modulo one turn,
 and each phi found on the dense output by Newton's method on B(t) (B' = beta'/beta_m).  The
 same is done on the run one notch tighter (the scene's error estimate): the figures' errors
@@ -53,6 +52,11 @@ def load(name: str, roller_radius: float | None) -> SceneForce:
     if sc.options.cam != "radial":
         raise CamdynInputError(f"contact-force-from: {name} has an {sc.options.cam} cam; the "
                                f"profile is that of a radial disk cam (options.cam = \"radial\")")
+    if sc.options.roller != "contact":
+        raise CamdynInputError(f"contact-force-from: the roller of {name} is held on both sides "
+                               f"(options.roller = \"{sc.options.roller}\"), where a negative "
+                               f"F_x loads the other wall; the stress along one profile needs a "
+                               f"spring-held roller (options.roller = \"contact\")")
     if sc.turn is None:
         raise CamdynInputError(f"contact-force-from: {name} runs one rise and dwell; the force "
                                f"along the whole cam needs a full turn: add a [turn] table "
