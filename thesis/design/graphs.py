@@ -11,13 +11,14 @@ import math
 from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 from camdyn.runtime.core import laws
 from camdyn.runtime.core.errors import CamdynInputError
 from camdyn.runtime.measure.envelope import dips, maxima, through_maxima
 from camdyn.runtime.targets.grid import default_jobs
 from camdyn.runtime.targets.model_target import ModelTarget
+
+from ..numerics import CubicSpline
 
 PER_DIP = 12
 """Samples per unit of 1/tau (one tuning dip of (3.5) at Fa = 0; wider at Fa > 0)."""

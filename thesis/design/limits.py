@@ -21,11 +21,11 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from scipy.optimize import brentq
 
 from camdyn.runtime.core.errors import CamdynInputError, SimulationError
 
 from .graphs import Graphs, phase_factor
+from ..numerics import brentq
 
 FA_CAP = 12.8
 """The largest Fa searched (fig. 4.11 stops at 2, App. 7's indexing mechanism has 3.34)."""

@@ -69,7 +69,7 @@ def relative_slip_peak(tau_m: float, speed=None) -> tuple[float, float]:
     Limits: 1 for tau_m -> 0 (static slip at peak torque, delta_n/P), and
     4/(3^(3/2) pi tau_m) for tau_m -> infinity (the inertia integrates the load up to T = 1/2).
     """
-    from scipy.optimize import minimize_scalar
+    from ..numerics import maximize
 
     def g(x):
         return float(slip(np.array([x]), tau_m, delta_n=1.0, P=1.0, speed=speed)[0])
@@ -78,9 +78,8 @@ def relative_slip_peak(tau_m: float, speed=None) -> tuple[float, float]:
     vals = slip(grid, tau_m, delta_n=1.0, P=1.0, speed=speed)
     k = int(np.argmax(vals))
     lo, hi = grid[max(k - 1, 0)], grid[min(k + 1, len(grid) - 1)]
-    r = minimize_scalar(lambda x: -g(x), bounds=(lo, hi), method="bounded",
-                        options={"xatol": 1e-10})
-    best = max((vals[k], grid[k]), (-r.fun, r.x))
+    x, v = maximize(g, lo, hi, xatol=1e-10)
+    best = max((vals[k], grid[k]), (v, x))
     return float(best[0]), float(best[1])
 
 
