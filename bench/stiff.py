@@ -88,6 +88,16 @@ class Point:
     rungs: tuple = ()       # the runs (method, rtol) an interpolated cost is read between
     frac: float = 0.0       # ... and where between them, in logarithms of the error
 
+    @property
+    def runs(self) -> tuple:
+        """The runs (method, rtol) its cost is read from: its own, or the two around it."""
+        return self.rungs or ((self.method, self.rtol),)
+
+
+def _between(c0: float, c1: float, frac: float) -> float:
+    """The cost a fraction ``frac`` of the way from c0 to c1, log-log."""
+    return math.exp(math.log(c0) + frac * math.log(c1 / c0))
+
 
 @dataclass
 class CaseResult:
@@ -114,8 +124,7 @@ class CaseResult:
                 if prev is None or prev.error <= p.error:
                     return p
                 f = math.log(prev.error / target) / math.log(prev.error / p.error)
-                cpu = math.exp(math.log(prev.cpu) + f * math.log(p.cpu / prev.cpu))
-                return Point(method, p.rtol, target, cpu, None, None, "interpolated",
+                return Point(method, p.rtol, target, _between(prev.cpu, p.cpu, f), None, None, "interpolated",
                              f"between rtol {prev.rtol:.0e} and {p.rtol:.0e}",
                              ((method, prev.rtol), (method, p.rtol)), f)
             if prev is None or p.error < prev.error:
@@ -165,12 +174,10 @@ def paired_ratio(res: CaseResult, fast: Point, slow: Point, rounds: int = PAIRED
     """slow's cost over fast's, both as cost_at read them, timed in interleaved rounds."""
     def cost(p: Point, times: dict) -> float:
         if not p.rungs:
-            return times[(p.method, p.rtol)]
-        t0, t1 = (times[k] for k in p.rungs)
-        return math.exp(math.log(t0) + p.frac * math.log(t1 / t0))
+            return times[p.runs[0]]
+        return _between(*(times[k] for k in p.rungs), p.frac)
 
-    keys = list(dict.fromkeys((fast.rungs or ((fast.method, fast.rtol),))
-                              + (slow.rungs or ((slow.method, slow.rtol),))))
+    keys = list(dict.fromkeys(fast.runs + slow.runs))
     ratios = []
     for k in range(rounds):
         times = {key: res.timers[key]() for key in (keys if k % 2 == 0 else keys[::-1])}
@@ -412,9 +419,8 @@ def verdict(results: list) -> list[str]:
                         parts.append(f"{target:.0e}: -")
                         continue
                     # the peers' runs are not batched: their costs are compared as timed
-                    q = (paired_ratio(r, a, b) if all(
-                        k in r.timers for p in (a, b) for k in (p.rungs or ((p.method, p.rtol),)))
-                        else b.cpu / a.cpu)
+                    q = (paired_ratio(r, a, b) if all(k in r.timers for k in a.runs + b.runs)
+                         else b.cpu / a.cpu)
                     parts.append(f"{target:.0e}: {q:.1f} ({a.method} against {b.method})")
                     ok.append(q >= goal)
                 other = " or ".join(other)

@@ -273,3 +273,16 @@ def test_characteristic_values_of_a_shaped_rise(tmp_path, capsys):
     table = shaped.table(deg, lift).characteristics()
     for key, want in (("C_v", 2.0), ("C_a", 2 * np.pi), ("C_j", 4 * np.pi ** 2)):
         assert abs(table[key]["value"] - want) <= table[key]["error"], key
+
+
+@pytest.mark.parametrize("extra, flag", [(["--tau", "0.1"], "--tau"), (["--n", "5"], "--n"),
+                                         (["--roller-radius", "0.01"], "--roller-radius"),
+                                         (["--no-error-estimate"], "--no-error-estimate")])
+def test_laws_rise_refuses_the_other_modes_options_by_name(tmp_path, capsys, extra, flag):
+    """An option of another mode of `camdyn laws` beside --rise would be dropped unread: one
+    line naming it."""
+    f = tmp_path / "b345.toml"
+    f.write_text('[[point]]\nT = 0\nH = 0\n"H\'" = 0\n[[point]]\nT = 1\nH = 1\n"H\'" = 0\n')
+    assert main(["laws", "--rise", str(f), *extra]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err == f"camdyn laws: error: argument {flag}: not with --rise"

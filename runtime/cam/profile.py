@@ -744,10 +744,15 @@ class CamProfile:
             self._fitted_arcs[layer] = self._fit_arcs(layer)
         return self._fitted_arcs[layer]
 
+    @property
+    def arc_tolerance_used(self) -> float:
+        """How far (m) the arcs of :meth:`arcs` may stray from their curves."""
+        return self.arc_tolerance if self.arc_tolerance is not None else ARC_TOLERANCE
+
     def _fit_arcs(self, layer: str) -> list:
         from .biarc import fit
 
-        tol = self.arc_tolerance if self.arc_tolerance is not None else ARC_TOLERANCE
+        tol = self.arc_tolerance_used
         rr, rc = self.roller_radius or 0.0, self.cutter_radius or 0.0
         shift = {"PROFILE": 0.0, "PITCH": rr, "CUTTER": rc, "PROFILE_OUTER": 2 * rr}[layer]
 

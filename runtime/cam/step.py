@@ -10,9 +10,10 @@ thickness, the cam's centre at the origin, in metres.
 from __future__ import annotations
 
 import contextlib
-import math
 import os
 import sys
+
+import numpy as np
 
 from ..core.errors import CamdynInputError
 from ..core.outdir import writing
@@ -67,7 +68,7 @@ def plate_checks(cam, thickness: float, bore: float,
         raise CamdynInputError("a STEP plate goes with an open cam: a groove cam's walls are in "
                                "the DXF (layers PROFILE, PROFILE_OUTER)")
     tab = cam.table
-    least = float(min(math.hypot(x, y) for x, y in zip(tab["x_profile"], tab["y_profile"])))
+    least = float(np.hypot(tab["x_profile"], tab["y_profile"]).min())
     if bore >= 2.0 * least:
         raise CamdynInputError(f"bore={bore:g} is out of range: the bore's diameter must be "
                                f"below twice the profile's least radius, 2 x {least:g} m")
@@ -79,8 +80,6 @@ def write_step(cam, path, thickness: float, bore: float = 0.0) -> dict:
     ``path``; returns what the file holds: its arcs, the plate's volume (m^3, OpenCASCADE's)
     and how far that may be from the exact profile's (volume_error: the arcs' tolerance times
     the profile's length and the thickness), the tolerance (m)."""
-    from .profile import ARC_TOLERANCE
-
     thickness, bore = plate_checks(cam, thickness, bore)
     arcs = cam.arcs("PROFILE")
     with _session() as gmsh:
@@ -106,7 +105,7 @@ def write_step(cam, path, thickness: float, bore: float = 0.0) -> dict:
         length = sum(occ.getMass(1, c) for c in curves)
         with writing(path) as p, _quiet_stdout():
             gmsh.write(str(p))
-    tol = cam.arc_tolerance if cam.arc_tolerance is not None else ARC_TOLERANCE
+    tol = cam.arc_tolerance_used
     # the arcs stray from the profile by at most tol along its whole length
     return {"arcs": len(arcs), "volume": volume, "volume_error": tol * length * thickness,
             "thickness": thickness, "bore": bore, "tolerance": tol}

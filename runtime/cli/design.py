@@ -7,7 +7,7 @@ import sys
 
 from ..core.errors import SimulationError
 from ..core.outdir import out_folder
-from .common import LAW_HELP, add_out_option, fail, law_argument, law_names as law_names_, run_failed
+from .common import LAW_HELP, add_out_option, fail, law_argument, run_failed
 from .residual import name_argument
 
 HELP = ("design by the thesis's rules: tau, Fa, the envelope, the largest Fa and smallest t_m "
@@ -19,7 +19,6 @@ PROG = "camdyn design"
 
 
 def add(sub):
-    law_names = law_names_()
     ds = sub.add_parser("design", help=HELP)
     a = ds.add_argument
     a("--stroke", type=float, required=True, metavar="M", help="h_m', stroke of the output member (m)")

@@ -57,11 +57,11 @@ def add(sub):
 def run(args) -> int:
     from camdyn.thesis.design import selection, shape_sweep
 
-    if args.rise is not None:
-        return _rise(args)
     stray = _stray_option(args)
     if stray:
         return fail(PROG, stray)
+    if args.rise is not None:
+        return _rise(args)
     sweep, chosen = args.sweep is not None, args.tau is not None or args.fa is not None
     try:
         if sweep:
@@ -111,10 +111,6 @@ def _rise(args) -> int:
     from ..core import shaped
     from ..core.errors import CamdynInputError
 
-    others = [n for n in ("tau", "fa", "sweep", "law", "theta", "stroke", "out") if
-              getattr(args, n, None) is not None]
-    if others:
-        return fail(PROG, f"argument --{others[0]}: not with --rise")
     try:
         if not shaped.is_law_file(args.rise):
             raise CamdynInputError(f"--rise {args.rise!r}: a blend or B-spline (.toml) or a "
@@ -153,6 +149,10 @@ def _stray_option(args) -> str | None:
     sweep_only = ("law", "n", "values")
     selection_only = ("tau", "fa", "stroke", "base_radius", "roller_radius")
     flag = lambda name: "--" + name.replace("_", "-")                       # noqa: E731
+    if given("rise"):
+        bad = [n for n in ("sweep", *sweep_only, *selection_only, "theta", "out",
+                           "no_error_estimate") if given(n)]
+        return f"argument {flag(bad[0])}: not with --rise" if bad else None
     if given("sweep"):
         bad = [n for n in selection_only + ("theta",) if given(n)]
         if bad:

@@ -152,6 +152,10 @@ def run(args) -> int:
     elif args.base_radius is None:
         return fail(prog, "--base-radius M is required (or --contact-force-from SCENE, whose "
                           "R_b gives the cam)")
+    if args.step and args.cam_width is None:
+        return fail(prog, "--step needs the plate's thickness: --cam-width M")
+    if args.bore and not args.step:
+        return fail(prog, "--bore goes with --step")
     angles_text = args.angles or "90,90,90,90"
     try:
         angles = [float(a) for a in angles_text.split(",")]
@@ -194,11 +198,9 @@ def run(args) -> int:
             if scene is None:
                 stress = cam.stress_summary(spec())
             else:
-                from ..targets.scene_force import with_run_error
-
-                stress = with_run_error(cam.stress_summary(spec(scene.history)),
-                                        None if scene.tighter is None else
-                                        cam.stress_summary(spec(scene.tighter)))
+                stress = scene_force.with_run_error(
+                    cam.stress_summary(spec(scene.history)),
+                    None if scene.tighter is None else cam.stress_summary(spec(scene.tighter)))
             out["contact_stress"] = stress
             out["hertz_stress_max"] = stress["hertz_stress_max"]
             out["hertz_stress_max_error"] = stress["hertz_stress_max_error"]
@@ -210,10 +212,6 @@ def run(args) -> int:
             return fail(prog, "the contact stress needs its force: --contact-force N, "
                               "--speed RPM with --follower-mass, --spring-rate, "
                               "--spring-preload, or --contact-force-from SCENE")
-        if args.step and args.cam_width is None:
-            return fail(prog, "--step needs the plate's thickness: --cam-width M")
-        if args.bore and not args.step:
-            return fail(prog, "--bore goes with --step")
         if args.step:
             from ..cam.step import plate_checks
             plate_checks(cam, args.cam_width, args.bore, "cam-width")   # before any file

@@ -9,14 +9,16 @@ The force the linkage takes from the cam along the follower, F_x (6.42), is the 
 force Q of runtime/cam/load.py; the normal force is F_x / cos(alpha).  A reduced scene (sec.
 2.4) gives the reduced cam and force.
 
-Where the roller's mode is "free" (a spring-held roller that has lifted, sec. 7.5) the force is
-zero, and a spring-held roller's force is never below zero (the linkage damper's share makes
-F_x negative for an instant as the roller leaves; a cam cannot pull).  A roller held on both
-sides (bilateral, groove) is refused: its negative F_x loads the other wall.  The run's last full turn of the cam is used (the start's transient left behind): its cam
-angle phi = beta_m B, B = (beta - beta_0)/beta_m the output "B" (6.17), taken modulo one turn,
-and each phi found on the dense output by Newton's method on B(t) (B' = beta'/beta_m).  The
-same is done on the run one notch tighter (the scene's error estimate): the figures' errors
-add the difference it makes.
+The roller must be spring-held (a roller held on both sides, bilateral or in a groove, is
+refused: its negative F_x loads the other wall).  Where its mode is "free" (it has lifted, sec.
+7.5) the force is zero, and it is never below zero (the linkage damper's share makes F_x
+negative for an instant as the roller leaves; a cam cannot pull).
+
+The run's last full turn of the cam is used (the start's transient left behind): its cam angle
+phi = beta_m B, B = (beta - beta_0)/beta_m the output "B" (6.17), taken modulo one turn, and
+each phi found on the dense output by Newton's method on B(t) (B' = beta'/beta_m).  The same is
+done on the run one notch tighter (the scene's error estimate): the figures' errors add the
+difference it makes.
 """
 from __future__ import annotations
 
@@ -31,6 +33,7 @@ from . import scene_files
 from .dynacam import run_scene
 from .resolve import load_scene, scene as scene_target
 
+
 @dataclass(frozen=True)
 class SceneForce:
     """The cam of a scene (CamProfile's keyword arguments), the force history of its run and,
@@ -39,7 +42,6 @@ class SceneForce:
     cam: dict
     history: ForceHistory
     tighter: ForceHistory | None
-    title: str
 
 
 def load(name: str, roller_radius: float | None) -> SceneForce:
@@ -78,7 +80,7 @@ def load(name: str, roller_radius: float | None) -> SceneForce:
     first = _history(name, sc, target)
     tight = target.tighter()
     second = None if tight is None else _history(name, sc, tight)
-    return SceneForce(cam, first, second, sc.title)
+    return SceneForce(cam, first, second)
 
 
 def _history(name: str, sc, target) -> ForceHistory:
@@ -98,6 +100,7 @@ def _history(name: str, sc, target) -> ForceHistory:
     b0 = B[-1] - period
     where = (f"a run of {sc.title} (its last full turn, B {b0:.4g} to {B[-1]:.4g}, "
              f"method {target.method().name} at rtol {target.method().rtol:g})")
+    free = res.element_mode("roller") == "free"
 
     def force(phi):
         phi = np.asarray(phi, dtype=float)
@@ -107,17 +110,12 @@ def _history(name: str, sc, target) -> ForceHistory:
             s = res.sample(tt)
             tt = np.clip(tt - (s["B"] - b) * beta_m / s["betad"], t[0], t[-1])
         # F_x (6.42) is the linkage's spring-damper force while the roller touches; where
-        # the run's roller mode is "free" it has left the cam and carries nothing
-        q = res.sample(tt)["Fx"]
-        if free is not None:
-            # nor can a cam pull: the damper's share makes F_x negative as the roller leaves
-            q = np.where(free[np.clip(np.searchsorted(t, tt, side="right") - 1, 0, len(t) - 1)],
-                         0.0, np.maximum(q, 0.0))
-        return q
+        # the run's roller mode is "free" it has left the cam and carries nothing, and a cam
+        # cannot pull (the damper's share makes F_x negative as the roller leaves)
+        q = np.maximum(res.sample(tt)["Fx"], 0.0)
+        return np.where(free[np.clip(np.searchsorted(t, tt, side="right") - 1, 0, len(t) - 1)],
+                        0.0, q)
 
-    free = None
-    if sc.options.roller == "contact":
-        free = res.element_mode("roller") == "free"
     return ForceHistory(where, force)
 
 
