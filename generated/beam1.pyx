@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:860788ff4e1ca2dc64705295f56a195d96ef6d168fb63f808f6529575ff63282
-# Text hash: sha256:af90018650f660953c836bae84b2b45eddf0c9e934ef0fd6b22ccb23f7059bb0
+# Derivation key: sha256:b0d24a8c61a7840ad56eae1d23d9b77a8ced3a4a87929d7cf6f0333676172abf
+# Text hash: sha256:61cdec5be6ecee9220be483e126e9da83566efa6b6aef7baba15e702cc1135e6
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:c16b3556f450993e2cc9f2fd4a99c60d51901b4ed16007df3788e4358514ae33
@@ -2377,6 +2377,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = project_ptr
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e2b6af487f298a13fe75ade9504741b6ec8568624d1582c0739c5de9f21f2a4b
-# Text hash: sha256:23337f2f312f6e1aa3254e44893ad007ecf65311495b19beedd340a5a0b16ff6
+# Derivation key: sha256:0ed01c8b5824ae6447b0063f83cb705e4244e9a5f78b6111ea1351732fee2779
+# Text hash: sha256:b451040ab455ef9cabda568adf86017271160a86e139133a58cec0ca3f18f7b6
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
 # Source hash: sha256:e6f5b38d9e7b1dd5f920d6438c12a96321d776db2c76dee854114e82adf9e94d
@@ -3076,6 +3076,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = project_ptr
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4d98f49235f2c4c61776bf10b3bf2ebb1f15e18154dd31af8eb4475f6e907b59
-# Text hash: sha256:4476bcbb199c48395c581e99c6645fdae6125f87589eadbd2854b379d672a7c5
+# Derivation key: sha256:34701a3a6ebf84f5ed23a2c5e7fbb1f1f498f9b74c41becdc0981be2fadd69ad
+# Text hash: sha256:42518e0af07e86a3c47291103eefd0f349226d1fb7399c4898737180a9f58dfb
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:a4c10ed1c7eeed79759d12da9812dfb2e08f6d7ceaf7defeb99a53905305f1ad
@@ -4322,6 +4322,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = project_ptr
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

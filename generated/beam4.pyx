@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:119ad7a74645b959e6d1d31b3d7f428cc6015781446afce52e3b5c148a2abd61
-# Text hash: sha256:877898891a760a619f0513a42532e8930a24de537a85f267046cc22651862ce7
+# Derivation key: sha256:e1e6945c9ce776b32dda185cdcb7ee33a2e6cb5a5fa7d39f75d863055f30effa
+# Text hash: sha256:1c9233a90da700df523c520d0ec6b2b755ac4d9802faa87f665d6bdd7daa26bc
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:64a7efcd9334b75fa69119f83904c9f9c8d47957738123d27eab23d9cd1693f4
@@ -5904,6 +5904,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = project_ptr
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:572413bc757e42e0f7155e58f81f2885edaafa2ad45ee5ee4b7aa216abb4480b
-# Text hash: sha256:3185386c9573966962e43bd04124b0cec9b07084d3c3d51e6fba647f439174ac
+# Derivation key: sha256:0052b5a1ef1b7755bed2ce55ea0cae40f94533634216a73c9cfdc4ba58270165
+# Text hash: sha256:7e7bc0e02d937e5c44fd6399e81da202916d0a6454872bb1d1e62187da107003
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:611aaf7763e70cfb79e109e16ea0ebff594dfa47598c04509a2d122462a61666
@@ -7845,6 +7845,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = project_ptr
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

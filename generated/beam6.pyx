@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e44332a44541fa335f4b4a1ddf20ae0a6c61ab8c00e9031014c4ec74e0635cd0
-# Text hash: sha256:082ee5e6928971d7cbe2763d410d40b1bb352a89f85287222d3da8e38489dc01
+# Derivation key: sha256:aca0684937c2fe76ff70bca30e09c1d226e21d1f3faaafcbf82f1b2d7c01e2ce
+# Text hash: sha256:c0bd68d2a968d35e66420a24eafcf812e79a6bc74ff7b49270903acd128da324
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:ba76292f91dfbbd6b8d39b0bd7d40b2000e3a575b4d3c5fd9aa69df4a2837883
@@ -10307,6 +10307,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = project_ptr
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ea717025cbeecfcfa7891811ff8ca12407a65edb7de7304029e30bbd9b7378ee
-# Text hash: sha256:ec450ba5b84f61b9abcbd9c012ac0ec5cc101951a385c13c18af79e5db0cef1f
+# Derivation key: sha256:8a896af43109cae428486a7219e1b12ed3bc1f9f9b82b4fc81ca99513b84a536
+# Text hash: sha256:3633eed13c35ca7cc44505030b1e61f09e2c3789d9dad442464a4e4a83f04be5
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:0967543da0f352acab2824c9a32218d1be61c185b8c772967bbcece4be157c13
@@ -264,6 +264,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1b5763790b967df076ccc74875c7f542bbade643ae6ea6d0597a19acd248e848
-# Text hash: sha256:a38a07187aa4d1a8243f9691697c447f67593be412033133eeb8256cfbdd4536
+# Derivation key: sha256:4d16203fee71f217997aae05ec73a3b61cd92968024f2e993310a066024a6779
+# Text hash: sha256:2bccd1395d571fcbad4c0a83917fe942d996841b6f93eda095115df097c29cfc
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:ba85420c7d793b48841104cb2caceda457d7114297efae4aa828a6d651b0c422
@@ -358,6 +358,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

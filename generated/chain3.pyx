@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1536a559bfea2bc15b9fa8b3734494b59ffa23dff5b478580df9561393d88026
-# Text hash: sha256:73416df36fbe4869e9ae33ab251e28514afbe65c98a124bc97c05e12fc444c26
+# Derivation key: sha256:7a0326775279d6c4464141dc75dec502c14b3f8fcecbd360b4320e4819070ac7
+# Text hash: sha256:adffc137520cd8aca7dc115a2adaea683163fc403129c41502278f49f54d4965
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:a1735f89202c97c2b444182398f9af26803e80bf78837315ac6167321477d309
@@ -372,6 +372,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ed14e637dca89c0544890e6456f7dd30919faf29083fa5fea8660b71737ac146
-# Text hash: sha256:9cfe0109a106f82b6462621f850382d1e5e28029c77db2394db48a2f2d821e2c
+# Derivation key: sha256:0235388af66d3ff2100d41975c0f96cb4d725858f9b893a351e249c6d9d40550
+# Text hash: sha256:f0bbdb060c3e357d306992784e43f5f742a568c02aab460d93d1bb706e636590
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:41f6a09a74de0748a6af39731b366e5cb675a3ff3e9ac42f0e41f62c54b4f410
@@ -1070,6 +1070,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

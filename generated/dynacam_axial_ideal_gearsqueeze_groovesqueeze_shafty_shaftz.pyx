@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6480cbe550bdb242bfad612fa9e3ecf0c47552f15ad5e549721d26adfa215485
-# Text hash: sha256:475997df4cdac943eb1dc61d5841e20aa7042b33f053947f0aa7f3e188f1472d
+# Derivation key: sha256:dcae95cc8ebaf3167968d5a66583ae654823fd483956b56376c4837417519138
+# Text hash: sha256:03fc4281cb9f3d201a96fbb11ebd96528ceaccb2c0eb0a5b5033b8395fd172ec
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:22aa19a82ce8967025784a92feac93cc2018fcdebbf00db8a01db85a3d5213b5
@@ -2731,6 +2731,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:de0b2d554765be8f127f6fc13d0fbe5b42b060860ea5d176cb45d757f9f2b913
-# Text hash: sha256:3b9169975fbc6976b9165996598c3c7437e646eaa327e97fe66da56863ad509d
+# Derivation key: sha256:2ce761e9a13dc3031937fb58fdc8b3ab5009a5f44e0354f0c077a1e985d0caef
+# Text hash: sha256:3cea43baf8fd4952021986e0f0b4b1b2f187810c9d0d8f0f90a3d63a5cdce0fc
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:640632216abb31d42a8a229473260e0d7d961a5af1f60a5d512bfabb26f6b202
@@ -1490,6 +1490,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

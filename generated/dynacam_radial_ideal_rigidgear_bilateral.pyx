@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:9ca09b2e21431d8018f5d864d8d6fa245b5f5afc649865b3843752bc594d3ce8
-# Text hash: sha256:9e72e5b65a6ab1a3b94c6ea28d8310ae25d5d3cacd8309478d3614e81af7108b
+# Derivation key: sha256:55745fdd8f12d77342d794bbe91d15420318df42bb1852a14f9a88fd09a96083
+# Text hash: sha256:108b196a530901e7b1b29693ea8d69579ffd38b287d037fa2b2d5fecb2a89746
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:38687cb5090847d4fab317dc808b5922442b72defa6c4292176e38630702b181
@@ -749,6 +749,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ab3c3221ee36312e3084dcbcd8c7c0a9c9b57805db30aaf298826f6b7da9fc82
-# Text hash: sha256:f8648e02bf85d2cbcea0e40356911ff413cc616232a58b7491b3905881da31a4
+# Derivation key: sha256:544ecfe3906bb24c6de553d9fc160e09f05c748bb085b6633ebb3cf6c774470f
+# Text hash: sha256:519f4977e67d8cb71ac0c8af64ddf0b0f5abed8794a014caca28e2f77abca279
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:d314503d8a9cd1bf30613f7692c4b3c4c6df3983fe95f8d9142a70da6a15a311
@@ -2229,6 +2229,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

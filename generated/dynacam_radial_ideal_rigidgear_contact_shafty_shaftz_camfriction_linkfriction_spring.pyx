@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:557b62b4426bb43819873e9712f1b65e2174180bfb8d194d845389ef14c700f2
-# Text hash: sha256:dbaaae71801bcaa58531613e110f9e0b745cdc83a69bda14eec5ef0b1c1c01eb
+# Derivation key: sha256:88108c1ac4d512a6fe35cd7eece95687693bde00fee998f8b2455832f9737743
+# Text hash: sha256:9f8ff9cdc3efc221a7410a989eb00d9282840af69e4e99043eeaa7fac74a1fc6
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:e1eb0a3a86083e97b569e940f3a3ce02faa99a7c74dcb83ed315aae4c20441e5
@@ -1500,6 +1500,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:675b05d5350b1e29b05f55686a47e77dd13f5d7ee1bd469dbf1846d9ffc51d26
-# Text hash: sha256:d94283418ea55618794fdb3e65a0384123b73ef9a923b7631977e91bbaef676f
+# Derivation key: sha256:f85bf066500e2ec38e0fc3bf2b41348bed0016bd8a2ddaff0df64b3c2207997a
+# Text hash: sha256:3b8c3e3389806a26aef4e6edb018fa8278ab6c935eef6556de58b686532c920c
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:dcd89b047c0b805f1bfce1de048981402bb3821ffaa62bae75e2677970f0d321
@@ -1183,6 +1183,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:095faf4af92abb0080c693c08b56c3bc3e9883ffb1f24b20a3f0875037de3a6b
-# Text hash: sha256:e4f97a49485b53f0c837ff149761935d71bf62bca430527d70b1df2fd299a76c
+# Derivation key: sha256:042b2a9490fd1c7587e9946a0eec532aeedf42a63f85d545377778d703ef731c
+# Text hash: sha256:d7223483d1221c799b65f7752865bfefe8da99b3ff68ab73a999844438f01610
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:385259177b6fc5a5e22dadcde0196ca8013d5bbbd8866e045f88ca4799a781b3
@@ -1388,6 +1388,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

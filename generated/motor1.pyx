@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b4974b2aa54722a972404f21237103864eb5a81ff9187e8ef587ae81590cb20f
-# Text hash: sha256:a3bae348e940f8df55136ac8f9cc599f24ed83fdce210f1c1eb429fa22c12d20
+# Derivation key: sha256:26c8aa830e52fc313e6a9cedef06fb66c0f897a4fc983802dacd224691bf9d29
+# Text hash: sha256:aa4271bb33ba19bee337361aff2f82dfa45a2990f857fe9b2b798fddfe53bbce
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:5315b62110449092ed4fbe9bea35b87a6d10bad4792d9ef82b7feb5db7eda537
@@ -263,6 +263,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

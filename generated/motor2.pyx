@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:51f4ae715241b61bc81253d937ba057999b5b7adc4d52d2dbedcb65f9f7b9907
-# Text hash: sha256:c0ed39a61a37bab8264fc8e45b102179ccda9643ec3defe506a96557508c34c7
+# Derivation key: sha256:27b7612b9b28642c065629391e14d03d3b831d429181a0fa92ecca0963a9c14b
+# Text hash: sha256:b80759bcbcd80230cb55866b4a7cbb1643fefe0cde945c9141b1c25001ab875b
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:19e06e8b0095c03a2beab7439588f8137c56e297d573674a4c354a8eee7ec886
@@ -292,6 +292,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:08abc39e8fe850c6a137edb1530c8c9e862dc7cf0c786f99f47b1c4ef26fbd74
-# Text hash: sha256:6f70b91af6f617bf8ef322715fcd613bf9261092764487f1325e20c8f25d180a
+# Derivation key: sha256:afec39854697dbd4f3f4a3a3da8f0c5d7e4e6b0e5d76ced299f015eb71eeaae4
+# Text hash: sha256:41337c657f1f179eed97f681d663ade456b7e983cf28f40f11f0e0f7fde33faa
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:7be31bd6aed90cb3c3dd785c585a5abdada86ed4b0a88d608d7b6508231d5b38
@@ -266,6 +266,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0b7c25653df500fb149df4799d2781c92bb6076cca1c512aa8def83d2bdf4b41
-# Text hash: sha256:1ae8fe5d7a718cc2e70958d872f400aea89472bf3f57885fec548b3c8de26d5b
+# Derivation key: sha256:c9c21911fb8f07c20d528911925af19932a3b0df6ec57f2c1e84ea0c47b6320b
+# Text hash: sha256:e25efeb0f6728820264c7999a1db6077dfdb6866b974391e8bc9a3ae32a4532b
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:161a1c58ca2d37fcefd956520d1151d5da9a8e1578200587452bf241fc0d81e3
@@ -652,6 +652,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = project_ptr
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:bd3b3be9a86ca3147fb70634679cc96866f213105f3c7be05abfa87c320763c0
-# Text hash: sha256:8740f7a50b307541eca7133f47afbe42dbb1854b5bd3066bd209ffe79e287d71
+# Derivation key: sha256:e1e8b97a60ff9ff5edb4b5206bd22d15c82ae032133ded50ed2590b66b64ac5c
+# Text hash: sha256:721c3db51b4f7bae18501ce58fa0c6db6e677e71a3c7670bc8aee529e5856dfd
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:27e1ce034622d3d74be6f8876c4c36db202e6589f148e1c301e5f081e69de353
@@ -608,6 +608,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:715c4389b94ec9b5cf28b413226be7cef62861a2eaa7bf6220d9740b0717d5ec
-# Text hash: sha256:b427b629b1e5f7013ecc0350d75fb906825279c28d63642a1d88c834d6a04897
+# Derivation key: sha256:47668c91f3222dd4de89b32a38534564e2490c88474bfd8d9e848559256db8e4
+# Text hash: sha256:3eb7d6fb00feca13d3d991e9508dc5e24027b5a1c4a31e1324705a6f3093c34c
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:e9e5870f5ef080f71b3082004a824cdf8c772265063561f75e0f0fbbf4258b5a
@@ -392,6 +392,7 @@ _model.mass_stiffness = mass_stiffness
 _model.jac = jacobian
 _model.project = NULL
 _model.run = run_loops
+_model.dense_fill = dense_fill
 
 MODEL = PyCapsule_New(<void*>&_model, b"camdyn.ModelC", NULL)
 """The model's C interface for camdyn.runtime (a PyCapsule holding a ModelC*)."""

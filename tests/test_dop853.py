@@ -189,13 +189,42 @@ def test_dense_output_on_first_use_takes_the_same_steps(exact):
     assert max(np.abs(sl[k] - sf[k]).max() for k in ("X", "Xd")) < 1e-15
 
 
-def test_a_model_with_events_always_has_its_dense_output():
-    """CAMSHAFT-2 locates its events on the dense output, so it is computed whatever
-    dense_output says: the same calls, the same record."""
-    a, b = (Simulator("camshaft2", 3.0, "dop853", rtol=1e-8, dense_output=d).run({})
-            for d in (False, True))
-    assert a.stats["n_rhs"] == b.stats["n_rhs"] and np.array_equal(a.record, b.record)
-    assert not np.isnan(a._rows).any()
+def test_a_model_with_events_makes_its_dense_output_where_an_event_crossed():
+    """CAMSHAFT-2 locates its events on the dense output: with it left out, a run still makes
+    it on the steps where an event crossed, and on no other; the same steps bit for bit, three
+    calls fewer on each other step.  The rest is made on first use, step by step from the
+    recorded starts (16 calls a step): bit for bit the record of the run that made it all."""
+    lean, full = (Simulator("camshaft2", 3.0, "dop853", rtol=1e-8, dense_output=d).run({})
+                  for d in (False, True))
+    ns = len(full.state_names)
+    assert np.array_equal(lean._rows[:, :1 + 2 * ns], full._rows[:, :1 + 2 * ns])
+    left_out = np.isnan(lean._rows[:, 1 + 2 * ns])
+    steps = np.flatnonzero(np.diff(full.t) > 0)
+    assert 0 < np.count_nonzero(~left_out[steps]) < 0.2 * steps.size   # the events' steps
+    # the left-out rows carry their step's length, from which they are made again
+    h = lean._rows[left_out, 2 + 2 * ns]
+    assert np.abs(h - np.diff(full.t)[left_out[:-1]]).max() <= 1e-15 * full.t[-1]
+    assert full.stats["n_rhs"] - lean.stats["n_rhs"] == 3 * np.count_nonzero(left_out)
+    assert lean.stats["n_events"] == full.stats["n_events"] > 0
+    assert np.array_equal(lean.record, full.record)
+    assert lean.stats["n_rhs_dense_output"] == 16 * np.count_nonzero(left_out)
+
+
+def test_sampling_makes_the_dense_output_of_the_sampled_steps_only():
+    """A DOP853 run of CAMSHAFT-1 (tau 0.15, Fa 2; the dwell integrated, not stepped over)
+    with its dense output left out, sampled at five times: five steps made again (80 calls),
+    the values bit for bit those of the run that made it all, the other steps still left
+    out."""
+    p = {"tau": 0.15, "Fa": 2.0}
+    lean, full = (Simulator("camshaft1", 3.0, "dop853", rtol=1e-9, exact_segments=False,
+                            dense_output=d).run(p) for d in (False, True))
+    T = np.array([0.1234, 0.5, 0.98765, 1.7, 2.9])
+    a, b = lean.sample(T), full.sample(T)
+    assert all(np.array_equal(a[k], b[k]) for k in b)
+    assert lean.stats["n_rhs_dense_output"] == 16 * 5
+    ns = len(lean.state_names)
+    steps = np.diff(lean.t) > 0            # a stop's two rows make no step
+    assert np.count_nonzero(~np.isnan(lean._rows[:-1, 1 + 2 * ns][steps])) == 5
 
 
 def test_dense_output_must_be_true_or_false():

@@ -5,7 +5,7 @@ from functools import cached_property
 
 import numpy as np
 
-from ..engine import driver
+from ..engine import driver, finder
 from . import stability as _stability
 from .errors import CamdynInputError, SimulationError
 
@@ -96,14 +96,37 @@ class Result:
     def _rows(self) -> np.ndarray:
         return self._out.rows[:self._out.n]
 
+    @property
+    def _fills(self) -> bool:
+        """Whether the run is DOP853's, whose left-out dense output is made step by step where
+        it is wanted (ModelC.dense_fill), in place in the record."""
+        return self.method.name == "dop853"
+
+    def _fill(self, times=None) -> None:
+        """Make the dense output a DOP853 run left out, of the steps ``times`` fall in (None:
+        every step): each step made again from its recorded start, bit for bit the run's."""
+        ns = len(self.state_names)
+        calls = finder.fill(self.model.capsule, self.p, self.law_codes, self.law_pars,
+                            self._rows, self.mode, ns, 4, times, part=self.part)
+        self.count_dense_calls(calls)
+
+    def count_dense_calls(self, calls: int) -> None:
+        """Add right-hand-side calls made for the dense output after the run to the stats."""
+        if calls:
+            self.stats["n_rhs_dense_output"] = self.stats.get("n_rhs_dense_output", 0) + int(calls)
+
     @cached_property
     def record(self) -> np.ndarray:
         """The recorded rows [t, y, f, extra] (camdyn/runtime/engine/abi.pxd), one per point.
 
-        A DOP853 run that left its dense output out (Simulator's ``dense_output``) runs again
-        here with it, from the same start: the same steps, now with their extra terms."""
+        Where a DOP853 run left its dense output out (Simulator's ``dense_output``), it is made
+        here, step by step from the recorded starts; an RKN12 run runs again with it, from the
+        same start: the same steps, now with their extra terms."""
         rows, ns = self._rows, len(self.state_names)
         if self._sim.integrator.dense or not np.isnan(rows[:, 1 + 2 * ns:]).any():
+            return rows
+        if self._fills:
+            self._fill()
             return rows
         out = self._sim.integrator.run(self.p, self._sim.stops(self.p), rows.shape[0] + 1,
                                        rows[0, 1:1 + ns].copy(), dense=True)
@@ -112,7 +135,7 @@ class Result:
                 again[:, :1 + 2 * ns], rows[:, :1 + 2 * ns]):
             raise SimulationError(f"{self.model.name}: the run made again for its dense output "
                                   "did not take the same steps")
-        self.stats["n_rhs_dense_output"] = int(out.n_rhs)
+        self.count_dense_calls(out.n_rhs)
         return again
 
     @property
@@ -155,6 +178,8 @@ class Result:
     @cached_property
     def _extra(self) -> np.ndarray:
         ns = len(self.state_names)
+        if self._fills and self._rows.shape[1] > 1 + 2 * ns:
+            return self._rows[:, 1 + 2 * ns:]     # made where sampled (sample)
         if self.record.shape[1] > 1 + 2 * ns:
             return self.record[:, 1 + 2 * ns:]
         return np.empty((0, ns))
@@ -198,6 +223,8 @@ class Result:
         if tq.size and (tq.min() < self.t[0] or tq.max() > self.t[-1]):
             raise CamdynInputError(
                 f"sample times must lie in [{self.t[0]:g}, {self.t[-1]:g}]")
+        if self._fills and tq.size:
+            self._fill(tq)
         Y, idx = driver.dense_eval(self.t, self.y, self.f, self._extra, tq)
         modes = np.ascontiguousarray(self.mode[idx]) if self.mode.shape[1] else None
         out = driver.eval_outputs(self.model.capsule, self.p, self.law_codes, self.law_pars,

@@ -242,11 +242,14 @@ class Simulator:
             them must be invertible along the run.
     dense_output
             DOP853's dense output (its three extra stages a step, a sixth of the run's
-            right-hand-side calls) and RKN12's (eight interior steps, 128 calls a step): True computes it as the run goes; False, the default,
-            leaves it until a result's dense output is first used (``Result.sample``, the
-            extremes of the figures), which then runs again with it, taking the same steps.
-            A model with events always has it: the events are located on it.  Other methods'
-            dense output costs no extra call and is always there.
+            right-hand-side calls) and RKN12's (eight interior steps, 128 calls a step): True
+            computes it as the run goes; False, the default, leaves it out until it is used.
+            DOP853 then makes it step by step where it is wanted (the steps ``Result.sample``
+            reads, the peaks a figure's extreme refines; each step made again from its
+            recorded start, bit for bit, 16 calls), and has it as the run goes on the steps
+            where an event crossed, since events are located on it; RKN12 runs again with
+            it, taking the same steps.  Other methods' dense output costs no extra call and
+            is always there.
     """
 
     def __init__(self, model, t_end: float = 3.0, method="dp54", *, rtol: float | None = None,

@@ -12,7 +12,7 @@
 # a module at run time.
 
 cdef enum:
-    CAMDYN_ABI = 14
+    CAMDYN_ABI = 15
 
 # method codes
 cdef enum:
@@ -103,9 +103,11 @@ cdef struct Run:
     long n_checks          # Jacobians checked
     bint exact             # step over an interval exactly where the model is linear and time
                            # invariant there (loops.pxi, _loop_exact; ABI 7)
-    bint skip_dense        # DOP853 without events: leave out the dense output's three stages
-                           # (a sixth of a step's calls) and its extras (NaN); whoever needs the
-                           # dense output runs again without it (Result.record; ABI 12)
+    bint skip_dense        # DOP853: leave out the dense output's three stages (a sixth of a
+                           # step's calls) where no event crossed, its extras NaN but the
+                           # second, the step's length, so that ModelC.dense_fill makes them
+                           # where they are wanted (ABI 15); RKN12: all of it, and whoever
+                           # needs it runs again with it (Result.record; ABI 12)
     bint exact_whole       # with exact: every linear interval in one step, its end alone
                            # recorded and no dense output across it (the extras zero): for a
                            # figure read off its end state in closed form (finder.pyx's
@@ -121,6 +123,7 @@ ctypedef void (*action_fn)(int k, double t, double* y, Ctx* ctx) noexcept nogil
 ctypedef void (*ms_fn)(double t, const double* y, double* M, double* K, Ctx* ctx) noexcept nogil
 ctypedef void (*jac_fn)(double t, const double* y, double* J, double* ft, Ctx* ctx) noexcept nogil
 ctypedef int (*proj_fn)(double t, double* y, Ctx* ctx) noexcept nogil
+ctypedef int (*fill_fn)(Ctx* ctx, double* row) noexcept nogil
 
 cdef struct ModelC:
     int abi_version        # CAMDYN_ABI; checked before any call
@@ -151,6 +154,8 @@ cdef struct ModelC:
                            # place (1; -1 without convergence; 0, y untouched, unless its
                            # formulation is 2), which the loops call after every accepted
                            # step; NULL for unconstrained models (ABI 10)
+    fill_fn dense_fill     # a recorded DOP853 row's left-out dense output, made (loops.pxi;
+                           # the calls made, 0 if the row has it; ABI 15)
 
 
 cdef inline bint partition_ok(const ModelC* m, const int* part, Py_ssize_t n) noexcept nogil:

@@ -228,9 +228,10 @@ cdef class Integrator:
     [t, y, f, extra] per recorded point (see abi.pxd), ``modes`` the modes in force from
     each point, ``seconds`` the wall time of the compiled loops.
 
-    With ``dense`` False (or ``run(..., dense=False)``) a DOP853 run of a model without
-    events leaves out the three stages of its dense output, a sixth of its right-hand-side
-    calls, and records NaN for the step's extra terms; the steps are the same either way.
+    With ``dense`` False (or ``run(..., dense=False)``) a DOP853 run leaves out the three
+    stages of its dense output, a sixth of its right-hand-side calls, on every step where no
+    event crossed, and records NaN for the step's extra terms but the second, the step's
+    length (ModelC.dense_fill makes them from it later); the steps are the same either way.
     """
 
     cdef ModelC* m

@@ -34,7 +34,7 @@ finders in one call that holds no GIL: one record buffer reused for every run, n
 per run.  Threads can run chunks side by side (runtime/studies/sweep.py).
 """
 from cpython.pycapsule cimport PyCapsule_GetPointer, PyCapsule_IsValid
-from libc.math cimport NAN, INFINITY, atan2, cos, exp, fabs, fmax, log, sin, sqrt
+from libc.math cimport NAN, INFINITY, atan2, cos, exp, fabs, fmax, isnan, log, sin, sqrt
 from libc.stdlib cimport free, malloc
 from libc.string cimport memcpy
 from posix.time cimport CLOCK_MONOTONIC, clock_gettime, timespec
@@ -56,10 +56,11 @@ STAT_COLUMNS = ("status", "n_steps", "n_rejected", "n_rhs", "n_points")
 
 
 cdef struct Rec:
-    # a read-only view of one run's record and what evaluating its outputs needs
+    # a view of one run's record and what evaluating its outputs needs; the only writes into
+    # it are the DOP853 dense output a run left out, made where it is wanted (_fill)
     ModelC* m
     Ctx* ctx
-    const double* rows
+    double* rows
     const int* modes
     Py_ssize_t n
     int ns
@@ -68,6 +69,10 @@ cdef struct Rec:
     int nx             # dense-output extras per row (dense.pxd)
     double* y          # ns scratch doubles
     double* out        # n_outputs scratch doubles
+    bint hermite       # a left-out step's values from the cubic Hermite interpolant (the
+                       # scan's samples), else from its dense output, made on the spot
+    long n_hermite     # values so taken
+    long n_fill        # right-hand-side calls made filling left-out steps
 
 
 cdef ModelC* _model(object capsule) except NULL:
@@ -98,23 +103,43 @@ cdef Py_ssize_t _step_of(Rec* r, double tq) noexcept nogil:
     return lo
 
 
+cdef inline bint _left_out(Rec* r, Py_ssize_t i) noexcept nogil:
+    """Whether step i's DOP853 dense output was left out of the run (loops.pxi)."""
+    return r.nx == 4 and isnan(r.rows[i * r.width + 1 + 2 * r.ns])
+
+
+cdef void _fill(Rec* r, Py_ssize_t i) noexcept nogil:
+    """Step i's left-out dense output, made by the model in the step's modes (dense_fill)."""
+    if r.nm:
+        memcpy(r.ctx.mode, r.modes + i * r.nm, r.nm * sizeof(int))
+        r.m.refresh(r.ctx)
+    r.n_fill += r.m.dense_fill(r.ctx, r.rows + i * r.width)
+
+
 cdef double _value_in(Rec* r, double tq, Py_ssize_t i, int which) noexcept nogil:
     """State (which < ns) or output (which - ns) at tq through step i's dense output
-    (dense.pxd), outputs in the step's modes."""
+    (dense.pxd), outputs in the step's modes.  A step whose dense output the run left out
+    gets it first (_fill), unless r.hermite takes its cubic Hermite interpolant."""
     cdef const double* a = r.rows + i * r.width
     cdef const double* b
-    cdef int ns = r.ns, c
+    cdef int ns = r.ns, c, nx = r.nx
     cdef double h, s
     if i + 1 >= r.n or _t(r, i + 1) <= a[0]:
         for c in range(ns):
             r.y[c] = a[1 + c]
     else:
+        if _left_out(r, i):
+            if r.hermite:
+                nx = 0
+                r.n_hermite += 1
+            else:
+                _fill(r, i)
         b = a + r.width
         h = b[0] - a[0]
         s = (tq - a[0]) / h
         for c in range(ns):
             r.y[c] = dense_component(s, h, a[1 + c], b[1 + c], a[1 + ns + c], b[1 + ns + c],
-                                     a + 1 + 2 * ns + c, r.nx, ns)
+                                     a + 1 + 2 * ns + c, nx, ns)
     if which < ns:
         return r.y[which]
     if r.nm:
@@ -360,16 +385,26 @@ cdef inline double _refine(Rec* r, Scan* S, int which, int kind, double lo, doub
     return sc
 
 
-cdef double _verify(Rec* r, Scan* S, int k, int which, int kind, double* miss) noexcept nogil:
+cdef double _verify(Rec* r, Scan* S, int k, int which, int kind, double* miss,
+                    double* hmiss) noexcept nogil:
     """How high peak k of S.P may reach, from one more evaluation: the score at its vertex
     (a value the output takes, so a floor) and the parabola through it and the two samples
     nearest to it (the estimate), the bound being the estimate raised by its distance from
     the floor.  ``miss``: the largest |vertex - value at the vertex| seen, how far a first
-    parabola may be off."""
+    parabola may be off; ``hmiss``, where the scan took cubic Hermite values in left-out
+    steps: the largest |Hermite value - dense output's| at the vertices, how far those
+    samples may be off."""
     cdef Peaks* P = &S.P
-    cdef double xv = P.xv[k], fv, k2, x2, xa, ya, xb, yb
-    cdef int c
-    fv = _score(r, xv, _step_of(r, xv), which, kind)
+    cdef double xv = P.xv[k], fv, hv, k2, x2, xa, ya, xb, yb
+    cdef Py_ssize_t i = _step_of(r, xv)
+    cdef int c, nx = r.nx
+    if r.n_hermite > 0:
+        r.nx = 0
+        hv = _score(r, xv, i, which, kind)
+        r.nx = nx
+    fv = _score(r, xv, i, which, kind)
+    if r.n_hermite > 0 and fabs(hv - fv) > hmiss[0]:
+        hmiss[0] = fabs(hv - fv)
     if fabs(P.key[k] - fv) > miss[0]:
         miss[0] = fabs(P.key[k] - fv)
     # the samples on either side of the vertex, nearest first
@@ -464,7 +499,8 @@ cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step,
     per_step 1) the scan reads those points only.  Returns the number of samples scanned
     (0: an empty span)."""
     cdef Py_ssize_t i, istep = 0, j
-    cdef double tk, tk1, tq, delta = 0.0, excess, miss, bound
+    cdef double tk, tk1, tq, delta = 0.0, excess, miss, hmiss
+    cdef double bound[PEAKS]
     cdef int q, k, extra = 0
     cdef Scan S
     cdef bint more = True
@@ -479,6 +515,7 @@ cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step,
     # one candidate: the best sample, as the reference takes it; several: the best peaks
     S.by_vertex = S.c.cap > 1
     sampling[0] = 0.0
+    r.n_hermite = 0        # this scan's own
     if not b >= a:
         return 0
     if st != NULL:
@@ -496,7 +533,12 @@ cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step,
         if b > a:
             _take(&S, b, _score(r, b, _step_of(r, b), which, kind))
     else:
+        # a step whose DOP853 dense output the run left out is scanned on its cubic Hermite
+        # interpolant, made only where a peak is refined or verified; how far that
+        # interpolant is off at the vertices counts in the sampling check (hmiss)
+        r.hermite = True
         _walk(r, a, b, per_step, which, kind, &S, NULL, 0, 0, 0)
+        r.hermite = False
     if S.n >= 2 and S.s2 >= S.s1:
         _offer(&S.c, S.s2, S.t1, S.t2)
         _note_peak(&S.P, S.s2, S.t2, S.t1, S.s1, 0.5 * (S.t1 + S.t2), S.s2, S.t2, S.s2)
@@ -516,11 +558,14 @@ cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step,
     # (every peak kept is verified: the vertices of the peaks refined first are no fair
     # sample of how far a vertex may be off, their best samples lying near their tops)
     miss = 0.0
+    hmiss = 0.0
+    for k in range(S.P.n):
+        bound[k] = -INFINITY if S.P.done[k] else _verify(r, &S, k, which, kind, &miss, &hmiss)
     for k in range(S.P.n):
         if S.P.done[k]:
             continue
-        bound = _verify(r, &S, k, which, kind, &miss)
-        excess = bound - S.best
+        # the samples beside a vertex may be Hermite values, each off by up to hmiss
+        excess = bound[k] + 2.0 * hmiss - S.best
         if excess <= 1e-13 * fabs(S.best):
             continue
         if extra < MAX_CAND and S.P.ts[k][2] > S.P.ts[k][0]:
@@ -772,7 +817,7 @@ cdef class _View:
     cdef double[::1] p, k, law_par, y, out
     cdef int[::1] law, mode
     cdef const int[::1] part
-    cdef const double[:, ::1] rows
+    cdef double[:, ::1] rows
     cdef const int[:, ::1] modes
 
     def __init__(self, object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows,
@@ -781,7 +826,10 @@ cdef class _View:
         self.part = None if part is None else np.array(part, dtype=np.intc)
         check_partition(m, self.part)
         self.keep = capsule
-        self.rows = np.ascontiguousarray(rows, dtype=float)
+        # rows as the Result keeps them, so that the dense output made in left-out steps
+        # (_fill) stays made for the next figure of the run
+        arr = np.ascontiguousarray(rows, dtype=float)
+        self.rows = arr if arr.flags.writeable else arr.copy()
         nm = m.n_modes
         self.modes = np.ascontiguousarray(modes, dtype=np.intc).reshape(-1, nm) if nm else \
             np.zeros((1, 1), dtype=np.intc)
@@ -812,15 +860,20 @@ cdef class _View:
         self.r.nx = nx
         self.r.y = &self.y[0]
         self.r.out = &self.out[0]
+        self.r.hermite = False
+        self.r.n_hermite = 0
+        self.r.n_fill = 0
 
 
 def extreme(object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows, modes,
             int ns, int nx, int which, double a, double b, bint absolute, bint minimum,
             int per_step=12, int n_cand=1, part=None):
-    """(value, time, sampling error) of the extreme of state/output ``which`` (outputs after
-    the ns states) on [a, b] of a recorded run (rows as Result keeps them); see the module
-    doc and _extreme.  ``part``: a constrained model's coordinate partition (Ctx.part), None
-    for the declared one; so in the other functions of a recorded run."""
+    """(value, time, sampling error, calls) of the extreme of state/output ``which`` (outputs
+    after the ns states) on [a, b] of a recorded run (rows as Result keeps them); see the
+    module doc and _extreme.  ``calls``: the right-hand-side calls made filling in the DOP853
+    dense output the run left out, in place in ``rows`` where they are writable.  ``part``: a
+    constrained model's coordinate partition (Ctx.part), None for the declared one; so in
+    the other functions of a recorded run."""
     if per_step < 1:
         raise ValueError("per_step must be at least 1")
     cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, nx, part)
@@ -830,7 +883,31 @@ def extreme(object capsule, double[::1] p, int[::1] law, double[::1] law_par, ro
         raise ValueError("empty record")
     with nogil:
         _extreme(&v.r, which, a, b, kind, per_step, n_cand, NULL, 1, &value, &at, &sampling)
-    return value, at, sampling
+    return value, at, sampling, v.r.n_fill
+
+
+def fill(object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows, modes,
+         int ns, int nx, tq=None, part=None):
+    """Make, in place in ``rows`` (writable), the DOP853 dense output the run left out of the
+    steps that the times ``tq`` fall in (as dense_eval takes them), or of every step (None);
+    returns the right-hand-side calls made."""
+    if not (isinstance(rows, np.ndarray) and rows.flags.writeable and rows.flags.c_contiguous):
+        raise ValueError("rows must be a writable C-contiguous array")
+    cdef _View v = _View(capsule, p, law, law_par, rows, modes, ns, nx, part)
+    cdef double[::1] times = np.ascontiguousarray(tq if tq is not None else [], dtype=float)
+    cdef Py_ssize_t i, j
+    cdef bint every = tq is None
+    with nogil:
+        if every:
+            for i in range(v.r.n - 1):
+                if _left_out(&v.r, i):
+                    _fill(&v.r, i)
+        else:
+            for j in range(times.shape[0]):
+                i = _step_of(&v.r, times[j])
+                if i + 1 < v.r.n and _left_out(&v.r, i):
+                    _fill(&v.r, i)
+    return v.r.n_fill
 
 
 def crossing(object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows, modes,
@@ -880,6 +957,7 @@ cdef struct Chunk:
     const int* part    # the coordinate partition of the runs (Ctx.part), or NULL
     bint exact
     bint whole         # with exact: a linear interval in one step (Run.exact_whole)
+    bint dense         # DOP853: the dense output made as the run goes, else where wanted
     int width
     Py_ssize_t cap
     double* rows
@@ -907,6 +985,7 @@ cdef int _chunk_open(Chunk* c, ModelC* m, int method, const int* law, const doub
     c.part = NULL
     c.exact = exact
     c.whole = False
+    c.dense = True
     c.width = 1 + (2 + extra_terms(method, exact)) * ns
     c.cap = cap if cap >= 64 else 64
     c.rows = <double*> malloc(c.cap * c.width * sizeof(double))
@@ -982,7 +1061,7 @@ cdef int _chunk_run(Chunk* c, const double* p, const double* y0, const double* s
     c.run.n_jac = 0
     c.run.n_lu = 0
     c.run.exact = c.exact
-    c.run.skip_dense = False         # the figures' scans read the dense output
+    c.run.skip_dense = not c.dense   # else made where the figures' scans want it (_fill)
     c.run.exact_whole = c.exact and c.whole
     status = m.run(&c.run)
     # keep the (possibly grown) buffers for the next run
@@ -1007,6 +1086,9 @@ cdef void _chunk_record(Chunk* c, Rec* rec) noexcept nogil:
     rec.nx = extra_terms(c.method, c.exact)
     rec.y = c.scratch + ns + m.n_const + m.n_cache
     rec.out = rec.y + ns
+    rec.hermite = False
+    rec.n_hermite = 0
+    rec.n_fill = 0
 
 
 cdef ModelC* _chunk_model(object capsule, int method, const double[:, ::1] P,
@@ -1201,7 +1283,8 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
                    int mode_col=-1, int mode_value=0, double[::1] first_in_mode=None,
                    Py_ssize_t cap=4096, bint exact=False, const double[:, ::1] atol_rows=None,
                    const int[::1] part=None, const int[::1] sample_which=None,
-                   const double[:, :, ::1] sample_t=None, double[:, :, ::1] sample_v=None):
+                   const double[:, :, ::1] sample_t=None, double[:, :, ::1] sample_v=None,
+                   bint dense=True):
     """Run every parameter set (rows of P, initial states Y0, stop tables, h_max per run) and
     find extreme k of each run as :func:`extreme` finds it on a recorded run (the same scan,
     refinement and sampling check, so the same bits): state or output ``which[k]`` on
@@ -1214,7 +1297,9 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
     takes it.  With ``sample_which``, sample_v[g, k, i] is state or output ``sample_which[k]``
     at time sample_t[g, k, i] on run g's dense output, as Result.sample gives it (NaN where the
     time is NaN or outside the run): what a figure needs of a record besides its extremes
-    (runtime/measure/modes.py amplitude_bound).  No GIL is held while it runs.
+    (runtime/measure/modes.py amplitude_bound).  ``dense`` False: DOP853 leaves its dense
+    output out but where an event crosses, and the figures make it where they want it, as a
+    Simulator's run with dense_output False and its Result.  No GIL is held while it runs.
 
     A run that fails leaves its status (runtime/driver.STATUS_TEXT) and NaN figures."""
     cdef ModelC* m = _chunk_model(capsule, method, P, Y0, atol, modes0)
@@ -1254,6 +1339,7 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
                    &modes0[0] if modes0.shape[0] else NULL, max_events, exact, cap) != 0:
         raise MemoryError()
     c.part = NULL if part is None else &part[0]
+    c.dense = dense
     cdef Rec rec
     cdef Py_ssize_t i
     cdef double a, b, v, t, samp

@@ -204,10 +204,26 @@ cdef int _event_in_step(Run* run, double t, double h, const double* y0, const do
                         const double* f0, const double* f1, const double* ex, int nx,
                         double* g0, double* g1, double* s_hit) noexcept nogil:
     """The event that crosses first within the step, or -1; its step fraction in s_hit."""
+    events(t + h, y1, g1, run.ctx)
+    return _first_event(run, t, h, y0, y1, f0, f1, ex, nx, g0, g1, s_hit)
+
+
+cdef inline bint _any_crossed(const double* g0, const double* g1) noexcept nogil:
+    """Whether an event function crossed in its direction between the step's ends."""
+    cdef int k
+    for k in range(_NE):
+        if not _crossed(_EDIR[k], g0[k]) and _crossed(_EDIR[k], g1[k]):
+            return True
+    return False
+
+
+cdef int _first_event(Run* run, double t, double h, const double* y0, const double* y1,
+                      const double* f0, const double* f1, const double* ex, int nx,
+                      const double* g0, const double* g1, double* s_hit) noexcept nogil:
+    """_event_in_step with the event functions at the step's end already in g1."""
     cdef int k, hit = -1
     cdef double s
     s_hit[0] = 2.0
-    events(t + h, y1, g1, run.ctx)
     for k in range(_NE):
         if not _crossed(_EDIR[k], g0[k]) and _crossed(_EDIR[k], g1[k]):
             s = _locate(run.ctx, k, t, h, y0, y1, f0, f1, ex, nx, g0[k], g1[k])
@@ -1243,10 +1259,14 @@ cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
                 nonsti += 1
                 if nonsti == 6:
                     iasti = 0
-            # the dense output's three stages and its four extras, in the row of the step start
-            # (events are located on it; otherwise a run may leave it to be made on demand)
+            # the dense output's three stages and its four extras, in the row of the step start;
+            # a run may leave them out where no event crossed (events are located on them):
+            # the extras NaN then, but the second the step's length, from which dense_fill
+            # makes them later, bit for bit, where they are wanted
             ex = run.rec.rows + (run.rec.n - 1) * run.rec.width + 1 + 2 * _NS
-            if _NE > 0 or not run.skip_dense:
+            if _NE > 0:
+                events(t + h, yn, g1, run.ctx)
+            if not run.skip_dense or (_NE > 0 and _any_crossed(g0, g1)):
                 for st in range(13, 16):
                     _d8_sum(D8_A[st], st, h, K, y, ys)
                     rhs(t + D8_C[st] * h, ys, K + st * _NS, ctx)
@@ -1256,8 +1276,9 @@ cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
             else:
                 for i in range(4 * _NS):
                     ex[i] = NAN
+                ex[1] = h
             if _NE > 0:
-                hit = _event_in_step(run, t, h, y, yn, K, K + 12 * _NS, ex, 4, g0, g1, &s_hit)
+                hit = _first_event(run, t, h, y, yn, K, K + 12 * _NS, ex, 4, g0, g1, &s_hit)
                 if hit >= 0:
                     status = _cut_at_event(run, ctx, hit, s_hit, &t, h, y, yn, K, K + 12 * _NS,
                                            ex, 4, g0, &n_rhs)
@@ -1292,6 +1313,34 @@ cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
     if status != STATUS_OK:
         run.t_fail = t
     return status
+
+
+cdef int dense_fill(Ctx* ctx, double* row) noexcept nogil:
+    """The DOP853 dense output a run left out of a recorded row (its extras NaN but the
+    second, the step's length h): the step from the row's t, y and slope made again, its
+    stages and the extras exactly as the loop makes them, into the row.  The calls made
+    (16); 0 for a row that holds its dense output or is not a left-out DOP853 row.  ``ctx``
+    in the row's modes."""
+    cdef double* y = row + 1
+    cdef double* ex = row + 1 + 2 * _NS
+    cdef double t = row[0], h = ex[1]
+    cdef double K[16 * _NS]
+    cdef double ys[_NS]
+    cdef int st
+    if not isnan(ex[0]) or not h > 0.0:
+        return 0
+    memcpy(K, row + 1 + _NS, _NS * sizeof(double))
+    for st in range(1, 12):
+        _d8_sum(D8_A[st], st, h, K, y, ys)
+        rhs(t + D8_C[st] * h, ys, K + st * _NS, ctx)
+    _d8_sum(D8_A[12], 12, h, K, y, ys)
+    rhs(t + h, ys, K + 12 * _NS, ctx)
+    for st in range(13, 16):
+        _d8_sum(D8_A[st], st, h, K, y, ys)
+        rhs(t + D8_C[st] * h, ys, K + st * _NS, ctx)
+    for st in range(4):
+        _d8_sum(D8_D[st], 16, h, K, NULL, ex + st * _NS)
+    return 16
 
 
 # -- RKN12(10): models whose accelerations do not depend on velocities -------------------

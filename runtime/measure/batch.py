@@ -108,6 +108,7 @@ def run_batch(sim: Simulator, P: np.ndarray, Y0: np.ndarray, t_end: np.ndarray,
         np.ascontiguousarray(spans[:, :, 0]), np.ascontiguousarray(spans[:, :, 1]),
         value, at, samp, stats, t_stiff, col, val, first, exact=sim.exact_segments,
         atol_rows=None if atol is None else np.ascontiguousarray(atol, dtype=float),
-        part=sim.part, sample_which=which_s, sample_t=T_s, sample_v=V_s)
+        part=sim.part, sample_which=which_s, sample_t=T_s, sample_v=V_s,
+        dense=sim.integrator.dense)
     return Runs(value, at, samp, {k: stats[:, i] for i, k in enumerate(finder.RUN_STATS)},
                 t_stiff, first, V_s)

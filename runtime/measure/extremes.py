@@ -57,9 +57,14 @@ def column(result, name: str) -> int:
 
 
 def record(result: Result) -> tuple:
-    """The arguments the compiled finder reads a run's record from."""
-    return (result.model.capsule, result.p, result.law_codes, result.law_pars, result.record,
-            result.mode, len(result.state_names), result.n_extra)
+    """The arguments the compiled finder reads a run's record from: a DOP853 run's rows as
+    they are, the finder making the dense output the run left out where it needs it."""
+    if result._fills:
+        rows, nx = result._rows, (result._rows.shape[1] - 1) // len(result.state_names) - 2
+    else:
+        rows, nx = result.record, result.n_extra
+    return (result.model.capsule, result.p, result.law_codes, result.law_pars, rows,
+            result.mode, len(result.state_names), nx)
 
 
 def extreme(result, name: str, a: float, b: float, *, absolute: bool, minimum: bool,
@@ -80,9 +85,10 @@ def extreme(result, name: str, a: float, b: float, *, absolute: bool, minimum: b
     if per_step < 1 or not 1 <= candidates <= 16:
         raise CamdynInputError(f"per_step={per_step} must be >= 1 and candidates={candidates} "
                                "in 1..16")
-    value, at, sampling = finder.extreme(*record(result), column(result, name), float(a),
-                                           float(b), absolute, minimum, per_step, candidates,
-                                           part=result.part)
+    value, at, sampling, calls = finder.extreme(*record(result), column(result, name), float(a),
+                                                  float(b), absolute, minimum, per_step,
+                                                  candidates, part=result.part)
+    result.count_dense_calls(calls)
     return Extreme(float(value), float(at), float(sampling))
 
 

@@ -127,7 +127,7 @@ def simulator(case: Case, t_end: float | None = None,
     model = load(case.model)
     t_end = case.revolutions * case.period if t_end is None else t_end
     sim = Simulator(model, t_end, integrator(case), law=case.law,
-                    y0=initial_state(case, model), max_steps=max_steps, dense_output=True)
+                    y0=initial_state(case, model), max_steps=max_steps)
     return sim, model
 
 
