@@ -102,20 +102,28 @@ def derive(model: Model) -> Equations:
     n = len(q)
     forces = model.forces or (0,) * n
 
-    lhs = []
+    lhs, given = [], []
     for i in range(n):
         kin = model.kinetic.diff(qd[i]).diff(t) - model.kinetic.diff(q[i])
-        e = kin + model.potential.diff(q[i]) + model.dissipation.diff(qd[i]) - forces[i]
+        e = kin + model.potential.diff(q[i]) + model.dissipation.diff(qd[i])
+        # a generalized force free of accelerations may be kept as written (Model's
+        # expand_forces): expanding a force of a long geometric ratio (a rocker's,
+        # derive/models/dynacam.py) multiplies it out into more terms than anything needs
+        if model.expand_forces or sp.sympify(forces[i]).has(*qdd):
+            e -= forces[i]
+            given.append(sp.Integer(0))
+        else:
+            given.append(sp.sympify(forces[i]))
         lhs.append(sp.expand(e))
 
     M = sp.Matrix(n, n, lambda i, j: lhs[i].coeff(qdd[j]))
     zero = {a: 0 for a in qdd}
     # xreplace, not subs: the accelerations are exact subtrees, and subs is slow on large
     # mode-dependent (Piecewise) expressions
-    f = sp.Matrix([-lhs[i].xreplace(zero) for i in range(n)])
+    f = sp.Matrix([-lhs[i].xreplace(zero) + given[i] for i in range(n)])
     # the equations must be linear in q'': check that nothing was left over
     for i in range(n):
-        rest = sp.expand(lhs[i] - sum(M[i, j] * qdd[j] for j in range(n)) + f[i])
+        rest = sp.expand(lhs[i] - sum(M[i, j] * qdd[j] for j in range(n)) + f[i] - given[i])
         if rest != 0:
             raise ValueError(f"{model.name}: equation {i} is not linear in the accelerations")
     # first-order states enter f through their rates (damping on a motor angle, ...)

@@ -385,6 +385,10 @@ class Model:
     variant: tuple = ()
     """Lines saying in words what this member of a model family contains (the options of a
     DYNACAM variant), printed in the generated file's header."""
+    expand_forces: bool = True
+    """Whether Lagrange's equations multiply the generalized forces out with the rest; False
+    keeps forces free of accelerations as written, for forces of long geometric factors (a
+    rocker's ratios, derive/models/dynacam.py) that expanding would blow up."""
 
     def __post_init__(self):
         _check_name(self.name, "model")

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b0d24a8c61a7840ad56eae1d23d9b77a8ced3a4a87929d7cf6f0333676172abf
-# Text hash: sha256:61cdec5be6ecee9220be483e126e9da83566efa6b6aef7baba15e702cc1135e6
+# Derivation key: sha256:e0da0f68451cde1096c4c49f48f3a47dbcc88cb44add291edc9e28857583b13d
+# Text hash: sha256:f549a0c7b221eb5a22ad0562c6c761fd036cde33fa76cd7e37075d81920bed10
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 1 assumed modes (paper (1)-(20))
 # Source hash: sha256:c16b3556f450993e2cc9f2fd4a99c60d51901b4ed16007df3788e4358514ae33

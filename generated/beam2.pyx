@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0ed01c8b5824ae6447b0063f83cb705e4244e9a5f78b6111ea1351732fee2779
-# Text hash: sha256:b451040ab455ef9cabda568adf86017271160a86e139133a58cec0ca3f18f7b6
+# Derivation key: sha256:bad3e42fbaefbf8e6606e3ba0e2c87fde35824165022b55d519034755339eabf
+# Text hash: sha256:de5ddcf99250feb0bc744945f9352873b77149d8f19be87f02cb1a69139645ab
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 2 assumed modes (paper (1)-(20))
 # Source hash: sha256:e6f5b38d9e7b1dd5f920d6438c12a96321d776db2c76dee854114e82adf9e94d

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:34701a3a6ebf84f5ed23a2c5e7fbb1f1f498f9b74c41becdc0981be2fadd69ad
-# Text hash: sha256:42518e0af07e86a3c47291103eefd0f349226d1fb7399c4898737180a9f58dfb
+# Derivation key: sha256:3b813bbee5111ad1fe754cfed84b303307e4de4135c053a25da18fc2a22af92b
+# Text hash: sha256:be1bc0d30873c035ee89060aca3ca06be649553fa7c734c6a4e1da3321e76a77
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 3 assumed modes (paper (1)-(20))
 # Source hash: sha256:a4c10ed1c7eeed79759d12da9812dfb2e08f6d7ceaf7defeb99a53905305f1ad

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:e1e6945c9ce776b32dda185cdcb7ee33a2e6cb5a5fa7d39f75d863055f30effa
-# Text hash: sha256:1c9233a90da700df523c520d0ec6b2b755ac4d9802faa87f665d6bdd7daa26bc
+# Derivation key: sha256:95ac485c9b9789ec2819ce82a612055a3c6c4a8d49cc51012c529cfec4539fbf
+# Text hash: sha256:6b2e5cb182d6d517f47be5c3111c514f198dd471f0028b90c556a9ac116ef3d0
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 4 assumed modes (paper (1)-(20))
 # Source hash: sha256:64a7efcd9334b75fa69119f83904c9f9c8d47957738123d27eab23d9cd1693f4

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0052b5a1ef1b7755bed2ce55ea0cae40f94533634216a73c9cfdc4ba58270165
-# Text hash: sha256:7e7bc0e02d937e5c44fd6399e81da202916d0a6454872bb1d1e62187da107003
+# Derivation key: sha256:1c514eba00ca048f7a91c0942d68fa732f37ee3af0dd56598e8292cea81dd5ed
+# Text hash: sha256:7cbd40075edcf38b8f32a8b2aa0fcc9de913cbbb4ff72948ed19f6ac35924f52
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 5 assumed modes (paper (1)-(20))
 # Source hash: sha256:611aaf7763e70cfb79e109e16ea0ebff594dfa47598c04509a2d122462a61666

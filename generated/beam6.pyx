@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/beam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:aca0684937c2fe76ff70bca30e09c1d226e21d1f3faaafcbf82f1b2d7c01e2ce
-# Text hash: sha256:c0bd68d2a968d35e66420a24eafcf812e79a6bc74ff7b49270903acd128da324
+# Derivation key: sha256:744483a86b15d45d1a036c946c89d873e8e1f1860066c4918e7b118c6df73928
+# Text hash: sha256:64ded7cfa4e9fb7b61b8c5e15326f81208c8e9cfa9cc9c34766c084131721015
 #
 # Rayleigh-beam follower in a grooved disk cam, N = 6 assumed modes (paper (1)-(20))
 # Source hash: sha256:ba76292f91dfbbd6b8d39b0bd7d40b2000e3a575b4d3c5fd9aa69df4a2837883

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8a896af43109cae428486a7219e1b12ed3bc1f9f9b82b4fc81ca99513b84a536
-# Text hash: sha256:3633eed13c35ca7cc44505030b1e61f09e2c3789d9dad442464a4e4a83f04be5
+# Derivation key: sha256:5ddf8600be224e1f4e8ecfb12a566dccae55a801ba88dcfbc46979cc6696e755
+# Text hash: sha256:0f43333b44d5377e3ab0ce8dcfd13f867ffcfc63c67ae8f34c91eb108b10ceab
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:0967543da0f352acab2824c9a32218d1be61c185b8c772967bbcece4be157c13

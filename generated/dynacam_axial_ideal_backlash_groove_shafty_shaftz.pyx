@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0235388af66d3ff2100d41975c0f96cb4d725858f9b893a351e249c6d9d40550
-# Text hash: sha256:f0bbdb060c3e357d306992784e43f5f742a568c02aab460d93d1bb706e636590
+# Derivation key: sha256:da3fea6a35c0185892d77ee9a39fc1785a573ced969646d21903a01d66c9b49d
+# Text hash: sha256:7d3f9f784cfe340f85cbde2750da4c5999edde44d68d8ce8ee70eeb59c323225
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:41f6a09a74de0748a6af39731b366e5cb675a3ff3e9ac42f0e41f62c54b4f410
+# Source hash: sha256:68e68d37fe18dbc047dbaa595bb4362ad372688257640253b999b22ed8848371
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = no: no follower spring
 #   external = no: no external force
+#   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -39,7 +40,10 @@
 #
 # * the roller: the cam contact point moves by h_c = h(beta) - y tan(alpha) - z
 #   (6.22), tan(alpha) = (dh/dbeta)/R(beta) (6.20), R = R_b + h (radial cam) or
-#   R_b (axial) (6.21).  The linkage spring-damper (c_x, d_x) carries
+#   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
+#   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
+#   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
+#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1151,6 +1155,10 @@ _MANIFEST_JSON = """
    "constant"
   ],
   [
+   "rocker",
+   false
+  ],
+  [
    "roller",
    "groove"
   ],
@@ -1209,7 +1217,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1442,7 +1450,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:41f6a09a74de0748a6af39731b366e5cb675a3ff3e9ac42f0e41f62c54b4f410",
+ "source_hash": "sha256:68e68d37fe18dbc047dbaa595bb4362ad372688257640253b999b22ed8848371",
  "states": [
   {
    "doc": "cam angle",

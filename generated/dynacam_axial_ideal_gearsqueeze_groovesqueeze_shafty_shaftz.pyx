@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:dcae95cc8ebaf3167968d5a66583ae654823fd483956b56376c4837417519138
-# Text hash: sha256:03fc4281cb9f3d201a96fbb11ebd96528ceaccb2c0eb0a5b5033b8395fd172ec
+# Derivation key: sha256:104f899a1244c6956324782561dc4553ff0776812893e2f1aadb1f2096138752
+# Text hash: sha256:efd4f3269494205cd3971513e216f2d50232bfa65051292774429d94e02d21c4
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:22aa19a82ce8967025784a92feac93cc2018fcdebbf00db8a01db85a3d5213b5
+# Source hash: sha256:86da5c40858feb579a64a30817509962466700cea2db053b45033c04076e45bd
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = no: no follower spring
 #   external = no: no external force
+#   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -39,7 +40,10 @@
 #
 # * the roller: the cam contact point moves by h_c = h(beta) - y tan(alpha) - z
 #   (6.22), tan(alpha) = (dh/dbeta)/R(beta) (6.20), R = R_b + h (radial cam) or
-#   R_b (axial) (6.21).  The linkage spring-damper (c_x, d_x) carries
+#   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
+#   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
+#   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
+#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -2783,6 +2787,10 @@ _MANIFEST_JSON = """
    "constant"
   ],
   [
+   "rocker",
+   false
+  ],
+  [
    "roller",
    "groove-squeeze"
   ],
@@ -2841,7 +2849,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -3096,7 +3104,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:22aa19a82ce8967025784a92feac93cc2018fcdebbf00db8a01db85a3d5213b5",
+ "source_hash": "sha256:86da5c40858feb579a64a30817509962466700cea2db053b45033c04076e45bd",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:2ce761e9a13dc3031937fb58fdc8b3ab5009a5f44e0354f0c077a1e985d0caef
-# Text hash: sha256:3cea43baf8fd4952021986e0f0b4b1b2f187810c9d0d8f0f90a3d63a5cdce0fc
+# Derivation key: sha256:fc28515d5603f99d26e41521ecc71a319dbbf4e8c0386dd3df13991a8f2acda0
+# Text hash: sha256:9ce86fad81dc46134c6a0a3b8ba40905f4c241ac874ddc0e277e6aff34400e67
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:640632216abb31d42a8a229473260e0d7d961a5af1f60a5d512bfabb26f6b202
+# Source hash: sha256:af3e67c26a5f7d34b988ffb487b0ec831363b82ad18c9a52f06db84d96a0118f
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = no: no follower spring
 #   external = no: no external force
+#   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -39,7 +40,10 @@
 #
 # * the roller: the cam contact point moves by h_c = h(beta) - y tan(alpha) - z
 #   (6.22), tan(alpha) = (dh/dbeta)/R(beta) (6.20), R = R_b + h (radial cam) or
-#   R_b (axial) (6.21).  The linkage spring-damper (c_x, d_x) carries
+#   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
+#   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
+#   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
+#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1542,6 +1546,10 @@ _MANIFEST_JSON = """
    "constant"
   ],
   [
+   "rocker",
+   false
+  ],
+  [
    "roller",
    "bilateral"
   ],
@@ -1600,7 +1608,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
    "name": "tan_alpha",
    "unit": "1"
   }
@@ -1801,7 +1809,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:640632216abb31d42a8a229473260e0d7d961a5af1f60a5d512bfabb26f6b202",
+ "source_hash": "sha256:af3e67c26a5f7d34b988ffb487b0ec831363b82ad18c9a52f06db84d96a0118f",
  "states": [
   {
    "doc": "cam angle",

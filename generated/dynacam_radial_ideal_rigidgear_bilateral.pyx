@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:55745fdd8f12d77342d794bbe91d15420318df42bb1852a14f9a88fd09a96083
-# Text hash: sha256:108b196a530901e7b1b29693ea8d69579ffd38b287d037fa2b2d5fecb2a89746
+# Derivation key: sha256:60a5ea17f5c672cdb8972b30adec2352a80e0894d59aa48182ee96707fe070af
+# Text hash: sha256:04588b261d7e8d65febd53359aeca4fe8e05280536dac4b8a07703df81ec92bb
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:38687cb5090847d4fab317dc808b5922442b72defa6c4292176e38630702b181
+# Source hash: sha256:358f84f106177babe84049b111cc09b0cbec324f5751bbc3c45a3f392af4ebc0
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = no: no follower spring
 #   external = no: no external force
+#   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -39,7 +40,10 @@
 #
 # * the roller: the cam contact point moves by h_c = h(beta) - y tan(alpha) - z
 #   (6.22), tan(alpha) = (dh/dbeta)/R(beta) (6.20), R = R_b + h (radial cam) or
-#   R_b (axial) (6.21).  The linkage spring-damper (c_x, d_x) carries
+#   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
+#   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
+#   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
+#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -801,6 +805,10 @@ _MANIFEST_JSON = """
    "constant"
   ],
   [
+   "rocker",
+   false
+  ],
+  [
    "roller",
    "bilateral"
   ],
@@ -859,7 +867,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
    "name": "tan_alpha",
    "unit": "1"
   }
@@ -994,7 +1002,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:38687cb5090847d4fab317dc808b5922442b72defa6c4292176e38630702b181",
+ "source_hash": "sha256:358f84f106177babe84049b111cc09b0cbec324f5751bbc3c45a3f392af4ebc0",
  "states": [
   {
    "doc": "cam angle",

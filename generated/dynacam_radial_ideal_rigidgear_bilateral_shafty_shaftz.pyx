@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:544ecfe3906bb24c6de553d9fc160e09f05c748bb085b6633ebb3cf6c774470f
-# Text hash: sha256:519f4977e67d8cb71ac0c8af64ddf0b0f5abed8794a014caca28e2f77abca279
+# Derivation key: sha256:1c6653ee3dd4e29bd33037c93392191fd3f124656b5ee31777732c339e14e71d
+# Text hash: sha256:aa82a536af5ba28d7d0aece9f1230f250c3c216b5d25d5f2b5b43e59c4c0973b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:d314503d8a9cd1bf30613f7692c4b3c4c6df3983fe95f8d9142a70da6a15a311
+# Source hash: sha256:3a77f222ea282d05a9ff5e933fced29c6c3656b3f5584a65b30e654a78c6529b
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = no: no follower spring
 #   external = no: no external force
+#   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -39,7 +40,10 @@
 #
 # * the roller: the cam contact point moves by h_c = h(beta) - y tan(alpha) - z
 #   (6.22), tan(alpha) = (dh/dbeta)/R(beta) (6.20), R = R_b + h (radial cam) or
-#   R_b (axial) (6.21).  The linkage spring-damper (c_x, d_x) carries
+#   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
+#   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
+#   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
+#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -2281,6 +2285,10 @@ _MANIFEST_JSON = """
    "constant"
   ],
   [
+   "rocker",
+   false
+  ],
+  [
    "roller",
    "bilateral"
   ],
@@ -2339,7 +2347,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
    "name": "tan_alpha",
    "unit": "1"
   }
@@ -2540,7 +2548,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:d314503d8a9cd1bf30613f7692c4b3c4c6df3983fe95f8d9142a70da6a15a311",
+ "source_hash": "sha256:3a77f222ea282d05a9ff5e933fced29c6c3656b3f5584a65b30e654a78c6529b",
  "states": [
   {
    "doc": "cam angle",

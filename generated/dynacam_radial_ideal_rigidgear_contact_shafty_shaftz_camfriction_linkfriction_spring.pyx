@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:88108c1ac4d512a6fe35cd7eece95687693bde00fee998f8b2455832f9737743
-# Text hash: sha256:9f8ff9cdc3efc221a7410a989eb00d9282840af69e4e99043eeaa7fac74a1fc6
+# Derivation key: sha256:5e62c0fbf00c15942d22b262af7e5008225247140bbd0c2e76790ab8d8399845
+# Text hash: sha256:e09c002136893f02601e320764cfd9e366a1827572227b3f46fb2a1b9b78a1dd
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:e1eb0a3a86083e97b569e940f3a3ce02faa99a7c74dcb83ed315aae4c20441e5
+# Source hash: sha256:87c65c06bf59c67f4770fd3ab4457dd60daa8a7112503b5bd9b613c7e00b1ecc
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = yes: Coulomb friction in the follower linkage (6.43)
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
+#   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -39,7 +40,10 @@
 #
 # * the roller: the cam contact point moves by h_c = h(beta) - y tan(alpha) - z
 #   (6.22), tan(alpha) = (dh/dbeta)/R(beta) (6.20), R = R_b + h (radial cam) or
-#   R_b (axial) (6.21).  The linkage spring-damper (c_x, d_x) carries
+#   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
+#   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
+#   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
+#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1590,6 +1594,10 @@ _MANIFEST_JSON = """
    "constant"
   ],
   [
+   "rocker",
+   false
+  ],
+  [
    "roller",
    "contact"
   ],
@@ -1648,7 +1656,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1898,7 +1906,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:e1eb0a3a86083e97b569e940f3a3ce02faa99a7c74dcb83ed315aae4c20441e5",
+ "source_hash": "sha256:87c65c06bf59c67f4770fd3ab4457dd60daa8a7112503b5bd9b613c7e00b1ecc",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:f85bf066500e2ec38e0fc3bf2b41348bed0016bd8a2ddaff0df64b3c2207997a
-# Text hash: sha256:3b8c3e3389806a26aef4e6edb018fa8278ab6c935eef6556de58b686532c920c
+# Derivation key: sha256:1f87dedc0002442a7ebadc2d9af747c440fc9dae443e9d49fbfad9bc73a37c9f
+# Text hash: sha256:14f3d8260620e7edba5ff897daf79d707b229cec3fd094cef1c0a8c6af3dae57
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:dcd89b047c0b805f1bfce1de048981402bb3821ffaa62bae75e2677970f0d321
+# Source hash: sha256:8c86086d638c2dea7ee77829aef3689feb77d5ae95d059a9733cfa4b30aabf18
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
+#   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -39,7 +40,10 @@
 #
 # * the roller: the cam contact point moves by h_c = h(beta) - y tan(alpha) - z
 #   (6.22), tan(alpha) = (dh/dbeta)/R(beta) (6.20), R = R_b + h (radial cam) or
-#   R_b (axial) (6.21).  The linkage spring-damper (c_x, d_x) carries
+#   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
+#   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
+#   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
+#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1247,6 +1251,10 @@ _MANIFEST_JSON = """
    "constant"
   ],
   [
+   "rocker",
+   false
+  ],
+  [
    "roller",
    "contact"
   ],
@@ -1305,7 +1313,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1533,7 +1541,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:dcd89b047c0b805f1bfce1de048981402bb3821ffaa62bae75e2677970f0d321",
+ "source_hash": "sha256:8c86086d638c2dea7ee77829aef3689feb77d5ae95d059a9733cfa4b30aabf18",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:042b2a9490fd1c7587e9946a0eec532aeedf42a63f85d545377778d703ef731c
-# Text hash: sha256:d7223483d1221c799b65f7752865bfefe8da99b3ff68ab73a999844438f01610
+# Derivation key: sha256:b86b5ade984199add7ab277fd720b27f0a3e10df5ee2c22db2debc301e4b3402
+# Text hash: sha256:48e09ce0d4c3545c023567e43b32ee13da7a82a9863d2ba306ee2dcef4abeda6
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:385259177b6fc5a5e22dadcde0196ca8013d5bbbd8866e045f88ca4799a781b3
+# Source hash: sha256:71757a68a2a2eeb9bea63c63a6c5431d50788facaa053bcb997a3d91dcf177df
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
+#   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -39,7 +40,10 @@
 #
 # * the roller: the cam contact point moves by h_c = h(beta) - y tan(alpha) - z
 #   (6.22), tan(alpha) = (dh/dbeta)/R(beta) (6.20), R = R_b + h (radial cam) or
-#   R_b (axial) (6.21).  The linkage spring-damper (c_x, d_x) carries
+#   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
+#   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
+#   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
+#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1463,6 +1467,10 @@ _MANIFEST_JSON = """
    "second"
   ],
   [
+   "rocker",
+   false
+  ],
+  [
    "roller",
    "contact"
   ],
@@ -1521,7 +1529,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1814,7 +1822,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:385259177b6fc5a5e22dadcde0196ca8013d5bbbd8866e045f88ca4799a781b3",
+ "source_hash": "sha256:71757a68a2a2eeb9bea63c63a6c5431d50788facaa053bcb997a3d91dcf177df",
  "states": [
   {
    "doc": "cam angle",

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:27b7612b9b28642c065629391e14d03d3b831d429181a0fa92ecca0963a9c14b
-# Text hash: sha256:b80759bcbcd80230cb55866b4a7cbb1643fefe0cde945c9141b1c25001ab875b
+# Derivation key: sha256:6c2496ae21cc5c9947c1561d2e9f70bd0d9b98cb383c56e2569055cdc10109b9
+# Text hash: sha256:57a95ca1b0b579f9916cbd24cbbcb9a530e41a2e8e7628e245370097227b8770
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:19e06e8b0095c03a2beab7439588f8137c56e297d573674a4c354a8eee7ec886

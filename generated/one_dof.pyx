@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:afec39854697dbd4f3f4a3a3da8f0c5d7e4e6b0e5d76ced299f015eb71eeaae4
-# Text hash: sha256:41337c657f1f179eed97f681d663ade456b7e983cf28f40f11f0e0f7fde33faa
+# Derivation key: sha256:61996d47c253cb85c9d9fff8df1a1921a33bed5a3300ffe68cfc3c3bdfb979f2
+# Text hash: sha256:99bbcb9ac74cc5f593e61d8674dac6492bb119110bb44c06b1b96abeaf466119
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:7be31bd6aed90cb3c3dd785c585a5abdada86ed4b0a88d608d7b6508231d5b38

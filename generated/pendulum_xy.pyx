@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/pendulum.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:c9c21911fb8f07c20d528911925af19932a3b0df6ec57f2c1e84ea0c47b6320b
-# Text hash: sha256:e25efeb0f6728820264c7999a1db6077dfdb6866b974391e8bc9a3ae32a4532b
+# Derivation key: sha256:57a162afdd64f529b34bace08a6dad6cb22e179bac321d9d9ac3cd3b46604e93
+# Text hash: sha256:4b69d0bdf00490927a9cec43e01961fe0306d6a590dd5f44795e457fb420210f
 #
 # Planar pendulum in Cartesian coordinates with its length constraint (Lagrange's equations of the first kind; the pendulum's closed forms)
 # Source hash: sha256:161a1c58ca2d37fcefd956520d1151d5da9a8e1578200587452bf241fc0d81e3

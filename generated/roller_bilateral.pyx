@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:47668c91f3222dd4de89b32a38534564e2490c88474bfd8d9e848559256db8e4
-# Text hash: sha256:3eb7d6fb00feca13d3d991e9508dc5e24027b5a1c4a31e1324705a6f3093c34c
+# Derivation key: sha256:0faa4242cd8155a5ac9e419732e8c4649492694e99b1da994880cf20d97ac678
+# Text hash: sha256:4a91f0ba35b95cf322a068f3f0a0e24bb0c0f783c41db3a2d57ac7378a16e72f
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:e9e5870f5ef080f71b3082004a824cdf8c772265063561f75e0f0fbbf4258b5a

@@ -30,6 +30,8 @@ DYNACAM_VARIANTS = (
     # constant speed (the motor made ideal)
     dynacam.Options(motor="second", roller="contact", spring=True),
     dynacam.Options(roller="contact", spring=True),
+    # a spring-held rocker: the designer's oscillating roller follower (sec. 2.4 reduction)
+    dynacam.Options(roller="contact", spring=True, rocker=True),
     # the same with Coulomb friction on the cam and in the linkage (6.13), (6.43): tests/test_nonsmooth.py
     dynacam.Options(roller="contact", spring=True, cam_friction=True, linkage_friction=True),
     # the indexing mechanism of fig. 7.1 (scenes/indexing.toml): an axial (globoidal) cam at

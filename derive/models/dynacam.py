@@ -17,7 +17,10 @@ The nonsmooth laws are force elements with modes and events:
 
 * the roller: the cam contact point moves by h_c = h(beta) - y tan(alpha) - z
   (6.22), tan(alpha) = (dh/dbeta)/R(beta) (6.20), R = R_b + h (radial cam) or
-  R_b (axial) (6.21).  The linkage spring-damper (c_x, d_x) carries
+  R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
+  centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
+  with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
+  they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -41,6 +44,7 @@ it has) is in its manifest; a scene generates only what it asks for.
 """
 from __future__ import annotations
 
+import json
 import math
 from dataclasses import asdict, dataclass, field, fields
 
@@ -73,6 +77,8 @@ class Options:
     linkage_friction: bool = _opt(False, "Coulomb friction in the follower linkage (6.43)")
     spring: bool = _opt(False, "follower spring with preload (6.45)")
     external: bool = _opt(False, "constant external force on the output (6.46)")
+    rocker: bool = _opt(False, "oscillating roller follower on an arm l_a pivoted at d_p from the cam "
+                               "centre, reduced to the roller's arc (sec. 2.4; radial cam)")
 
     CHOICES = {"cam": ("radial", "axial"), "motor": ("constant", "first", "second"),
                "gear": ("rigid", "backlash", "squeeze"),
@@ -82,6 +88,9 @@ class Options:
         for key, allowed in self.CHOICES.items():
             if getattr(self, key) not in allowed:
                 raise ValueError(f"option {key}={getattr(self, key)!r}: choose one of {', '.join(allowed)}")
+        for key, value, other, other_value, why in EXCLUDES:
+            if getattr(self, key) == value and getattr(self, other) == other_value:
+                raise ValueError(f"option {key}={_toml(value)} with {other}={_toml(other_value)}: {why}")
 
     @property
     def name(self) -> str:
@@ -103,6 +112,19 @@ class Options:
         return tuple(sorted(asdict(self).items()))
 
 
+EXCLUDES = (
+    ("rocker", True, "cam", "axial", "a rocker is derived for a radial cam; an axial cam drives a "
+                                     "translating follower"),
+    ("rocker", True, "cam_friction", True, "the friction on the cam (6.13) is written for the "
+                                           "translating follower only"),
+)
+"""Option pairs no variant has: (option, value, other option, its value, why)."""
+
+
+def _toml(value) -> str:
+    return json.dumps(value)       # as a scene file writes it: true, "axial"
+
+
 NAME_WORDS = {"cam": {"radial": "radial", "axial": "axial"},
               "motor": {"constant": "ideal", "first": "motor1", "second": "motor2"},
               "gear": {"rigid": "rigidgear", "backlash": "backlash", "squeeze": "gearsqueeze"},
@@ -111,7 +133,8 @@ NAME_WORDS = {"cam": {"radial": "radial", "axial": "axial"},
 """One word per choice, in this order, make the first part of a variant's name; no word
 stands for two things (tests/test_dynacam.py checks)."""
 NAME_FLAGS = (("shafty", "shaft_y"), ("shaftz", "shaft_z"), ("camfriction", "cam_friction"),
-              ("linkfriction", "linkage_friction"), ("spring", "spring"), ("force", "external"))
+              ("linkfriction", "linkage_friction"), ("spring", "spring"), ("force", "external"),
+              ("rocker", "rocker"))
 """The words of the elements switched on make the rest of the name."""
 
 DESCRIPTIONS = {
@@ -135,6 +158,8 @@ DESCRIPTIONS = {
                          False: "no friction in the linkage"},
     "spring": {True: "follower spring with preload F_0 (6.45)", False: "no follower spring"},
     "external": {True: "constant external force F_ex on the output (6.46)", False: "no external force"},
+    "rocker": {True: "oscillating roller follower (rocker), reduced to the roller centre's arc",
+               False: "translating roller follower"},
 }
 """Each option's value in words, for the header of the generated file."""
 
@@ -149,7 +174,8 @@ def catalog() -> dict:
         options.append({"name": f.name, "default": f.default, "choices": choices,
                         "doc": f.metadata["doc"]})
     return {"options": options, "name": {"prefix": "dynacam", "words": NAME_WORDS,
-                                         "flags": [list(f) for f in NAME_FLAGS], "separator": "_"}}
+                                         "flags": [list(f) for f in NAME_FLAGS], "separator": "_"},
+            "excludes": [list(e) for e in EXCLUDES]}
 
 
 def _p(name, default, unit, doc, low=0.0, open_low=True, high=float("inf")):
@@ -189,6 +215,8 @@ F_0 = _p("F_0", 100.0, "N", "follower spring preload at x = 0 (6.45)", open_low=
 c_s = _p("c_s", 1.0e4, "N/m", "follower spring stiffness (6.45)", open_low=False)
 F_ex = _p("F_ex", 0.0, "N", "constant external force on the output, positive along x (6.46)",
           low=-1e9, open_low=False)
+d_p = _p("d_p", 0.12, "m", "rocker: distance from the cam centre to the arm's pivot")
+l_a = _p("l_a", 0.09, "m", "rocker: arm length from the pivot to the roller centre")
 
 GAP_MIN = sp.Rational(1, 10**12)
 """Smallest squeeze gap [m or rad]: the film never closes in exact arithmetic, but a step may
@@ -254,7 +282,8 @@ class _Cam:
     B: object        # cam angle over the rise angle (6.17)
     h: object        # cam law h(beta)
     R: object        # pitch radius (6.21)
-    tan_a: object    # cam slope (6.20)
+    tan_a: object    # cam slope (6.20); a rocker's i_y
+    i_z: object      # ratio of the contact's displacement to z: 1, or a rocker's
     h_c: object      # contact point displacement (6.22)
     dhc: list        # dh_c/dq per coordinate, for the contact force's work
     hc_rate: object  # h_c' (6.23), (6.26)
@@ -278,13 +307,49 @@ def _cam(opts: Options, P: dict, coords, beta, y, z) -> _Cam:
     B = (beta - P["beta_0"]) / P["beta_m"]
     h = P["h_m"] * H(B)
     dh = sp.diff(h, beta)
-    R = P["R_b"] + h if opts.cam == "radial" else P["R_b"]
-    tan_a = dh / R
-    h_c = h - y * tan_a - z                       # (6.22)
+    if opts.rocker:
+        R, tan_a, i_z = _rocker(P, h, dh)
+    else:
+        R = P["R_b"] + h if opts.cam == "radial" else P["R_b"]
+        tan_a, i_z = dh / R, sp.Integer(1)
+    h_c = h - y * tan_a - z * i_z                 # (6.22)
     q_funcs = [c(t) for c in coords]
     dhc = [sp.diff(h_c, qq) for qq in q_funcs]
     hc_rate = sum(g * qq.diff(t) for g, qq in zip(dhc, q_funcs))   # (6.23), (6.26)
-    return _Cam(B, h, R, tan_a, h_c, dhc, hc_rate)
+    return _Cam(B, h, R, tan_a, i_z, h_c, dhc, hc_rate)
+
+
+def _rocker(P: dict, h, dh):
+    """A rocker's pitch radius R and the ratios i_y, i_z that (6.22) takes for tan(alpha) and 1.
+
+    Frame: the cam centre at the origin, z towards the roller centre at the rise start (on
+    the base pitch circle R_b), y square to it, the cam turning counter-clockwise in (y, z)
+    (its surface at that point moving towards -y).  The pivot lies at distance d_p from the
+    cam centre and l_a from that roller centre, on the side y < 0 that the cam's surface
+    moves towards (the rocker of runtime/cam/follower.py, whose pressure angle this one's
+    equals); the roller centre is C(h) = pivot + l_a (cos phi, sin phi), phi = phi_0 + h/l_a,
+    so that h, the output reduced to the roller's arc (sec. 2.4), rises as the roller moves
+    out; e_t = dC/dh.  The
+    pitch curve's normal there is n = J (e_t h' - J C) (J: +90 deg), its tangent being the
+    roller centre's velocity relative to the cam per unit beta.  A shaft deflection moves the
+    cam by y e_y - z e_z (the signs of (6.22)); the roller stays on the pitch curve if it
+    moves along its arc by -(y e_y.n - z e_z.n)/(e_t.n) to first order, so
+
+        i_y = -(e_y.n)/(e_t.n),    i_z = (e_z.n)/(e_t.n),
+
+    tan(alpha) = h'/R and 1 for the translating follower (C = (0, R_b + h), e_t = e_z)."""
+    Rb, d, l = P["R_b"], P["d_p"], P["l_a"]
+    pz = (d**2 - l**2 + Rb**2) / (2 * Rb)
+    py = -sp.sqrt(d**2 - pz**2)
+    c0, s0 = -py / l, (Rb - pz) / l               # cos, sin of phi_0
+    cph = c0 * sp.cos(h / l) - s0 * sp.sin(h / l)
+    sph = s0 * sp.cos(h / l) + c0 * sp.sin(h / l)
+    # e_t = (-sin phi, cos phi), C = pivot + l (cos phi, sin phi), n = (C_y - h' cos phi,
+    # C_z - h' sin phi); e_t.n = p_z cos phi - p_y sin phi, the h' terms cancelling
+    den = pz * cph - py * sph
+    i_y = (cph * (dh - l) - py) / den
+    i_z = (pz + sph * (l - dh)) / den
+    return sp.sqrt((py + l * cph)**2 + (pz + l * sph)**2), i_y, i_z
 
 
 def _drive(opts: Options, parts: _Parts):
@@ -487,15 +552,17 @@ def _common_outputs(opts: Options, P: dict, cam: _Cam, M, Fx, beta, y, x) -> lis
         Output("Fx", Fx, "N", "force between cam and follower linkage (6.42)"),
         Output("speed_var", (beta.diff(t) - (y.diff(t) / cam.R if opts.shaft_y else 0)) / P["omega_s"] - 1,
                "1", "variation of the fictitious angular velocity seen by the roller (2.54)"),
-        Output("tan_alpha", cam.tan_a, "1", "cam slope (6.20)"),
-    ]
+        Output("tan_alpha", cam.tan_a, "1", "cam slope (6.20); a rocker's ratio i_y (_rocker)"),
+    ] + ([Output("i_z", cam.i_z, "1", "a rocker's ratio of the contact's displacement to z (_rocker)")]
+         if opts.rocker else [])
 
 
 def build(opts: Options = Options()) -> Model:
     """The DYNACAM variant with the elements ``opts`` selects (thesis ch. 6)."""
     coords, beta, y, z, x = _coordinates(opts)
     parts = _Parts([h_m, beta_m, beta_0, R_b, omega_s, J, k, q_b, m_x, c_x, q_x]
-                   + ([m_y, c_y, q_y] if opts.shaft_y else []) + ([m_z, c_z, q_z] if opts.shaft_z else []))
+                   + ([m_y, c_y, q_y] if opts.shaft_y else []) + ([m_z, c_z, q_z] if opts.shaft_z else [])
+                   + ([d_p, l_a] if opts.rocker else []))
     cam = _cam(opts, parts.P, coords, beta, y, z)
     phi, phi_rate, dw = _drive(opts, parts)
     M = _gear(opts, parts, phi, phi_rate, beta)
@@ -523,4 +590,5 @@ def build(opts: Options = Options()) -> Model:
         residual=Residual(error="U", acceleration="Xdd", rise_end=1.0, rise_state="B"),
         options=opts.items(),
         variant=opts.description(),
+        expand_forces=not opts.rocker,
     )

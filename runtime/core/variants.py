@@ -32,10 +32,17 @@ def _items(self) -> tuple:
     return tuple(sorted(asdict(self).items()))
 
 
+def _toml(value) -> str:
+    return json.dumps(value)       # as a scene file writes it: true, "axial"
+
+
 def _post_init(self):
     for key, allowed in CHOICES.items():
         if getattr(self, key) not in allowed:
             raise ValueError(f"option {key}={getattr(self, key)!r}: choose one of {', '.join(allowed)}")
+    for key, value, other, other_value, why in _DYN.get("excludes", ()):
+        if getattr(self, key) == value and getattr(self, other) == other_value:
+            raise ValueError(f"option {key}={_toml(value)} with {other}={_toml(other_value)}: {why}")
 
 
 Options = make_dataclass(

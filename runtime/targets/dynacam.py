@@ -53,6 +53,16 @@ def characteristics(opts, p: dict) -> dict:
     return out
 
 
+def rocker_check(p: dict) -> None:
+    """A rocker's arm must reach the base pitch circle: |d_p - l_a| < R_b < d_p + l_a (the
+    triangle cam centre, pivot, roller centre at the rise start; derive/models/dynacam.py)."""
+    d, l, r = p["d_p"], p["l_a"], p["R_b"]
+    if not abs(d - l) < r < d + l:
+        raise CamdynInputError(
+            f"rocker: the arm l_a = {l:g} m pivoted at d_p = {d:g} m cannot reach the base pitch "
+            f"circle R_b = {r:g} m; it needs |d_p - l_a| < R_b < d_p + l_a")
+
+
 def _characteristics(opts, p: dict) -> dict:
     c_x, m_x = p["c_x"], p["m_x"]
     if opts.shaft_z:
@@ -183,6 +193,8 @@ def placed(scene: DynacamScene) -> tuple[dict, dict, float]:
     (4.3)-(5.52), the run's end in time) of a scene."""
     params = dict(scene.parameters)
     params["beta_0"] = -scene.T_start * params["beta_m"]
+    if getattr(scene.options, "rocker", False):
+        rocker_check(params)
     ch = characteristics(scene.options, params)
     return params, ch, (scene.T_end - scene.T_start) * ch["t_m"]
 
