@@ -367,3 +367,32 @@ def test_a_shaped_rise_designs_as_the_law_it_reproduces(capsys, tmp_path):
     table, cycloid = answer(str(tmp_path / "cycloid.csv")), answer("cycloidal")
     assert table["check_run"]["U0"] == pytest.approx(cycloid["check_run"]["U0"], rel=1e-6)
     assert any("the table fixes H" in w for w in table["warnings"])
+
+
+def test_a_rocker_designs_at_its_roller_by_the_reduction_of_sec_2_4(capsys):
+    """`--swing 18 --arm-length 0.08 --arm-inertia 0.0039 --arm-stiffness 12800` is the design
+    at the roller centre's arc: the same JSON, bit for bit, as the stroke l Phi (2.55), the
+    mass J/l^2 (2.56) and the stiffness k_t/l^2 (2.57) given by hand (README's rocker, step
+    1); the options that clash are refused in one line each."""
+    common = ["--cam-angle", "120deg", "--speed", "300", "--fa", "0", "--accuracy", "2e-5",
+              "--no-check", "--json", "--quiet"]
+    l, phi, J, k_t = 0.08, 18.0, 0.0039, 12800.0
+    answers = []
+    for args in (["--stroke", repr(l * math.radians(phi)), "--mass", repr(J / l**2),
+                  "--stiffness", repr(k_t / l**2)],
+                 ["--swing", "18", "--arm-length", "0.08", "--arm-inertia", "0.0039",
+                  "--arm-stiffness", "12800"]):
+        assert main(["design", *args, *common]) == 0
+        answers.append(json.loads(capsys.readouterr().out))
+    assert answers[0] == answers[1]
+    assert answers[1]["machine"]["tau"] == pytest.approx(0.0520, abs=1e-4)
+    for args, words in ((["--swing", "18"], "a rocker needs --swing and --arm-length"),
+                        (["--swing", "18", "--arm-length", "0.08", "--stroke", "0.02"],
+                         "a rocker's stroke is its arc"),
+                        (["--swing", "18", "--arm-length", "0.08", "--arm-inertia", "0.0039",
+                          "--mass", "0.6"], "not both"),
+                        (["--swing", "200", "--arm-length", "0.08"], "0 < swing < 180"),
+                        ([], "the stroke of the output member is required")):
+        assert main(["design", *args, *common[:-2]]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and words in err[0], err

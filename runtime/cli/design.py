@@ -21,7 +21,17 @@ PROG = "camdyn design"
 def add(sub):
     ds = sub.add_parser("design", help=HELP)
     a = ds.add_argument
-    a("--stroke", type=float, required=True, metavar="M", help="h_m', stroke of the output member (m)")
+    a("--stroke", type=float, default=None, metavar="M",
+      help="h_m', stroke of the output member (m); for a rocker, --swing and --arm-length instead")
+    a("--swing", type=float, default=None, metavar="DEG",
+      help="a rocker's swing Phi (deg): the design is made at its roller centre's arc, the "
+           "stroke l Phi, as sec. 2.4 reduces a linkage (with --arm-length)")
+    a("--arm-length", type=float, default=None, metavar="M",
+      help="a rocker's arm l, pivot to roller centre (m)")
+    a("--arm-inertia", type=float, default=None, metavar="KG_M2",
+      help="a rocker's inertia about its pivot (kg m^2): the mass J/l^2 at the roller (2.56)")
+    a("--arm-stiffness", type=float, default=None, metavar="NM_RAD",
+      help="a rocker's torsional stiffness at its pivot (N m/rad): c_c = k_t/l^2 at the roller (2.57)")
     a("--rise-time", type=float, default=None, metavar="S", help="t_m, cam rise time (s)")
     a("--cam-angle", default=None, metavar="RAD",
       help="beta_m, cam angle of the rise: rad, or degrees as '100deg' (with --speed)")
@@ -83,20 +93,38 @@ def add(sub):
     return ds
 
 
+def _follower(args, machine) -> tuple:
+    """(stroke, mass, stiffness) at the output: as given, or a rocker's at its roller."""
+    rocker = {"--swing": args.swing, "--arm-length": args.arm_length,
+              "--arm-inertia": args.arm_inertia, "--arm-stiffness": args.arm_stiffness}
+    given = [flag for flag, v in rocker.items() if v is not None]
+    if not given:
+        if args.stroke is None:
+            raise ValueError("argument --stroke: the stroke of the output member is required "
+                             "(m), or a rocker's --swing and --arm-length")
+        return args.stroke, args.mass, args.stiffness
+    if args.swing is None or args.arm_length is None:
+        raise ValueError(f"argument {given[0]}: a rocker needs --swing and --arm-length")
+    return machine.rocker(swing_deg=args.swing, arm_length=args.arm_length, stroke=args.stroke,
+                          inertia=args.arm_inertia, mass=args.mass,
+                          torsional_stiffness=args.arm_stiffness, stiffness=args.stiffness)
+
+
 def run(args) -> int:
     from camdyn.thesis.design import machine, method, motor_sizing
 
     say = (lambda msg: print(f"{PROG}: {msg}", file=sys.stderr, flush=True))
     try:
+        stroke, mass, stiffness = _follower(args, machine)
         out_folder(args.out, files=method.FILES)       # the user's own: refused before the runs
         motor = motor_sizing.settings(
             motor_rpm=args.motor_rpm, motor_tm=args.motor_tm, slip_limit=args.slip_limit,
             rated_slip=args.rated_slip, motor_tel=args.motor_tel,
             gear_efficiency=args.gear_efficiency, worm=args.worm, spring=args.spring)
         result = method.design(
-            stroke=args.stroke, rise_time=args.rise_time,
-            cam_angle_rad=machine.cam_angle(args.cam_angle), speed=args.speed, mass=args.mass,
-            stiffness=args.stiffness, tau=args.tau, Fa=args.fa, c_tan=args.c_tan,
+            stroke=stroke, rise_time=args.rise_time,
+            cam_angle_rad=machine.cam_angle(args.cam_angle), speed=args.speed, mass=mass,
+            stiffness=stiffness, tau=args.tau, Fa=args.fa, c_tan=args.c_tan,
             pitch_radius=args.pitch_radius, ratio=args.ratio, tan_alpha_me=args.tan_alpha_me,
             accuracy=args.accuracy, residual_acceleration=args.residual_acceleration,
             law=args.law, theta=args.theta, common_shaft=args.common_shaft, motor_args=motor,

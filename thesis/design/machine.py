@@ -36,6 +36,31 @@ def positive(name: str, flag: str, value, unit: str, upper: float | None = LARGE
     return v
 
 
+def rocker(*, swing_deg, arm_length, stroke=None, inertia=None, mass=None,
+           torsional_stiffness=None, stiffness=None) -> tuple:
+    """(stroke, mass, stiffness) of a rocker reduced to its roller centre's arc, as sec. 2.4
+    reduces a linkage with the ratio l (the arm) from the swing to the arc: h_m' = l Phi
+    (2.55), m = J/l^2 (2.56), c = k_t/l^2 (2.57), J the arm's inertia about the pivot and
+    k_t its torsional stiffness there.  The one- and two-DOF models take the rocker so: their
+    cam slope is the law's for any follower reduced to its output.  A quantity given at the
+    roller already (mass, stiffness) is taken as it is; the stroke must not be given too."""
+    Phi = positive("swing", "--swing", swing_deg, "deg", upper=180.0)
+    l = positive("l", "--arm-length", arm_length, "m")
+    if stroke is not None:
+        raise CamdynInputError("argument --stroke: a rocker's stroke is its arc, --arm-length x "
+                               "--swing; give one or the other")
+    for name, at_pivot, at_roller, flag in (("inertia", inertia, mass, "--arm-inertia"),
+                                            ("stiffness", torsional_stiffness, stiffness,
+                                             "--arm-stiffness")):
+        if at_pivot is not None and at_roller is not None:
+            raise CamdynInputError(f"argument {flag}: the arm's {name} about the pivot or the "
+                                   f"{name} at the roller, not both")
+    J = positive("J", "--arm-inertia", inertia, "kg m^2")
+    k_t = positive("k_t", "--arm-stiffness", torsional_stiffness, "N m/rad")
+    return (l * math.radians(Phi), mass if J is None else J / l**2,
+            stiffness if k_t is None else k_t / l**2)
+
+
 def cam_angle(text) -> float:
     """beta_m in rad from '1.745' (rad) or '100deg' (degrees)."""
     if text is None:
