@@ -489,7 +489,7 @@ cdef inline Py_ssize_t _sample(Rec* r, double tq, Py_ssize_t i, int which, int k
 cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step, int n_cand,
                   const double* cache, int stride, double* value, double* at,
                   double* sampling, const double* st=NULL, const double* sv=NULL,
-                  Py_ssize_t n_samples=0) noexcept nogil:
+                  Py_ssize_t n_samples=0, double htol=0.0) noexcept nogil:
     """The largest score on [a, b] (module doc); value (v for kinds 1, 2; |v| for 0, 3) and
     its time into value/at, and into ``sampling`` the estimate of the error the scan leaves:
     how far a peak not refined may rise above the value, its parabola's vertex raised by the
@@ -576,6 +576,17 @@ cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step,
     # peaks beyond the PEAKS kept, unverified
     if S.P.dropped + 3.0 * miss - S.best > sampling[0]:
         sampling[0] = S.P.dropped + 3.0 * miss - S.best
+    # a cubic Hermite scan off by more than htol (0: 1e-9 of the extreme) is no scan to
+    # trust: the left-out steps of [a, b] are made and the scan is made again on them, as a
+    # run that made its dense output scans it (large steps; small ones keep their Hermite)
+    if r.n_hermite > 0 and hmiss > (htol if htol > 0.0 else 1e-9 * fabs(S.best)):
+        i = _step_of(r, a)
+        while i + 1 < r.n and _t(r, i) < b:
+            if _left_out(r, i):
+                _fill(r, i)
+            i += 1
+        return _extreme(r, which, a, b, kind, per_step, n_cand, cache, stride, value, at,
+                        sampling, st, sv, n_samples, htol)
     value[0] = -S.best if kind >= 2 else S.best
     at[0] = S.best_t
     return <int> (S.n if S.n < 2147483647 else 2147483647)
@@ -867,11 +878,13 @@ cdef class _View:
 
 def extreme(object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows, modes,
             int ns, int nx, int which, double a, double b, bint absolute, bint minimum,
-            int per_step=12, int n_cand=1, part=None):
+            int per_step=12, int n_cand=1, part=None, double hermite_tol=0.0):
     """(value, time, sampling error, calls) of the extreme of state/output ``which`` (outputs
     after the ns states) on [a, b] of a recorded run (rows as Result keeps them); see the
     module doc and _extreme.  ``calls``: the right-hand-side calls made filling in the DOP853
-    dense output the run left out, in place in ``rows`` where they are writable.  ``part``: a
+    dense output the run left out, in place in ``rows`` where they are writable; its scan
+    reads the cubic Hermite interpolant there while that is off by at most ``hermite_tol``
+    at the peaks (0: 1e-9 of the extreme), else it makes them all.  ``part``: a
     constrained model's coordinate partition (Ctx.part), None for the declared one; so in
     the other functions of a recorded run."""
     if per_step < 1:
@@ -882,7 +895,8 @@ def extreme(object capsule, double[::1] p, int[::1] law, double[::1] law_par, ro
     if v.r.n == 0:
         raise ValueError("empty record")
     with nogil:
-        _extreme(&v.r, which, a, b, kind, per_step, n_cand, NULL, 1, &value, &at, &sampling)
+        _extreme(&v.r, which, a, b, kind, per_step, n_cand, NULL, 1, &value, &at, &sampling,
+                 NULL, NULL, 0, hermite_tol)
     return value, at, sampling, v.r.n_fill
 
 
@@ -1284,7 +1298,7 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
                    Py_ssize_t cap=4096, bint exact=False, const double[:, ::1] atol_rows=None,
                    const int[::1] part=None, const int[::1] sample_which=None,
                    const double[:, :, ::1] sample_t=None, double[:, :, ::1] sample_v=None,
-                   bint dense=True):
+                   bint dense=True, const double[::1] hermite_tol=None):
     """Run every parameter set (rows of P, initial states Y0, stop tables, h_max per run) and
     find extreme k of each run as :func:`extreme` finds it on a recorded run (the same scan,
     refinement and sampling check, so the same bits): state or output ``which[k]`` on
@@ -1299,7 +1313,8 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
     time is NaN or outside the run): what a figure needs of a record besides its extremes
     (runtime/measure/modes.py amplitude_bound).  ``dense`` False: DOP853 leaves its dense
     output out but where an event crosses, and the figures make it where they want it, as a
-    Simulator's run with dense_output False and its Result.  No GIL is held while it runs.
+    Simulator's run with dense_output False and its Result (``hermite_tol[k]`` as
+    :func:`extreme` takes it; None: 0).  No GIL is held while it runs.
 
     A run that fails leaves its status (runtime/driver.STATUS_TEXT) and NaN figures."""
     cdef ModelC* m = _chunk_model(capsule, method, P, Y0, atol, modes0)
@@ -1324,6 +1339,9 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
         raise ValueError("mode_col must name a mode, with first_in_mode one value per run")
     if atol_rows is not None and (atol_rows.shape[0] != n or atol_rows.shape[1] != ns):
         raise ValueError("atol_rows: one absolute tolerance per state and run")
+    if hermite_tol is not None and hermite_tol.shape[0] != nf:
+        raise ValueError("hermite_tol: one per figure")
+    cdef const double* htol = NULL if hermite_tol is None else &hermite_tol[0]
     cdef Py_ssize_t n_sets = 0 if sample_which is None else sample_which.shape[0], n_times = 0
     if n_sets:
         if (sample_t is None or sample_v is None or sample_t.shape[0] != n
@@ -1389,7 +1407,7 @@ def sweep_extremes(object capsule, int method, int[::1] law, double[::1] law_par
                 if not (_t(&rec, 0) <= a <= b <= _t(&rec, rec.n - 1)):
                     continue
                 _extreme(&rec, which[k], a, b, kind[k], per_step[k], n_cand[k], NULL, 1, &v, &t,
-                         &samp)
+                         &samp, NULL, NULL, 0, 0.0 if htol == NULL else htol[k])
                 value[g, k] = v
                 at[g, k] = t
                 sampling[g, k] = samp

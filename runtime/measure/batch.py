@@ -28,6 +28,10 @@ class Wanted:
     minimum: bool
     per_step: int = 12
     candidates: int = 1
+    hermite_tol: float = 0.0
+    """How far the cubic Hermite interpolant may be off at the peaks for the scan to read it
+    in steps whose DOP853 dense output the run left out (0: 1e-9 of the extreme); beyond,
+    those steps are made (runtime/engine/finder.pyx, _extreme)."""
 
     @property
     def kind(self) -> int:
@@ -109,6 +113,7 @@ def run_batch(sim: Simulator, P: np.ndarray, Y0: np.ndarray, t_end: np.ndarray,
         value, at, samp, stats, t_stiff, col, val, first, exact=sim.exact_segments,
         atol_rows=None if atol is None else np.ascontiguousarray(atol, dtype=float),
         part=sim.part, sample_which=which_s, sample_t=T_s, sample_v=V_s,
-        dense=sim.integrator.dense)
+        dense=sim.integrator.dense,
+        hermite_tol=np.array([w.hermite_tol for w in wanted], dtype=float))
     return Runs(value, at, samp, {k: stats[:, i] for i, k in enumerate(finder.RUN_STATS)},
                 t_stiff, first, V_s)

@@ -68,12 +68,15 @@ def record(result: Result) -> tuple:
 
 
 def extreme(result, name: str, a: float, b: float, *, absolute: bool, minimum: bool,
-            per_step: int = 12, candidates: int = 1) -> Extreme:
+            per_step: int = 12, candidates: int = 1, hermite_tol: float = 0.0) -> Extreme:
     """Refined extreme of state or output ``name`` on [a, b], in compiled code.
 
     ``per_step`` samples in every recorded step, then the best sample (``candidates`` = 1,
     as :func:`extreme_reference`) or the best ``candidates`` peaks are refined by Brent's
-    bounded minimizer on the dense output, then the sampling check (module doc).  A run of
+    bounded minimizer on the dense output, then the sampling check (module doc); where a
+    DOP853 run left its dense output out, the scan reads the cubic Hermite interpolant
+    there while that is off by at most ``hermite_tol`` at the peaks (0: 1e-9 of the
+    extreme), and else makes it (runtime/engine/finder.pyx, _extreme).  A run of
     another integrator that only offers ``sample`` (SciPy's, runtime/studies/peers.py) goes
     through :func:`extreme_reference`."""
     if not isinstance(result, Result):
@@ -87,7 +90,8 @@ def extreme(result, name: str, a: float, b: float, *, absolute: bool, minimum: b
                                "in 1..16")
     value, at, sampling, calls = finder.extreme(*record(result), column(result, name), float(a),
                                                   float(b), absolute, minimum, per_step,
-                                                  candidates, part=result.part)
+                                                  candidates, part=result.part,
+                                                  hermite_tol=float(hermite_tol))
     result.count_dense_calls(calls)
     return Extreme(float(value), float(at), float(sampling))
 
