@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:da3fea6a35c0185892d77ee9a39fc1785a573ced969646d21903a01d66c9b49d
-# Text hash: sha256:7d3f9f784cfe340f85cbde2750da4c5999edde44d68d8ce8ee70eeb59c323225
+# Derivation key: sha256:cd427e78406d15ae8eea1f73091390b6bdd7349c44036ea95c98cd9abea61bea
+# Text hash: sha256:a5ca7f0f538c8dd7477b5de8995412e2f6de7fa280ae20c0e3510bbefa7785bc
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:68e68d37fe18dbc047dbaa595bb4362ad372688257640253b999b22ed8848371
+# Source hash: sha256:3c9999d10aad99ab4016f49977021c5ebc9d69346a37ce5845ced113f0547258
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = no: no follower spring
 #   external = no: no external force
+#   flat_face = no: a roller on the cam
 #   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
@@ -43,7 +44,9 @@
 #   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
 #   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
-#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
+#   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
+#   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
+#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1143,6 +1146,10 @@ _MANIFEST_JSON = """
    false
   ],
   [
+   "flat_face",
+   false
+  ],
+  [
    "gear",
    "backlash"
   ],
@@ -1217,7 +1224,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1450,7 +1457,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:68e68d37fe18dbc047dbaa595bb4362ad372688257640253b999b22ed8848371",
+ "source_hash": "sha256:3c9999d10aad99ab4016f49977021c5ebc9d69346a37ce5845ced113f0547258",
  "states": [
   {
    "doc": "cam angle",

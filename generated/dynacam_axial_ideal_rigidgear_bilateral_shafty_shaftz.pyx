@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fc28515d5603f99d26e41521ecc71a319dbbf4e8c0386dd3df13991a8f2acda0
-# Text hash: sha256:9ce86fad81dc46134c6a0a3b8ba40905f4c241ac874ddc0e277e6aff34400e67
+# Derivation key: sha256:92a882ab7fcffd582d895074afeab7e7890ee46a3653bb92a960bb029f4918aa
+# Text hash: sha256:98aabfd4fc9665fa0f3b8f5dbc4e78b3b927286f00d8483f1042b5ba681a6ed9
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:af3e67c26a5f7d34b988ffb487b0ec831363b82ad18c9a52f06db84d96a0118f
+# Source hash: sha256:1c10ae9f75c567f8e59a43f01a8cbf1f24ed80510fb93da650e386052dce02f8
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = no: no follower spring
 #   external = no: no external force
+#   flat_face = no: a roller on the cam
 #   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
@@ -43,7 +44,9 @@
 #   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
 #   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
-#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
+#   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
+#   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
+#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1534,6 +1537,10 @@ _MANIFEST_JSON = """
    false
   ],
   [
+   "flat_face",
+   false
+  ],
+  [
    "gear",
    "rigid"
   ],
@@ -1608,7 +1615,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
    "name": "tan_alpha",
    "unit": "1"
   }
@@ -1809,7 +1816,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:af3e67c26a5f7d34b988ffb487b0ec831363b82ad18c9a52f06db84d96a0118f",
+ "source_hash": "sha256:1c10ae9f75c567f8e59a43f01a8cbf1f24ed80510fb93da650e386052dce02f8",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1c6653ee3dd4e29bd33037c93392191fd3f124656b5ee31777732c339e14e71d
-# Text hash: sha256:aa82a536af5ba28d7d0aece9f1230f250c3c216b5d25d5f2b5b43e59c4c0973b
+# Derivation key: sha256:6c0bcbf5a86d372ad4c178c7885abc26192466bbc3c1f8faefe46c138b12ef7b
+# Text hash: sha256:995f76fe03e7d649239751320b4a4af62e3a13773973d0c81038f9eaacc47cf8
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:3a77f222ea282d05a9ff5e933fced29c6c3656b3f5584a65b30e654a78c6529b
+# Source hash: sha256:bafca496141adcd4bdf8c4cdb539759bbee6a37463a241613d04ccd813506da3
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = no: no follower spring
 #   external = no: no external force
+#   flat_face = no: a roller on the cam
 #   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
@@ -43,7 +44,9 @@
 #   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
 #   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
-#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
+#   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
+#   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
+#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -2273,6 +2276,10 @@ _MANIFEST_JSON = """
    false
   ],
   [
+   "flat_face",
+   false
+  ],
+  [
    "gear",
    "rigid"
   ],
@@ -2347,7 +2354,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
    "name": "tan_alpha",
    "unit": "1"
   }
@@ -2548,7 +2555,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:3a77f222ea282d05a9ff5e933fced29c6c3656b3f5584a65b30e654a78c6529b",
+ "source_hash": "sha256:bafca496141adcd4bdf8c4cdb539759bbee6a37463a241613d04ccd813506da3",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:5e62c0fbf00c15942d22b262af7e5008225247140bbd0c2e76790ab8d8399845
-# Text hash: sha256:e09c002136893f02601e320764cfd9e366a1827572227b3f46fb2a1b9b78a1dd
+# Derivation key: sha256:683479b29ab702108862023404b8438b054b38cc830b8ad3f7361896bde13921
+# Text hash: sha256:4bdd1036a90bea2a87c1570073be7a90a2d5dc6b0c85e0644b557821dcd04702
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:87c65c06bf59c67f4770fd3ab4457dd60daa8a7112503b5bd9b613c7e00b1ecc
+# Source hash: sha256:90855ab2d1492308a75f4fcead6f479be0222dc20e253d7490e73640328f5f77
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = yes: Coulomb friction in the follower linkage (6.43)
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
+#   flat_face = no: a roller on the cam
 #   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
@@ -43,7 +44,9 @@
 #   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
 #   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
-#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
+#   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
+#   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
+#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1582,6 +1585,10 @@ _MANIFEST_JSON = """
    false
   ],
   [
+   "flat_face",
+   false
+  ],
+  [
    "gear",
    "rigid"
   ],
@@ -1656,7 +1663,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1906,7 +1913,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:87c65c06bf59c67f4770fd3ab4457dd60daa8a7112503b5bd9b613c7e00b1ecc",
+ "source_hash": "sha256:90855ab2d1492308a75f4fcead6f479be0222dc20e253d7490e73640328f5f77",
  "states": [
   {
    "doc": "cam angle",

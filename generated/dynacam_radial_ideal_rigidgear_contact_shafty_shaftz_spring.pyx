@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1f87dedc0002442a7ebadc2d9af747c440fc9dae443e9d49fbfad9bc73a37c9f
-# Text hash: sha256:14f3d8260620e7edba5ff897daf79d707b229cec3fd094cef1c0a8c6af3dae57
+# Derivation key: sha256:4d91182e7a821b19878d9727ed785f637d8c88a3af7836ecc1523b8e07c29601
+# Text hash: sha256:122adae75c223f9f8ebe4fa3fe9d392c5ecb2138daeb8e5c6e6168315425ba40
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:8c86086d638c2dea7ee77829aef3689feb77d5ae95d059a9733cfa4b30aabf18
+# Source hash: sha256:ac99bb20d8d3e29493c8d1c1ca3e1b213f76a0c44b5bba217d27184cc6a5c054
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
+#   flat_face = no: a roller on the cam
 #   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
@@ -43,7 +44,9 @@
 #   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
 #   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
-#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
+#   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
+#   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
+#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1239,6 +1242,10 @@ _MANIFEST_JSON = """
    false
   ],
   [
+   "flat_face",
+   false
+  ],
+  [
    "gear",
    "rigid"
   ],
@@ -1313,7 +1320,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1541,7 +1548,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:8c86086d638c2dea7ee77829aef3689feb77d5ae95d059a9733cfa4b30aabf18",
+ "source_hash": "sha256:ac99bb20d8d3e29493c8d1c1ca3e1b213f76a0c44b5bba217d27184cc6a5c054",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8117ee55be86201fffa24005811988a30a529c8b7633c977a2a5e8032593d5c3
-# Text hash: sha256:7b0d61591406762d3d308b546354e8b8948efe2315687af444cc472c174afce6
+# Derivation key: sha256:8a225238e7c30be484cbfe2e7ef7b9c7e411c7f6b9c180fd822e009c60992ea3
+# Text hash: sha256:6e1c08bf154dd938b2051d3b2c98ff6d57ab4964a7dfd63deb3cad1bd35f9ace
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:099ecdb45274c0ea075173a753ed70904aff2555feed0d2e61798fb22340e101
+# Source hash: sha256:5e931cc70641a6e6e06b74cf5c45a2f079ba26f6ee003c39989f5c0b2ca2babe
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
+#   flat_face = no: a roller on the cam
 #   rocker = yes: oscillating roller follower (rocker), reduced to the roller centre's arc
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
@@ -43,7 +44,9 @@
 #   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
 #   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
-#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
+#   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
+#   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
+#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1499,6 +1502,10 @@ _MANIFEST_JSON = """
    false
   ],
   [
+   "flat_face",
+   false
+  ],
+  [
    "gear",
    "rigid"
   ],
@@ -1573,7 +1580,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1828,7 +1835,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:099ecdb45274c0ea075173a753ed70904aff2555feed0d2e61798fb22340e101",
+ "source_hash": "sha256:5e931cc70641a6e6e06b74cf5c45a2f079ba26f6ee003c39989f5c0b2ca2babe",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b86b5ade984199add7ab277fd720b27f0a3e10df5ee2c22db2debc301e4b3402
-# Text hash: sha256:48e09ce0d4c3545c023567e43b32ee13da7a82a9863d2ba306ee2dcef4abeda6
+# Derivation key: sha256:baae648355b3d9d8c55f49ea04baf089460573007c9c48c8f48c144d8214c286
+# Text hash: sha256:9b6ffc9eb2004b6c1adfb48a8c5ca0d920aea6e24089760063a1185dc4a34ecb
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:71757a68a2a2eeb9bea63c63a6c5431d50788facaa053bcb997a3d91dcf177df
+# Source hash: sha256:dc19a33dacebd54f653d2bbdaa0664175c2e0a8f776a9c069bd9cd9ef1c7fbb0
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -19,6 +19,7 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
+#   flat_face = no: a roller on the cam
 #   rocker = no: translating roller follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
@@ -43,7 +44,9 @@
 #   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
 #   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
-#   they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
+#   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
+#   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
+#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1455,6 +1458,10 @@ _MANIFEST_JSON = """
    false
   ],
   [
+   "flat_face",
+   false
+  ],
+  [
    "gear",
    "rigid"
   ],
@@ -1529,7 +1536,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker)",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1822,7 +1829,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:71757a68a2a2eeb9bea63c63a6c5431d50788facaa053bcb997a3d91dcf177df",
+ "source_hash": "sha256:dc19a33dacebd54f653d2bbdaa0664175c2e0a8f776a9c069bd9cd9ef1c7fbb0",
  "states": [
   {
    "doc": "cam angle",

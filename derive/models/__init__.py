@@ -32,6 +32,9 @@ DYNACAM_VARIANTS = (
     dynacam.Options(roller="contact", spring=True),
     # a spring-held rocker: the designer's oscillating roller follower (sec. 2.4 reduction)
     dynacam.Options(roller="contact", spring=True, rocker=True),
+    # a spring-held flat face, and the roller on a shaft rigid sideways that it equals
+    dynacam.Options(roller="contact", spring=True, flat_face=True),
+    dynacam.Options(roller="contact", spring=True, shaft_y=False),
     # the same with Coulomb friction on the cam and in the linkage (6.13), (6.43): tests/test_nonsmooth.py
     dynacam.Options(roller="contact", spring=True, cam_friction=True, linkage_friction=True),
     # the indexing mechanism of fig. 7.1 (scenes/indexing.toml): an axial (globoidal) cam at

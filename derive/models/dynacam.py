@@ -20,7 +20,9 @@ The nonsmooth laws are force elements with modes and events:
   R_b (axial) (6.21).  On a rocker (option ``rocker``, a radial cam) h is the roller
   centre's arc l_a psi and the same first-order reasoning gives h_c = h - y i_y - z i_z
   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
-  they are tan(alpha) and 1, (6.22) again.  The linkage spring-damper (c_x, d_x) carries
+  they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
+  (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
+  the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -77,6 +79,8 @@ class Options:
     linkage_friction: bool = _opt(False, "Coulomb friction in the follower linkage (6.43)")
     spring: bool = _opt(False, "follower spring with preload (6.45)")
     external: bool = _opt(False, "constant external force on the output (6.46)")
+    flat_face: bool = _opt(False, "translating flat-faced follower, the face square to its motion "
+                                  "(radial cam)")
     rocker: bool = _opt(False, "oscillating roller follower on an arm l_a pivoted at d_p from the cam "
                                "centre, reduced to the roller's arc (sec. 2.4; radial cam)")
 
@@ -115,6 +119,12 @@ class Options:
 EXCLUDES = (
     ("rocker", True, "cam", "axial", "a rocker is derived for a radial cam; an axial cam drives a "
                                      "translating follower"),
+    ("flat_face", True, "cam", "axial", "a flat face is derived for a radial cam"),
+    ("flat_face", True, "rocker", True, "an oscillating flat face is not derived"),
+    ("flat_face", True, "roller", "groove", "a flat face cannot run in a groove"),
+    ("flat_face", True, "roller", "groove-squeeze", "a flat face cannot run in a groove"),
+    ("flat_face", True, "cam_friction", True, "the friction on the cam (6.13) is written for a "
+                                              "roller"),
     ("rocker", True, "cam_friction", True, "the friction on the cam (6.13) is written for the "
                                            "translating follower only"),
 )
@@ -134,7 +144,7 @@ NAME_WORDS = {"cam": {"radial": "radial", "axial": "axial"},
 stands for two things (tests/test_dynacam.py checks)."""
 NAME_FLAGS = (("shafty", "shaft_y"), ("shaftz", "shaft_z"), ("camfriction", "cam_friction"),
               ("linkfriction", "linkage_friction"), ("spring", "spring"), ("force", "external"),
-              ("rocker", "rocker"))
+              ("flat", "flat_face"), ("rocker", "rocker"))
 """The words of the elements switched on make the rest of the name."""
 
 DESCRIPTIONS = {
@@ -158,6 +168,8 @@ DESCRIPTIONS = {
                          False: "no friction in the linkage"},
     "spring": {True: "follower spring with preload F_0 (6.45)", False: "no follower spring"},
     "external": {True: "constant external force F_ex on the output (6.46)", False: "no external force"},
+    "flat_face": {True: "translating flat-faced follower, the face square to its motion",
+                  False: "a roller on the cam"},
     "rocker": {True: "oscillating roller follower (rocker), reduced to the roller centre's arc",
                False: "translating roller follower"},
 }
@@ -309,6 +321,8 @@ def _cam(opts: Options, P: dict, coords, beta, y, z) -> _Cam:
     dh = sp.diff(h, beta)
     if opts.rocker:
         R, tan_a, i_z = _rocker(P, h, dh)
+    elif opts.flat_face:
+        R, tan_a, i_z = P["R_b"] + h, sp.Integer(0), sp.Integer(1)
     else:
         R = P["R_b"] + h if opts.cam == "radial" else P["R_b"]
         tan_a, i_z = dh / R, sp.Integer(1)
@@ -550,9 +564,11 @@ def _common_outputs(opts: Options, P: dict, cam: _Cam, M, Fx, beta, y, x) -> lis
         Output("xdd", x.diff(t, 2), "m/s^2", "follower acceleration"),
         Output("torque", M, "N m", "shaft torque driving the cam (6.10)"),
         Output("Fx", Fx, "N", "force between cam and follower linkage (6.42)"),
-        Output("speed_var", (beta.diff(t) - (y.diff(t) / cam.R if opts.shaft_y else 0)) / P["omega_s"] - 1,
+        Output("speed_var", (beta.diff(t) - (y.diff(t) / cam.R if opts.shaft_y and not opts.flat_face
+                                             else 0)) / P["omega_s"] - 1,
                "1", "variation of the fictitious angular velocity seen by the roller (2.54)"),
-        Output("tan_alpha", cam.tan_a, "1", "cam slope (6.20); a rocker's ratio i_y (_rocker)"),
+        Output("tan_alpha", cam.tan_a, "1", "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a "
+                                            "flat face"),
     ] + ([Output("i_z", cam.i_z, "1", "a rocker's ratio of the contact's displacement to z (_rocker)")]
          if opts.rocker else [])
 
