@@ -152,6 +152,12 @@ class TranslatingRoller(_Roller):
         return 1.0
 
 
+def arm_reaches(pivot_distance: float, arm_length: float, radius: float) -> bool:
+    """Whether an arm pivoted at that distance from the cam centre puts its end on the circle
+    of that radius: |a - l| < r < a + l, the triangle cam centre, pivot, arm's end."""
+    return abs(pivot_distance - arm_length) < radius < pivot_distance + arm_length
+
+
 @dataclass(frozen=True)
 class OscillatingRoller(_Roller):
     """Roller centre at A + l u(psi_0 + psi); psi_0 puts it on the prime circle r_b + r_r:

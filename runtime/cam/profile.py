@@ -42,7 +42,7 @@ from ..core.laws import choose
 from ..core.outdir import out_folder, writing
 from .checks import in_range
 from .follower import (KINDS, Contact, OscillatingFlat, OscillatingRoller, TranslatingFlat,
-                       TranslatingRoller)
+                       TranslatingRoller, arm_reaches)
 from .motion import RDFD, failing_spans
 
 TWO_PI = 2 * math.pi
@@ -254,7 +254,7 @@ class CamProfile:
             l = in_range("arm-length", self.arm_length, low=MIN_RADIUS, high=MAX_LENGTH,
                          high_open=True)
             rp = rb + rr
-            if not abs(a - l) < rp < a + l:
+            if not arm_reaches(a, l, rp):
                 raise CamdynInputError(
                     f"arm-length={l:g} with pivot-distance={a:g} cannot put the roller on the "
                     f"prime circle r_b + r_r = {rp:g}: it needs |pivot-distance - arm-length| "

@@ -95,16 +95,12 @@ def add(sub):
 
 def _follower(args, machine) -> tuple:
     """(stroke, mass, stiffness) at the output: as given, or a rocker's at its roller."""
-    rocker = {"--swing": args.swing, "--arm-length": args.arm_length,
-              "--arm-inertia": args.arm_inertia, "--arm-stiffness": args.arm_stiffness}
-    given = [flag for flag, v in rocker.items() if v is not None]
-    if not given:
+    rocker = (args.swing, args.arm_length, args.arm_inertia, args.arm_stiffness)
+    if all(v is None for v in rocker):
         if args.stroke is None:
             raise ValueError("argument --stroke: the stroke of the output member is required "
                              "(m), or a rocker's --swing and --arm-length")
         return args.stroke, args.mass, args.stiffness
-    if args.swing is None or args.arm_length is None:
-        raise ValueError(f"argument {given[0]}: a rocker needs --swing and --arm-length")
     return machine.rocker(swing_deg=args.swing, arm_length=args.arm_length, stroke=args.stroke,
                           inertia=args.arm_inertia, mass=args.mass,
                           torsional_stiffness=args.arm_stiffness, stiffness=args.stiffness)

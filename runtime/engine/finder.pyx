@@ -116,6 +116,15 @@ cdef void _fill(Rec* r, Py_ssize_t i) noexcept nogil:
     r.n_fill += r.m.dense_fill(r.ctx, r.rows + i * r.width)
 
 
+cdef void _fill_between(Rec* r, double a, double b) noexcept nogil:
+    """Every left-out step that starts before b, from the one a lies in on (_fill)."""
+    cdef Py_ssize_t i = _step_of(r, a)
+    while i + 1 < r.n and _t(r, i) < b:
+        if _left_out(r, i):
+            _fill(r, i)
+        i += 1
+
+
 cdef double _value_in(Rec* r, double tq, Py_ssize_t i, int which) noexcept nogil:
     """State (which < ns) or output (which - ns) at tq through step i's dense output
     (dense.pxd), outputs in the step's modes.  A step whose dense output the run left out
@@ -580,11 +589,7 @@ cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step,
     # trust: the left-out steps of [a, b] are made and the scan is made again on them, as a
     # run that made its dense output scans it (large steps; small ones keep their Hermite)
     if r.n_hermite > 0 and hmiss > (htol if htol > 0.0 else 1e-9 * fabs(S.best)):
-        i = _step_of(r, a)
-        while i + 1 < r.n and _t(r, i) < b:
-            if _left_out(r, i):
-                _fill(r, i)
-            i += 1
+        _fill_between(r, a, b)
         return _extreme(r, which, a, b, kind, per_step, n_cand, cache, stride, value, at,
                         sampling, st, sv, n_samples, htol)
     value[0] = -S.best if kind >= 2 else S.best
@@ -913,9 +918,7 @@ def fill(object capsule, double[::1] p, int[::1] law, double[::1] law_par, rows,
     cdef bint every = tq is None
     with nogil:
         if every:
-            for i in range(v.r.n - 1):
-                if _left_out(&v.r, i):
-                    _fill(&v.r, i)
+            _fill_between(&v.r, _t(&v.r, 0), _t(&v.r, v.r.n - 1))
         else:
             for j in range(times.shape[0]):
                 i = _step_of(&v.r, times[j])

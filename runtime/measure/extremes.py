@@ -59,12 +59,9 @@ def column(result, name: str) -> int:
 def record(result: Result) -> tuple:
     """The arguments the compiled finder reads a run's record from: a DOP853 run's rows as
     they are, the finder making the dense output the run left out where it needs it."""
-    if result._fills:
-        rows, nx = result._rows, (result._rows.shape[1] - 1) // len(result.state_names) - 2
-    else:
-        rows, nx = result.record, result.n_extra
+    rows = result._rows if result._fills else result.record
     return (result.model.capsule, result.p, result.law_codes, result.law_pars, rows,
-            result.mode, len(result.state_names), nx)
+            result.mode, len(result.state_names), result.n_extra)
 
 
 def extreme(result, name: str, a: float, b: float, *, absolute: bool, minimum: bool,

@@ -56,8 +56,10 @@ def characteristics(opts, p: dict) -> dict:
 def rocker_check(p: dict) -> None:
     """A rocker's arm must reach the base pitch circle: |d_p - l_a| < R_b < d_p + l_a (the
     triangle cam centre, pivot, roller centre at the rise start; derive/models/dynacam.py)."""
+    from ..cam.follower import arm_reaches
+
     d, l, r = p["d_p"], p["l_a"], p["R_b"]
-    if not abs(d - l) < r < d + l:
+    if not arm_reaches(d, l, r):
         raise CamdynInputError(
             f"rocker: the arm l_a = {l:g} m pivoted at d_p = {d:g} m cannot reach the base pitch "
             f"circle R_b = {r:g} m; it needs |d_p - l_a| < R_b < d_p + l_a")

@@ -44,6 +44,9 @@ def rocker(*, swing_deg, arm_length, stroke=None, inertia=None, mass=None,
     k_t its torsional stiffness there.  The one- and two-DOF models take the rocker so: their
     cam slope is the law's for any follower reduced to its output.  A quantity given at the
     roller already (mass, stiffness) is taken as it is; the stroke must not be given too."""
+    for flag, value in (("--swing", swing_deg), ("--arm-length", arm_length)):
+        if value is None:
+            raise CamdynInputError(f"argument {flag}: a rocker needs --swing and --arm-length")
     Phi = positive("swing", "--swing", swing_deg, "deg", upper=180.0)
     l = positive("l", "--arm-length", arm_length, "m")
     if stroke is not None:
