@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:cd427e78406d15ae8eea1f73091390b6bdd7349c44036ea95c98cd9abea61bea
-# Text hash: sha256:a5ca7f0f538c8dd7477b5de8995412e2f6de7fa280ae20c0e3510bbefa7785bc
+# Derivation key: sha256:348cef2b22932bd5a1ab1c33bd06a63d5d54b571303f81d6df9b517ce72f812a
+# Text hash: sha256:de5b5b5ebdcf93832939fcab56ff8b402ce6f305d311cdf0771197880f629de4
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:3c9999d10aad99ab4016f49977021c5ebc9d69346a37ce5845ced113f0547258
+# Source hash: sha256:20057f71b91ba1e26afc2d2e794ae3ecfcc9a5b84e3371830277eacbb8275d82
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -20,7 +20,7 @@
 #   spring = no: no follower spring
 #   external = no: no external force
 #   flat_face = no: a roller on the cam
-#   rocker = no: translating roller follower
+#   rocker = no: translating follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -46,7 +46,9 @@
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
 #   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
 #   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
-#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
+#   the angle it sees is beta itself.  A flat face on the rocker's arm (both options) swings
+#   with the arm; h is its swing reduced to the arc at l_a, and its ratios come from the
+#   face's support distance (:func:`_rocker_flat`).  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1224,7 +1226,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker, _rocker_flat), 0 for a translating flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1457,7 +1459,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:3c9999d10aad99ab4016f49977021c5ebc9d69346a37ce5845ced113f0547258",
+ "source_hash": "sha256:20057f71b91ba1e26afc2d2e794ae3ecfcc9a5b84e3371830277eacbb8275d82",
  "states": [
   {
    "doc": "cam angle",

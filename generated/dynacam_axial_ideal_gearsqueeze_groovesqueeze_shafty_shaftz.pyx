@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:9cef195ceb138a91010911199028451c742e3571d574f52ef7b22dbcebe8d8c1
-# Text hash: sha256:3f8127036088ec566e1ae0d522ea875c864eef64906f000c3ae6f296c978b621
+# Derivation key: sha256:961298a51f3e2fab73aefafe760785fbe3e6fcb3d83cc599880eb987f4079f5c
+# Text hash: sha256:91ca9a0cac27a2cdb1a8331bb61c4869912a541c025209d4fad1305421c737df
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:eef467f17d46ba8abb4d79da9dd51f7c35f5f1c92aa7b263d2b7999b91f5e82b
+# Source hash: sha256:87cc6f632d9fab7e7beb98a5f275e3a12bd3d22974d3c67011929413b944c3cb
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -20,7 +20,7 @@
 #   spring = no: no follower spring
 #   external = no: no external force
 #   flat_face = no: a roller on the cam
-#   rocker = no: translating roller follower
+#   rocker = no: translating follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -46,7 +46,9 @@
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
 #   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
 #   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
-#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
+#   the angle it sees is beta itself.  A flat face on the rocker's arm (both options) swings
+#   with the arm; h is its swing reduced to the arc at l_a, and its ratios come from the
+#   face's support distance (:func:`_rocker_flat`).  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -2856,7 +2858,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker, _rocker_flat), 0 for a translating flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -3111,7 +3113,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:eef467f17d46ba8abb4d79da9dd51f7c35f5f1c92aa7b263d2b7999b91f5e82b",
+ "source_hash": "sha256:87cc6f632d9fab7e7beb98a5f275e3a12bd3d22974d3c67011929413b944c3cb",
  "states": [
   {
    "doc": "cam angle",

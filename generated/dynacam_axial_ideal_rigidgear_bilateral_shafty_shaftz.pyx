@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:92a882ab7fcffd582d895074afeab7e7890ee46a3653bb92a960bb029f4918aa
-# Text hash: sha256:98aabfd4fc9665fa0f3b8f5dbc4e78b3b927286f00d8483f1042b5ba681a6ed9
+# Derivation key: sha256:a9e688bd7a43d47e9940b1f7b998102fa4ec0eeb602d3d89697bd58904a885d0
+# Text hash: sha256:b204de2a0a85161ae0bdf4750ab881aa315a47e4dcfb7df22f44579ccc0ca03b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:1c10ae9f75c567f8e59a43f01a8cbf1f24ed80510fb93da650e386052dce02f8
+# Source hash: sha256:49317c049a0ae9e98c0d7ae0ad124c65edf3d683e584e9f2f1cb4e86f914b1c0
 #
 # This variant:
 #   cam = axial: axial (globoidal) cam, constant pitch radius R_b (6.21)
@@ -20,7 +20,7 @@
 #   spring = no: no follower spring
 #   external = no: no external force
 #   flat_face = no: a roller on the cam
-#   rocker = no: translating roller follower
+#   rocker = no: translating follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -46,7 +46,9 @@
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
 #   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
 #   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
-#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
+#   the angle it sees is beta itself.  A flat face on the rocker's arm (both options) swings
+#   with the arm; h is its swing reduced to the arc at l_a, and its ratios come from the
+#   face's support distance (:func:`_rocker_flat`).  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1615,7 +1617,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker, _rocker_flat), 0 for a translating flat face",
    "name": "tan_alpha",
    "unit": "1"
   }
@@ -1816,7 +1818,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:1c10ae9f75c567f8e59a43f01a8cbf1f24ed80510fb93da650e386052dce02f8",
+ "source_hash": "sha256:49317c049a0ae9e98c0d7ae0ad124c65edf3d683e584e9f2f1cb4e86f914b1c0",
  "states": [
   {
    "doc": "cam angle",

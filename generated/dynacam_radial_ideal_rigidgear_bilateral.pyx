@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:7a3e00655477856a772dc0168dcba4093de0dfc0029e05cc46ad5aa8e173d1aa
-# Text hash: sha256:c8326216561517d72ed6f2d1164b8c09e5be354b7bb63625329844d4d267ced2
+# Derivation key: sha256:655abd46c355fbade1af198b4f2bf9ebe4007e839972e5cc075ed2ec1b4ad56c
+# Text hash: sha256:cdf7d0418dc6ef5be1138b8e5d06fc3c9cec20ac0e0de7fa87381b10c118a69b
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:18aa64532303849b07bb4e538e4f372794b76656ea11314536453a7bb25db3a4
+# Source hash: sha256:e63183f45a2d3708dd5707654b2e7f19e223ec32be78ba20c70cfa560282b899
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -20,7 +20,7 @@
 #   spring = no: no follower spring
 #   external = no: no external force
 #   flat_face = no: a roller on the cam
-#   rocker = no: translating roller follower
+#   rocker = no: translating follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -46,7 +46,9 @@
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
 #   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
 #   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
-#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
+#   the angle it sees is beta itself.  A flat face on the rocker's arm (both options) swings
+#   with the arm; h is its swing reduced to the arc at l_a, and its ratios come from the
+#   face's support distance (:func:`_rocker_flat`).  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -874,7 +876,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker, _rocker_flat), 0 for a translating flat face",
    "name": "tan_alpha",
    "unit": "1"
   }
@@ -1009,7 +1011,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:18aa64532303849b07bb4e538e4f372794b76656ea11314536453a7bb25db3a4",
+ "source_hash": "sha256:e63183f45a2d3708dd5707654b2e7f19e223ec32be78ba20c70cfa560282b899",
  "states": [
   {
    "doc": "cam angle",

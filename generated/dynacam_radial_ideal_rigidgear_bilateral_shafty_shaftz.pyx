@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6c0bcbf5a86d372ad4c178c7885abc26192466bbc3c1f8faefe46c138b12ef7b
-# Text hash: sha256:995f76fe03e7d649239751320b4a4af62e3a13773973d0c81038f9eaacc47cf8
+# Derivation key: sha256:4d5871a54ab43680b13b0e9eba51467d37377a67a25342513ddc903cc0c068ea
+# Text hash: sha256:7245d3506fdfad726d7c9601f9d9f850a165bce23626bc21d17a4609d274ea0c
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:bafca496141adcd4bdf8c4cdb539759bbee6a37463a241613d04ccd813506da3
+# Source hash: sha256:17a2d5a7d7f49c908f0cc60227fa5d7ea6df0fff82762a03baea1b9af6239c3b
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -20,7 +20,7 @@
 #   spring = no: no follower spring
 #   external = no: no external force
 #   flat_face = no: a roller on the cam
-#   rocker = no: translating roller follower
+#   rocker = no: translating follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -46,7 +46,9 @@
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
 #   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
 #   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
-#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
+#   the angle it sees is beta itself.  A flat face on the rocker's arm (both options) swings
+#   with the arm; h is its swing reduced to the arc at l_a, and its ratios come from the
+#   face's support distance (:func:`_rocker_flat`).  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -2354,7 +2356,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker, _rocker_flat), 0 for a translating flat face",
    "name": "tan_alpha",
    "unit": "1"
   }
@@ -2555,7 +2557,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:bafca496141adcd4bdf8c4cdb539759bbee6a37463a241613d04ccd813506da3",
+ "source_hash": "sha256:17a2d5a7d7f49c908f0cc60227fa5d7ea6df0fff82762a03baea1b9af6239c3b",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:683479b29ab702108862023404b8438b054b38cc830b8ad3f7361896bde13921
-# Text hash: sha256:4bdd1036a90bea2a87c1570073be7a90a2d5dc6b0c85e0644b557821dcd04702
+# Derivation key: sha256:21ae92a47b2fcceb9c259ed73b5f5c7a4f762f34a23816cd3f4c3b483cc92382
+# Text hash: sha256:7feaa390b47a3605b66d8af49fe6606dca6c5c536485098a854defe987e679a3
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:90855ab2d1492308a75f4fcead6f479be0222dc20e253d7490e73640328f5f77
+# Source hash: sha256:16a9117fcd7a3d28262b06074ed4c6620f84e679fef5fb3f7764055b87fdc220
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -20,7 +20,7 @@
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
 #   flat_face = no: a roller on the cam
-#   rocker = no: translating roller follower
+#   rocker = no: translating follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -46,7 +46,9 @@
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
 #   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
 #   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
-#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
+#   the angle it sees is beta itself.  A flat face on the rocker's arm (both options) swings
+#   with the arm; h is its swing reduced to the arc at l_a, and its ratios come from the
+#   face's support distance (:func:`_rocker_flat`).  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1663,7 +1665,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker, _rocker_flat), 0 for a translating flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1913,7 +1915,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:90855ab2d1492308a75f4fcead6f479be0222dc20e253d7490e73640328f5f77",
+ "source_hash": "sha256:16a9117fcd7a3d28262b06074ed4c6620f84e679fef5fb3f7764055b87fdc220",
  "states": [
   {
    "doc": "cam angle",

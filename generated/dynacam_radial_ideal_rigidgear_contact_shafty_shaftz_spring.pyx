@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4d91182e7a821b19878d9727ed785f637d8c88a3af7836ecc1523b8e07c29601
-# Text hash: sha256:122adae75c223f9f8ebe4fa3fe9d392c5ecb2138daeb8e5c6e6168315425ba40
+# Derivation key: sha256:abd9dbc02b7c89b909c50e2220180c485d08f09938bb5304739ced6263562c36
+# Text hash: sha256:099a96a8b1fc400d9c8f4c228a4e90101ac9948fd53bfb1baecdaed06682edbd
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:ac99bb20d8d3e29493c8d1c1ca3e1b213f76a0c44b5bba217d27184cc6a5c054
+# Source hash: sha256:867dd035dc54b325f8953e03cc7d949fb8cd037bf2718ead15175ebffbfdee71
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -20,7 +20,7 @@
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
 #   flat_face = no: a roller on the cam
-#   rocker = no: translating roller follower
+#   rocker = no: translating follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -46,7 +46,9 @@
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
 #   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
 #   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
-#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
+#   the angle it sees is beta itself.  A flat face on the rocker's arm (both options) swings
+#   with the arm; h is its swing reduced to the arc at l_a, and its ratios come from the
+#   face's support distance (:func:`_rocker_flat`).  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1320,7 +1322,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker, _rocker_flat), 0 for a translating flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1548,7 +1550,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:ac99bb20d8d3e29493c8d1c1ca3e1b213f76a0c44b5bba217d27184cc6a5c054",
+ "source_hash": "sha256:867dd035dc54b325f8953e03cc7d949fb8cd037bf2718ead15175ebffbfdee71",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:fee3a1516ba82632ed7dee02be452b6211b9a66aedf1b5f5a28120d9d4f2c04e
-# Text hash: sha256:4f248a82464334cc578ce19ac5a0c36b856c84774a2db8afd75b52f859c46fac
+# Derivation key: sha256:ee03d750ba5040fdc6515720dd8522ddf76cf6fd6ce58947acc645cd8157938a
+# Text hash: sha256:ebf892861e69cdd2f7f5bf687c7c7d5f72f6e78ced286915da25041a5e34312f
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:1d02b0e500e87fa3ae7110e20be23f356b11afd78fabcd20a9228e774c7f4bbe
+# Source hash: sha256:3da519cdee12877a9b4868411f25cc28c5de0414178fc7bd5b764d81321bd8e1
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -19,8 +19,8 @@
 #   linkage_friction = no: no friction in the linkage
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
-#   flat_face = yes: translating flat-faced follower, the face square to its motion
-#   rocker = no: translating roller follower
+#   flat_face = yes: flat-faced follower: square to its motion, or on the rocker's arm
+#   rocker = no: translating follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -46,7 +46,9 @@
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
 #   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
 #   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
-#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
+#   the angle it sees is beta itself.  A flat face on the rocker's arm (both options) swings
+#   with the arm; h is its swing reduced to the arc at l_a, and its ratios come from the
+#   face's support distance (:func:`_rocker_flat`).  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1006,7 +1008,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker, _rocker_flat), 0 for a translating flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1234,7 +1236,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:1d02b0e500e87fa3ae7110e20be23f356b11afd78fabcd20a9228e774c7f4bbe",
+ "source_hash": "sha256:3da519cdee12877a9b4868411f25cc28c5de0414178fc7bd5b764d81321bd8e1",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:8a225238e7c30be484cbfe2e7ef7b9c7e411c7f6b9c180fd822e009c60992ea3
-# Text hash: sha256:6e1c08bf154dd938b2051d3b2c98ff6d57ab4964a7dfd63deb3cad1bd35f9ace
+# Derivation key: sha256:67d3bcf8e8d919f476cf3704ad14f1f1a9fe276d98066375a44f23074aa3aac2
+# Text hash: sha256:f850783bce2718f5af35f4d89f70bd3627d6f1bfc0b8b419ce351dd93762d03a
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:5e931cc70641a6e6e06b74cf5c45a2f079ba26f6ee003c39989f5c0b2ca2babe
+# Source hash: sha256:3e03e66b5f0b3f214ee9ce58a63a811e9b83a8ed844be0e2e41420f32fdefed0
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -20,7 +20,7 @@
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
 #   flat_face = no: a roller on the cam
-#   rocker = yes: oscillating roller follower (rocker), reduced to the roller centre's arc
+#   rocker = yes: oscillating follower (rocker), reduced to the arc at l_a
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -46,7 +46,9 @@
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
 #   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
 #   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
-#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
+#   the angle it sees is beta itself.  A flat face on the rocker's arm (both options) swings
+#   with the arm; h is its swing reduced to the arc at l_a, and its ratios come from the
+#   face's support distance (:func:`_rocker_flat`).  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -426,7 +428,7 @@ cdef inline void rhs(double t, const double* _y, double* _dy, Ctx* ctx) noexcept
 
 
 cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept nogil:
-    """The named outputs (B, Xdd, Bdd, U, xdd, torque, Fx, speed_var, tan_alpha, i_z, roller_gap)."""
+    """The named outputs (B, Xdd, Bdd, U, xdd, torque, Fx, speed_var, tan_alpha, i_z, R_c, roller_gap)."""
     cdef double _dy[8]
     rhs(t, _y, _dy, ctx)
     cdef double h_m = ctx.p[0]
@@ -570,6 +572,7 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     cdef double _o15 = _o14*_o9
     cdef double _o16 = _o15*z
     cdef double _o17 = _cam0[1]*(_k19*_o4 + _k20*_o5 + _k21*_o5 + _k22*_o4)/(_o8*_o8)
+    cdef double _o18 = sqrt(((_k18*_o4 + _k38 + _k50*_o5)*(_k18*_o4 + _k38 + _k50*_o5)) + ((_k18*_o5 + _k23 + _k39*_o4)*(_k18*_o5 + _k23 + _k39*_o4)))
     _out[0] = _k42*(_k41 + beta)  # B
     _out[1] = _k43*_dy[7]  # Xdd
     _out[2] = _k44*_dy[4]  # Bdd
@@ -577,10 +580,11 @@ cdef void outputs(double t, const double* _y, double* _out, Ctx* ctx) noexcept n
     _out[4] = _dy[7]  # xdd
     _out[5] = _k47*beta + _k48*t - _k49*(betad - omega_s)  # torque
     _out[6] = ((_cam0[0]*_k25 + _k24*_o11 + _k24*_o16 + _k24*x - _k26*(_o10*yd + _o15*zd + betad*(-_o1 + _o14*_o17*z + _o17*_o7*y + _o9*y*(_cam0[1]*_o2*(_k10*_o4 + _k9*_o5) + _cam0[2]*_k13*_o6) + _o9*z*(_cam0[1]*_o12*(_k10*_o5 + _k15*_o4) + _cam0[2]*_k17*_o13)) + xd)) if ((ctx.mode[1] == 0.0)) else (0.0))  # Fx
-    _out[7] = _k51*(betad - yd/sqrt(((_k18*_o4 + _k38 + _k50*_o5)*(_k18*_o4 + _k38 + _k50*_o5)) + ((_k18*_o5 + _k23 + _k39*_o4)*(_k18*_o5 + _k23 + _k39*_o4)))) - 1.0  # speed_var
+    _out[7] = _k51*(betad - yd/_o18) - 1.0  # speed_var
     _out[8] = _o10  # tan_alpha
     _out[9] = _o15  # i_z
-    _out[10] = _o0 + _o11 + _o16  # roller_gap
+    _out[10] = _o18  # R_c
+    _out[11] = _o0 + _o11 + _o16  # roller_gap
 
 
 cdef void mass_stiffness(double t, const double* _y, double* _Mm, double* _Km, Ctx* ctx) noexcept nogil:
@@ -1432,7 +1436,7 @@ _model.abi_version = CAMDYN_ABI
 _model.n_q = _NQ
 _model.n_states = _NS
 _model.n_params = 21
-_model.n_outputs = 11
+_model.n_outputs = 12
 _model.n_families = 1
 _model.n_instances = _NCAM
 _model.n_modes = _NM
@@ -1580,14 +1584,19 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker, _rocker_flat), 0 for a translating flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
   {
-   "doc": "a rocker's ratio of the contact's displacement to z (_rocker)",
+   "doc": "a rocker's ratio of the contact's displacement to z (_rocker, _rocker_flat)",
    "name": "i_z",
    "unit": "1"
+  },
+  {
+   "doc": "a rocker's pitch radius (roller) or the face's support distance (flat face) from the cam centre",
+   "name": "R_c",
+   "unit": "m"
   },
   {
    "doc": "gap between roller and cam (negative: pressed)",
@@ -1835,7 +1844,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:5e931cc70641a6e6e06b74cf5c45a2f079ba26f6ee003c39989f5c0b2ca2babe",
+ "source_hash": "sha256:3e03e66b5f0b3f214ee9ce58a63a811e9b83a8ed844be0e2e41420f32fdefed0",
  "states": [
   {
    "doc": "cam angle",

@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:b7b6e4271e249ca5f00ced6ac39cd2046f1ee386a3dc6acd4b3ecc8367b72f17
-# Text hash: sha256:dbd15525fc5c5a382fcde4566086ba0e3f4f00a026a2307ed0d86ddc00dbb469
+# Derivation key: sha256:9e190c0a17b020f15a7b1815a57f014ebad8dad284d1fa4a35111010cf34615e
+# Text hash: sha256:5d08bb92a0ddbfc5216b047ff6e8a3d6e6cd7616a44bc614158411da8b876c7f
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:1d399d39516afbee5fb1dbcaadb1526e974150b5d44f74fd80d0e9eb06cad248
+# Source hash: sha256:35062a0ead139451db05a665f5d243e05a8bf23a6fcffd23832276a86a60e79d
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -20,7 +20,7 @@
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
 #   flat_face = no: a roller on the cam
-#   rocker = no: translating roller follower
+#   rocker = no: translating follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -46,7 +46,9 @@
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
 #   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
 #   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
-#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
+#   the angle it sees is beta itself.  A flat face on the rocker's arm (both options) swings
+#   with the arm; h is its swing reduced to the arc at l_a, and its ratios come from the
+#   face's support distance (:func:`_rocker_flat`).  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -934,7 +936,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker, _rocker_flat), 0 for a translating flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1129,7 +1131,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:1d399d39516afbee5fb1dbcaadb1526e974150b5d44f74fd80d0e9eb06cad248",
+ "source_hash": "sha256:35062a0ead139451db05a665f5d243e05a8bf23a6fcffd23832276a86a60e79d",
  "states": [
   {
    "doc": "cam angle",

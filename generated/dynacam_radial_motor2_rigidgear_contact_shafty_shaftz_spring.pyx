@@ -2,11 +2,11 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:baae648355b3d9d8c55f49ea04baf089460573007c9c48c8f48c144d8214c286
-# Text hash: sha256:9b6ffc9eb2004b6c1adfb48a8c5ca0d920aea6e24089760063a1185dc4a34ecb
+# Derivation key: sha256:dedc0f2c4e8a2de6d0f56c02046052f062c2655380a6558635aebb72aea77d0a
+# Text hash: sha256:fc8e90629eb01a060a47f49fe8049b748a57f0b5dc730cdf27254b7553bbb81a
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
-# Source hash: sha256:dc19a33dacebd54f653d2bbdaa0664175c2e0a8f776a9c069bd9cd9ef1c7fbb0
+# Source hash: sha256:01b35b59721d6b96aafc1f62546380f253113c4d1382ec3e5cd4e556a9743b63
 #
 # This variant:
 #   cam = radial: radial disk cam, pitch radius R_b + h (6.21)
@@ -20,7 +20,7 @@
 #   spring = yes: follower spring with preload F_0 (6.45)
 #   external = no: no external force
 #   flat_face = no: a roller on the cam
-#   rocker = no: translating roller follower
+#   rocker = no: translating follower
 #
 # DYNACAM: the cam mechanism with four degrees of freedom and its drive, thesis ch. 6.
 #
@@ -46,7 +46,9 @@
 #   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
 #   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
 #   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
-#   the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
+#   the angle it sees is beta itself.  A flat face on the rocker's arm (both options) swings
+#   with the arm; h is its swing reduced to the arc at l_a, and its ratios come from the
+#   face's support distance (:func:`_rocker_flat`).  The linkage spring-damper (c_x, d_x) carries
 #   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
 #   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
 #   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -1536,7 +1538,7 @@ _MANIFEST_JSON = """
    "unit": "1"
   },
   {
-   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a flat face",
+   "doc": "cam slope (6.20); a rocker's ratio i_y (_rocker, _rocker_flat), 0 for a translating flat face",
    "name": "tan_alpha",
    "unit": "1"
   },
@@ -1829,7 +1831,7 @@ _MANIFEST_JSON = """
   "rise_end": 1.0,
   "rise_state": "B"
  },
- "source_hash": "sha256:dc19a33dacebd54f653d2bbdaa0664175c2e0a8f776a9c069bd9cd9ef1c7fbb0",
+ "source_hash": "sha256:01b35b59721d6b96aafc1f62546380f253113c4d1382ec3e5cd4e556a9743b63",
  "states": [
   {
    "doc": "cam angle",

@@ -168,7 +168,7 @@ def test_run_any_kind_writes_the_summary_of_its_own_command(tmp_path):
 def test_runtime_options_are_the_declaration_s():
     """The runtime's Options (built from generated/catalog.json, no SymPy) against the
     declaration's (camdyn.derive.models.dynacam.Options): the same fields, defaults, choices and
-    docs, and the same variant name for all 6336 option sets; the 12096 with a pair no variant
+    docs, and the same variant name for all 6912 option sets; the 11520 with a pair no variant
     has (dynacam.EXCLUDES: a rocker or a flat face on an axial cam, ...) and an invalid choice
     are refused by both in the same words."""
     import itertools
@@ -195,7 +195,7 @@ def test_runtime_options_are_the_declaration_s():
             continue
         assert variants.Options(**kw).name == name, kw
         n += 1
-    assert (n, refused) == (6336, 12096)
+    assert (n, refused) == (6912, 11520)
     for cls in (variants.Options, declared.Options):
         with pytest.raises(ValueError, match="option gear='chain': choose one of"):
             cls(gear="chain")
@@ -204,7 +204,7 @@ def test_runtime_options_are_the_declaration_s():
 def test_variant_names_are_words_that_each_mean_one_thing():
     """A variant's name spells its options with one word per choice and per
     element switched on; no word stands for two things, so the name can be read back into the
-    option set (all 6336 names distinct and parsed back to their options), and the generated
+    option set (all 6912 names distinct and parsed back to their options), and the generated
     file of every pre-generated variant states each option in words in its header."""
     import itertools
     from dataclasses import fields
@@ -234,7 +234,7 @@ def test_variant_names_are_words_that_each_mean_one_thing():
         back.update(dict(meaning[w][0] for w in words[1:]))
         assert declared.Options(**back) == opts
         names.add(opts.name)
-    assert len(names) == 6336
+    assert len(names) == 6912
     for opts in DYNACAM_VARIANTS:
         head = (ROOT / "generated" / f"{opts.name}.pyx").read_text()[:6000]
         assert "from camdyn/derive/models/dynacam.py;" in head

@@ -32,6 +32,8 @@ DYNACAM_VARIANTS = (
     dynacam.Options(roller="contact", spring=True),
     # a spring-held rocker: the designer's oscillating roller follower (sec. 2.4 reduction)
     dynacam.Options(roller="contact", spring=True, rocker=True),
+    # the same with a flat face on the arm: the oscillating flat-faced follower
+    dynacam.Options(roller="contact", spring=True, rocker=True, flat_face=True),
     # a spring-held flat face, and the roller on a shaft rigid sideways that it equals
     dynacam.Options(roller="contact", spring=True, flat_face=True),
     dynacam.Options(roller="contact", spring=True, shaft_y=False),

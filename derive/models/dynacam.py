@@ -22,7 +22,9 @@ The nonsmooth laws are force elements with modes and events:
   with ratios of the rocker's geometry (:func:`_rocker`); for the translating follower
   they are tan(alpha) and 1, (6.22) again.  A flat face square to the follower's motion
   (option ``flat_face``) is not moved by a sideways shift of the cam: i_y = 0, i_z = 1, and
-  the angle it sees is beta itself.  The linkage spring-damper (c_x, d_x) carries
+  the angle it sees is beta itself.  A flat face on the rocker's arm (both options) swings
+  with the arm; h is its swing reduced to the arc at l_a, and its ratios come from the
+  face's support distance (:func:`_rocker_flat`).  The linkage spring-damper (c_x, d_x) carries
   F_x = c_x delta + d_x delta', delta = h_c - x, while the roller touches
   (6.42).  Contact law taken here, with zero viscosity: the roller is massless
   and the spring-damper engages when the roller reaches a wall (delta = 0 or
@@ -79,10 +81,11 @@ class Options:
     linkage_friction: bool = _opt(False, "Coulomb friction in the follower linkage (6.43)")
     spring: bool = _opt(False, "follower spring with preload (6.45)")
     external: bool = _opt(False, "constant external force on the output (6.46)")
-    flat_face: bool = _opt(False, "translating flat-faced follower, the face square to its motion "
-                                  "(radial cam)")
-    rocker: bool = _opt(False, "oscillating roller follower on an arm l_a pivoted at d_p from the cam "
-                               "centre, reduced to the roller's arc (sec. 2.4; radial cam)")
+    flat_face: bool = _opt(False, "flat-faced follower: square to its motion, or with rocker on the "
+                                  "arm, at f_f from the pivot (radial cam)")
+    rocker: bool = _opt(False, "oscillating follower on an arm pivoted at d_p from the cam centre: "
+                               "a roller at l_a, or with flat_face a flat face, reduced to the arc "
+                               "at l_a (sec. 2.4; radial cam)")
 
     CHOICES = {"cam": ("radial", "axial"), "motor": ("constant", "first", "second"),
                "gear": ("rigid", "backlash", "squeeze"),
@@ -120,7 +123,6 @@ EXCLUDES = (
     ("rocker", True, "cam", "axial", "a rocker is derived for a radial cam; an axial cam drives a "
                                      "translating follower"),
     ("flat_face", True, "cam", "axial", "a flat face is derived for a radial cam"),
-    ("flat_face", True, "rocker", True, "an oscillating flat face is not derived"),
     ("flat_face", True, "roller", "groove", "a flat face cannot run in a groove"),
     ("flat_face", True, "roller", "groove-squeeze", "a flat face cannot run in a groove"),
     ("flat_face", True, "cam_friction", True, "the friction on the cam (6.13) is written for a "
@@ -168,10 +170,10 @@ DESCRIPTIONS = {
                          False: "no friction in the linkage"},
     "spring": {True: "follower spring with preload F_0 (6.45)", False: "no follower spring"},
     "external": {True: "constant external force F_ex on the output (6.46)", False: "no external force"},
-    "flat_face": {True: "translating flat-faced follower, the face square to its motion",
+    "flat_face": {True: "flat-faced follower: square to its motion, or on the rocker's arm",
                   False: "a roller on the cam"},
-    "rocker": {True: "oscillating roller follower (rocker), reduced to the roller centre's arc",
-               False: "translating roller follower"},
+    "rocker": {True: "oscillating follower (rocker), reduced to the arc at l_a",
+               False: "translating follower"},
 }
 """Each option's value in words, for the header of the generated file."""
 
@@ -229,6 +231,10 @@ F_ex = _p("F_ex", 0.0, "N", "constant external force on the output, positive alo
           low=-1e9, open_low=False)
 d_p = _p("d_p", 0.12, "m", "rocker: distance from the cam centre to the arm's pivot")
 l_a = _p("l_a", 0.09, "m", "rocker: arm length from the pivot to the roller centre")
+l_f = _p("l_a", 0.09, "m", "oscillating flat face: the radius its swing is reduced to, h = l_a psi "
+                           "(sec. 2.4)")
+f_f = _p("f_f", 0.0, "m", "oscillating flat face: distance from the pivot to the face's line, "
+                          "positive towards the cam centre's side", low=-1e9, open_low=False)
 
 GAP_MIN = sp.Rational(1, 10**12)
 """Smallest squeeze gap [m or rad]: the film never closes in exact arithmetic, but a step may
@@ -319,7 +325,9 @@ def _cam(opts: Options, P: dict, coords, beta, y, z) -> _Cam:
     B = (beta - P["beta_0"]) / P["beta_m"]
     h = P["h_m"] * H(B)
     dh = sp.diff(h, beta)
-    if opts.rocker:
+    if opts.rocker and opts.flat_face:
+        R, tan_a, i_z = _rocker_flat(P, h, dh)
+    elif opts.rocker:
         R, tan_a, i_z = _rocker(P, h, dh)
     elif opts.flat_face:
         R, tan_a, i_z = P["R_b"] + h, sp.Integer(0), sp.Integer(1)
@@ -343,9 +351,8 @@ def _rocker(P: dict, h, dh):
     moves towards (the rocker of runtime/cam/follower.py, whose pressure angle this one's
     equals); the roller centre is C(h) = pivot + l_a (cos phi, sin phi), phi = phi_0 + h/l_a,
     so that h, the output reduced to the roller's arc (sec. 2.4), rises as the roller moves
-    out; e_t = dC/dh.  The
-    pitch curve's normal there is n = J (e_t h' - J C) (J: +90 deg), its tangent being the
-    roller centre's velocity relative to the cam per unit beta.  A shaft deflection moves the
+    out; e_t = dC/dh.  The pitch curve's normal there is n = J (e_t h' - J C) (J: +90 deg),
+    its tangent being the roller centre's velocity relative to the cam per unit beta.  A shaft deflection moves the
     cam by y e_y - z e_z (the signs of (6.22)); the roller stays on the pitch curve if it
     moves along its arc by -(y e_y.n - z e_z.n)/(e_t.n) to first order, so
 
@@ -364,6 +371,31 @@ def _rocker(P: dict, h, dh):
     i_y = (cph * (dh - l) - py) / den
     i_z = (pz + sph * (l - dh)) / den
     return sp.sqrt((py + l * cph)**2 + (pz + l * sph)**2), i_y, i_z
+
+
+def _rocker_flat(P: dict, h, dh):
+    """A flat face on a rocker's arm: its support distance R from the cam centre and the
+    ratios i_y, i_z that (6.22) takes for tan(alpha) and 1.
+
+    Frame and signs as in :func:`_rocker`.  The face's line keeps the distance f_f from the
+    pivot p, on the cam centre's side; at the rise start it is the line z = R_b, touching the
+    base circle, so p_z = R_b - f_f and p_y = -(d_p^2 - p_z^2)^(1/2).  The arm turns by
+    phi = h/l_a, the face's normal m = (-sin phi, cos phi) turning with it, and its support
+    k(phi) = p.m + f_f rises with phi.  The cam's own support function s(theta) (theta the
+    normal's angle in the cam frame, theta = pi/2 + phi - beta) holds the face where
+    k(phi) = s(theta) + D.m, D the shift of the cam centre.  Along the rise (D = 0) the
+    derivative in beta gives s' = k' phi_b/(phi_b - 1); a shift D then turns the arm by
+    D.m (1 - phi_b)/k' to first order, k' = dk/dphi, phi_b = h'/l_a.  With D = y e_y - z e_z:
+
+        i_y = (l_a - h') sin(phi)/k',    i_z = (l_a - h') cos(phi)/k',
+
+    and the translating flat face's 0 and 1 where the pivot goes to infinity along -y."""
+    Rb, d, l, f = P["R_b"], P["d_p"], P["l_a"], P["f_f"]
+    pz = Rb - f
+    py = -sp.sqrt(d**2 - pz**2)
+    c, s = sp.cos(h / l), sp.sin(h / l)
+    dk = -py * c - pz * s
+    return -py * s + pz * c + f, (l - dh) * s / dk, (l - dh) * c / dk
 
 
 def _drive(opts: Options, parts: _Parts):
@@ -567,9 +599,12 @@ def _common_outputs(opts: Options, P: dict, cam: _Cam, M, Fx, beta, y, x) -> lis
         Output("speed_var", (beta.diff(t) - (y.diff(t) / cam.R if opts.shaft_y and not opts.flat_face
                                              else 0)) / P["omega_s"] - 1,
                "1", "variation of the fictitious angular velocity seen by the roller (2.54)"),
-        Output("tan_alpha", cam.tan_a, "1", "cam slope (6.20); a rocker's ratio i_y (_rocker), 0 for a "
-                                            "flat face"),
-    ] + ([Output("i_z", cam.i_z, "1", "a rocker's ratio of the contact's displacement to z (_rocker)")]
+        Output("tan_alpha", cam.tan_a, "1", "cam slope (6.20); a rocker's ratio i_y (_rocker, "
+                                            "_rocker_flat), 0 for a translating flat face"),
+    ] + ([Output("i_z", cam.i_z, "1", "a rocker's ratio of the contact's displacement to z (_rocker, "
+                                      "_rocker_flat)"),
+          Output("R_c", cam.R, "m", "a rocker's pitch radius (roller) or the face's support "
+                                    "distance (flat face) from the cam centre")]
          if opts.rocker else [])
 
 
@@ -578,7 +613,8 @@ def build(opts: Options = Options()) -> Model:
     coords, beta, y, z, x = _coordinates(opts)
     parts = _Parts([h_m, beta_m, beta_0, R_b, omega_s, J, k, q_b, m_x, c_x, q_x]
                    + ([m_y, c_y, q_y] if opts.shaft_y else []) + ([m_z, c_z, q_z] if opts.shaft_z else [])
-                   + ([d_p, l_a] if opts.rocker else []))
+                   + ([d_p, l_f, f_f] if opts.rocker and opts.flat_face
+                      else [d_p, l_a] if opts.rocker else []))
     cam = _cam(opts, parts.P, coords, beta, y, z)
     phi, phi_rate, dw = _drive(opts, parts)
     M = _gear(opts, parts, phi, phi_rate, beta)

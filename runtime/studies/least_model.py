@@ -131,15 +131,13 @@ def _shaft_free(sc, drop_y: bool, drop_z: bool, build: bool):
     """The scene without shaft direction y' and/or z', with the equivalent magnitudes of
     sec. 5.6 so that tau, Fa, Fv do not change (see the module docstring)."""
     ch = dynacam.characteristics(sc.options, sc.parameters)
-    p = sc.parameters
-    R_half = p["R_b"] + p["h_m"] / 2 if sc.options.cam == "radial" else p["R_b"]
     changes, new = {}, {}
     if drop_z and sc.options.shaft_z:
         changes["shaft_z"] = False
         new.update(c_x=ch["c_c"], m_x=ch["m"])
     if drop_y and sc.options.shaft_y:
         changes["shaft_y"] = False
-        new.update(k=ch["c_tan"] * R_half**2, J=ch["m_tan"] * R_half**2)
+        new.update(k=ch["k_tan"], J=ch["J_tan"])
     reduced = _with_options(sc, changes, build)
     return None if reduced is None else scenes.replace(reduced, parameters=new)
 

@@ -37,12 +37,17 @@ def characteristics(opts, p: dict) -> dict:
     (4.4); Fa = (c_c/c_tan) tan^2 alpha_me (4.14); m_tan = (J/R_1/2^2)(c_tan/c_beta)^2 +
     m_y (c_tan/c_y)^2 (5.51); Fv = (m/m_tan) tan^2 alpha_me (5.52); tau = T_e/t_m with
     T_e = 2 pi (m/c_c)^(1/2) and t_m = beta_m/w_s.
+
+    A flat face or a rocker takes the same to the contact (:func:`contact_form`).  ``k_tan``
+    and ``J_tan`` are the torsion and inertia that alone give the shaft's compliance and mass
+    seen by the follower (a shaft rigid sideways, sec. 5.6).
     """
     try:
         out = _characteristics(opts, p)
     except (OverflowError, ZeroDivisionError):
         out = {}
-    if not out or not all(math.isfinite(v) and v > 0 for v in out.values()):
+    if not out or not (all(math.isfinite(v) for v in out.values())
+                       and all(out[k] > 0 for k in ("tau", "Fa", "Fv", "c_c", "m", "t_m"))):
         used = ["c_x", "m_x", "h_m", "R_b", "beta_m", "omega_s", "k", "J"]
         used += ["c_z", "m_z"] if opts.shaft_z else []
         used += ["c_y", "m_y"] if opts.shaft_y else []
@@ -53,19 +58,57 @@ def characteristics(opts, p: dict) -> dict:
     return out
 
 
-def rocker_check(p: dict) -> None:
+def rocker_check(p: dict, flat_face: bool = False) -> None:
     """A rocker's arm must reach the base pitch circle: |d_p - l_a| < R_b < d_p + l_a (the
-    triangle cam centre, pivot, roller centre at the rise start; derive/models/dynacam.py)."""
+    triangle cam centre, pivot, roller centre at the rise start; derive/models/dynacam.py);
+    a flat face's line, f_f from the pivot, touches the base circle R_b only with the pivot
+    off the circle's tangent there: |R_b - f_f| < d_p (_rocker_flat)."""
     from ..cam.follower import arm_reaches
 
     d, l, r = p["d_p"], p["l_a"], p["R_b"]
+    if flat_face:
+        f = p.get("f_f", 0.0)
+        if not abs(r - f) < d:
+            raise CamdynInputError(
+                f"rocker: a flat face f_f = {f:g} m from a pivot at d_p = {d:g} m cannot touch "
+                f"the base circle R_b = {r:g} m at the rise start; it needs "
+                "|R_b - f_f| < d_p")
+        return
     if not arm_reaches(d, l, r):
         raise CamdynInputError(
             f"rocker: the arm l_a = {l:g} m pivoted at d_p = {d:g} m cannot reach the base pitch "
             f"circle R_b = {r:g} m; it needs |d_p - l_a| < R_b < d_p + l_a")
 
 
+def mean_ratios(opts, p: dict) -> tuple[float, float]:
+    """(i_y, i_z): how far the contact moves per unit of the shaft's deflections y and z
+    (6.22) in mid-rise at the mean slope h_m/beta_m.  For the translating roller (4.13)'s
+    tan alpha_me and 1, for the translating flat face 0 and 1; for a rocker its generated
+    outputs tan_alpha and i_z (derive/models/dynacam.py, _rocker and _rocker_flat) at B = 1/2
+    under the uniform law, whose h and h' there are h_m/2 and h_m/beta_m."""
+    if not getattr(opts, "rocker", False):
+        if getattr(opts, "flat_face", False):
+            return 0.0, 1.0
+        R_half = p["R_b"] + p["h_m"] / 2 if opts.cam == "radial" else p["R_b"]
+        return p["h_m"] / (R_half * p["beta_m"]), 1.0
+    from ..core.compiled import load
+    from ..core.laws import choose
+
+    model = load(opts.name)
+    pv = model.parameter_vector({k: v for k, v in p.items() if k in model.parameter_names})
+    pv[model.parameter_names.index("beta_0")] = 0.0
+    law = choose("uniform")
+    Y = np.zeros((1, len(model.state_names)))
+    Y[0, model.state_names.index("beta")] = p["beta_m"] / 2
+    out = driver.eval_outputs(model.capsule, pv, np.array([law.code], dtype=np.intc),
+                              np.array([law.par]), np.zeros(1), Y)[0]
+    names = model.output_names
+    return float(out[names.index("tan_alpha")]), float(out[names.index("i_z")])
+
+
 def _characteristics(opts, p: dict) -> dict:
+    if getattr(opts, "rocker", False) or getattr(opts, "flat_face", False):
+        return contact_form(opts, p, *mean_ratios(opts, p))
     c_x, m_x = p["c_x"], p["m_x"]
     if opts.shaft_z:
         c_c = 1.0 / (1.0 / c_x + 1.0 / p["c_z"])
@@ -83,7 +126,32 @@ def _characteristics(opts, p: dict) -> dict:
     t_m = p["beta_m"] / p["omega_s"]
     return {"tau": 2 * math.pi * math.sqrt(m / c_c) / t_m, "Fa": c_c / c_tan * tan_me**2,
             "Fv": m / m_tan * tan_me**2, "t_m": t_m, "c_c": c_c, "m": m, "tan_alpha_me": tan_me,
-            "c_tan": c_tan, "m_tan": m_tan}
+            "c_tan": c_tan, "m_tan": m_tan, "i_z_me": 1.0, "k_tan": c_tan * R_half**2,
+            "J_tan": m_tan * R_half**2}
+
+
+def contact_form(opts, p: dict, i_y: float, i_z: float) -> dict:
+    """:func:`characteristics` for any follower, the shaft taken to the contact: with the mean
+    slope h_1 = h_m/beta_m and the ratios i_y, i_z by which the shaft's deflections reach the
+    contact in mid-rise (:func:`mean_ratios`), the compliance seen there is
+    C = h_1^2/k + i_y^2/c_y and the shaft's mass M = (J h_1^2/k^2 + m_y i_y^2/c_y^2)/C^2
+    (the torque F h_1 winds the shaft, the force F i_y bends it); then Fa = c_c C,
+    Fv = m/M, c_c = 1/(1/c_x + i_z^2/c_z), m = m_x + m_z (c_c i_z/c_z)^2.  At the translating
+    roller's ratios (tan alpha_me, 1) these are (4.3)-(5.52) term by term (R_1/2 = h_1/i_y)."""
+    c_x, m_x = p["c_x"], p["m_x"]
+    if opts.shaft_z:
+        c_c = 1.0 / (1.0 / c_x + i_z**2 / p["c_z"])
+        m = m_x + p["m_z"] * (c_c * i_z / p["c_z"]) ** 2
+    else:
+        c_c, m = c_x, m_x
+    h_1 = p["h_m"] / p["beta_m"]
+    C = h_1**2 / p["k"] + (i_y**2 / p["c_y"] if opts.shaft_y else 0.0)
+    M = (p["J"] * h_1**2 / p["k"] ** 2 + (p["m_y"] * i_y**2 / p["c_y"] ** 2 if opts.shaft_y
+                                          else 0.0)) / C**2
+    t_m = p["beta_m"] / p["omega_s"]
+    return {"tau": 2 * math.pi * math.sqrt(m / c_c) / t_m, "Fa": c_c * C, "Fv": m / M,
+            "t_m": t_m, "c_c": c_c, "m": m, "tan_alpha_me": i_y, "i_z_me": i_z,
+            "c_tan": i_y**2 / C, "m_tan": M * i_y**2, "k_tan": h_1**2 / C, "J_tan": M * h_1**2}
 
 
 def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
@@ -196,7 +264,7 @@ def placed(scene: DynacamScene) -> tuple[dict, dict, float]:
     params = dict(scene.parameters)
     params["beta_0"] = -scene.T_start * params["beta_m"]
     if getattr(scene.options, "rocker", False):
-        rocker_check(params)
+        rocker_check(params, getattr(scene.options, "flat_face", False))
     ch = characteristics(scene.options, params)
     return params, ch, (scene.T_end - scene.T_start) * ch["t_m"]
 
