@@ -193,16 +193,20 @@ def chain(sc, tolerance: float = TOLERANCE, build: bool = False) -> list[Candida
                                                     "linkage_friction": False}, [])
     if o.external:
         step("no_force", "no external force", {"external": False}, [])
-    cz = p.get("c_z") if o.shaft_z else None
+    # the shaft's stiffnesses as the contact feels them: z through i_z, y through i_y against
+    # the torsion through the mean slope h_1 (k/R_1/2^2 for the translating roller, whose
+    # i_y is h_1/R_1/2; a flat face square to its motion feels no y)
+    i_y, i_z = ch["tan_alpha_me"], ch["i_z_me"]
+    cz = p.get("c_z") / i_z**2 if o.shaft_z else None
     cy = p.get("c_y") if o.shaft_y else None
-    R_half = p["R_b"] + p["h_m"] / 2 if o.cam == "radial" else p["R_b"]
-    c_beta = p["k"] / R_half**2
+    c_beta = p["k"] * i_y**2 / (p["h_m"] / p["beta_m"]) ** 2
     crit_z = ([Criterion("c_z'/c_x", cz / p["c_x"], "against" if cz < p["c_x"] else "for",
                          "sec. 8.2.4: replacing the 4-DOF model by the 2-DOF one 'is not "
                          "permissible if c_z' << c_x' (U0'' off by a factor 2.45, fig. 8.3a, "
                          "c_z'/c_x = 0.1); with c_z' >> c_x it 'resembles' it (1.08, fig. 8.3b)")]
               if cz is not None else [])
-    crit_y = ([Criterion("c_y'/c_beta'", cy / c_beta, "for" if cy > c_beta else "against",
+    crit_y = ([Criterion("c_y'/c_beta'", cy / c_beta if c_beta > 0 else math.inf,
+                         "for" if cy > c_beta else "against",
                          "sec. 8.2.7: with c_y' >> c_beta' the tangential compliance is that of "
                          "the shaft's torsion, so folding y' into c_tan (4.4) changes little")]
               if cy is not None else [])
