@@ -6,6 +6,7 @@ from functools import cached_property
 import numpy as np
 
 from ..engine import driver, finder
+from . import display
 from . import stability as _stability
 from .errors import CamdynInputError, SimulationError
 
@@ -216,6 +217,88 @@ class Result:
             return self.outputs[name]
         raise KeyError(f"{name!r} is neither a state nor an output of {self.model.name}; "
                        f"known: {', '.join(self.names)}")
+
+    @property
+    def units(self) -> dict:
+        """name -> unit of the time, every state and every output (the model's manifest)."""
+        man = self.model.manifest
+        units = {man["time"]["name"]: man["time"]["unit"]}
+        units.update({s["name"]: s["unit"] for s in man["states"]})
+        units.update({o["name"]: o["unit"] for o in man["outputs"]})
+        return units
+
+    def _describe(self) -> dict:
+        """The run's settings and warnings, for the attributes of a table of it."""
+        return {"model": self.model.name, "method": self.method.name, "warnings": list(self.warnings),
+                "parameters": self.params, "stats": self.stats,
+                "note": "the values of one run: each step within the method's tolerance; a "
+                        "figure's error estimate comes from a second run (camdyn's answer "
+                        "contract, runtime/measure/contract.py)"}
+
+    def to_pandas(self):
+        """Every state and output at the recorded points as a pandas DataFrame indexed by the
+        time (a breakpoint appears twice, as left and right limit); ``.attrs`` holds the units,
+        the model, the method, the parameters, the run's statistics and its warnings."""
+        pd = display.need("pandas", "Result.to_pandas()")
+        time_name = self.model.manifest["time"]["name"]
+        frame = pd.DataFrame({n: self[n] for n in self.names},
+                             index=pd.Index(self.t, name=time_name))
+        frame.attrs.update(units=self.units, **self._describe())
+        return frame
+
+    def to_xarray(self):
+        """The run as an xarray Dataset over the recorded points (dimension ``point``, the time
+        its coordinate; a breakpoint appears twice), every state and output a variable with its
+        unit and description as attributes."""
+        xr = display.need("xarray", "Result.to_xarray()")
+        man = self.model.manifest
+        docs = {d["name"]: d.get("doc", "") for d in [*man["states"], *man["outputs"]]}
+        units = self.units
+        time_name = man["time"]["name"]
+        data = {n: ("point", np.asarray(self[n]), {"units": units[n], "description": docs[n]})
+                for n in self.names}
+        attrs = self._describe()
+        attrs = {**{k: v for k, v in attrs.items() if k not in ("parameters", "stats", "warnings")},
+                 "warnings": "; ".join(self.warnings) or "none",
+                 **{f"parameter_{k}": v for k, v in attrs["parameters"].items()},
+                 **{f"stat_{k}": v for k, v in attrs["stats"].items()}}
+        return xr.Dataset(data, coords={time_name: ("point", self.t, {"units": units[time_name]})},
+                          attrs=attrs)
+
+    def _repr_html_(self) -> str:
+        man = self.model.manifest
+        stats = self.stats
+        head = f"Run of {self.model.name} with {self.method.name}: {stats['n_steps']} steps, " \
+               f"{man['time']['name']} from {self.t[0]:g} to {self.t[-1]:g} {man['time']['unit']}"
+        params = display.table(["parameter", "value", "unit"],
+                               [[k, v, next((p["unit"] for p in man["parameters"] if p["name"] == k), "")]
+                                for k, v in self.params.items()])
+        runs = display.table(list(stats), [list(stats.values())])
+        return display.page(head, runs, params, display.warnings_block(self.warnings),
+                            display.picture(self.chart()))
+
+    def chart(self, names=None, note: str = "one run's values; figures with error estimates: "
+                                             "camdyn.runtime.measure.contract.answer"):
+        """``names`` (default: the model's residual acceleration and error, else its first two
+        states) against time, side by side: a matplotlib Figure made without pyplot."""
+        from matplotlib.figure import Figure
+
+        man = self.model.manifest
+        residual = man.get("residual") or {}
+        shown = list(names or [n for n in (residual.get("acceleration"), residual.get("error"))
+                               if n] or self.state_names[:2])
+        fig = Figure(figsize=(7, 3.2))
+        axes = fig.subplots(1, len(shown), squeeze=False)[0]
+        units = self.units
+        time_name = man["time"]["name"]
+        for ax, name in zip(axes, shown):
+            ax.plot(self.t, self[name], lw=0.8)
+            ax.set_xlabel(f"{time_name} ({units[time_name]})")
+            ax.set_ylabel(f"{name} ({units[name]})")
+            ax.grid(alpha=0.3)
+        fig.text(0.01, 0.01, note, fontsize=7)
+        fig.tight_layout(rect=(0, 0.06, 1, 1))
+        return fig
 
     def sample(self, times) -> dict:
         """States and outputs at ``times`` (dense output), as a dict of arrays."""

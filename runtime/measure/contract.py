@@ -67,6 +67,38 @@ class Answer:
             out["estimate_unavailable"] = self.unavailable
         return out
 
+    def to_pandas(self):
+        """The figures as a pandas DataFrame: one row per figure, its value, its error
+        estimate and the estimate's parts; ``.attrs`` holds the warnings and the target."""
+        from ..core import display
+
+        pd = display.need("pandas", "Answer.to_pandas()")
+        rows = {name: {"value": v, "error": self.errors.get(name),
+                       **{f"error_{k}": e for k, e in (self.sources.get(name) or {}).items()}}
+                for name, v in self.figures.items()}
+        frame = pd.DataFrame.from_dict(rows, orient="index")
+        frame.index.name = "figure"
+        frame.attrs.update(target=self.target, warnings=list(self.warnings),
+                           estimate_unavailable=self.unavailable)
+        return frame
+
+    def _repr_html_(self) -> str:
+        from ..core import display
+
+        rows = [[name, display.plus_minus(v, self.errors.get(name)),
+                 ", ".join(f"{k} {display.text(e)}" for k, e in (self.sources.get(name) or {}).items())]
+                for name, v in self.figures.items()]
+        extra = ([f"estimate unavailable: {self.unavailable}"] if self.unavailable else [])
+        chart = ""
+        if getattr(self.result, "chart", None) is not None:
+            est = [e for e in self.errors.values() if e is not None]
+            chart = display.picture(self.result.chart(note=(
+                f"the run the figures are read from; largest estimate {max(est):.2g}" if est
+                else "the run the figures are read from; no estimates")))
+        return display.page(f"{self.target}: {len(self.figures)} figures",
+                            display.table(["figure", "value \u00b1 error", "error's parts"], rows),
+                            display.warnings_block([*self.warnings, *extra]), chart)
+
     def at_end(self) -> tuple[dict, dict]:
         """(values, estimates) of every output of the run at its end, a constrained model's
         multipliers among them (named after its constraints, following its own outputs): the

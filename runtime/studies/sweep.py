@@ -30,6 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..core import display
 from ..core.errors import CamdynInputError, OutFolderError
 from ..core.methods import ADAPTIVE
 from ..core.outdir import Growing, entry, note, out_folder, writing
@@ -193,16 +194,74 @@ class SweepResult:
         return path
 
     def charts(self, out_dir) -> list[Path]:
-        """One PNG per figure against the last axis with more than one value, a line for every
-        combination of the other axes (up to 12, evenly picked), its error estimate shaded
-        about it, the points that warned marked, and a footnote with the largest estimate and
-        how many points warned (the answer contract on a chart)."""
-        import matplotlib
-
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-
+        """One PNG per figure (:meth:`chart`)."""
         out_dir = out_folder(out_dir)
+        written = []
+        for fig_name in [f for f in self.figures if not f.endswith("_error")]:
+            with writing(chart_file(out_dir, fig_name)) as path:
+                self.chart(fig_name).savefig(path, dpi=110)
+            written.append(path)
+        return written
+
+    @property
+    def units(self) -> dict:
+        """name -> unit of every axis and figure the target declares one for."""
+        return dict(self.meta.get("units", {}))
+
+    def _shape(self) -> tuple:
+        return tuple(len(v) for v in self.axes.values())
+
+    def to_pandas(self):
+        """The table as a pandas DataFrame, one row per grid point (the first axis slowest),
+        every figure beside its ``<figure>_error``; ``.attrs`` holds the units, the target
+        and the summary line."""
+        pd = display.need("pandas", "SweepResult.to_pandas()")
+        frame = pd.DataFrame({k: self.columns[k] for k in self.names})
+        frame.attrs.update(units=self.units, target=self.target, summary=self.summary())
+        return frame
+
+    def to_xarray(self):
+        """The sweep as an xarray Dataset on its grid: the axes are its coordinates (and
+        dimensions, in the grid's order), every figure, its ``<figure>_error``, the warnings
+        and the step counts are variables over them; units and descriptions are attributes."""
+        xr = display.need("xarray", "SweepResult.to_xarray()")
+        dims = list(self.axes)
+        shape = self._shape()
+        units = self.units
+        data = {}
+        for k in [*self.figures, *self.stats]:
+            values = np.asarray(self.columns[k], dtype=object if k == "warnings" else None)
+            attrs = {"units": units.get(k.removesuffix("_error"), "")}
+            if k.endswith("_error"):
+                attrs["description"] = f"error estimate of {k.removesuffix('_error')}"
+            data[k] = (dims, values.reshape(shape), attrs)
+        coords = {k: (k, np.asarray(v), {"units": units.get(k, "")}) for k, v in self.axes.items()}
+        return xr.Dataset(data, coords=coords, attrs={"target": self.target,
+                                                     "summary": self.summary()})
+
+    def _repr_html_(self) -> str:
+        figs = [f for f in self.figures if not f.endswith("_error")]
+        head = [*self.axes, *[f"{f} ± error" for f in figs], "warnings"]
+        rows = []
+        for i in range(len(self)):
+            row = [_item(self.columns[k][i]) for k in self.axes]
+            for f in figs:
+                e = self.columns.get(f"{f}_error")
+                row.append(display.plus_minus(_item(self.columns[f][i]),
+                                              None if e is None else _item(e[i])))
+            row.append(self.columns["warnings"][i] or "")
+            rows.append(row)
+        chart = display.picture(self.chart(figs[0])) if figs and len(self) > 1 else ""
+        return display.page(self.summary(), display.table(head, rows), chart)
+
+    def chart(self, fig_name: str):
+        """The figure ``fig_name`` against the last axis with more than one value, a line for
+        every combination of the other axes (up to 12, evenly picked), its error estimate
+        shaded about it, the points that warned marked, and a footnote with the largest
+        estimate and how many points warned (the answer contract on a chart): a matplotlib
+        Figure, made without pyplot so that a notebook's backend stays as it is."""
+        from matplotlib.figure import Figure
+
         names = list(self.axes)
         shape = tuple(len(v) for v in self.axes.values())
         multi = [k for k, n in enumerate(shape) if n > 1]
@@ -212,51 +271,46 @@ class SweepResult:
         if len(combos) > 12:
             combos = [combos[int(round(j))] for j in np.linspace(0, len(combos) - 1, 12)]
         x = self.axes[names[x_ax]]
-        written = []
         warned = np.array([bool(w) for w in self.columns["warnings"]]).reshape(shape)
-        for fig_name in [f for f in self.figures if not f.endswith("_error")]:
-            data = np.asarray(self.columns[fig_name], dtype=float).reshape(shape)
-            err = self.columns.get(f"{fig_name}_error")
-            err = None if err is None else np.asarray(err, dtype=float).reshape(shape)
-            fig, ax = plt.subplots(figsize=(7, 4.6))
-            for c in combos:
-                idx = [0] * len(names)
-                for k, j in zip(others, c):
-                    idx[k] = j
-                idx[x_ax] = slice(None)
-                label = ", ".join(f"{names[k]} = {self.axes[names[k]][j]:g}"
-                                  for k, j in zip(others, c))
-                y = data[tuple(idx)]
-                # a marker where the x axis has one value: a line of one point draws nothing
-                line, = ax.plot(x, y, lw=1.0, label=label or None,
-                                marker="o" if len(x) == 1 else None)
-                if err is not None and np.any(np.isfinite(err[tuple(idx)])):
-                    e = err[tuple(idx)]
-                    ax.fill_between(x, y - e, y + e, color=line.get_color(), alpha=0.25, lw=0)
-                w = warned[tuple(idx)]
-                if w.any():
-                    ax.plot(np.asarray(x)[w], y[w], "x", color="#e53935", ms=5)
-            finite = data[np.isfinite(data)]
-            if finite.size and finite.min() > 0 and finite.max() > 100 * finite.min():
-                ax.set_yscale("log")     # U0 and U0'' span decades between the dips of (3.5)
-            ax.set_xlabel(names[x_ax])
-            ax.set_ylabel(fig_name)
-            ax.set_title(f"{self.target}: {fig_name}", fontsize=10)
-            ax.grid(alpha=0.3)
-            if combos and combos[0]:
-                ax.legend(fontsize=7)
-            note = chart_note({fig_name: (data, err if err is not None else
-                                          np.full(data.shape, np.nan))},
-                              self.columns["warnings"], points=len(self))
-            fig.text(0.01, 0.01, note + ("; x: a point that warned" if warned.any() else "")
-                     + ("; shaded: ± the estimate" if err is not None
-                        and np.any(np.isfinite(err)) else ""), fontsize=7)
-            fig.tight_layout(rect=(0, 0.07, 1, 1))
-            with writing(chart_file(out_dir, fig_name)) as path:
-                fig.savefig(path, dpi=110)
-            plt.close(fig)
-            written.append(path)
-        return written
+        data = np.asarray(self.columns[fig_name], dtype=float).reshape(shape)
+        err = self.columns.get(f"{fig_name}_error")
+        err = None if err is None else np.asarray(err, dtype=float).reshape(shape)
+        fig = Figure(figsize=(7, 4.6))
+        ax = fig.subplots()
+        for c in combos:
+            idx = [0] * len(names)
+            for k, j in zip(others, c):
+                idx[k] = j
+            idx[x_ax] = slice(None)
+            label = ", ".join(f"{names[k]} = {self.axes[names[k]][j]:g}"
+                              for k, j in zip(others, c))
+            y = data[tuple(idx)]
+            # a marker where the x axis has one value: a line of one point draws nothing
+            line, = ax.plot(x, y, lw=1.0, label=label or None,
+                            marker="o" if len(x) == 1 else None)
+            if err is not None and np.any(np.isfinite(err[tuple(idx)])):
+                e = err[tuple(idx)]
+                ax.fill_between(x, y - e, y + e, color=line.get_color(), alpha=0.25, lw=0)
+            w = warned[tuple(idx)]
+            if w.any():
+                ax.plot(np.asarray(x)[w], y[w], "x", color="#e53935", ms=5)
+        finite = data[np.isfinite(data)]
+        if finite.size and finite.min() > 0 and finite.max() > 100 * finite.min():
+            ax.set_yscale("log")     # U0 and U0'' span decades between the dips of (3.5)
+        ax.set_xlabel(names[x_ax])
+        ax.set_ylabel(fig_name)
+        ax.set_title(f"{self.target}: {fig_name}", fontsize=10)
+        ax.grid(alpha=0.3)
+        if combos and combos[0]:
+            ax.legend(fontsize=7)
+        note = chart_note({fig_name: (data, err if err is not None else
+                                      np.full(data.shape, np.nan))},
+                          self.columns["warnings"], points=len(self))
+        fig.text(0.01, 0.01, note + ("; x: a point that warned" if warned.any() else "")
+                 + ("; shaded: ± the estimate" if err is not None
+                    and np.any(np.isfinite(err)) else ""), fontsize=7)
+        fig.tight_layout(rect=(0, 0.07, 1, 1))
+        return fig
 
     def write(self, out_dir) -> list[Path]:
         """sweep.csv, sweep.parquet (with pyarrow) and the charts into ``out_dir``."""
@@ -369,10 +423,18 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
         columns = {k: np.concatenate([table.rows[k], v]) for k, v in columns.items()}
     res = SweepResult(tgt.name, axes, run.figures, columns, run.seconds, run.where,
                       meta={"target": run.target, "tight": run.tight, "estimated": estimate,
-                            "kept": kept})
+                            "kept": kept, "units": _units(tgt, axes)})
     if table is not None:
         res.files = [table.path] + res._beside(table.path.parent)
     return res
+
+
+def _units(tgt, axes: dict) -> dict:
+    """The units the target declares for the sweep's axes and figures (a blank one left out)."""
+    params = tgt.parameters()
+    units = {k: params[k].unit for k in axes if k in params and params[k].unit}
+    units.update({f.name: f.unit for f in tgt.figures() if f.unit})
+    return units
 
 
 TABLE = "sweep.csv"
