@@ -6,11 +6,13 @@ response's tau and its largest Fa (what a work-precision study or a sweep of the
 runs).  Its main job writes into the output folder
 
     report.md      what was run and the key figures next to the thesis's, each with its
-                   error estimate, and the runs' warnings
+                   error estimate, and the runs' warnings; with a [follower], its design
+                   point (tau, Fa) and the reduced figures it came from
     report.json    the same for machines
     response.png   X'' against T at one tau for several Fa (fig. 4.10)
     graphs.png     U0, max deceleration and its instant, U0dd against tau (fig. 4.11), U0 and
-                   U0dd with their envelopes through the maxima (secs 3.5, 8.2.6)
+                   U0dd with their envelopes through the maxima (secs 3.5, 8.2.6); a
+                   follower's design point marked
     envelopes.csv  U0 and U0dd and their envelopes per Fa and tau, with U0's and U0dd's
                    error estimates
 """
@@ -84,6 +86,10 @@ class StudyTarget(ModelTarget):
         written and the text to print."""
         record = self.study(out_dir, estimate, progress)
         record["lines"] = [f"report: {out_dir / 'report.md'}"]
+        if "design_point" in record:
+            d = record["design_point"]
+            record["lines"].insert(0, f"design point of the follower: tau = {d['tau']:.4g}, "
+                                      f"Fa = {d['Fa']:.4g}; U0 = {_pm(d['U0'], d['U0_error'])}")
         return record
 
     def study(self, out_dir, estimate: bool = True, progress=None) -> dict:
@@ -115,8 +121,8 @@ class StudyTarget(ModelTarget):
             row["warnings"] = list(a.warnings)
             warnings += [f"Fa = {Fa:g}: {w}" for w in a.warnings]
             summary["response"].append(row)
-            ax[0].plot(T, s["Xdd"], label=f"Fa = {Fa:g}")
-            ax[1].plot(T, s["U"], label=f"Fa = {Fa:g}")
+            ax[0].plot(T, s["Xdd"], label=_fa_label(Fa, scene))
+            ax[1].plot(T, s["U"], label=_fa_label(Fa, scene))
         ax[0].plot(T, s["Hdd"], "k--", lw=0.8, label="nominal H''")
         ax[0].set_ylabel("X''  (h_m'/t_m^2)")
         ax[1].set_ylabel("U = X - H  (h_m')")
@@ -153,6 +159,7 @@ class StudyTarget(ModelTarget):
         envelopes, envelope_errors = {}, {}
         for k, (Fa, vals) in enumerate(rows.items()):
             colour = f"C{k}"
+            label = _fa_label(Fa, scene)
             U0 = [v["U0"] for v in vals]
             U0dd = [v["U0dd"] for v in vals]
             # the curves a designer reads (secs 3.5, 8.2.6): through the maxima, bold; the
@@ -165,14 +172,17 @@ class StudyTarget(ModelTarget):
                                        for v in vals])(taus) for k in ("U0", "U0dd")}
             ax[0, 0].semilogy(taus, U0, color=colour, lw=0.6, alpha=0.6)
             ax[0, 0].semilogy(taus, envelopes[Fa]["U0"](taus), color=colour, lw=1.8,
-                              label=f"Fa = {Fa:g}")
+                              label=label)
             ax[0, 1].plot(taus, [-v["Xdd_min_rise"] for v in vals], color=colour,
-                          label=f"Fa = {Fa:g}")
+                          label=label)
             ax[1, 0].plot(taus, [v["T_at_Xdd_min"] for v in vals], color=colour,
-                          label=f"Fa = {Fa:g}")
+                          label=label)
             ax[1, 1].plot(taus, U0dd, color=colour, lw=0.6, alpha=0.6)
             ax[1, 1].plot(taus, envelopes[Fa]["U0dd"](taus), color=colour, lw=1.8,
-                          label=f"Fa = {Fa:g}")
+                          label=label)
+        design = _design_row(scene, summary["response"])
+        if design is not None:
+            _mark(ax, design, f"C{list(rows).index(design['Fa'])}")
         if scene["law"] == "cycloidal":
             fine = np.linspace(graphs["tau_min"], min(graphs["tau_max"], 0.99), 600)
             ax[0, 0].semilogy(fine, references.U0(fine), "k:", lw=0.8, label="(3.5)")
@@ -226,6 +236,12 @@ class StudyTarget(ModelTarget):
                     ratio_error = None
         summary["U0_ratio_Fa2_Fa0"] = ratio
         summary["U0_ratio_Fa2_Fa0_error"] = ratio_error
+        if design is not None:
+            summary["design_point"] = design
+            if not graphs["tau_min"] <= design["tau"] <= graphs["tau_max"]:
+                warnings.append(f"the design point's tau = {design['tau']:.4g} lies outside the "
+                                f"graphs' tau range [{graphs['tau_min']:g}, "
+                                f"{graphs['tau_max']:g}]: widen [study.graphs]")
         summary["warnings"] = warnings
         summary["elapsed_seconds"] = time.perf_counter() - t_start
         write_text(out_dir / "report.json", json.dumps(summary, indent=1, default=_json))
@@ -252,6 +268,8 @@ class StudyTarget(ModelTarget):
                          f"{_pm(d['Xdd_min_rise'], d['Xdd_min_rise_error'])} | "
                          f"{_pm(d['T_at_Xdd_min'], d['T_at_Xdd_min_error'])} | {d['n_steps']} | "
                          f"{1e3 * d['seconds']:.2f} |")
+        if "design_point" in summary:
+            lines += _design_lines(summary["design_point"])
         if summary["U0_ratio_Fa2_Fa0"] is not None:
             lines += ["", f"U0 at Fa = 2 over U0 at Fa = 0: **"
                       f"{_pm(summary['U0_ratio_Fa2_Fa0'], summary['U0_ratio_Fa2_Fa0_error'], 3)}"
@@ -261,6 +279,57 @@ class StudyTarget(ModelTarget):
         lines += ["", "## Charts", "", "![response](response.png)", "", "![graphs](graphs.png)",
                   "", f"Elapsed: {summary['elapsed_seconds']:.1f} s.", ""]
         return "\n".join(lines)
+
+
+def _fa_label(Fa: float, scene: dict) -> str:
+    """A curve's legend: its Fa, and whether it is a follower's design point's."""
+    mine = "design" in scene and Fa == scene["design"]["Fa"]
+    return f"Fa = {Fa:g}" + (" (follower)" if mine else "")
+
+
+def _design_row(scene: dict, response: list) -> dict | None:
+    """A follower's design point (scene_files.study_follower) with the figures of its
+    response run and, as sec. 3.3 scales them, the residual vibration at the output:
+    u0 = U0 h_m', u0'' = U0'' h_m'/t_m^2."""
+    design = scene.get("design")
+    if design is None:
+        return None
+    (row,) = [r for r in response if r["Fa"] == design["Fa"]]
+    h, t_m = design["figures"]["stroke"]["value"], design["figures"]["t_m"]["value"]
+    out = {**design, **{k: row[k] for k in RESIDUAL_FIGURES},
+           **{f"{k}_error": row[f"{k}_error"] for k in RESIDUAL_FIGURES}}
+    for name, key, scale in (("u0", "U0", h), ("u0dd", "U0dd", h / t_m**2)):
+        out[name] = row[key] * scale
+        error = row[f"{key}_error"]
+        out[f"{name}_error"] = None if error is None else error * scale
+    return out
+
+
+def _mark(ax, design: dict, colour: str) -> None:
+    """The design point on the four graphs of fig. 4.11, at its response run's figures."""
+    label = f"design point: tau = {design['tau']:.3g}, Fa = {design['Fa']:.3g}"
+    for a_, value in ((ax[0, 0], design["U0"]), (ax[0, 1], -design["Xdd_min_rise"]),
+                      (ax[1, 0], design["T_at_Xdd_min"]), (ax[1, 1], design["U0dd"])):
+        a_.axvline(design["tau"], color=colour, lw=0.6, ls=":")
+        a_.plot([design["tau"]], [value], marker="*", ms=11, color=colour, mec="k", mew=0.6,
+                ls="none", label=label, zorder=5)
+
+
+def _design_lines(d: dict) -> list[str]:
+    """report.md's section on a follower's design point: its inputs, the figures each with
+    the formula it came from, and the residual vibration there."""
+    f = d["follower"]
+    lines = ["", f"## Design point of the follower ({f['kind']})", "",
+             "Given: " + ", ".join(f"{k} = {v:g}" for k, v in f.items() if k != "kind") + ".",
+             "", "| figure | value | unit | from |", "|---|---:|---|---|"]
+    lines += [f"| {k} | {v['value']:.6g} | {v['unit']} | {v['formula']} |"
+              for k, v in d["figures"].items()]
+    lines += ["", f"At tau = {d['tau']:.4g}, Fa = {d['Fa']:.4g}: "
+              f"U0 = {_pm(d['U0'], d['U0_error'])}, "
+              f"U0'' = {_pm(d['U0dd'], d['U0dd_error'])}; at the output u0 = U0 h_m' = "
+              f"{_pm(d['u0'], d['u0_error'])} m, u0'' = U0'' h_m'/t_m^2 = "
+              f"{_pm(d['u0dd'], d['u0dd_error'])} m/s^2 (sec. 3.3)."]
+    return lines
 
 
 def _float(v):

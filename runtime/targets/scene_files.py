@@ -17,7 +17,16 @@ Every scene says which study it is with ``kind`` and has the same top-level shap
 ``kind = "camshaft1-study"``
     the CAMSHAFT-1 study of thesis ch. 4 (`camdyn run`'s default): ``[study.response]`` (fig.
     4.10) and ``[study.graphs]`` (fig. 4.11), ``[run]`` method and rtol
-    (:mod:`camdyn.runtime.targets.camshaft1_study`).
+    (:mod:`camdyn.runtime.targets.camshaft1_study`).  An optional ``[follower]`` gives the
+    machine behind the study in place of the response's tau and Fa: ``kind``
+    "oscillating-roller" (``swing`` deg, ``arm_length``, ``arm_inertia`` or ``mass`` at the
+    roller, ``arm_stiffness`` or ``stiffness`` at the roller) or "translating-roller"
+    (``stroke``, ``mass``, ``stiffness``), with ``speed`` (r.p.m.), ``cam_angle`` (deg),
+    ``pitch_radius`` R_1/2 and ``c_tan``.  Its design point, a rocker reduced to its arc by
+    (2.55)-(2.57), tau (4.12) and Fa (4.14), is formed as `camdyn design` forms it
+    (:mod:`camdyn.runtime.cam.reduction`); the response is run there and at Fa = 0, the
+    graphs add its Fa and mark it.  ``[study.response]`` is then left out: tau or Fa there
+    as well is refused.
 ``kind = "beam-follower"``
     the paper's Rayleigh-beam follower: ``[parameters]`` the fields of
     :class:`camdyn.runtime.targets.beam_case.Case`, ``[run]`` revolutions, rtol, formulation.
@@ -40,6 +49,7 @@ from dataclasses import dataclass, field, fields
 from importlib import resources
 from pathlib import Path
 
+from ..cam.reduction import LARGEST
 from ..core.errors import CamdynInputError, on_disk
 from ..core.methods import DEFAULT_RTOL
 
@@ -162,11 +172,19 @@ _STUDY_OPTIONAL = {"reference": str, "note": str}
 
 def check_study(data: dict, where: str) -> dict:
     """A camshaft1-study scene: every key of the schema, the right types, tau and Fa inside
-    the ranges the CAMSHAFT-1 manifest declares, a known method and law."""
+    the ranges the CAMSHAFT-1 manifest declares, a known method and law.  With a ``[follower]``
+    the returned table has the follower's design point as [study.response] (tau, and Fa with
+    Fa = 0 beside it), its Fa among the graphs' and the point itself under ``design``
+    (:func:`study_follower`)."""
     from ..core.laws import choose
     from ..core.methods import METHODS
     from ..core.compiled import load
 
+    design = None
+    if "follower" in data:
+        _one_design_point(data, where)
+        design = study_follower(data["follower"], where)
+        data = _with_design_point(data, design)
     run = data.get("run")
     if isinstance(run, dict):          # the tolerances are read apart, by the one reader
         tolerances(run, where)
@@ -193,7 +211,178 @@ def check_study(data: dict, where: str) -> dict:
     graphs = study["graphs"]
     if not graphs["tau_max"] > graphs["tau_min"]:
         raise CamdynInputError(f"{where}: study.graphs.tau_min must be below study.graphs.tau_max")
-    return data
+    if design is None:
+        return data
+    # the design point's own curve, so that its mark on fig. 4.11 lies on a graph
+    Fa = graphs["Fa"] if design["Fa"] in graphs["Fa"] else [*graphs["Fa"], design["Fa"]]
+    return {**data, "study": {**study, "graphs": {**graphs, "Fa": Fa}}, "design": design}
+
+
+# -- the machine behind a study ([follower]): its design point (tau, Fa) -------------------
+
+ROCKER, TRANSLATING = "oscillating-roller", "translating-roller"
+FOLLOWER_KEYS = {
+    # key: (what it is, unit, upper bound; the lower is 0, open): LARGEST bounds them as
+    # `camdyn design` bounds its inputs
+    "swing": ("the rocker's swing Phi", "deg", 180.0),
+    "arm_length": ("the arm l, pivot to roller centre", "m", LARGEST),
+    "arm_inertia": ("the arm's inertia J about the pivot", "kg m^2", LARGEST),
+    "arm_stiffness": ("the arm's torsional stiffness k_t at the pivot", "N m/rad", LARGEST),
+    "stroke": ("h_m', the stroke of the output", "m", LARGEST),
+    "mass": ("m, the mass at the output (4.39)", "kg", LARGEST),
+    "stiffness": ("c_c, the stiffness at the output (4.3)", "N/m", LARGEST),
+    "speed": ("the camshaft's speed", "r.p.m.", LARGEST),
+    "cam_angle": ("beta_m, the cam angle of the rise", "deg", 360.0),
+    "pitch_radius": ("R_1/2, the pitch radius at half the stroke (4.1)", "m", LARGEST),
+    "c_tan": ("the camshaft's tangential stiffness at R_1/2 (4.4)", "N/m", LARGEST),
+}
+"""The keys of [follower] besides ``kind``."""
+_CAMSHAFT = (("speed",), ("cam_angle",), ("pitch_radius",), ("c_tan",))
+FOLLOWER_KINDS = {
+    # a rocker gives its arm at the pivot, or a quantity at the roller already
+    ROCKER: (("swing",), ("arm_length",), ("arm_inertia", "mass"), ("arm_stiffness", "stiffness"),
+             *_CAMSHAFT),
+    TRANSLATING: (("stroke",), ("mass",), ("stiffness",), *_CAMSHAFT),
+}
+"""What each kind of follower needs: one key of each group."""
+
+
+def _follower_numbers(table, where: str) -> tuple[str, dict]:
+    """(kind, the given numbers): every key known and of the follower's kind, a number in its
+    range, one of each group of FOLLOWER_KINDS."""
+    if not isinstance(table, dict):
+        raise CamdynInputError(f"{where}: [follower] must be a table")
+    kind = table.get("kind")
+    if kind not in FOLLOWER_KINDS:
+        said = " is missing" if kind is None else f"={kind!r}"
+        raise CamdynInputError(f'{where}: follower.kind{said}: choose "{ROCKER}" or '
+                               f'"{TRANSLATING}"')
+    takes = [k for group in FOLLOWER_KINDS[kind] for k in group]
+    for key in table:
+        if key in FOLLOWER_KEYS and key not in takes:
+            why = ("a rocker's stroke is its arc, arm_length x swing (2.55)" if key == "stroke"
+                   else "a rocker's key")
+            raise CamdynInputError(f'{where}: follower.{key} is refused with kind = "{kind}" '
+                                   f"({why}); it takes {', '.join(takes)}")
+        if key != "kind" and key not in FOLLOWER_KEYS:
+            raise CamdynInputError(f"{where}: follower.{key} is not a follower key; keys are "
+                                   f"kind, {', '.join(FOLLOWER_KEYS)}")
+    values = {}
+    for key in takes:
+        if key in table:
+            what, unit, upper = FOLLOWER_KEYS[key]
+            v = _number(f"{where}: follower.{key}", table[key])
+            if not 0 < v < upper:
+                raise CamdynInputError(f"{where}: follower.{key}={v:g} is out of range: "
+                                       f"0 < {key} < {upper:g} ({unit}, {what})")
+            values[key] = v
+    for group in FOLLOWER_KINDS[kind]:
+        given = [k for k in group if k in values]
+        if len(given) > 1:
+            raise CamdynInputError(f"{where}: follower.{given[0]} and follower.{given[1]}: the "
+                                   "arm's about the pivot or the one at the roller, not both")
+        if not given:
+            what, unit, _ = FOLLOWER_KEYS[group[0]]
+            alt = "".join(f"; or {k} ({FOLLOWER_KEYS[k][1]} at the roller)" for k in group[1:])
+            raise CamdynInputError(f"{where}: follower.{group[0]} is missing ({unit}, {what}"
+                                   f"{alt})")
+    return kind, values
+
+
+def study_follower(table, where: str = "<scene>") -> dict:
+    """The design point of a [follower] table (README "Scenes"): its inputs checked, a rocker
+    reduced to its roller centre's arc (2.55)-(2.57), tau (4.12) and Fa (4.14) formed as
+    `camdyn design` forms them (runtime/cam/reduction.py) and inside the CAMSHAFT-1
+    manifest's ranges.  A record: ``tau``, ``Fa``, the ``follower`` as given and the
+    ``figures`` at the output, each {value, unit, formula}."""
+    from ..cam import reduction as red
+
+    kind, v = _follower_numbers(table, where)
+    try:
+        at = _at_output(kind, v)
+        point = red.design_point(stroke=at["stroke"][0], mass=at["mass"][0],
+                                 stiffness=at["stiffness"][0], speed=v["speed"],
+                                 cam_angle=math.radians(v["cam_angle"]),
+                                 pitch_radius=v["pitch_radius"], c_tan=v["c_tan"])
+    except (ZeroDivisionError, OverflowError):   # a product or square beyond a double
+        raise CamdynInputError(f"{where}: [follower]: {_inputs(v, v)} give no finite tau and "
+                               "Fa ((4.12), (4.14))") from None
+    _in_manifest(point, v, where)
+    formulas = {**{k: f for k, (_, f) in at.items()}, **red.FORMULAS}
+    return {"tau": point.tau, "Fa": point.Fa, "follower": {"kind": kind, **v},
+            "figures": {k: {"value": getattr(point, k), "unit": unit, "formula": formulas[k]}
+                        for k, unit in red.UNITS.items()}}
+
+
+def _at_output(kind: str, v: dict) -> dict:
+    """The follower's stroke, mass and stiffness at the output, each (value, formula): a
+    rocker's reduced to its roller centre's arc (2.55)-(2.57) unless given there."""
+    from ..cam import reduction as red
+
+    if kind != ROCKER:
+        return {k: (v[k], "given") for k in ("stroke", "mass", "stiffness")}
+    l = v["arm_length"]
+    at = {"stroke": (red.arc_stroke(l, v["swing"]), red.ROCKER_FORMULAS["stroke"])}
+    for name, pivot, reduce in (("mass", "arm_inertia", red.arc_mass),
+                                ("stiffness", "arm_stiffness", red.arc_stiffness)):
+        at[name] = ((reduce(v[pivot], l), red.ROCKER_FORMULAS[name]) if pivot in v
+                    else (v[name], "given at the roller"))
+    return at
+
+
+_TAU_FROM = ("arm_inertia", "mass", "arm_stiffness", "stiffness", "arm_length", "speed",
+             "cam_angle")
+_FA_FROM = ("arm_stiffness", "stiffness", "arm_length", "swing", "stroke", "pitch_radius",
+            "cam_angle", "c_tan")
+"""The follower's inputs that tau = T_e/t_m and Fa = (c_c/c_tan) tan^2 alpha_me come from."""
+
+
+def _inputs(values: dict, keys) -> str:
+    return ", ".join(f"{k}={values[k]:g}" for k in keys if k in values)
+
+
+def _in_manifest(point, values: dict, where: str) -> None:
+    """tau and Fa of the design point inside CAMSHAFT-1's declared ranges, else refused naming
+    the follower's inputs they come from."""
+    from ..core.compiled import load
+
+    declared = {p["name"]: p for p in load("camshaft1").manifest["parameters"]}
+    for name, value, formula, keys in (("tau", point.tau, "T_e/t_m (4.12)", _TAU_FROM),
+                                       ("Fa", point.Fa, "(c_c/c_tan) tan^2 alpha_me (4.14)",
+                                        _FA_FROM)):
+        p = declared[name]
+        if not parameter_spec(p).admits(value):
+            raise CamdynInputError(f"{where}: [follower]: {_inputs(values, keys)} give {name} = "
+                                   f"{formula} = {value:.4g}, out of CAMSHAFT-1's range "
+                                   f"{p['range']}")
+
+
+def _response(data: dict):
+    """The scene's [study.response] table as given ({} if left out), None if not a table."""
+    study = data.get("study")
+    response = study.get("response", {}) if isinstance(study, dict) else None
+    return response if isinstance(response, dict) else None
+
+
+def _one_design_point(data: dict, where: str) -> None:
+    """A [follower] gives the design point: tau or Fa in [study.response] as well is refused."""
+    for key in ("tau", "Fa"):
+        if key in (_response(data) or {}):
+            raise CamdynInputError(f"{where}: study.response.{key} and [follower] both given: the "
+                                   "follower gives the design point's tau (4.12) and Fa (4.14); "
+                                   "give one or the other")
+
+
+def _with_design_point(data: dict, design: dict) -> dict:
+    """The scene with the follower's design point as its [study.response]: tau, and its Fa
+    with Fa = 0 (the rigid camshaft) beside it, to compare."""
+    out = {k: v for k, v in data.items() if k != "follower"}
+    response = _response(data)
+    if response is None:
+        return out              # the schema names what is wrong
+    Fa = [0.0, design["Fa"]] if design["Fa"] > 0 else [0.0]
+    out["study"] = {**data["study"], "response": {**response, "tau": design["tau"], "Fa": Fa}}
+    return out
 
 
 def _finite(v) -> bool:
@@ -323,11 +512,15 @@ def declared_parameters(options, progress=None) -> dict:
     pre-generated variant's at once, any other's once it is built on demand."""
     from ..core.variants import variant_manifest
 
-    return {p["name"]: ParameterSpec(p["name"], p["unit"], p["doc"],
-                                     -math.inf if p["low"] is None else p["low"],
-                                     math.inf if p["high"] is None else p["high"],
-                                     p["open_low"], p["open_high"])
-            for p in variant_manifest(options, progress)["parameters"]}
+    return {p["name"]: parameter_spec(p) for p in variant_manifest(options, progress)["parameters"]}
+
+
+def parameter_spec(p: dict) -> ParameterSpec:
+    """A parameter of a compiled manifest as a ParameterSpec (no bound: infinite)."""
+    return ParameterSpec(p["name"], p["unit"], p["doc"],
+                         -math.inf if p["low"] is None else p["low"],
+                         math.inf if p["high"] is None else p["high"],
+                         p["open_low"], p["open_high"])
 
 
 def check_parameters(options, table) -> dict:

@@ -1,27 +1,23 @@
 """What the designer gives, turned into the machine's figures (App. 7 (5)-(12)):
 T_e = 2 pi (m/c_c)^(1/2) (4.39), t_m = beta_m/w_s (App. 7 (8)), tau = T_e/t_m (4.12),
 tan alpha_me = h_m'/(i R_1/2 beta_m) (4.13), Fa = (c_c/c_tan) tan^2 alpha_me (4.14); every
-input checked, every figure with the way it was found.  The formulas are the theory's
-(thesis/theory/examples.py).
+input checked, every figure with the way it was found.  The formulas, and a rocker's reduction
+to its roller (2.55)-(2.57), are the runtime's (runtime/cam/reduction.py), which a
+camshaft1-study scene's [follower] forms its design point with: the two agree bit for bit.
+thesis/theory/examples.py types the same formulas in from the thesis, and tests compare.
 """
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
 
+from camdyn.runtime.cam import reduction as red
 from camdyn.runtime.core.errors import CamdynInputError
-from camdyn.thesis.theory import examples as ex
 
 from .limits import FA_CAP, TAU_CAP
 
 
-LARGEST = 1e12
-"""The largest value a design input takes in SI units unless it has a bound of its own: far
-beyond any machine, and far enough below the largest float that the products and squares of
-the design formulas stay finite (a rise time of 1e300 s overflowed them)."""
-
-
-def positive(name: str, flag: str, value, unit: str, upper: float | None = LARGEST):
+def positive(name: str, flag: str, value, unit: str, upper: float | None = red.LARGEST):
     """``value`` as a float > 0 and < ``upper``, None for None; else a CamdynInputError naming
     the option ``flag``, the quantity and its unit."""
     if value is None:
@@ -60,8 +56,8 @@ def rocker(*, swing_deg, arm_length, stroke=None, inertia=None, mass=None,
                                    f"{name} at the roller, not both")
     J = positive("J", "--arm-inertia", inertia, "kg m^2")
     k_t = positive("k_t", "--arm-stiffness", torsional_stiffness, "N m/rad")
-    return (l * math.radians(Phi), mass if J is None else J / l**2,
-            stiffness if k_t is None else k_t / l**2)
+    return (red.arc_stroke(l, Phi), mass if J is None else red.arc_mass(J, l),
+            stiffness if k_t is None else red.arc_stiffness(k_t, l))
 
 
 def cam_angle(text) -> float:
@@ -132,9 +128,9 @@ def machine(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None
         raise CamdynInputError("argument --rise-time: not allowed with both --cam-angle and "
                                "--speed (t_m = beta_m/w_s, App. 7 (8)); give one or the other")
     if rpm is not None:
-        M.w_s = rpm * 2 * math.pi / 60
+        M.w_s = red.shaft_speed(rpm)
         if beta is not None:
-            t_m = ex.rise_time(beta, M.w_s)
+            t_m = red.rise_time(beta, M.w_s)
             src["t_m"] = "beta_m/w_s (App. 7 (8))"
         elif t_m is not None:
             M.beta_m = beta = t_m * M.w_s
@@ -172,8 +168,8 @@ def machine(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None
         if t_m is None:
             raise CamdynInputError("argument --rise-time: required with --mass and --stiffness "
                                    "(tau = T_e/t_m, (4.12)); or --cam-angle with --speed")
-        M.T_e = ex.natural_period(m, c)
-        M.tau = M.T_e / t_m
+        M.T_e = red.natural_period(m, c)
+        M.tau = red.period_ratio(M.T_e, t_m)
         src["T_e"] = "2 pi (m/c_c)^(1/2) (4.39)"
         src["tau"] = "T_e/t_m (4.12)"
         if not M.tau < TAU_CAP:
@@ -192,7 +188,7 @@ def machine(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None
             raise CamdynInputError("argument --pitch-radius: needs the cam angle (--cam-angle, "
                                    "or --rise-time with --speed) for tan alpha_me = h_m'/(i "
                                    "R_1/2 beta_m) (4.13)")
-        M.tan_alpha_me = ex.mean_slope(h / (i or 1.0), R, beta)
+        M.tan_alpha_me = red.mean_slope(h / (i or 1.0), R, beta)
         src["tan_alpha_me"] = "h_m'/(i R_1/2 beta_m) (4.13)"
     if Fa is not None:
         if c_t is not None:
@@ -205,7 +201,7 @@ def machine(*, stroke, rise_time=None, cam_angle_rad=None, speed=None, mass=None
             raise CamdynInputError("argument --c-tan: Fa = (c_c/c_tan) tan^2 alpha_me (4.14) needs "
                                    "c_c (--stiffness, or --mass with --tau and t_m) and tan alpha_me "
                                    "(--pitch-radius with the cam angle, or --tan-alpha-me)")
-        M.Fa = ex.shaft_factor(M.stiffness, c_t, M.tan_alpha_me)
+        M.Fa = red.shaft_factor(M.stiffness, c_t, M.tan_alpha_me)
         src["Fa"] = "(c_c/c_tan) tan^2 alpha_me (4.14)"
         if not M.Fa <= FA_CAP:
             raise CamdynInputError(f"argument --c-tan: it gives Fa = (c_c/c_tan) tan^2 alpha_me = "
