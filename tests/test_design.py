@@ -392,6 +392,7 @@ def test_a_rocker_designs_at_its_roller_by_the_reduction_of_sec_2_4(capsys):
                         (["--swing", "18", "--arm-length", "0.08", "--arm-inertia", "0.0039",
                           "--mass", "0.6"], "not both"),
                         (["--swing", "200", "--arm-length", "0.08"], "0 < swing < 180"),
+                        (["--swing", "18", "--arm-length", "1e-200"], "1e-06 <= l < 1e+12"),
                         ([], "the stroke of the output member is required")):
         assert main(["design", *args, *common[:-2]]) == 2
         err = capsys.readouterr().err.strip().splitlines()

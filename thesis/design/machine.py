@@ -32,6 +32,10 @@ def positive(name: str, flag: str, value, unit: str, upper: float | None = red.L
     return v
 
 
+SHORTEST_ARM = 1e-6
+"""The shortest rocker arm taken (m), as camdyn profile's shortest radius."""
+
+
 def rocker(*, swing_deg, arm_length, stroke=None, inertia=None, mass=None,
            torsional_stiffness=None, stiffness=None) -> tuple:
     """(stroke, mass, stiffness) of a rocker reduced to its roller centre's arc, as sec. 2.4
@@ -45,6 +49,10 @@ def rocker(*, swing_deg, arm_length, stroke=None, inertia=None, mass=None,
             raise CamdynInputError(f"argument {flag}: a rocker needs --swing and --arm-length")
     Phi = positive("swing", "--swing", swing_deg, "deg", upper=180.0)
     l = positive("l", "--arm-length", arm_length, "m")
+    if l < SHORTEST_ARM:
+        # J/l^2 and k_t/l^2 overflow long before l reaches 0 (1e-200 squared is 0)
+        raise CamdynInputError(f"argument --arm-length: l={l:g} is out of range: "
+                               f"{SHORTEST_ARM:g} <= l < {red.LARGEST:g} (m)")
     if stroke is not None:
         raise CamdynInputError("argument --stroke: a rocker's stroke is its arc, --arm-length x "
                                "--swing; give one or the other")
