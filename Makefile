@@ -7,7 +7,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.camdyn-built
 SOURCES := pyproject.toml setup.py $(wildcard generated/*.pyx generated/*.pxd runtime/engine/*.pyx runtime/engine/*.pxd runtime/engine/*.pxi)
 
-.PHONY: all build run test test-slow wheel-check mutation mutation-findings bench bench-quick figures derive check-generated clean
+.PHONY: all build browser docs run test test-slow wheel-check mutation mutation-findings bench bench-quick figures derive check-generated clean
 
 all: build
 
@@ -25,8 +25,17 @@ build: $(STAMP)
 run: build
 	$(BIN)/camdyn run --out out
 
-test: build
+test: build browser
 	$(BIN)/python -m pytest -q -n auto -m "not slow"
+
+# the browser the design page's test drives: Debian's Chromium through apt-get where it is
+# missing and the machine lets us (root), never a browser downloaded by Playwright; without
+# it that one test is skipped, saying so
+browser:
+	@command -v chromium >/dev/null || command -v chromium-browser >/dev/null || \
+		{ [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null && \
+		  (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium >/dev/null) ; } || \
+		echo "make browser: no chromium, and no root to install Debian's; the browser test is skipped"
 
 # the checks marked slow (long runs, full grids); CI runs them after make test
 test-slow: build
@@ -74,6 +83,12 @@ subprocess.run([sys.executable, "-m", "pip", "install", "--quiet", *reqs], check
 endef
 export INSTALL_EXTRA
 install-extra = $(BIN)/python -c "$$INSTALL_EXTRA" $(1)
+
+# the documentation site (docs/mkdocs.yml): the README's sections, the tutorial notebook run,
+# the API reference; a warning fails the build.  Into out/site
+docs: build
+	$(call install-extra,docs)
+	NO_MKDOCS_2_WARNING=1 $(BIN)/mkdocs build --strict --quiet -f docs/mkdocs.yml
 
 # mutation testing of the pure-Python physics in scratch copies of the tree; report in
 # out/mutation/report.md (targets, sample and time budget: tests/mutation/targets.toml)

@@ -27,7 +27,9 @@ DISPATCH = {("runtime/cli/derive.py", "run"): "camdyn.derive",
             ("runtime/cli/check.py", "run"): "camdyn.thesis",
             ("runtime/cli/laws.py", "run"): "camdyn.thesis",
             ("runtime/cli/figures.py", "run"): "camdyn.thesis",
-            ("runtime/cli/design.py", "run"): "camdyn.thesis"}
+            ("runtime/cli/design.py", "run"): "camdyn.thesis",
+            # the design page's verdict is camdyn design's, made for the page
+            ("runtime/cli/page.py", "verdict"): "camdyn.thesis"}
 
 
 def _module_name(path: Path) -> str:

@@ -15,6 +15,7 @@ run(args) (parse, call the library, print).  Nothing imports the command line.
     camdyn profile --law L --stroke H ...   the cam itself: pitch curve, profile(s), CSV/DXF/PNG
     camdyn figures [--out DIR] [--only IDS]  every thesis/paper figure the models determine + index
     camdyn design --stroke H ...            design by the thesis's rules (secs 8.3, 8.5, App. 7)
+    camdyn serve [--port N] [--no-browser]  the live design page in the browser
 
 Bad arguments end in one line on stderr naming the argument, and status 2.  Every command
 that writes files takes --out and --overwrite and writes through runtime/core/outdir.py (it
@@ -33,7 +34,8 @@ from ..core.errors import CamdynInputError
 from .common import Parser, fail, run_failed
 
 COMMANDS = ("derive", "residual", "check", "laws", "design", "run", "scenes", "integrate", "simulate",
-            "beam_follower", "stability", "precision", "profile", "figures", "sweep", "polydyne")
+            "beam_follower", "stability", "precision", "profile", "figures", "sweep", "polydyne",
+            "serve")
 """The command modules, in the order of `camdyn --help`."""
 
 

@@ -119,19 +119,9 @@ def available() -> list[str]:
     return sorted(names)
 
 
-def load(name) -> CompiledModel:
-    """The compiled model ``name`` (``one-dof`` and ``one_dof`` both work), or a model file
-    (a path ending in ``.py`` with a ``build()``), derived and compiled on its first use and
-    loaded from the cache after (runtime/core/ondemand.py; an edited file is built again)."""
-    if str(name).endswith(".py"):
-        from .ondemand import model_file
-
-        return model_file(name)
-    return _generated(name)
-
-
 @lru_cache(maxsize=None)
-def _generated(name: str) -> CompiledModel:
+def load(name: str) -> CompiledModel:
+    """The compiled model ``name`` (``one-dof`` and ``one_dof`` both work)."""
     mod_name = name.replace("-", "_")
     if mod_name == "camlaws" or not mod_name.isidentifier():
         raise CamdynInputError(f"unknown model {name!r}; choose one of {', '.join(available())}")

@@ -195,6 +195,19 @@ class BatchInputs:
     part: np.ndarray | None = None     # a constrained model's coordinate partition (partition)
 
 
+def _model(model) -> CompiledModel:
+    """A compiled model, a built-in model's name, or a model file (a path ending in ``.py``
+    with a ``build()``), derived and compiled on its first use and loaded from the cache
+    after (runtime/core/ondemand.py; an edited file is built again)."""
+    if isinstance(model, CompiledModel):
+        return model
+    if str(model).endswith(".py"):
+        from .ondemand import model_file
+
+        return model_file(model)
+    return load(model)
+
+
 class Simulator:
     """A prepared simulation: everything but the parameter values is fixed and checked.
 
@@ -259,7 +272,7 @@ class Simulator:
                  check_stability: bool = True, consistent: bool = True,
                  exact_segments: bool | None = None, dependent=None,
                  dense_output: bool = False):
-        m = model if isinstance(model, CompiledModel) else load(model)
+        m = _model(model)
         self.dependent, self.part = partition(m, dependent)
         if isinstance(method, str):
             method = _methods.make(method, rtol=rtol, atol=atol, step=step)
