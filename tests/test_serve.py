@@ -102,7 +102,8 @@ def test_a_designer_moves_a_slider_and_exports(server, tmp_path):
     """In Chromium: the page loads with CAMSHAFT-1's figures; five presses of the right
     arrow on the tau slider (0.15 -> 0.155) change the response chart's data and the U0 shown;
     the exported TOML holds the slider's new tau; a negative base radius is answered with the
-    message `camdyn profile` prints for it; the round trip of a change (key press to new data
+    message `camdyn profile` prints for it, and a tau of 20 typed in the slider's box with the
+    one `camdyn residual --tau 20` prints; the round trip of a change (key press to new data
     in the chart) is measured and printed."""
     from playwright.sync_api import sync_playwright
 
@@ -148,6 +149,19 @@ def test_a_designer_moves_a_slider_and_exports(server, tmp_path):
                               "--out", str(tmp_path / "p")], capture_output=True, text=True)
         message = cli.stderr.strip().split("error: ", 1)[1]
         assert alert.get_by_text("base-radius").inner_text().strip() == message
+        field.fill("0.04")
+        field.press("Enter")
+        alert.wait_for(state="hidden", timeout=10_000)
+        # a tau beyond the manifest's range, typed in the slider's box: the model's own words,
+        # which `camdyn residual` prints after naming its option
+        box = page.locator(".tau input").first
+        box.fill("20")
+        box.press("Enter")
+        alert.get_by_text("tau=20").wait_for(timeout=10_000)
+        cli = subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", "residual", "--model",
+                              "camshaft1", "--tau", "20"], capture_output=True, text=True)
+        message = cli.stderr.strip().split("argument --tau: ", 1)[1]
+        assert alert.get_by_text("tau=20").inner_text().strip() == message
         browser.close()
 
 
@@ -163,3 +177,23 @@ def test_a_port_that_cannot_be_used_is_refused_in_one_line(case):
     lines = out.stderr.strip().splitlines()
     assert out.returncode == 2 and len(lines) == 1, out.stderr
     assert ("out of range: 0 to 65535" if case == "range" else "cannot be used") in lines[0]
+
+
+def test_the_exported_dxf_is_camdyn_profile_s(tmp_path):
+    """The page's DXF button writes the file `camdyn profile` writes for the same cam: read
+    back with ezdxf, the same layers with the same vertices (the profile, to the last digit)."""
+    import io
+
+    import ezdxf
+
+    from camdyn.runtime.cli.page import _profile, dxf_bytes
+
+    inp = Inputs(follower="oscillating-roller", swing_deg=18.0, pivot_distance=0.1, arm_length=0.08)
+    page = ezdxf.read(io.StringIO(dxf_bytes(inp).decode()))
+    ref = ezdxf.readfile(_profile(inp).write_dxf(tmp_path / "cam.dxf"))
+
+    def shapes(doc):
+        return sorted((e.dxf.layer, tuple(map(tuple, e.get_points("xy"))))
+                      for e in doc.modelspace().query("LWPOLYLINE"))
+
+    assert shapes(page) == shapes(ref) and len(shapes(page)) >= 2

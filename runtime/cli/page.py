@@ -269,6 +269,21 @@ _RULES = ThreadPoolExecutor(max_workers=1, thread_name_prefix="camdyn-rules")
 """The design rules' verdict runs here, beside the page's loop."""
 
 
+def _range(key: str) -> str:
+    """The range the models' manifests declare for ``key`` (the widest), as a label says it:
+    the slider spans the usual values, its box takes any, and a value outside this range is
+    refused with the manifest's own message."""
+    from ..core.compiled import load
+
+    for name in ("camshaft2", "camshaft1", "one_dof"):
+        spec = {p["name"]: p for p in load(name).manifest["parameters"]}.get(key)
+        if spec is not None:
+            low = "<" if spec.get("open_low") else "<="
+            high = "<" if spec.get("open_high") else "<="
+            return f"{spec['low']:g} {low} {key} {high} {spec['high']:g}"
+    return ""
+
+
 def app():
     """One session's page (Panel calls it per browser tab)."""
     import panel as pn
@@ -285,14 +300,13 @@ def app():
                              value=inp.mechanism)
     scene_file = pn.widgets.TextInput(name="or a scene file (path)", placeholder="my_scene.toml")
     law = pn.widgets.Select(name="law", options=list(LAWS), value=inp.law)
-    sliders = {
-        "tau": pn.widgets.FloatSlider(name="tau = T_e/t_m (4.12)", start=0.02, end=1.0, step=0.001,
-                                      value=inp.tau, format="0.000", css_classes=["tau"]),
-        "Fa": pn.widgets.FloatSlider(name="Fa, shaft stiffness factor (4.14)", start=0.0, end=5.0,
-                                     step=0.01, value=inp.Fa),
-        "Fv": pn.widgets.FloatSlider(name="Fv, cam mass factor (5.52)", start=0.1, end=100.0,
-                                     step=0.1, value=inp.Fv),
-    }
+    sliders = {key: pn.widgets.EditableFloatSlider(
+        name=f"{label}, {_range(key)}", start=start, end=end, step=step,
+        value=getattr(inp, key), format="0.000", css_classes=[key])
+        for key, label, start, end, step in (
+            ("tau", "tau = T_e/t_m (4.12)", 0.02, 1.0, 0.001),
+            ("Fa", "Fa, shaft stiffness (4.14)", 0.0, 5.0, 0.01),
+            ("Fv", "Fv, cam mass (5.52)", 0.1, 100.0, 0.1))}
     fields = {k: pn.widgets.FloatInput(name=label, value=getattr(inp, k))
               for k, label in (("stroke", "stroke h_m' (m)"), ("rise_time", "rise time t_m (s)"),
                                ("accuracy", "requirement u0 <= (m)"),
