@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import io
 import time
+from collections import OrderedDict
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import asdict, dataclass, field, replace
 
@@ -135,6 +136,40 @@ def _stress(prof, inp: Inputs):
     return p0, prof.stress_summary(spec)
 
 
+_MEMO: "OrderedDict[tuple, object]" = OrderedDict()
+"""The page's latest answers by what they depend on: a change of the follower does not run the
+mechanism again, nor a change of tau the cam (the 32 latest of each part kept)."""
+
+
+def _memo(key: tuple, make):
+    if key in _MEMO:
+        _MEMO.move_to_end(key)
+        return _MEMO[key]
+    value = _MEMO[key] = make()
+    while len(_MEMO) > 96:
+        _MEMO.popitem(last=False)
+    return value
+
+
+def _stamp(mechanism: str):
+    """A scene file's modification time and size (a built-in's: None), so that an edited
+    file is run again."""
+    from pathlib import Path
+
+    path = Path(mechanism)
+    if is_model(mechanism) or not path.is_file():
+        return None
+    st = path.stat()
+    return st.st_mtime_ns, st.st_size
+
+
+def _cam(inp: Inputs) -> tuple:
+    prof = _profile(inp)
+    table = prof.table
+    p0, stress = _stress(prof, inp)
+    return prof, table, p0, stress, prof.extremes(), prof.summary()["warnings"]
+
+
 def evaluate(inp: Inputs) -> dict:
     """Every figure of the page for ``inp`` (see the module doc), with the seconds each part
     took; the design rules' verdict is :func:`verdict`."""
@@ -145,7 +180,10 @@ def evaluate(inp: Inputs) -> dict:
     clock = {}
     t0 = time.perf_counter()
     tgt = _target(inp)
-    ans = answer(tgt)
+    given = ((inp.tau, inp.Fa, inp.Fv) if is_model(inp.mechanism)
+             else tuple(sorted(inp.scene_parameters.items())))
+    ans = _memo(("response", inp.mechanism, _stamp(inp.mechanism), inp.law, given),
+                lambda: answer(tgt))
     res = ans.result
     acc = res.model.manifest.get("residual", {}).get("acceleration") or res.state_names[0]
     clock["response"] = time.perf_counter() - t0
@@ -158,24 +196,26 @@ def evaluate(inp: Inputs) -> dict:
     n_tau, rtol = CHART[model]
     graph = _target(replace(inp, mechanism=model, Fa=Fa)).with_settings(method="dop853", rtol=rtol)
     taus = tau_grid(inp.tau_min, inp.tau_max, n_tau)
-    sw = sweep(graph, {"tau": taus}, progress=False, jobs=1)
+    sw = _memo(("residual", model, inp.law, Fa, inp.Fv if model == "camshaft2" else None,
+                inp.tau_min, inp.tau_max),
+               lambda: sweep(graph, {"tau": taus}, progress=False, jobs=1))
     env = envelope(sw.axes["tau"], sw["U0dd"])
     at = float(np.interp(tau, env.tau, env.value)) if env.tau[0] <= tau <= env.tau[-1] else None
     clock["residual"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    prof = _profile(inp)
-    table = prof.table
-    p0, stress = _stress(prof, inp)
-    extremes = prof.extremes()
+    key = ("cam", inp.follower, inp.base_radius, inp.roller_radius, inp.stroke, inp.swing_deg,
+           inp.pivot_distance, inp.arm_length, inp.face_offset, inp.rise_deg, inp.law,
+           inp.contact_force, inp.width)
+    prof, table, p0, stress, extremes, cam_warnings = _memo(key, lambda: _cam(inp))
     clock["profile"] = time.perf_counter() - t0
     return {
-        "answer": ans, "T": res.t, "Xdd": res[acc], "acceleration": acc,
+        "answer": ans, "sweep": sw, "T": res.t, "Xdd": res[acc], "acceleration": acc,
         "tau_axis": sw.axes["tau"], "U0dd": sw["U0dd"], "U0dd_error": sw.columns.get("U0dd_error"),
         "sweep_warned": sw.warned, "env_tau": env.tau, "env_value": env.value,
         "design": {"tau": tau, "Fa": Fa, "stroke": h, "rise_time": t_m, "envelope": at},
         "profile": prof, "x": table["x_profile"], "y": table["y_profile"],
         "phi_deg": table["phi_deg"], "alpha_deg": table["alpha_deg"], "p0": p0,
-        "stress": stress, "extremes": extremes, "profile_warnings": prof.summary()["warnings"],
+        "stress": stress, "extremes": extremes, "profile_warnings": cam_warnings,
         "seconds": clock,
     }
 
@@ -359,18 +399,24 @@ def app():
                        scene_parameters=params, **values)
 
     def show(out: dict, now: Inputs) -> None:
-        ans = out["answer"]
-        src_resp.data = {"T": out["T"], "y": out["Xdd"]}
-        f_resp.yaxis.axis_label = out["acceleration"]
-        e = out["U0dd_error"]
-        e = np.zeros_like(out["U0dd"]) if e is None else np.nan_to_num(e)
-        v = np.maximum(out["U0dd"], 1e-12)
-        src_sw.data = {"tau": out["tau_axis"], "v": v, "lo": np.maximum(v - e, 1e-12), "hi": v + e}
-        src_env.data = {"tau": out["env_tau"], "v": np.maximum(out["env_value"], 1e-12)}
+        # a chart whose answer came from the memo unchanged is not sent again: less to carry
+        # over the websocket and to draw
+        ans, before = out["answer"], last.get("out") or {}
+        if ans is not before.get("answer"):
+            src_resp.data = {"T": out["T"], "y": out["Xdd"]}
+            f_resp.yaxis.axis_label = out["acceleration"]
+        if out["sweep"] is not before.get("sweep"):
+            e = out["U0dd_error"]
+            e = np.zeros_like(out["U0dd"]) if e is None else np.nan_to_num(e)
+            v = np.maximum(out["U0dd"], 1e-12)
+            src_sw.data = {"tau": out["tau_axis"], "v": v, "lo": np.maximum(v - e, 1e-12),
+                           "hi": v + e}
+            src_env.data = {"tau": out["env_tau"], "v": np.maximum(out["env_value"], 1e-12)}
         mark.location = out["design"]["tau"]
-        src_prof.data = {"x": out["x"], "y": out["y"]}
-        p0 = np.where(np.isfinite(out["p0"]), out["p0"] / 1e6, np.nan)
-        src_alpha.data = {"phi": out["phi_deg"], "alpha": out["alpha_deg"], "p0": p0}
+        if out["profile"] is not before.get("profile"):
+            src_prof.data = {"x": out["x"], "y": out["y"]}
+            p0 = np.where(np.isfinite(out["p0"]), out["p0"] / 1e6, np.nan)
+            src_alpha.data = {"phi": out["phi_deg"], "alpha": out["alpha_deg"], "p0": p0}
         ex, st = out["extremes"], out["stress"]
         rows = [[k, display.plus_minus(v, ans.errors.get(k))] for k, v in ans.figures.items()]
         rows += [["max |pressure angle| (deg)", display.plus_minus(
@@ -418,8 +464,8 @@ def app():
             alert.visible = True
             return
         alert.visible = False
-        last.update(inputs=now, out=out, rules=None)
         show(out, now)
+        last.update(inputs=now, out=out, rules=None)
         timing.object = f"answered in {1e3 * (time.perf_counter() - start):.0f} ms"
         verdict_md.object = "design rules: ..."
         rules_later(now, out["design"])
