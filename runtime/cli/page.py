@@ -226,6 +226,17 @@ def evaluate(inp: Inputs) -> dict:
     }
 
 
+def page_warnings(out: dict) -> list:
+    """Every warning of the page's answer: the run's, the cam's, the stress's, and how many
+    points of the residual chart warned."""
+    warnings = [*out["answer"].warnings, *out["profile_warnings"],
+                *out["stress"].get("warnings", [])]
+    if out["sweep_warned"]:
+        warnings.append(f"{out['sweep_warned']} of {len(out['tau_axis'])} tau points warned "
+                        "(their estimates exceed half the figure)")
+    return warnings
+
+
 def verdict(inp: Inputs, design_point: dict) -> dict:
     """The design rules' verdict (camdyn design, secs 8.2-8.5) at the design point: the
     requirement u0 <= accuracy met or not, and the rules with their status."""
@@ -299,9 +310,7 @@ def report(inp: Inputs, out: dict, rules: dict | None) -> str:
               f"{plus_minus(ex['min_rho_profile'], ex['min_rho_profile_error'])} m",
               f"- Hertz stress max: {plus_minus(st['hertz_stress_max'], st['hertz_stress_max_error'])} Pa "
               f"at {st['hertz_stress_max_angle_deg']:.1f} deg ({st['contact_force']})", ""]
-    warnings = list(ans.warnings) + list(out["profile_warnings"]) + list(st.get("warnings", []))
-    if out["sweep_warned"]:
-        warnings.append(f"{out['sweep_warned']} of {len(out['tau_axis'])} tau points warned")
+    warnings = page_warnings(out)
     lines += ["## Warnings", ""] + ([f"- {w}" for w in warnings] or ["no warnings"]) + [""]
     if rules is not None:
         req = rules["requirement"]
@@ -434,12 +443,8 @@ def app():
                                                             ex["min_rho_profile_error"])],
                  ["Hertz stress max (Pa)", display.plus_minus(st["hertz_stress_max"],
                                                               st["hertz_stress_max_error"])]]
-        warn = list(ans.warnings) + list(out["profile_warnings"]) + list(st.get("warnings", []))
-        if out["sweep_warned"]:
-            warn.append(f"{out['sweep_warned']} of {len(out['tau_axis'])} tau points warned "
-                        "(their estimates exceed half the figure)")
         figures_md.object = display.table(["figure", "value ± error"], rows) \
-            + display.warnings_block(warn)
+            + display.warnings_block(page_warnings(out))
 
     doc = pn.state.curdoc
 

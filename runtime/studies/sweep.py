@@ -263,7 +263,7 @@ class SweepResult:
         from matplotlib.figure import Figure
 
         names = list(self.axes)
-        shape = tuple(len(v) for v in self.axes.values())
+        shape = self._shape()
         multi = [k for k, n in enumerate(shape) if n > 1]
         x_ax = multi[-1] if multi else len(names) - 1
         others = [k for k in range(len(names)) if k != x_ax]

@@ -80,6 +80,11 @@ def rocker_check(p: dict, flat_face: bool = False) -> None:
             f"circle R_b = {r:g} m; it needs |d_p - l_a| < R_b < d_p + l_a")
 
 
+def _half_radius(opts, p: dict) -> float:
+    """R_1/2 (4.1): R_b + h_m/2 for a radial cam, R_b for an axial one."""
+    return p["R_b"] + p["h_m"] / 2 if opts.cam == "radial" else p["R_b"]
+
+
 def mean_ratios(opts, p: dict) -> tuple[float, float]:
     """(i_y, i_z): how far the contact moves per unit of the shaft's deflections y and z
     (6.22) in mid-rise at the mean slope h_m/beta_m.  For the translating roller (4.13)'s
@@ -89,8 +94,7 @@ def mean_ratios(opts, p: dict) -> tuple[float, float]:
     if not getattr(opts, "rocker", False):
         if getattr(opts, "flat_face", False):
             return 0.0, 1.0
-        R_half = p["R_b"] + p["h_m"] / 2 if opts.cam == "radial" else p["R_b"]
-        return p["h_m"] / (R_half * p["beta_m"]), 1.0
+        return p["h_m"] / (_half_radius(opts, p) * p["beta_m"]), 1.0
     from ..core.compiled import load
     from ..core.laws import choose
 
@@ -115,7 +119,7 @@ def _characteristics(opts, p: dict) -> dict:
         m = m_x + p["m_z"] * (c_c / p["c_z"]) ** 2
     else:
         c_c, m = c_x, m_x
-    R_half = p["R_b"] + p["h_m"] / 2 if opts.cam == "radial" else p["R_b"]
+    R_half = _half_radius(opts, p)
     tan_me = p["h_m"] / (R_half * p["beta_m"])
     c_beta = p["k"] / R_half**2
     flex = 1.0 / c_beta + (1.0 / p["c_y"] if opts.shaft_y else 0.0)
