@@ -588,10 +588,12 @@ cdef int _extreme(Rec* r, int which, double a, double b, int kind, int per_step,
     # a cubic Hermite scan off by more than htol (0: 1e-9 of the extreme) is no scan to
     # trust: the left-out steps of [a, b] are made and the scan is made again on them, as a
     # run that made its dense output scans it (large steps; small ones keep their Hermite)
+    # (once: the scan again runs with htol infinite, so that steps the fill could not make,
+    # or a miss that is no number, cannot call it again and again until the stack is gone)
     if r.n_hermite > 0 and hmiss > (htol if htol > 0.0 else 1e-9 * fabs(S.best)):
         _fill_between(r, a, b)
         return _extreme(r, which, a, b, kind, per_step, n_cand, cache, stride, value, at,
-                        sampling, st, sv, n_samples, htol)
+                        sampling, st, sv, n_samples, INFINITY)
     value[0] = -S.best if kind >= 2 else S.best
     at[0] = S.best_t
     return <int> (S.n if S.n < 2147483647 else 2147483647)

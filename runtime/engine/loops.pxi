@@ -31,6 +31,14 @@ from camdyn.runtime.engine.radau cimport *
 from camdyn.runtime.engine.rkn12 cimport RK12_A, RK12_BP, RK12_BPL, RK12_BV, RK12_BVL, RK12_C
 
 
+cdef inline bint _finite(int n, const double* y) noexcept nogil:
+    cdef int i
+    for i in range(n):
+        if not isfinite(y[i]):
+            return False
+    return True
+
+
 cdef int _rec_grow(Record* r) noexcept nogil:
     """Double the record's capacity in buffers of its own (copying what is there)."""
     cdef Py_ssize_t cap = 2 * r.cap if r.cap >= 32 else 64
@@ -58,6 +66,10 @@ cdef inline int _rec_point(Run* run, double t, const double* y, const double* f)
     cdef Record* r = &run.rec
     cdef Py_ssize_t n = r.n
     cdef double* row
+    # a point is recorded only finite: an error test that a NaN or an overflow slipped
+    # through (one that compares false) must not leave a run that reads as finished
+    if not (_finite(_NS, y) and _finite(_NS, f)):
+        return -2
     if n == r.cap:
         if _rec_grow(r) != 0:
             return -1
@@ -71,6 +83,13 @@ cdef inline int _rec_point(Run* run, double t, const double* y, const double* f)
         memcpy(&r.mode[n * _NM], run.ctx.mode, _NM * sizeof(int))
     r.n = n + 1
     return 0
+
+
+cdef inline int _rec_failure(const double* y, const double* f) noexcept nogil:
+    """Why _rec_point refused a point: a state or slope not finite, else no memory."""
+    if not (_finite(_NS, y) and _finite(_NS, f)):
+        return STATUS_NOT_FINITE
+    return STATUS_NO_MEMORY
 
 
 cdef inline void _rec_three_point(Run* run) noexcept nogil:
@@ -117,14 +136,6 @@ cdef inline void _rec_three_point(Run* run) noexcept nogil:
         e1 = (h * p[1 + _NS + c] - dH - dq * u) / q
         ex[c] = u + r * e1
         ex[_NS + c] = e1
-
-
-cdef inline bint _finite(int n, const double* y) noexcept nogil:
-    cdef int i
-    for i in range(n):
-        if not isfinite(y[i]):
-            return False
-    return True
 
 
 cdef inline bint _crossed(int direction, double g) noexcept nogil:
@@ -260,14 +271,14 @@ cdef int _apply_event(Run* run, int k, double t, double* y, double* f, double* g
     if run.n_events > run.max_events:
         return STATUS_EVENT_STORM
     if _rec_point(run, t, y, f) != 0:
-        return STATUS_NO_MEMORY
+        return _rec_failure(y, f)
     on_event(k, t, y, run.ctx)
     if _PROJECTS and project(t, y, run.ctx) < 0:   # the right limit on the constraints too
         return STATUS_NO_CONVERGENCE
     rhs(t, y, f, run.ctx)
     run.n_rhs += 1
     if _rec_point(run, t, y, f) != 0:
-        return STATUS_NO_MEMORY
+        return _rec_failure(y, f)
     events(t, y, g0, run.ctx)
     if g0[k] == 0.0:
         # the event was located on its surface exactly: if it stays armed (a breakpoint that
@@ -653,7 +664,7 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
     n_rhs += 1
     if _rec_point(run, t, y, k1) != 0:
         free(Jm)
-        return STATUS_NO_MEMORY
+        return _rec_failure(y, k1)
     if _NE > 0:
         events(t, y, g0, ctx)
     while k < nstep:
@@ -808,7 +819,7 @@ cdef int _loop_fixed(Run* run, double a, double b) noexcept nogil:
         if status != STATUS_OK:
             break
         if _rec_point(run, t, y, k1) != 0:
-            status = STATUS_NO_MEMORY
+            status = _rec_failure(y, k1)
             break
     free(Jm)
     memcpy(run.y, y, sizeof(y))
@@ -1029,7 +1040,7 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
     rhs(t, y, k1, ctx)
     n_rhs += 1
     if _rec_point(run, t, y, k1) != 0:
-        return STATUS_NO_MEMORY
+        return _rec_failure(y, k1)
     if _NE > 0:
         events(t, y, g0, ctx)
     if run.h <= 0.0:
@@ -1129,7 +1140,7 @@ cdef int _loop_dp54(Run* run, double a, double b) noexcept nogil:
             if status != STATUS_OK:
                 break
             if _rec_point(run, t, y, k1) != 0:
-                status = STATUS_NO_MEMORY
+                status = _rec_failure(y, k1)
                 break
             if not last:
                 run.h = h
@@ -1205,7 +1216,7 @@ cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
     rhs(t, y, K, ctx)
     n_rhs += 1
     if _rec_point(run, t, y, K) != 0:
-        return STATUS_NO_MEMORY
+        return _rec_failure(y, K)
     if _NE > 0:
         events(t, y, g0, ctx)
     if run.h <= 0.0:
@@ -1236,7 +1247,10 @@ cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
             sc = atol[i] + rtol * _absmax(y[i], yn[i])
             err5 += (w5[i] / sc) * (w5[i] / sc)
             err3 += (w3[i] / sc) * (w3[i] / sc)
-        err = err5 / sqrt(_NS * (err5 + 0.01 * err3)) if err5 > 0.0 else 0.0
+        # a NaN in err5 must not read as a perfect step (NaN > 0 is false): it is passed on
+        # as NaN, which the test below rejects
+        err = err5 / sqrt(_NS * (err5 + 0.01 * err3)) if err5 > 0.0 else (0.0 if err5 == 0.0
+                                                                          else NAN)
         if not isfinite(err):
             if not _finite(_NS, y):
                 status = STATUS_NOT_FINITE
@@ -1296,7 +1310,7 @@ cdef int _loop_dop853(Run* run, double a, double b) noexcept nogil:
             if status != STATUS_OK:
                 break
             if _rec_point(run, t, y, K) != 0:
-                status = STATUS_NO_MEMORY
+                status = _rec_failure(y, K)
                 break
             if not last:
                 run.h = h
@@ -1427,7 +1441,7 @@ cdef int _loop_rkn12(Run* run, double a, double b) noexcept nogil:
     rhs(t, y, f, ctx)
     n_rhs += 1
     if _rec_point(run, t, y, f) != 0:
-        return STATUS_NO_MEMORY
+        return _rec_failure(y, f)
     if run.h <= 0.0:
         run.h = _dp_first_step(run, t, y, f, fmin(b - a, run.h_max), 12.0)
     h = fmin(run.h, run.h_max)
@@ -1483,7 +1497,7 @@ cdef int _loop_rkn12(Run* run, double a, double b) noexcept nogil:
             if status != STATUS_OK:
                 break
             if _rec_point(run, t, y, f) != 0:
-                status = STATUS_NO_MEMORY
+                status = _rec_failure(y, f)
                 break
             if not last:
                 run.h = h
@@ -1696,7 +1710,7 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
     n_rhs += 1
     if _rec_point(run, t, y, f0) != 0:
         free(J)
-        return STATUS_NO_MEMORY
+        return _rec_failure(y, f0)
     if _NE > 0:
         events(t, y, g0, ctx)
     if run.h <= 0.0:
@@ -1816,7 +1830,7 @@ cdef int _loop_rodas(Run* run, double a, double b) noexcept nogil:
             for i in range(_NS):
                 ymag[i] = fmax(ymag[i], fabs(y[i]))
             if _rec_point(run, t, y, f0) != 0:
-                status = STATUS_NO_MEMORY
+                status = _rec_failure(y, f0)
                 break
             n_acc += 1
             if n_acc >= 2:
@@ -1948,7 +1962,7 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
     n_rhs += 1
     if _rec_point(run, t, y, f0) != 0:
         free(J)
-        return STATUS_NO_MEMORY
+        return _rec_failure(y, f0)
     if _NE > 0:
         events(t, y, g0, ctx)
     if run.h <= 0.0:
@@ -2082,7 +2096,10 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
             lu_solve(_NS, E1, piv1, ev)
             for i in range(_NS):
                 yn[i] = y[i] + z3[i]
-            err = fmax(_rms(ev, y, yn, rtol, atol), 1e-10)
+            # not fmax, which would turn a NaN into 1e-10, an accepted step
+            err = _rms(ev, y, yn, rtol, atol)
+            if err < 1e-10:
+                err = 1e-10
             if err >= 1.0 and (first or rejected):
                 for i in range(_NS):
                     ys[i] = y[i] + ev[i]
@@ -2091,7 +2108,9 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
                 for i in range(_NS):
                     ev[i] = k1[i] + k2[i]
                 lu_solve(_NS, E1, piv1, ev)
-                err = fmax(_rms(ev, y, yn, rtol, atol), 1e-10)
+                err = _rms(ev, y, yn, rtol, atol)
+                if err < 1e-10:
+                    err = 1e-10
             converged = isfinite(err)
         if not converged:
             if not _finite(_NS, y):
@@ -2158,7 +2177,7 @@ cdef int _loop_radau(Run* run, double a, double b) noexcept nogil:
             for i in range(_NS):
                 ymag[i] = fmax(ymag[i], fabs(y[i]))
             if _rec_point(run, t, y, f0) != 0:
-                status = STATUS_NO_MEMORY
+                status = _rec_failure(y, f0)
                 break
             if n_acc >= 2:
                 _rec_three_point(run)
@@ -2450,7 +2469,7 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
     if _rec_point(run, t, y, f) != 0:
         free(A)
         free(blocks)
-        return STATUS_NO_MEMORY
+        return _rec_failure(y, f)
     # every rung's first pair now, a matrix product each; the rest of a rung (_exact_level)
     # only once a step is taken on it
     for k in range(kmax + 1):
@@ -2498,7 +2517,7 @@ cdef int _loop_exact(Run* run, double a, double b) noexcept nogil:
         memcpy(y, yn, sizeof(y))
         memcpy(f, fn, sizeof(f))
         if _rec_point(run, t, y, f) != 0:
-            status = STATUS_NO_MEMORY
+            status = _rec_failure(y, f)
             break
         idx += stride
         done += 1
