@@ -3,7 +3,9 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import time
+from dataclasses import replace
 
 from ..core.errors import CamdynInputError, SimulationError
 from ..core.outdir import out_folder
@@ -64,7 +66,10 @@ def add(sub):
     b.add_argument("--rise", type=float, metavar="M",
                    help=f"total rise S_T, m (default {dflt['rise']:g})")
     b.add_argument("--revolutions", type=float, metavar="K",
-                   help=f"cam revolutions to integrate, > 0 (default {dflt['revolutions']:g})")
+                   help=f"cam revolutions to integrate, > 0 (default {dflt['revolutions']:g}, or as many as "
+                        f"cover one period of the rod's slowest mode at a fast cam); a run too "
+                        f"short for the rod to answer, or predicted to need more than "
+                        f"2 million steps, is refused")
     b.add_argument("--rayleigh", action=argparse.BooleanOptionalAction,
                    help="keep the rotary inertia of the rod (default); --no-rayleigh gives the "
                         "Euler-Bernoulli rod")
@@ -107,9 +112,16 @@ def run(args) -> int:
     given = {key: getattr(args, key) for key in FLAGS}
     try:
         tol = tolerances(args)
-        target = BeamTarget.of(beam.Case(**{k: v for k, v in given.items() if v is not None},
-                                         **{k: tuple(v.items()) if k == "state_atol" else v
-                                            for k, v in tol.items()}))
+        case = beam.Case(**{k: v for k, v in given.items() if v is not None},
+                         **{k: tuple(v.items()) if k == "state_atol" else v
+                            for k, v in tol.items()})
+        if args.revolutions is None:
+            # the run's end left to camdyn: as many revolutions as one period of the rod's
+            # slowest mode needs (the window rule of the answer contract)
+            need = beam.least_revolutions(beam.check(case))
+            if need > case.revolutions:
+                case = replace(case, revolutions=float(math.ceil(need)))
+        target = BeamTarget.of(beam.feasible(case))
         planned = target.figure_runs() if args.out else []     # refused before anything runs
         if args.out:                   # a picture of the user's is refused before the runs
             out_folder(args.out, files=target.figure_files())

@@ -15,7 +15,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..core.errors import CamdynInputError
+from ..core.errors import CamdynInputError, SimulationError
 from ..core.laws import choose
 from ..core.compiled import load
 from .beam_case import FORMULATIONS, N_MAX, Case, check  # noqa: F401  (the case, re-exported)
@@ -121,13 +121,180 @@ def integrator(case: Case):
     return METHODS[case.method](rtol=case.rtol, atol=case.atol, state_atol=tuple(pairs.items()))
 
 
-def simulator(case: Case, t_end: float | None = None,
-              max_steps: int = 20_000_000) -> tuple[Simulator, object]:
+STEP_BUDGET = 2_000_000
+"""The most steps a beam follower's run may be predicted to need (:func:`feasible`); its
+Simulator may take twice as many, for the run one notch tighter of the error estimate.  At
+N = 3 a step costs about 15 us on this kind of machine, so a refused case is one that would
+run for a minute or more."""
+
+SMALL_DEFLECTION = 0.1
+"""The largest deflection scale S_T Omega^2/w_1^2 (:func:`deflection_scale`), as a fraction
+of the rod's shortest free length, for which the paper's small-deflection beam theory is
+taken to hold: the paper's data give 7e-4 of it (a largest tip deflection 4.6 times the
+scale), so at the limit the rod's tip moves about half its free length."""
+
+SLENDER = 0.2
+"""The thickest rod, as a fraction of its shortest free length, that passes as a Rayleigh
+beam without a warning: a beam without shear deformation wants a length of ten radii of
+gyration or more (a/2 for a solid round rod, so a <= L/5); the paper's thickest rod, 7 mm,
+has 66 mm, L/a = 9.4.  A rod thicker than its free length is refused."""
+
+STEPS_PER_REVOLUTION = 20
+"""A lower bound of the steps any method takes over one revolution of the four-segment
+cam (rise, dwell, fall, dwell; each segment's start is a step's end, and every method takes
+several steps through a segment's motion): the paper's data take 969 (DOP853, N = 3)."""
+
+EXPLICIT_STABLE = 4.2
+"""h w_N of DOP853 and DP54 stepping at their stability limit on the rod's fastest mode (w_N,
+rad/s): N = 6 with the mode tolerance takes 9,700 steps a revolution of 26.2 ms, w_N = 1.52e6
+rad/s, h w_N = 4.1.  A run of length t needs at least t w_N / 4.2 steps of an explicit
+method."""
+
+
+def _frozen(case: Case) -> Case:
+    """The case whose frozen spectrum :func:`feasible` reads: the case at the paper's cam
+    speed.  The rod frozen in a dwell, where the pitch curve is a circle, does not feel the
+    speed (674.2293 Hz at 1 rad/s and at 1e4 rad/s); at absurd speeds the linearization's
+    difference steps, which scale with Omega, would no longer be small."""
+    return replace(case, omega=_D_OMEGA)
+
+
+def least_frequency(case: Case) -> float:
+    """The lowest transverse natural frequency [Hz] over the revolution: the rod frozen at the
+    inner dwell, where its free length is longest (as the outer dwell of a cam whose rise is
+    1e-9 of the case's, tests/test_beam_energy.py)."""
+    return dwell_frequency(replace(_frozen(case), rise=case.rise * 1e-9))
+
+
+def least_revolutions(case: Case) -> float:
+    """The revolutions that cover one period of the rod's slowest mode, so that the largest
+    tip deflection is not read from a run too short for the rod to answer the cam (the window
+    rule of runtime/measure/contract.py); a fraction of one at the paper's speeds (0.079)."""
+    return case.omega / (2 * math.pi * least_frequency(case))
+
+
+def predicted_steps(case: Case) -> float:
+    """A lower bound of the steps the case's run takes: STEPS_PER_REVOLUTION a revolution,
+    and for an explicit method its stable step on the fastest mode (EXPLICIT_STABLE)."""
+    t_end = case.revolutions * case.period
+    floor = case.revolutions * STEPS_PER_REVOLUTION
+    if case.method in ("dp54", "dop853", "rkn12"):
+        floor = max(floor, t_end * 2 * math.pi * fastest_frequency(_frozen(case))
+                    / EXPLICIT_STABLE)
+    return floor
+
+
+def feasible(case: Case, window: bool = True, budget: int | None = STEP_BUDGET) -> Case:
+    """Refuse, before any run and naming the parameter, a case whose answer could not be
+    trusted or would not come in bounded time: a rod so slender or a cam so fast that the
+    rod's deflection is not small (:data:`SMALL_DEFLECTION`), a run shorter than one period
+    of the rod's slowest mode (:func:`least_revolutions`; with ``window``), or one predicted
+    to need more than ``budget`` steps (None: not checked)."""
     check(case)
+    length = case.free_length_raised
+    if case.rod_radius > length:
+        raise CamdynInputError(
+            f"rod_radius={case.rod_radius:g} m: a rod thicker than its free length at the top "
+            f"of the stroke ({length * 1e3:.3g} mm) is no beam; give rod_radius <= "
+            f"{SLENDER * length:.3g} m, a fifth of it, for a Rayleigh beam")
+    ratio = case.omega / (2 * math.pi * dwell_frequency(_frozen(case)))
+    scale = case.rise * ratio * ratio          # inf, not OverflowError, for absurd speeds
+    if not scale <= SMALL_DEFLECTION * length:         # NaN too: a rod with no stiffness left
+        raise CamdynInputError(_not_small(case, scale, length))
+    least = least_revolutions(case)
+    if window and case.revolutions < least:
+        raise CamdynInputError(
+            f"revolutions={case.revolutions:g} covers {case.revolutions * case.period:.3g} s, "
+            f"less than one period of the rod's slowest mode ({1 / least_frequency(case):.3g} "
+            f"s at the inner dwell): its largest tip deflection would be read from a run too "
+            f"short for the rod to answer the cam; give revolutions >= {least:.3g}")
+    steps = predicted_steps(case)
+    if budget is not None and steps > budget:
+        raise CamdynInputError(_too_long(case, steps, least))
+    return case
+
+
+def _too_long(case: Case, steps: float, least: float) -> str:
+    """The refusal of a run predicted to need more than STEP_BUDGET steps, with its cure: fewer
+    revolutions where that suffices, an implicit method where an explicit one is held to the
+    fastest mode's stable step, else a slower cam."""
+    per = steps / case.revolutions
+    fits = math.floor(STEP_BUDGET / per)
+    head = (f"revolutions={case.revolutions:g} at omega={case.omega:g} rad/s needs at least "
+            f"{steps:.3g} steps ({per:.3g} a revolution with {case.method}), more than the "
+            f"{STEP_BUDGET:.3g} a run may take")
+    if fits >= least:
+        return f"{head}; give revolutions <= {fits:g}"
+    if per > STEPS_PER_REVOLUTION:
+        return (f"{head}: the explicit method steps at the stability limit of the rod's fastest "
+                f"mode ({fastest_frequency(_frozen(case)):.4g} Hz); give --method radau5 or "
+                f"rodas4, or fewer --modes")
+    return f"{head}; give fewer revolutions or a lower omega"
+
+
+def _not_small(case: Case, scale: float, length: float) -> str:
+    """The refusal of a deflection that is not small: led by the rod's radius or by the cam's
+    speed, whichever departs further from the paper's data, with the bound of each that
+    would hold (the thinnest rod only where one exists that fits the cam)."""
+    what = (f"the cam's acceleration would bend the rod by about S_T Omega^2/w_1^2 = "
+            f"{scale:.3g} m, more than {SMALL_DEFLECTION:g} of its free length "
+            f"({length * 1e3:.3g} mm), where the small-deflection beam theory of the model "
+            f"does not hold")
+    w1 = 2 * math.pi * dwell_frequency(_frozen(case))
+    top = w1 * math.sqrt(SMALL_DEFLECTION * length / case.rise)
+    speed = f"omega <= {top:.4g} rad/s" if top > 0 else None
+    a = _least_radius(case)
+    rod = (f"rod_radius >= {a:.3g} m" if a is not None and a > case.rod_radius else None)
+    slender = _D_ROD / case.rod_radius >= case.omega / _D_OMEGA
+    head = (f"rod_radius={case.rod_radius:g} m with omega={case.omega:g} rad/s" if slender
+            else f"omega={case.omega:g} rad/s with rod_radius={case.rod_radius:g} m")
+    cures = [c for c in ((rod, speed) if slender else (speed, rod)) if c]
+    return f"{head}: {what}; give " + (" or ".join(cures) if cures else "the paper's data")
+
+
+_D_ROD, _D_OMEGA = Case().rod_radius, Case().omega
+
+
+def _least_radius(case: Case) -> float | None:
+    """The thinnest rod whose deflection scale stays within SMALL_DEFLECTION of its free
+    length, to 0.1 %, or None where even the thickest slender rod (SLENDER) bends more: the
+    scale falls as the rod thickens (as 1/a^2 where the rod's own mass rules, 1/a^4 where the
+    roller's does), so bisection in log a on the model's own frequency."""
+    limit, speed = SMALL_DEFLECTION * case.free_length_raised, case.omega / _D_OMEGA
+
+    def bends(a: float) -> bool:
+        scale = deflection_scale(replace(_frozen(case), rod_radius=a)) * speed * speed
+        return not scale <= limit
+
+    lo, hi = case.rod_radius, SLENDER * case.free_length_raised
+    if bends(hi):
+        return None
+    while hi > 1.001 * lo:
+        mid = math.sqrt(lo * hi)
+        lo, hi = (mid, hi) if bends(mid) else (lo, mid)
+    return hi
+
+
+def simulator(case: Case, t_end: float | None = None,
+              max_steps: int | None = None) -> tuple[Simulator, object]:
+    """The Simulator of ``case`` and its model, the case refused first where it cannot be
+    answered (:func:`feasible`).  A caller's own ``t_end`` (a part of a revolution) or step
+    budget (a study of where methods fail) takes the window rule and the step prediction out
+    of the refusal; a run predicted beyond a caller's budget fails as the run would, at once
+    (a SimulationError)."""
+    own = t_end is not None or max_steps is not None
+    feasible(case, window=not own, budget=None if own else STEP_BUDGET)
+    if max_steps is not None:
+        steps = predicted_steps(case if t_end is None else replace(
+            case, revolutions=t_end / case.period))
+        if steps > max_steps:
+            raise SimulationError(f"{case.model} with {case.method}: the run needs at least "
+                                  f"{steps:.3g} steps, more than its budget of {max_steps}")
     model = load(case.model)
     t_end = case.revolutions * case.period if t_end is None else t_end
     sim = Simulator(model, t_end, integrator(case), law=case.law,
-                    y0=initial_state(case, model), max_steps=max_steps)
+                    y0=initial_state(case, model),
+                    max_steps=2 * STEP_BUDGET if max_steps is None else max_steps)
     return sim, model
 
 
@@ -172,13 +339,39 @@ def summarize(case: Case, res, cpu: float) -> dict:
                    per_step=w.per_step, candidates=w.candidates, hermite_tol=w.hermite_tol)
            for w in RESIDUALS]
     worst, sampling = largest(tip, phi)
+    warnings = list(res.warnings) + large_deflection(case, tip.value)
     return {"model": case.model, "formulation": case.formulation, "omega": case.omega,
             "modes": case.modes, "revolutions": case.revolutions,
             "max_abs_tip_deflection": tip.value, "max_constraint_residual": worst,
             "dwell_frequency_hz": dwell_frequency(case), "n_steps": int(res.stats["n_steps"]),
             # DP54's stiffness test (Hairer): where it fired, in the model's time t (s)
-            "stiff_from_T": res.stiff_from_T, "warnings": list(res.warnings),
+            "stiff_from_T": res.stiff_from_T, "warnings": warnings,
             "cpu_seconds": cpu, "case": asdict(case), "sampling": sampling}
+
+
+LARGE_DEFLECTION = 0.05
+"""The largest tip deflection, as a fraction of the rod's shortest free length, that passes
+without a warning: beyond it the rod's slope reaches about 0.1 rad (a cantilever's tip slope
+is 1.5 v/L), where the model's linear curvature and the rod's shortening, which it leaves
+out, are no longer small."""
+
+
+def large_deflection(case: Case, tip: float) -> list:
+    """Warnings where the rod is not slender (:data:`SLENDER`) or the largest tip deflection
+    is not small (:data:`LARGE_DEFLECTION`)."""
+    length = case.free_length_raised
+    out = []
+    if case.rod_radius > SLENDER * length:
+        out.append(f"the rod ({case.rod_radius * 1e3:.3g} mm radius) is short for its "
+                   f"thickness: {length * 1e3:.3g} mm of free length at the top of the "
+                   f"stroke, less than ten radii of gyration; a Rayleigh beam leaves out the "
+                   f"shear deformation, which such a rod has")
+    if not tip > LARGE_DEFLECTION * length:
+        return out
+    return out + [f"the rod's tip deflects up to {tip * 1e3:.3g} mm, {tip / length:.0%} of its "
+            f"free length at the top of the stroke ({length * 1e3:.3g} mm): beyond small "
+            f"deflections the model's linear beam, which leaves out the rod's shortening, "
+            f"does not hold; take a thicker rod or a lower omega"]
 
 
 def largest(tip, phi) -> tuple[float, dict]:
@@ -226,7 +419,14 @@ def linearized(case: Case) -> np.ndarray:
 
 def dwell_frequencies(case: Case) -> np.ndarray:
     """Transverse natural frequencies [Hz], ascending, at the outer dwell (length frozen)."""
-    lam = np.linalg.eigvals(linearized(case))
+    A = linearized(case)
+    if not np.isfinite(A).all():
+        raise CamdynInputError(
+            f"rod_radius={case.rod_radius:g} m: the rod frozen at the dwell has no finite "
+            f"stiffness and mass matrices for these data (distance={case.distance:g} m, "
+            f"roller_mass={case.roller_mass:g} kg, E={case.E:g} Pa, rho={case.rho:g} kg/m^3): "
+            f"give values of a real rod, near the paper's (sec. 4)")
+    lam = np.linalg.eigvals(A)
     w = np.sort(np.abs(lam.imag[lam.imag > 0]))
     return w / (2 * math.pi)
 

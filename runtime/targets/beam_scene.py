@@ -193,7 +193,8 @@ class BeamTarget(Target):
                 c = cases[j]
                 cut = RDFD.of(c.rise, c.base_radius, c.roller_radius, c.law).undercut()
                 warnings[j] = ([starts[i][1]] if starts[i][1] else []) + \
-                    ([_undercut_warning(cut)] if cut else [])
+                    ([_undercut_warning(cut)] if cut else []) + \
+                    beam.large_deflection(c, tip.value)
                 steps[j] = runs.stats["n_steps"][i]
         return Batch(out, samp, warnings, steps)
 
