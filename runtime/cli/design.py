@@ -34,7 +34,13 @@ def add(sub):
       help="a rocker's torsional stiffness at its pivot (N m/rad): c_c = k_t/l^2 at the roller (2.57)")
     a("--rise-time", type=float, default=None, metavar="S", help="t_m, cam rise time (s)")
     a("--cam-angle", default=None, metavar="RAD",
-      help="beta_m, cam angle of the rise: rad, or degrees as '100deg' (with --speed)")
+      help="beta_m, cam angle of the rise: rad, or degrees as '100deg' (with --speed); the "
+           "follower spring and the flywheel are then sized over the rise alone")
+    a("--angles", default=None, metavar="R,D,F,D",
+      help="the whole turn: rise, outer dwell, return, inner dwell in deg, summing to 360, as "
+           "camdyn profile takes them (the return the rise's law mirrored); the rise sets "
+           "beta_m (with --speed; --cam-angle, if given too, must equal it) and the follower "
+           "spring and the flywheel are sized over the whole turn")
     a("--speed", type=float, default=None, metavar="RPM", help="camshaft speed (r.p.m.)")
     a("--mass", type=float, default=None, metavar="KG", help="m, equivalent mass at the output (4.39)")
     a("--stiffness", type=float, default=None, metavar="N/M",
@@ -75,7 +81,9 @@ def add(sub):
       help="worm gear lead angle and friction angle (rad): eta_g by (6.72)")
     a("--spring-margin", type=float, default=None, metavar="MU",
       help="size the follower spring: its force at least (1 + MU) times the inertia force "
-           "pulling the follower off the cam along the check run (secs 4.5.5, 7.5), 0 <= MU <= 10")
+           "pulling the follower off the cam (secs 4.5.5, 7.5), kinetostatically (as camdyn "
+           "profile checks) and along the check run's model, over the rise or with --angles the "
+           "whole turn, 0 <= MU <= 10; a rocker's also as a torque at its pivot")
     a("--spring-rate", type=float, default=None, metavar="N/M",
       help="the spring's rate k: the least preload for it (default: both ends of the family)")
     a("--spring-mass", type=float, default=None, metavar="KG",
@@ -127,7 +135,8 @@ def run(args) -> int:
             check=not args.no_check, progress=None if args.json or args.quiet else say,
             chart_path=None if args.out is None else method.chart_file(args.out),
             spring_margin=args.spring_margin, spring_rate=args.spring_rate,
-            spring_mass=args.spring_mass, speed_fluctuation=args.speed_fluctuation)
+            spring_mass=args.spring_mass, speed_fluctuation=args.speed_fluctuation,
+            angles=args.angles, arm_length=args.arm_length)
         if args.out is not None:
             method.write(result, args.out)
     except ValueError as exc:
