@@ -34,9 +34,9 @@ from ..core import display
 from ..core.errors import CamdynInputError, OutFolderError
 from ..core.methods import ADAPTIVE
 from ..core.outdir import Growing, entry, note, out_folder, writing
-from ..core.signals import held
+from ..core.signals import held as signals_held
 from ..measure.contract import chart_note
-from ..targets.grid import default_jobs, plan_grid, run_chunk
+from ..targets.grid import default_jobs, plan_grid, run_chunk, whole_steps
 
 __all__ = ["parse_axis", "parse_grid", "sweep", "SweepResult", "default_jobs"]
 
@@ -54,9 +54,12 @@ def parse_axis(text: str) -> tuple[str, np.ndarray]:
     parts = rng.split(":")
     syntax = CamdynInputError(f"argument --grid: {text!r} is not NAME=START:STOP:N[:lin|log|inv] "
                               "or NAME=a,b,c")
+    if len(parts) == 1 and any(not v.strip() for v in rng.split(",")):
+        raise CamdynInputError(f"argument --grid: {name}: {rng!r} has an empty item; give "
+                               "NAME=a,b,c, a number between every two commas")
     try:
         if len(parts) == 1:
-            values = np.array([float(v) for v in rng.split(",") if v.strip()])
+            values = np.array([float(v) for v in rng.split(",")])
         elif len(parts) in (3, 4):
             a, b, n = float(parts[0]), float(parts[1]), int(parts[2])
             spacing = parts[3] if len(parts) == 4 else "lin"
@@ -84,7 +87,20 @@ def parse_axis(text: str) -> tuple[str, np.ndarray]:
             values = np.linspace(a, b, n)
     if values.size == 0 or not np.all(np.isfinite(values)):
         raise CamdynInputError(f"argument --grid: {name}: {rng!r} must give finite numbers")
+    twice = repeated(values)
+    if twice is not None:
+        raise CamdynInputError(f"argument --grid: {name}: {rng!r} gives {twice:g} more than "
+                               "once; give each value once")
     return name, values
+
+
+def repeated(values) -> float | None:
+    """A value that occurs more than once in ``values``, or None: a grid's axis is a
+    coordinate, one row per value (a Dataset with a repeated coordinate cannot be selected
+    by it, and the table would hold the same run twice)."""
+    v = np.sort(np.asarray(values, dtype=float))
+    same = np.flatnonzero(v[1:] == v[:-1])
+    return float(v[same[0]]) if same.size else None
 
 
 MAX_POINTS = 1_000_000
@@ -112,6 +128,10 @@ def _axes(grid: dict) -> dict:
         v = np.atleast_1d(np.asarray(values, dtype=float)).ravel()
         if v.size == 0 or not np.all(np.isfinite(v)):
             raise CamdynInputError(f"grid {name}: give finite numbers, got {values!r}")
+        twice = repeated(v)
+        if twice is not None:
+            raise CamdynInputError(f"grid {name}: {twice:g} is given more than once; give "
+                                   "each value once")
         out[str(name)] = v
     total = math.prod(v.size for v in out.values())
     if total > MAX_POINTS:
@@ -143,6 +163,7 @@ class SweepResult:
     stats: tuple = ("warnings", "n_steps")
     meta: dict = field(default_factory=dict)
     files: list = field(default_factory=list)      # what sweep(..., out=) wrote
+    held: dict = field(default_factory=dict)       # the model's other inputs -> their value
 
     def __len__(self) -> int:
         return len(next(iter(self.columns.values())))
@@ -155,7 +176,9 @@ class SweepResult:
 
     @property
     def names(self) -> list:
-        return [*self.axes, *self.figures, *self.stats]
+        """The table's columns: the axes, every figure and its error, the model's other
+        inputs at the value every run had (:func:`held`), the warnings and the steps."""
+        return [*self.axes, *self.figures, *self.held, *self.stats]
 
     def rows(self) -> list[dict]:
         return [{k: _item(self.columns[k][i]) for k in self.names} for i in range(len(self))]
@@ -175,7 +198,18 @@ class SweepResult:
         runs = (f"{len(self)} runs" if not kept else
                 f"{len(self)} points ({kept} kept from the table, {len(self) - kept} run now)")
         return (f"{runs} of {self.target} in {self.seconds:.2f} s ({self.where}); "
-                f"figures: {', '.join(figs)}{est}{warned}")
+                f"figures: {', '.join(figs)}{self._held_text()}{est}{warned}")
+
+    def _held_text(self) -> str:
+        """The inputs off the grid, in words: those the model's defaults gave and those the
+        target was given."""
+        defaults = set(self.meta.get("defaults", ()))
+        parts = []
+        for words, names in (("at the model's defaults", [k for k in self.held if k in defaults]),
+                             ("as given", [k for k in self.held if k not in defaults])):
+            if names:
+                parts.append(", ".join(f"{k} = {self.held[k]:g}" for k in names) + f" {words}")
+        return f"; held: {'; '.join(parts)}" if parts else ""
 
     def to_csv(self, path) -> Path:
         with writing(path) as path:
@@ -223,7 +257,9 @@ class SweepResult:
     def to_xarray(self):
         """The sweep as an xarray Dataset on its grid: the axes are its coordinates (and
         dimensions, in the grid's order), every figure, its ``<figure>_error``, the warnings
-        and the step counts are variables over them; units and descriptions are attributes."""
+        and the step counts (integers) are variables over them; the model's inputs off the
+        grid are coordinates without a dimension, at their value; units and descriptions are
+        attributes."""
         xr = display.need("xarray", "SweepResult.to_xarray()")
         dims = list(self.axes)
         shape = self._shape()
@@ -236,6 +272,10 @@ class SweepResult:
                 attrs["description"] = f"error estimate of {k.removesuffix('_error')}"
             data[k] = (dims, values.reshape(shape), attrs)
         coords = {k: (k, np.asarray(v), {"units": units.get(k, "")}) for k, v in self.axes.items()}
+        defaults = set(self.meta.get("defaults", ()))
+        for k, v in self.held.items():      # off the grid: a coordinate without a dimension
+            coords[k] = ((), v, {"units": units.get(k, ""), "description": (
+                "held at the model's default" if k in defaults else "held as given")})
         return xr.Dataset(data, coords=coords, attrs={"target": self.target,
                                                      "summary": self.summary()})
 
@@ -403,12 +443,13 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
         tgt = target
     axes = _axes(grid)
     points = _points(axes)
+    fixed, defaults = held(tgt, axes)
     if dask is not None and chunk is None:
         chunk = max(tgt.chunk, min(DASK_CHUNK, math.ceil(len(points) / 16)))
     plan = plan_grid(tgt, tuple(axes), points, estimate=estimate,
                      jobs=jobs if dask is None else 1, chunk=chunk)
     with _on_dask(dask) as mapper:
-        table = None if out is None else _Table(plan, out, resume)
+        table = None if out is None else _Table(plan, out, resume, fixed)
         kept = 0 if table is None else table.kept
         bar = _bar((len(plan.points) - kept) * (2 if estimate else 1), progress, tgt.name)
         try:
@@ -418,15 +459,37 @@ def sweep(target, grid: dict, *, jobs: int | None = None, dask=None, progress: b
             bar.close()
             if table is not None:
                 table.close()
-    columns = run.columns
+    columns = {**run.columns, **_constant(fixed, len(run.columns["n_steps"]))}
     if kept:
         columns = {k: np.concatenate([table.rows[k], v]) for k, v in columns.items()}
     res = SweepResult(tgt.name, axes, run.figures, columns, run.seconds, run.where,
                       meta={"target": run.target, "tight": run.tight, "estimated": estimate,
-                            "kept": kept, "units": _units(tgt, axes)})
+                            "kept": kept, "units": _units(tgt, {**axes, **fixed}),
+                            "defaults": defaults},
+                      held=fixed)
     if table is not None:
         res.files = [table.path] + res._beside(table.path.parent)
     return res
+
+
+def held(tgt, axes: dict) -> tuple[dict, list]:
+    """({name: value} of every input the model of ``tgt`` declares that is not an axis, at
+    the value every run of the sweep has, [the names of those at the model's default]): a
+    sweep of CAMSHAFT-2 over tau runs at some Fa and Fv, and its table says which.  A scene
+    (DYNACAM, the beam follower) states its parameters in its file: none here."""
+    model = getattr(tgt, "model", None)
+    values = getattr(tgt, "values", None)
+    if model is None or not isinstance(values, dict) \
+            or not hasattr(model, "parameter_vector"):
+        return {}, []
+    vector = model.parameter_vector(values)
+    fixed = {k: float(v) for k, v in zip(model.parameter_names, vector) if k not in axes}
+    return fixed, [k for k in fixed if k not in values]
+
+
+def _constant(fixed: dict, n: int) -> dict:
+    """The columns of the inputs off the grid: each its value in every row."""
+    return {k: np.full(n, v) for k, v in fixed.items()}
 
 
 def _units(tgt, axes: dict) -> dict:
@@ -452,24 +515,26 @@ class _Table:
     camdyn's, under a key of the sweep's target, settings and grid, which --resume must
     find again); and what it holds so far, for the line a stopped sweep ends with."""
 
-    def __init__(self, plan, out, resume: bool):
+    def __init__(self, plan, out, resume: bool, fixed: dict):
         charts = [chart_file("", f).name for f in plan.figures if not f.endswith("_error")]
         folder = out_folder(out, files=["sweep.parquet", *charts])    # before the runs
         self.path = folder / TABLE
-        self.names = [*plan.names, *plan.figures, "warnings", "n_steps"]
+        self.fixed = fixed
+        self.names = [*plan.names, *plan.figures, *fixed, "warnings", "n_steps"]
         self.total = len(plan.points)
         key = _key(plan)
         self.rows = None
         if resume and os.path.lexists(self.path):
             self.rows = _kept(self.path, self.names, key, plan)
         self.kept = 0 if self.rows is None else len(self.rows[self.names[0]])
-        with held():
+        with signals_held():
             self.file = Growing(self.path, "" if self.rows is not None else _head(self.names),
                                 append=self.rows is not None, about=key)
             self._note()
 
     def add(self, columns: dict) -> None:
-        with held():            # the rows and the line saying how many: both, or neither
+        columns = {**columns, **_constant(self.fixed, len(columns[self.names[0]]))}
+        with signals_held():    # the rows and the line saying how many: both, or neither
             self.file.add(_lines(columns, self.names))
             self.kept += len(columns[self.names[0]])
             self._note()
@@ -513,6 +578,7 @@ def _kept(path: Path, names: list, key: str, plan) -> dict:
     cols = {k: (np.array([r[j] for r in body], dtype=object) if k == "warnings" else
                 np.array([float(r[j]) if r[j] else math.nan for r in body]))
             for j, k in enumerate(names)}
+    cols["n_steps"] = whole_steps(cols["n_steps"])      # whole numbers, as the runs count
     done = np.column_stack([cols[k] for k in plan.names]) if body else plan.points[:0]
     if not np.array_equal(done, plan.points[:len(body)]):
         raise other

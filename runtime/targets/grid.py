@@ -124,6 +124,13 @@ class GridRun:
         return int(sum(1 for w in self.columns["warnings"] if w))
 
 
+def whole_steps(steps) -> np.ndarray:
+    """The step counts of a grid's runs as whole numbers (int64), as a run counts them; as
+    floats only where a target did not count some (NaN there)."""
+    a = np.asarray(steps, dtype=float)
+    return a.astype(np.int64) if np.all(np.isfinite(a)) else a
+
+
 @dataclass
 class GridPlan:
     """A grid checked and ready to run: the target fitted to every point (a run long enough
@@ -158,7 +165,7 @@ class GridPlan:
             if f"{f}_error" in errors:
                 columns[f"{f}_error"] = errors[f"{f}_error"]
         columns["warnings"] = errors["warnings"]
-        columns["n_steps"] = np.asarray(base.steps, dtype=float)
+        columns["n_steps"] = whole_steps(base.steps)
         return columns
 
     def run(self, start: int = 0, *, bar=None, mapper=None, each=None) -> GridRun:
