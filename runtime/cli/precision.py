@@ -44,16 +44,17 @@ def run(args) -> int:
         if args.no_peers and args.peers:
             raise CamdynInputError("arguments --peers and --no-peers: give one")
         pr = precision.problem(args.target, params, args.t_end, say)
-        out = out_folder(args.out)
+        # the folder and the three files, checked before the runs
+        csv, js, png = names = [f"{Path(args.target).stem}_precision.{ext}"
+                                for ext in ("csv", "json", "png")]
+        out = out_folder(args.out, files=names)
         st = precision.study(pr, args.methods, () if args.no_peers else args.peers,
                              quick=args.quick, progress=say)
     except CamdynInputError as exc:
         return fail(prog, str(exc))
     except SimulationError as exc:
         return run_failed(prog, exc)
-    stem = Path(args.target).stem
-    files = [st.write_csv(out / f"{stem}_precision.csv"), st.write_json(out / f"{stem}_precision.json"),
-             st.chart(out / f"{stem}_precision.png")]
+    files = [st.write_csv(out / csv), st.write_json(out / js), st.chart(out / png)]
     if args.json:
         print(json.dumps({**precision.finite(st.as_dict()), "files": files}, indent=1))
         return 0

@@ -48,13 +48,19 @@ def add(sub):
 
 
 def _grid(text: str, flag: str, positive: bool = True) -> list:
-    """'A:B:N' (N values from A to B; ':log' for geometric spacing) or 'a,b,c'."""
+    """'A:B:N' (N values from A to B; ':log' for geometric spacing) or 'a,b,c', each value
+    once (a map has one column per value)."""
     import numpy as np
 
+    from ..studies.sweep import repeated
+
     parts = text.split(":")
+    if len(parts) == 1 and any(not v.strip() for v in text.split(",")):
+        raise CamdynInputError(f"argument {flag}: {text!r} has an empty item; give a,b,c, a "
+                               "number between every two commas")
     try:
         if len(parts) == 1:
-            vals = [float(v) for v in text.split(",") if v.strip()]
+            vals = [float(v) for v in text.split(",")]
         elif len(parts) in (3, 4) and (len(parts) == 3 or parts[3] in ("log", "lin")):
             a, b, n = float(parts[0]), float(parts[1]), int(parts[2])
             if not 1 <= n <= 200:
@@ -71,6 +77,10 @@ def _grid(text: str, flag: str, positive: bool = True) -> list:
     if not vals or not all(np.isfinite(vals)) or (positive and min(vals) <= 0):
         raise CamdynInputError(f"argument {flag}: {text!r} must give finite"
                                f"{' positive' if positive else ''} numbers")
+    twice = repeated(vals)
+    if twice is not None:
+        raise CamdynInputError(f"argument {flag}: {text!r} gives {twice:g} more than once; "
+                               "give each value once")
     return [float(v) for v in vals]
 
 
@@ -99,6 +109,30 @@ def study_of(args, say) -> tuple:
     return m, m.model
 
 
+def stem_of(label: str, param: str) -> str:
+    """The name the map's PNG, CSV and JSON share in --out."""
+    return f"stability_{label}_{param}"
+
+
+def output_files(args) -> list:
+    """The files the map of ``args`` writes into --out, named before it runs (the model
+    loaded, not run): its label (the model's name, or beam_follower) and its parameter (the
+    one --param names, else the model's default).  A model without a default parameter
+    writes nothing: study_of refuses it."""
+    from ..studies import stability_beam, stability_map
+
+    if args.model.replace("_", "-") in stability_beam.NAMES:
+        label, default = "beam_follower", "N"
+    else:
+        model = stability_map.target_of(args.model, args.t_end, args.law).model
+        label, default = model.name, (stability_map.DEFAULT_PARAMS.get(model.name) or (None,))[0]
+    name, sep, _ = (args.param or "").partition("=")
+    param = (name if sep else None) if args.param else default
+    if not param:                   # no parameter, or a --param study_of refuses
+        return []
+    return [f"{stem_of(label, param)}.{ext}" for ext in ("png", "csv", "json")]
+
+
 def run(args) -> int:
     prog = "camdyn stability"
     say = (lambda msg: None) if args.quiet else (lambda msg: print(f"{prog}: {msg}", file=sys.stderr, flush=True))
@@ -110,10 +144,11 @@ def run(args) -> int:
                                    f"0 < threshold < 1")
         if args.t_end is not None and not args.t_end > 0:
             raise CamdynInputError(f"argument --t-end: {args.t_end:g} must be positive")
-        out = out_folder(args.out, create=False)       # checked before the runs
+        # the folder and every file the map writes, checked before its runs
+        out = out_folder(args.out, create=False, files=output_files(args))
         m, label = study_of(args, say)
         out_folder(out)
-        stem = out / f"stability_{label}_{m.param}"
+        stem = out / stem_of(label, m.param)
         files = [m.plot(f"{stem}.png"), m.write_csv(f"{stem}.csv"), m.write_json(f"{stem}.json")]
     except CamdynInputError as exc:
         return fail(prog, str(exc))

@@ -66,6 +66,12 @@ def out_folder(out, create: bool = True, files=()):
         except OSError as exc:
             raise OutFolderError(f"argument --out: cannot create the folder {path}: "
                                  f"{exc.strerror or exc}") from None
+        # a folder that exists read-only is made without a word by mkdir(exist_ok=True):
+        # refused here, before the runs a command makes this call ahead of, not at its
+        # first write after them
+        if not os.access(path, os.W_OK | os.X_OK):
+            raise OutFolderError(f"argument --out: the folder {path} is not writable; give "
+                                 "--out a folder camdyn can write")
     for name in files:
         claim(path / name)
     return path
