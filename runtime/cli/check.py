@@ -17,6 +17,9 @@ def add(sub):
     c.add_argument("-k", default=None, help="only checks whose key contains this text")
     c.add_argument("--topic", action="append", help="only this topic (repeatable)")
     c.add_argument("--quiet", action="store_true", help="no progress lines")
+    c.add_argument("--list", action="store_true",
+                   help="the keys of the checks selected (every one without -k and --topic), "
+                        "one a line, without running them")
     add_estimate_option(c)
     return c
 
@@ -27,10 +30,20 @@ def run(args) -> int:
     prog = "camdyn check"
     try:
         todo = suite.select(args.topic, args.k)
+        if not todo:
+            # nothing to run is no pass: a mistyped key would otherwise exit 0
+            where = f" in --topic {', '.join(args.topic)}" if args.topic else ""
+            what = (f"argument -k: no check's key contains {args.k!r}{where}" if args.k
+                    else f"argument --topic: no checks{where}")
+            raise CamdynInputError(f"{what}; camdyn check --list shows the keys")
     except CamdynInputError as exc:
         return fail(prog, str(exc))
     except Exception as exc:         # a topic module that does not load: named, not a traceback
         return fail(prog, f"cannot load the checks: {exc}")
+    if args.list:
+        keys = [c.key for c in todo]
+        print(json.dumps(keys, indent=1) if args.json else "\n".join(keys))
+        return 0
     quiet = args.json or args.quiet
     outcomes = suite.run(todo, progress=None if quiet else (
         lambda i, n, c: print(f"  [{i}/{n}] {c.key}", file=sys.stderr, flush=True)),

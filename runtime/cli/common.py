@@ -52,11 +52,17 @@ def fmt(value) -> str:
 
 
 def assignments(items, flag: str) -> dict:
+    """{NAME: number} of a repeatable NAME=VALUE option (--set, --initial, --state-atol); a
+    NAME given twice is refused (a dict would keep the last without a word)."""
     out = {}
     for item in items or ():
         name, sep, value = item.partition("=")
+        name = name.strip()
         if not sep or not name:
             raise CamdynInputError(f"argument {flag}: {item!r} is not NAME=VALUE")
+        if name in out:
+            raise CamdynInputError(f"argument {flag}: {name} is given twice; give each name "
+                                   "once")
         try:
             out[name] = float(value)
         except ValueError:

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+import math
 
 from ..core.errors import CamdynInputError, SimulationError
 from .common import (LAW_HELP, add_dependent_option, add_estimate_option, add_out_option,
@@ -75,6 +76,31 @@ def law_arg(args) -> tuple:
                    getattr(args, "return_theta", None)), None
 
 
+INITIAL_LIMIT = 1e100
+"""An initial value may be at most this many times its state's declared scale.  The error
+control squares the scaled differences of the stages (a sum of squares, DP54's norm): from
+about 1e140 on the one-DOF model at rtol 1e-8 that overflows at the first step, and the run
+cannot take one ("the step budget was used up at T = 0").  1e100 leaves a margin of 1e30
+for stiffer models and tighter tolerances, and is beyond any state a mechanism takes."""
+
+
+def check_initial(model, initial: dict) -> None:
+    """--initial's values: at most INITIAL_LIMIT times each state's scale, else a refusal
+    naming the value and the range."""
+    scales = dict(zip(model.state_names, model.state_scales()))
+    units = {s["name"]: s.get("unit", "") for s in model.manifest["states"]}
+    for name, value in initial.items():
+        if name not in scales:         # an unknown name: the target names the states
+            continue
+        limit = INITIAL_LIMIT * scales[name]
+        if not abs(value) <= limit:
+            unit = f" {units[name]}" if units[name] and units[name] != "1" else ""
+            raise CamdynInputError(
+                f"argument --initial: {name}={value:g} is out of range: |{name}| <= {limit:g}"
+                f"{unit} ({INITIAL_LIMIT:g} times the state's scale); beyond it the "
+                "integrator's error control overflows at the first step")
+
+
 def run(args) -> int:
     from ..measure.contract import answer, missing_estimate, plus_minus
     from ..targets import resolve
@@ -82,9 +108,14 @@ def run(args) -> int:
 
     prog = "camdyn integrate"
     say = say_on_stderr()
+    initial = {}
     try:
         params = assignments(args.set, "--set")
         initial = assignments(args.initial, "--initial")
+        for name, value in initial.items():      # before the model is built with them
+            if not math.isfinite(value):
+                raise CamdynInputError(f"argument --initial: {name}={value:g} is not a finite "
+                                       "number")
         if args.rtol is not None and args.step is not None:
             raise CamdynInputError("arguments --rtol and --step: give one (rtol for dp54 and "
                                    "rodas4, step for rk4 and koster)")
@@ -95,10 +126,13 @@ def run(args) -> int:
                           dependent=args.dependent, **tolerances(args),
                           exact=None if args.exact_segments is None
                           else args.exact_segments == "on")
+        check_initial(t.model, initial)
         if args.out:
             from ..core.outdir import out_folder
 
-            out_folder(args.out, create=False)       # checked before the run
+            # the folder and the two files write_series makes, checked before the run
+            out_folder(args.out, create=False,
+                       files=[f"{t.model.name}.csv", f"{t.model.name}.png"])
         a = answer(t, estimate=not args.no_error_estimate)
         files = []
         if args.out:
@@ -111,7 +145,10 @@ def run(args) -> int:
             message = f"argument --max-steps: {message}"
         return fail(prog, tolerance_argument(message))
     except SimulationError as exc:
-        return run_failed(prog, exc)
+        # a run from states the user gave says so: they are the first suspect
+        given = ", ".join(f"{k}={v:g}" for k, v in initial.items())
+        return run_failed(prog, f"{exc}; the run started from --initial {given}" if initial
+                          else exc)
     summary = {**a.record, "cpu_seconds": a.stats["cpu_seconds"], "status": "ok",
                "warnings": list(a.warnings), "stiff_from_T": a.stats["stiff_from_T"]}
     outputs, output_errors = a.at_end()
