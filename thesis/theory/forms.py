@@ -26,11 +26,13 @@ X_rise = T - sp.sin(2 * pi * T) / (2 * pi) + u_rise
 u_dwell = tau**3 / (1 - tau**2) / pi * sp.sin(pi / tau) * sp.cos(pi / tau * (2 * T - 1))
 """Positional error after the rise, T >= 1 (3.4b)."""
 
-U0 = tau**3 / (1 - tau**2) / pi * sp.Abs(sp.sin(pi / tau))
-"""Relative residual positional error amplitude (3.5)."""
+U0 = tau**3 / sp.Abs(1 - tau**2) / pi * sp.Abs(sp.sin(pi / tau))
+"""Relative residual positional error amplitude (3.5): the absolute value of the factor before
+the cosine of (3.4b).  The thesis prints 1 - tau^2 for the one-DOF model's tau < 1, where it is
+positive; |1 - tau^2| keeps the amplitude an amplitude for tau > 1 (CAMSHAFT-1 at Fa = 0)."""
 
-U0dd = 4 * pi * tau / (1 - tau**2) * sp.Abs(sp.sin(pi / tau))
-"""Relative residual acceleration amplitude (3.6)."""
+U0dd = 4 * pi * tau / sp.Abs(1 - tau**2) * sp.Abs(sp.sin(pi / tau))
+"""Relative residual acceleration amplitude (3.6), (2 pi/tau)^2 U0; |1 - tau^2| as in U0."""
 
 decay = sp.exp(-n * 2 * pi * q / sp.sqrt(1 - q**2))
 """Amplitude left after n free vibrations with relative damping q (3.7)."""
