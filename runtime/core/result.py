@@ -235,21 +235,35 @@ class Result:
                         "figure's error estimate comes from a second run (camdyn's answer "
                         "contract, runtime/measure/contract.py)"}
 
+    @property
+    def segment(self) -> np.ndarray:
+        """The interval each recorded point belongs to, 0 on: a point at a breakpoint (a cam
+        segment's end, an event) is recorded twice at the same time, as the left limit (the
+        interval that ends there) and the right limit (the one that starts there)."""
+        return np.concatenate([[0], np.cumsum(self.t[1:] == self.t[:-1])]).astype(np.int64)
+
     def to_pandas(self):
         """Every state and output at the recorded points as a pandas DataFrame indexed by the
-        time (a breakpoint appears twice, as left and right limit); ``.attrs`` holds the units,
-        the model, the method, the parameters, the run's statistics and its warnings."""
+        time, each time once: at a breakpoint, recorded twice as left and right limit, the
+        frame keeps the right limit (the value from there on: an acceleration after the cam's
+        jerk, not before), so that ``frame.loc[t]`` is one row and the index is unique.  Both
+        limits are in ``result[name]`` and in :meth:`to_xarray` (its ``segment`` coordinate
+        tells them apart).  ``.attrs`` holds the units, the model, the method, the parameters,
+        the run's statistics and its warnings."""
         pd = display.need("pandas", "Result.to_pandas()")
         time_name = self.model.manifest["time"]["name"]
-        frame = pd.DataFrame({n: self[n] for n in self.names},
-                             index=pd.Index(self.t, name=time_name))
+        # the last of the points at one time is its right limit
+        right = np.append(self.t[1:] != self.t[:-1], True)
+        frame = pd.DataFrame({n: np.asarray(self[n])[right] for n in self.names},
+                             index=pd.Index(self.t[right], name=time_name))
         frame.attrs.update(units=self.units, **self._describe())
         return frame
 
     def to_xarray(self):
         """The run as an xarray Dataset over the recorded points (dimension ``point``, the time
-        its coordinate; a breakpoint appears twice), every state and output a variable with its
-        unit and description as attributes."""
+        its coordinate; a breakpoint appears twice, as left and right limit, which the
+        coordinate ``segment`` tells apart: :attr:`segment`), every state and output a variable
+        with its unit and description as attributes."""
         xr = display.need("xarray", "Result.to_xarray()")
         man = self.model.manifest
         docs = {d["name"]: d.get("doc", "") for d in [*man["states"], *man["outputs"]]}
@@ -262,8 +276,11 @@ class Result:
                  "warnings": "; ".join(self.warnings) or "none",
                  **{f"parameter_{k}": v for k, v in attrs["parameters"].items()},
                  **{f"stat_{k}": v for k, v in attrs["stats"].items()}}
-        return xr.Dataset(data, coords={time_name: ("point", self.t, {"units": units[time_name]})},
-                          attrs=attrs)
+        coords = {time_name: ("point", self.t, {"units": units[time_name]}),
+                  "segment": ("point", self.segment, {
+                      "description": "the interval of the point, 0 on: at a breakpoint the "
+                                     "left limit is in the interval that ends there"})}
+        return xr.Dataset(data, coords=coords, attrs=attrs)
 
     def _repr_html_(self) -> str:
         man = self.model.manifest
@@ -274,8 +291,23 @@ class Result:
                                [[k, v, next((p["unit"] for p in man["parameters"] if p["name"] == k), "")]
                                 for k, v in self.params.items()])
         runs = display.table(list(stats), [list(stats.values())])
-        return display.page(head, runs, params, display.warnings_block(self.warnings),
-                            display.picture(self.chart()))
+        return display.page(head, runs, params, self._no_figures(),
+                            display.warnings_block(self.warnings), display.picture(self.chart()))
+
+    def _no_figures(self) -> str:
+        """What a bare run shows in place of figures: that it has none with an error estimate,
+        and the call that gives them (the answer contract: a figure comes with its estimate,
+        which takes a second run one notch tighter)."""
+        import html
+
+        call = f"answer(resolve({self.model.name!r}, params={self.params!r}))"
+        return ("<p>figures: none here. A Result is one run's values, each step within the "
+                "method's tolerance, which bounds no figure's error. The figures (U0, U0'', "
+                "the state at the end, ...) each with its error estimate and the estimate's "
+                "parts come from <code>from camdyn.runtime.measure.contract import answer; "
+                "from camdyn.runtime.targets.resolve import resolve; "
+                f"{html.escape(call)}</code> (add the run's settings: t_end, method, rtol, "
+                "law, ...).</p>")
 
     def chart(self, names=None, note: str = "one run's values; figures with error estimates: "
                                              "camdyn.runtime.measure.contract.answer"):

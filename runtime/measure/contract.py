@@ -53,6 +53,7 @@ class Answer:
     tight_result: object = None     # the run one notch tighter (None without an estimate)
     factor: float = 1.0             # the method's factor of |v - v'| (Richardson's for rk4)
     unavailable: str | None = None  # why the estimate was asked for and could not be made
+    about: dict = field(default_factory=dict)   # figure -> (unit, description), the target's
 
     def as_dict(self) -> dict:
         """The command's record with ``<figure>_error`` beside it, the warnings and the
@@ -81,6 +82,32 @@ class Answer:
         frame.attrs.update(target=self.target, warnings=list(self.warnings),
                            estimate_unavailable=self.unavailable)
         return frame
+
+    def to_xarray(self):
+        """The figures as an xarray Dataset, as :meth:`Result.to_xarray` and
+        :meth:`SweepResult.to_xarray` hold theirs: every figure a variable without a
+        dimension, its estimate the variable ``<figure>_error`` beside it (NaN where there is
+        none: not asked for, or unavailable), the estimate's parts its attributes; units and
+        descriptions as attributes (the target's); the warnings ("none" without), the
+        target and why an estimate is unavailable as the Dataset's attributes."""
+        from ..core import display
+
+        xr = display.need("xarray", "Answer.to_xarray()")
+        data = {}
+        for name, value in self.figures.items():
+            unit, doc = self.about.get(name, ("", ""))
+            data[name] = ((), _scalar(value), {"units": unit, "description": doc})
+            if name in self.errors:
+                parts = {k: _scalar(e) for k, e in (self.sources.get(name) or {}).items()}
+                data[f"{name}_error"] = ((), _scalar(self.errors[name]), {
+                    "units": unit, "description": f"error estimate of {name}",
+                    **{f"error_{k}": e for k, e in parts.items()}})
+        attrs = {"target": self.target, "kind": self.kind,
+                 "warnings": "; ".join(self.warnings) or "none",
+                 "estimated": int(self.estimated)}
+        if self.unavailable is not None:
+            attrs["estimate_unavailable"] = self.unavailable
+        return xr.Dataset(data, attrs=attrs)
 
     def _repr_html_(self) -> str:
         from ..core import display
@@ -111,6 +138,14 @@ class Answer:
         errors = {n: None if tight is None else abs(values[n] - float(tight.outputs[n][-1]))
                   * self.factor for n in names}
         return values, errors
+
+
+def _scalar(v):
+    """A figure or estimate as a Dataset holds it: a number (NaN for None), a yes or no as
+    such."""
+    if v is None:
+        return math.nan
+    return v if isinstance(v, (bool, np.bool_)) else float(v)
 
 
 def _number(v) -> bool:
@@ -181,7 +216,8 @@ def answer(target, *, estimate: bool = True, progress=None) -> Answer:
     warnings += unresolved(base.figures, errors, _scales(target))
     return Answer(target.name, target.kind, dict(base.figures), errors, sources, warnings,
                   base.record, base.stats, estimate, base.result,
-                  None if tight is None else tight.result, target.method().estimate_factor, why)
+                  None if tight is None else tight.result, target.method().estimate_factor, why,
+                  {f.name: (f.unit, f.doc) for f in target.figures()})
 
 
 def combine(target, base, tight, estimate: bool) -> tuple[dict, dict, list]:
