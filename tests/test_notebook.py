@@ -73,10 +73,9 @@ def test_a_run_as_pandas_and_xarray_with_the_manifest_s_units():
     res = simulate("camshaft1", {"tau": 0.15, "Fa": 2.0}, t_end=3.0, method="dp54", rtol=1e-8)
     man = res.model.manifest
     frame = res.to_pandas()
-    assert np.array_equal(frame.index.to_numpy(), res.t) and frame.index.name == "T"
+    assert np.array_equal(frame.index.to_numpy(), np.unique(res.t)) and frame.index.name == "T"
     ds = res.to_xarray()
     for name in res.names:
-        assert np.array_equal(frame[name].to_numpy(), res[name])
         assert np.array_equal(ds[name].values, res[name])
     for spec in [*man["states"], *man["outputs"]]:
         assert frame.attrs["units"][spec["name"]] == spec["unit"] == ds[spec["name"]].attrs["units"]
@@ -85,6 +84,85 @@ def test_a_run_as_pandas_and_xarray_with_the_manifest_s_units():
     page = res._repr_html_()
     assert "no warnings" in page and str(res.stats["n_steps"]) in page
     assert len(_pictures(page)) == 1
+
+
+def test_a_run_s_frame_has_one_row_per_time_the_right_limit_at_a_breakpoint():
+    """The end of the rise (T = 1) is recorded twice, as left and right limit: the frame's
+    index had it twice.  Now every time once, the row at a breakpoint the last point recorded
+    there (the right limit), every other row the recorded point itself; the Dataset keeps
+    both limits, told apart by ``segment`` (0 before the breakpoint, 1 from it)."""
+    res = simulate("camshaft1", {"tau": 0.15, "Fa": 2.0}, t_end=3.0, method="dp54", rtol=1e-8)
+    twice = res.t[1:][res.t[1:] == res.t[:-1]]
+    assert list(twice) == [1.0]                   # the case the test is about
+    frame = res.to_pandas()
+    assert frame.index.is_unique and len(frame) == len(res.t) - 1
+    last = {}
+    for k, t in enumerate(res.t):         # the last point recorded at each time
+        last[t] = k
+    rows = np.array([last[t] for t in frame.index])
+    assert list(frame.index) == sorted(last)
+    for name in res.names:
+        assert np.array_equal(frame[name].to_numpy(), res[name][rows]), name
+    ds = res.to_xarray()
+    seg = ds["segment"].values
+    k = int(np.flatnonzero(res.t == 1.0)[0])
+    assert seg[k] == 0 and seg[k + 1] == 1 and set(seg[:k + 1]) == {0} and set(seg[k + 1:]) == {1}
+
+
+def test_a_bare_run_says_it_has_no_figures_and_how_to_get_them():
+    """A Result's view showed a run without a figure or an estimate, silently: it now says it
+    has none and gives the call that does; that call, run as printed, answers every figure
+    with its estimate."""
+    import html
+
+    from camdyn.runtime.measure.contract import answer
+    from camdyn.runtime.targets.resolve import resolve
+
+    res = simulate("camshaft1", {"tau": 0.15, "Fa": 2.0}, t_end=3.0, method="dp54", rtol=1e-8)
+    page = res._repr_html_()
+    assert "figures: none here" in page and "no warnings" in page
+    call = html.unescape(re.search(r"(answer\(resolve\(.*?\)\))</code>", page).group(1))
+    a = eval(call, {"answer": answer, "resolve": resolve})
+    assert set(a.figures) >= {"U0", "U0dd"} and all(a.errors[f] is not None for f in a.figures)
+
+
+def test_a_grid_with_a_repeated_value_is_refused():
+    """A repeated grid value gave a Dataset whose coordinate has a value twice (sel() cannot
+    pick one): refused in one line naming the axis and the value."""
+    with pytest.raises(CamdynInputError) as exc:
+        sweep("one_dof", {"tau": [0.1, 0.2, 0.1]}, progress=False)
+    assert str(exc.value) == "grid tau: 0.1 is given more than once; give each value once"
+
+
+def test_step_counts_are_whole_numbers_everywhere(swept):
+    """n_steps came out as float64 in the table, the DataFrame and the Dataset: whole numbers
+    now, each the count of its point's run (the study's own, one run per point)."""
+    assert swept["n_steps"].dtype.kind == "i"
+    assert swept.to_pandas()["n_steps"].dtype.kind == "i"
+    assert swept.to_xarray()["n_steps"].dtype.kind == "i"
+    study = resolve("default")
+    for row in swept.rows()[:2]:
+        one = study.with_parameters({"Fa": row["Fa"], "tau": row["tau"]}).run()
+        assert row["n_steps"] == one.stats["n_steps"]
+
+
+def test_an_answer_as_an_xarray_dataset():
+    """Answer.to_xarray(), as Result's and SweepResult's: every figure a variable with its
+    estimate ``<figure>_error`` beside it (the estimate's parts its attributes), the target's
+    units and descriptions as attributes, the warnings as the Dataset's."""
+    target = resolve("camshaft1")
+    a = answer(target)
+    ds = a.to_xarray()
+    specs = {f.name: f for f in target.figures()}
+    for name, value in a.figures.items():
+        assert float(ds[name]) == value and float(ds[f"{name}_error"]) == a.errors[name]
+        assert ds[name].attrs == {"units": specs[name].unit, "description": specs[name].doc}
+        assert ds[f"{name}_error"].attrs["description"] == f"error estimate of {name}"
+        for part, e in a.sources[name].items():
+            assert ds[f"{name}_error"].attrs[f"error_{part}"] == e
+    assert ds.attrs["warnings"] == ("; ".join(a.warnings) or "none")
+    bare = answer(target, estimate=False).to_xarray()
+    assert all(np.isnan(float(bare[f"{n}_error"])) for n in a.figures)
 
 
 def test_an_answer_shows_each_figure_with_its_estimate_and_its_parts():
