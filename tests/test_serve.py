@@ -348,7 +348,8 @@ def test_a_rocker_scene_draws_its_rocker_and_an_axial_one_none():
     """The rocker scene's cam is an oscillating roller pivoted at d_p, arm l_a, swinging
     h_m/l_a (its stroke is the arc at l_a, sec. 2.4) on the base circle R_b - r_r (the
     profile's least radius); a roller as large as R_b is refused in one line; the indexing
-    scene's axial cam is not drawn: no profile, the report says so, the DXF is refused."""
+    scene's axial cam is not drawn, nor a rocker swinging h_m/l_a beyond 90 deg, while their
+    runs answer: no profile, the report says so, the DXF is refused."""
     from camdyn.runtime.cli.page import dxf_bytes
     from camdyn.runtime.core.errors import CamdynInputError
     from camdyn.runtime.targets import scene_files
@@ -362,10 +363,12 @@ def test_a_rocker_scene_draws_its_rocker_and_an_axial_one_none():
     assert math.isclose(_radii(out["x"], out["y"])[0], p["R_b"] - 0.008, rel_tol=1e-9)
     with pytest.raises(CamdynInputError, match=r"^roller radius=0.048 m is out of range"):
         evaluate(Inputs(mechanism="rocker", roller_radius=p["R_b"]))
+    out = evaluate(Inputs(mechanism="rocker", scene_parameters={"h_m": 0.2}))
+    assert out["profile"] is None and out["cam_note"].startswith("h_m=0.2 m on the arm")
     out = evaluate(Inputs(mechanism="indexing"))
     assert out["profile"] is None and "axial" in out["cam_note"]
     assert "not drawn" in report(out["inputs"], out, None)
-    with pytest.raises(CamdynInputError, match="axial cam"):
+    with pytest.raises(CamdynInputError, match="an axial"):
         dxf_bytes(out["inputs"])
 
 
@@ -459,3 +462,15 @@ def test_a_refused_input_greys_the_charts_out_with_its_one_line(server, chromium
     alert.wait_for(state="hidden", timeout=10_000)
     assert stale.count() == 0 and box.input_value() == ""
     page.close()
+
+
+@pytest.mark.parametrize("tau_min, tau_max", [(0.05, math.inf), (0.3, 0.2), (math.nan, 0.8), (0.0, 0.8)])
+def test_a_tau_range_that_is_not_one_is_refused_in_one_line(tau_min, tau_max):
+    """The residual chart's tau range: an infinite end (which had reached the sweep's grid
+    check and printed the whole grid), a reversed, a NaN or a zero one is refused in one
+    line naming the range."""
+    from camdyn.runtime.core.errors import CamdynInputError
+
+    with pytest.raises(CamdynInputError) as exc:
+        evaluate(Inputs(tau_min=tau_min, tau_max=tau_max))
+    assert str(exc.value).startswith("tau range") and "\n" not in str(exc.value)

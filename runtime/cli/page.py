@@ -165,9 +165,15 @@ def _geometry(inp: Inputs) -> dict:
         angles_deg=_rise_angles(inp.rise_deg), law=inp.law)
 
 
-def scene_geometry(sc, roller_radius: float) -> dict | None:
-    """The cam a DYNACAM scene runs, as CamProfile's keyword arguments; None for an axial
-    (globoidal) cam, which is no disk cam.  A radial cam lifts the follower by h = h_m H(B)
+class NotDrawn(CamdynInputError):
+    """A scene whose cam the page cannot draw as a disk cam: its run answers, its cam panels
+    are greyed out with this message (the DXF is refused with it)."""
+
+
+def scene_geometry(sc, roller_radius: float) -> dict:
+    """The cam a DYNACAM scene runs, as CamProfile's keyword arguments; NotDrawn for an axial
+    (globoidal) cam, which is no disk cam, a rise of 180 deg or more without a [turn], a
+    rocker swinging 90 deg or more.  A radial cam lifts the follower by h = h_m H(B)
     on the pitch radius R_b + h (6.20)-(6.22): a roller of the page's radius r_r (the scene
     has none) rolls on a profile of base radius R_b - r_r, a flat face on the base circle R_b
     itself (camdyn profile --contact-force-from reads a scene so); a rocker pivoted at d_p
@@ -180,16 +186,26 @@ def scene_geometry(sc, roller_radius: float) -> dict | None:
 
     o, p = sc.options, sc.parameters
     if o.cam != "radial":
-        return None
+        raise NotDrawn(f"{sc.title}: an axial (globoidal) cam; the cam panels draw radial disk "
+                       "cams only")
     rocker, flat = bool(getattr(o, "rocker", False)), bool(getattr(o, "flat_face", False))
     R_b = float(p["R_b"])
     if not flat and not 0 < roller_radius < R_b:
         raise CamdynInputError(f"roller radius={roller_radius:g} m is out of range: 0 < roller "
                                f"radius < the scene's base pitch radius R_b = {R_b:g} m")
+    rise = math.degrees(p["beta_m"])
     if sc.turn is not None:
         angles = scene_files.turn_angles(sc)
+    elif not rise < 180:
+        raise NotDrawn(f"beta_m={p['beta_m']:g} rad ({rise:g} deg): the cam drawn for a "
+                               f"scene without a [turn] returns as it rises and needs beta_m < "
+                               f"180 deg; give the scene a [turn] (upper_dwell, return in deg)")
     else:
-        angles = _rise_angles(math.degrees(p["beta_m"]))
+        angles = _rise_angles(rise)
+    if rocker and not 0 < math.degrees(p["h_m"] / p["l_a"]) < 90:
+        raise NotDrawn(f"h_m={p['h_m']:g} m on the arm l_a={p['l_a']:g} m swings the "
+                               f"rocker {math.degrees(p['h_m'] / p['l_a']):g} deg: the cam "
+                               f"drawn needs 0 < h_m/l_a < 90 deg")
     g = dict(follower=f"{'oscillating' if rocker else 'translating'}-{'flat' if flat else 'roller'}",
              base_radius=R_b if flat else R_b - roller_radius,
              roller_radius=None if flat else roller_radius, stroke=None, swing_deg=None,
@@ -214,9 +230,6 @@ def _profile(inp: Inputs, tgt=None):
         geometry = _geometry(inp)
     else:
         geometry = scene_geometry((tgt or _target(inp)).scene, inp.roller_radius)
-        if geometry is None:
-            raise CamdynInputError(f"{inp.mechanism} has an axial cam: the page draws radial "
-                                   "disk cams only")
     return CamProfile(**geometry, points_per_degree=2)
 
 
@@ -361,13 +374,16 @@ def evaluate(inp: Inputs) -> dict:
     force = None if model_page else _memo(run_key + ("force",), lambda: run_force(ans))
     clock["response"] = time.perf_counter() - t0
     tau, Fa, h, t_m = _characteristics(inp, tgt)
-    geometry = (_geometry(inp) if model_page else
-                scene_geometry(tgt.scene, inp.roller_radius))
+    cam_note = None
+    try:
+        geometry = _geometry(inp) if model_page else scene_geometry(tgt.scene, inp.roller_radius)
+    except NotDrawn as exc:
+        geometry, cam_note = None, str(exc)
     ran = inp if model_page else _ran(inp, tgt, geometry, force, h, t_m)
     t0 = time.perf_counter()
-    if not 0 < inp.tau_min < inp.tau_max:
+    if not 0 < inp.tau_min < inp.tau_max < np.inf:
         raise CamdynInputError(f"tau range {inp.tau_min:g} to {inp.tau_max:g}: needs "
-                               "0 < tau min < tau max")
+                               "0 < tau min < tau max, both finite")
     model = inp.mechanism if model_page else "camshaft1"
     theta = None if model_page else tgt.scene.theta
     n_tau, rtol = CHART[model]
@@ -383,11 +399,8 @@ def evaluate(inp: Inputs) -> dict:
     t0 = time.perf_counter()
     cam = dict.fromkeys(("profile", "x", "y", "phi_deg", "alpha_deg", "p0", "stress",
                          "extremes"))
-    cam_warnings, cam_note = [], None
-    if geometry is None:
-        cam_note = (f"{tgt.scene.title}: an axial (globoidal) cam; the cam panels draw radial "
-                    "disk cams only")
-    else:
+    cam_warnings = []
+    if geometry is not None:
         load = (inp.contact_force, None) if model_page else force
         key = ("cam", tuple(sorted(geometry.items())), ran.follower, inp.width, *load,
                not model_page)
@@ -553,8 +566,7 @@ SCENE_NOTE = (
     "the contact force: the largest |F_x| (6.42) of its run, all along the cam.  Its "
     "parameters are the fields above.")
 
-AXIAL_NOTE = ("The scene's cam is axial (globoidal): the cam panels, which draw radial disk "
-              "cams, are greyed out, and the follower's fields are left out.")
+NOT_DRAWN_NOTE = "The scene's cam is not drawn ({}): its panels are greyed out, its fields left out."
 
 CAM_FIELDS = ("base_radius", "roller_radius", "swing_deg", "pivot_distance", "arm_length",
               "face_offset", "rise_deg", "contact_force", "width")
@@ -688,13 +700,17 @@ def app():
         if not drawn:
             src_prof.data = {"x": [], "y": []}
             src_alpha.data = {"phi": [], "alpha": [], "p0": []}
-            f_prof.title.text = "cam profile: not drawn (an axial cam)"
+            f_prof.title.text = "cam profile: not drawn (see the figures)"
         elif out["profile"] is not before.get("profile"):
             src_prof.data = {"x": out["x"], "y": out["y"]}
             p0 = np.where(np.isfinite(out["p0"]), out["p0"] / 1e6, np.nan)
             src_alpha.data = {"phi": out["phi_deg"], "alpha": out["alpha_deg"], "p0": p0}
             f_prof.title.text = "cam profile"
         cam_box.styles = {} if drawn else STALE
+        # a cam not drawn leaves the follower's fields out: they would show a cam that never ran
+        for w in (follower, *(fields[k] for k in CAM_FIELDS)):
+            w.visible = drawn
+        scene_note.object = SCENE_NOTE if drawn else NOT_DRAWN_NOTE.format(out["cam_note"])
         dxf.disabled = not drawn
         figures_md.object = display.table(["figure", "value ± error"], figure_rows(out)) \
             + display.warnings_block(page_warnings(out))
@@ -799,11 +815,6 @@ def app():
         law.disabled = follower.disabled = scene
         for k in SCENE_GIVES:
             fields[k].disabled = scene
-        # an axial cam is no disk cam: its follower's fields would show a cam that never ran
-        disk = not scene or tgt.scene.options.cam == "radial"
-        for w in (follower, *(fields[k] for k in CAM_FIELDS)):
-            w.visible = disk
-        scene_note.object = SCENE_NOTE if disk else AXIAL_NOTE
         scene_fields.clear()
         if scene:
             specs = scene_files.declared_parameters(tgt.scene.options)
