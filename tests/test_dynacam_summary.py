@@ -408,3 +408,88 @@ def test_turn_scene_file_through_the_command(tmp_path, capsys):
     assert main(["simulate", str(path), "--model", "auto"]) == 2
     err = capsys.readouterr().err.strip()
     assert "\n" not in err and "[turn]" in err
+
+
+# -- the residual vibration about the dwell's static equilibrium -------------------------------
+
+HELD = {"h_m": 0.01, "beta_m": BETA_M, "R_b": 0.08, "omega_s": OMEGA_S, "J": 1e6, "k": 1e9,
+        "q_b": 0.05, "m_x": 1.0, "c_x": 1e6, "q_x": 0.05, "m_y": 1.0, "c_y": 1e7, "q_y": 0.05,
+        "m_z": 1.0, "c_z": 2e6, "q_z": 0.05, "F_0": 50.0, "c_s": 2e4}
+"""A spring-held follower whose roller stays on the cam (the preload beats the inertia force
+of the rise, 2 pi m_x h_m/t_m^2 = 1 N, by far) on a camshaft that turns at w_s whatever the
+torque (J, k huge, as the lift scene's): its motion is linear in the forces throughout.  On a
+shaft that twists, the preload's torque F tan(alpha) R in the rise turns the cam, and U0
+moves with the preload (2.4e-4 of it between F_0 = 50 and 150 N with J = 0.01, k = 1000)."""
+
+
+def _held(F_0, T_end=2.0):
+    sc = _scene(f"held{F_0:g}", {"roller": "contact", "spring": True}, {**HELD, "F_0": F_0},
+                T_end)
+    return sc, *dynacam.run(sc)
+
+
+def test_static_level_of_the_dwell_is_the_series_springs():
+    """In the dwell after the rise the follower settles where the spring, at the lift h_m,
+    presses the linkage c_x and the shaft c_z in series (4.3), (6.45): F = F_0 + c_s x with
+    x = h_m - F/c_c, so F = (F_0 + c_s h_m)/(1 + c_s/c_c) and U = (x - h_m)/h_m = -F/(c_c h_m);
+    y = 0 (no torque in the dwell).  1e-9 relative (the equilibrium is solved to rounding)."""
+    _, s, _ = _held(50.0)
+    c_c = 1 / (1 / HELD["c_x"] + 1 / HELD["c_z"])
+    F = (HELD["F_0"] + HELD["c_s"] * HELD["h_m"]) / (1 + HELD["c_s"] / c_c)
+    assert s["U_static"] == pytest.approx(-F / (c_c * HELD["h_m"]), rel=1e-9)
+
+
+def test_preload_shifts_the_dwell_not_the_vibration():
+    """The follower never leaves the cam, so the motion is linear and a larger preload only
+    moves the static level: U0, measured about it, stays (the U0 that included the static
+    deflection grew exactly as (F_0 + c_s h)/(c_x h_m) with the preload), while U_static moves
+    by -dF_0/((1 + c_s/c_c) c_c h_m).  U0 (4.2e-6 of the stroke against levels of 0.04 and
+    0.05) equal to 1e-5 relative: the runs at rtol 1e-8 differ by 1.4e-6 of it, 6e-12 of the
+    stroke; and the largest |U| of the dwell, the old figure, exceeds U0 by the static level,
+    to U0's own size."""
+    (sa, a, ra), (_, b, rb) = _held(50.0), _held(150.0)
+    assert not a["jump"]["occurs"] and not b["jump"]["occurs"]
+    assert b["U0"] == pytest.approx(a["U0"], rel=1e-5)
+    c_c = 1 / (1 / HELD["c_x"] + 1 / HELD["c_z"])
+    shift = -100.0 / ((1 + HELD["c_s"] / c_c) * c_c * HELD["h_m"])
+    assert b["U_static"] - a["U_static"] == pytest.approx(shift, rel=1e-9)
+    for s, res in ((a, ra), (b, rb)):
+        T = dynacam.nominal_T(sa, res)
+        U = res["U"][(T > 1.0)]
+        # the recorded points alone: the largest |U| lies within U0 + |U_static| of them
+        assert np.abs(U).max() <= s["U0"] + abs(s["U_static"]) + 1e-12
+        assert np.abs(U).max() > abs(s["U_static"])
+
+
+def test_static_level_is_where_the_dwell_settles():
+    """Independently of the solve: run on through a long dwell (T to 40, the damped follower's
+    oscillation about its level decays by e^-60 there) and read U at the end: the static level
+    to 1e-9 of the stroke."""
+    _, s, res = _held(50.0, T_end=40.0)
+    assert res["U"][-1] == pytest.approx(s["U_static"], abs=1e-9)
+
+
+def test_options_no_variant_has_are_one_line(tmp_path):
+    """A rocker or a flat face on an axial cam: one line naming both options, status 2 (the
+    declaration's own words; it was a ValueError traceback)."""
+    import contextlib
+    import io
+
+    from camdyn.runtime.cli import main
+
+    text = scenes.builtin("rocker").read_text()
+    for swap, words in ((('cam = "radial"', 'cam = "axial"'), 'option rocker=true with cam="axial"'),
+                        (('rocker = true', 'flat_face = true\ncam = "axial"'), None)):
+        f = tmp_path / "s.toml"
+        body = text.replace(*swap)
+        if words is None:                                  # flat face instead of the rocker
+            body = text.replace('cam = "radial"', 'cam = "axial"').replace(
+                "rocker = true", "flat_face = true")
+            words = 'option flat_face=true with cam="axial"'
+        f.write_text(body)
+        err = io.StringIO()
+        with contextlib.redirect_stderr(err), contextlib.redirect_stdout(io.StringIO()):
+            rc = main(["simulate", str(f)])
+        assert rc == 2
+        assert err.getvalue().count("\n") == 1 and "Traceback" not in err.getvalue()
+        assert err.getvalue().startswith(f"camdyn simulate: error: {words}")

@@ -164,7 +164,7 @@ def test_the_thesis_never_imports_the_command_line():
 
 RUNTIME_COMMANDS = {
     "residual": ["residual", "--model", "camshaft1", "--tau", "0.15", "--fa", "2", "--json"],
-    "beam-follower": ["beam-follower", "--revolutions", "0.05", "--json"],
+    "beam-follower": ["beam-follower", "--revolutions", "0.1", "--json"],
     "integrate": ["integrate", "one_dof", "--t-end", "2", "--json"],
     "run-beam": ["run", "beam_paper", "--quiet", "--out", "{tmp}/beam"],
     "simulate": ["simulate", "spring_loaded", "--json"],

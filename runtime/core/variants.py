@@ -13,6 +13,8 @@ import json
 from dataclasses import asdict, field, make_dataclass
 from importlib import resources
 
+from .errors import CamdynInputError
+
 CATALOG = json.loads(resources.files("camdyn.generated").joinpath("catalog.json").read_text())
 _DYN = CATALOG["dynacam"]
 CHOICES = {o["name"]: tuple(o["choices"]) for o in _DYN["options"] if o["choices"] != [False, True]}
@@ -37,12 +39,16 @@ def _toml(value) -> str:
 
 
 def _post_init(self):
+    # CamdynInputError (a ValueError, as the declaration raises): a scene's options that no
+    # variant has are bad input, one line on every road
     for key, allowed in CHOICES.items():
         if getattr(self, key) not in allowed:
-            raise ValueError(f"option {key}={getattr(self, key)!r}: choose one of {', '.join(allowed)}")
+            raise CamdynInputError(f"option {key}={getattr(self, key)!r}: choose one of "
+                                   f"{', '.join(allowed)}")
     for key, value, other, other_value, why in _DYN.get("excludes", ()):
         if getattr(self, key) == value and getattr(self, other) == other_value:
-            raise ValueError(f"option {key}={_toml(value)} with {other}={_toml(other_value)}: {why}")
+            raise CamdynInputError(f"option {key}={_toml(value)} with {other}="
+                                   f"{_toml(other_value)}: {why}")
 
 
 Options = make_dataclass(

@@ -158,21 +158,31 @@ def contact_form(opts, p: dict, i_y: float, i_z: float) -> dict:
             "c_tan": i_y**2 / C, "m_tan": M * i_y**2, "k_tan": h_1**2 / C, "J_tan": M * h_1**2}
 
 
-def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
-    """State at t = 0 in steady dwell: accelerations and first-order rates zero.
+def equilibrium(model, p: np.ndarray, sim: Simulator, t: float = 0.0,
+                guess: np.ndarray | None = None) -> np.ndarray:
+    """State at time ``t`` in steady dwell: accelerations and first-order rates zero (at
+    t = 0 the run's start, before the rise; at a time in a later dwell the state the run
+    would settle to there, :func:`dwell_static`).
 
-    Unknowns: every position but the input angle phi (it is the time reference), the
-    first-order states; velocities are the nominal ones (cam at the input speed).
+    Unknowns: every position but the input angle phi (it is the time reference, taken from
+    ``guess``, else the declared start), the first-order states; velocities are the nominal
+    ones (cam at the input speed).
     """
+    return _equilibrium(model, p, sim.law_codes, sim.law_pars, np.array(sim.modes0, dtype=np.intc),
+                        t, guess)
+
+
+def _equilibrium(model, p: np.ndarray, law_codes, law_pars, modes: np.ndarray, t: float,
+                 guess: np.ndarray | None) -> np.ndarray:
     names = model.state_names
     n_q = model.manifest["n_q"]
-    y = model.initial_state(p)
+    y = model.initial_state(p) if guess is None else np.array(guess, dtype=float)
     w_s = p[model.parameter_names.index("omega_s")]
     # phi turns with the input; so does the squeeze-film gear wheel phir, which in steady dwell
     # sits on its flank (a film carries load only while it closes): phir = phi, as declared
     free = [k for k, s in enumerate(names) if k < n_q or (k >= 2 * n_q and s not in ("phi", "phir"))]
     scale = model.state_scales()[free]
-    modes = np.array(sim.modes0, dtype=np.intc)
+    modes = modes.copy()
     # sticking linkage friction leaves x undetermined: solve without it (the frictionless
     # equilibrium has zero force to hold, so sticking is consistent there)
     specs = model.manifest.get("modes", [])
@@ -181,9 +191,15 @@ def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
             p = p.copy()
             p[model.parameter_names.index("nu_x")] = 0.0
             modes[j] = spec["values"].index("forward")
-    t0 = np.zeros(1)
+        elif spec["name"] == "roller":
+            modes[j] = spec["values"].index(spec["initial"])     # on the cam
+    t0 = np.array([float(t)])
     i_dw = names.index("dw") if "dw" in names else None
     i_beta = names.index("beta")
+    if guess is not None:
+        # the velocities of the steady dwell are the declared start's: the cam at the input
+        # speed, every other at rest
+        y[n_q:2 * n_q] = model.initial_state(p)[n_q:2 * n_q]
 
     def state(u):
         yy = y.copy()
@@ -192,7 +208,7 @@ def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
         return yy
 
     def resid(u):
-        f = driver.eval_rhs(model.capsule, p, sim.law_codes, sim.law_pars, t0, state(u)[None, :],
+        f = driver.eval_rhs(model.capsule, p, law_codes, law_pars, t0, state(u)[None, :],
                                 element_modes=modes)[0]
         r = np.concatenate([f[n_q:2 * n_q], [f[k] for k in free if k >= 2 * n_q]])
         return r
@@ -206,6 +222,26 @@ def equilibrium(model, p: np.ndarray, sim: Simulator) -> np.ndarray:
     if not np.all(np.isfinite(out)):
         raise SimulationError("no consistent initial state found (non-finite equilibrium)")
     return out
+
+
+def initial_modes(model) -> np.ndarray:
+    """Every force element in its declared initial mode (the roller on the cam)."""
+    return np.array([s["values"].index(s["initial"]) for s in model.manifest.get("modes", [])],
+                    dtype=np.intc)
+
+
+def dwell_static(model, p: np.ndarray, law_codes, law_pars, t: float, guess: np.ndarray,
+                 name: str = "U") -> float:
+    """Output ``name`` at the static equilibrium of the dwell that holds time ``t``: where
+    the follower would settle there, pressed by its spring's preload and rate, the contact
+    force deflecting the follower train and the shaft.  U there is -(F_0 + c_s h)/(c_x h_m)
+    for a spring-held follower on a rigid shaft: the residual vibration U0 is measured about
+    it, or more preload would read as more vibration.  ``guess``: a state near the dwell's
+    (the run's own there, or the start's with the cam turned on)."""
+    y = _equilibrium(model, p, law_codes, law_pars, initial_modes(model), t, guess)
+    out = driver.eval_outputs(model.capsule, p, law_codes, law_pars, np.array([float(t)]),
+                              y[None, :])[0]
+    return float(out[model.output_names.index(name)])
 
 
 def variant_model(scene: DynacamScene, progress=None):
@@ -356,7 +392,7 @@ def headline_spans(scene: DynacamScene, t_m: float, t0: float, t_end: float,
     dwell_end = t_end if turn is None else min(t_end, (1 + turn.up - scene.T_start) * t_m)
     if dwell_end > rise1:
         spans.append(Span("U0dd", "Xdd", rise1, dwell_end, True, False))
-        spans.append(Span("U0", "U", rise1, dwell_end, True, False))
+        spans += about_static("U0", rise1, dwell_end)
     if turn is not None:
         keys += ["Xdd_absmax_return", "U0_return", "U0dd_return"]
         ret0 = (1 + turn.up - scene.T_start) * t_m
@@ -365,13 +401,43 @@ def headline_spans(scene: DynacamScene, t_m: float, t0: float, t_end: float,
         if t_end > ret0:
             spans.append(Span("Xdd_absmax_return", "Xdd", ret0, min(ret1, t_end), True, False))
         if low1 > ret1:
-            spans.append(Span("U0_return", "U", ret1, low1, True, False))
+            spans += about_static("U0_return", ret1, low1)
             spans.append(Span("U0dd_return", "Xdd", ret1, low1, True, False))
     keys += ["speed_variation_max", "motor_speed_variation_max"]
     spans.append(Span("speed_variation_max", "speed_var", t0, t_end, True, False))
     if "motor_speed_var" in outputs:
         spans.append(Span("motor_speed_variation_max", "motor_speed_var", t0, t_end, True, False))
     return tuple(keys), tuple(spans)
+
+
+STATIC = {"U0": "U_static", "U0_return": "U_static_return"}
+"""The residual amplitudes of U measured about the dwell's static equilibrium, and the
+figure that holds where that lies (:func:`dwell_static`)."""
+
+
+def about_static(key: str, a: float, b: float) -> list:
+    """The Spans of a residual amplitude of U about the static equilibrium of its dwell
+    [a, b]: the largest and the least U there (:func:`combine_static`)."""
+    return [Span(f"{key}:max", "U", a, b, False, False), Span(f"{key}:min", "U", a, b, False, True)]
+
+
+def static_times(spans) -> dict:
+    """Residual amplitude -> the time (mid-dwell) its static equilibrium is found at."""
+    return {sp.key[:-4]: 0.5 * (sp.a + sp.b) for sp in spans if sp.key.endswith(":max")}
+
+
+def combine_static(figures: dict, sampling: dict, statics: dict) -> None:
+    """U0 = max(U_max - U_s, U_s - U_min) over the dwell, U_s its static equilibrium
+    (``statics``: amplitude -> U_s); the amplitude's sampling error the larger of the two
+    extremes'.  U_s goes into the figures beside it (:data:`STATIC`)."""
+    for key, u_s in statics.items():
+        hi, lo = figures.pop(f"{key}:max", None), figures.pop(f"{key}:min", None)
+        s_hi, s_lo = sampling.pop(f"{key}:max", 0.0), sampling.pop(f"{key}:min", 0.0)
+        if hi is None or lo is None:
+            continue
+        figures[key] = max(hi - u_s, u_s - lo)
+        sampling[key] = max(s_hi, s_lo)
+        figures[STATIC[key]] = u_s
 
 
 def headline(scene: DynacamScene, res, t_m: float) -> tuple[dict, dict]:
@@ -387,6 +453,11 @@ def headline(scene: DynacamScene, res, t_m: float) -> tuple[dict, dict]:
     for sp in spans:
         e = extreme(res, sp.name, sp.a, sp.b, absolute=sp.absolute, minimum=sp.minimum)
         read_span(sp, e, t_m, scene.T_start, figures, sampling)
+    statics = {}
+    for key, t in static_times(spans).items():
+        guess = np.array([res.sample([t])[n][0] for n in res.state_names])
+        statics[key] = dwell_static(res.model, res.p, res.law_codes, res.law_pars, t, guess)
+    combine_static(figures, sampling, statics)
     return figures, sampling
 
 
@@ -423,12 +494,14 @@ def summarize(scene: DynacamScene, model, res, ch: dict, cpu: float) -> tuple[di
            "Fv": ch["Fv"]}
     for key in FIGURES[:5]:          # the rise's and the dwell's; the speeds follow below
         out[key] = figures[key]
+    out["U_static"] = figures.get("U_static")
     if scene.turn is not None:
         turn = scene.cam_law()
         out["turn"] = {"angles_deg": list(turn.angles_deg), "return_law": turn.ret.key,
                        "period_T": turn.period}
         for key in ("Xdd_absmax_return", "U0_return", "U0dd_return"):
             out[key] = figures[key]
+        out["U_static_return"] = figures.get("U_static_return")
     jump = {"occurs": False, "T": None}
     if scene.options.roller == "contact":
         free = res.element_mode("roller") == "free"

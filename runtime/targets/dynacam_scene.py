@@ -22,8 +22,7 @@ from ..core.methods import ADAPTIVE, METHODS
 from ..core.simulator import Simulator, absolute_tolerances
 from ..engine import driver
 from ..measure import batch
-from ..measure.modes import (amplitude_bound, amplitude_from, amplitude_times,
-                             slowest_periods)
+from ..measure.modes import amplitude_from, amplitude_times, slowest_periods
 from . import dynacam, scene_files
 from .base import Batch, Figure, Outcome, Parameter, Target, Window
 from .problem import Problem
@@ -36,7 +35,11 @@ FIGURES = (
     Figure("T_at_Xdd_min", "where it is, nominal T", place=True),
     Figure("Xdd_max_rise", "largest acceleration in the rise"),
     Figure("U0dd", "residual acceleration amplitude after the rise", output="Xdd", dwell=True),
-    Figure("U0", "positional error amplitude after the rise", output="U", dwell=True),
+    Figure("U0", "positional error amplitude after the rise, about the dwell's static "
+                 "equilibrium", output="U", dwell=True),
+    Figure("U_static", "positional error at the dwell's static equilibrium: the follower "
+                       "train and the shaft pressed by the spring (-(F_0 + c_s h)/(c_x h_m) "
+                       "on a rigid shaft)", estimate="exact"),
     Figure("jump_occurs", "the follower leaves the cam (1) or not (0)", estimate="none"),
     Figure("jump_T", "where it first leaves, nominal T", place=True),
     Figure("speed_variation_max", "largest variation of the fictitious angular velocity",
@@ -50,7 +53,10 @@ RETURN_FIGURES = (
     Figure("Xdd_absmax_return", "largest |X''| during the return of a full turn"),
     Figure("U0dd_return", "residual acceleration amplitude after the return", output="Xdd",
            dwell=True),
-    Figure("U0_return", "positional error amplitude after the return", output="U", dwell=True),
+    Figure("U0_return", "positional error amplitude after the return, about the dwell's "
+                        "static equilibrium", output="U", dwell=True),
+    Figure("U_static_return", "positional error at the static equilibrium of the dwell "
+                              "after the return", estimate="exact"),
 )
 """A full turn's ([turn]) figures besides."""
 
@@ -91,6 +97,24 @@ def short_dwells(scene, model, p, sim, y0, t_m: float, t_end: float, present) ->
         out.append(ShortDwell(name, WINDOW_OUTPUTS[name], a, b, period,
                               amplitude_times(a, b, period)))
     return out
+
+
+def _level(d: ShortDwell, figures: dict) -> float:
+    """What the oscillation of a short dwell's output is about: U's static equilibrium
+    (runtime/targets/dynacam.py dwell_static), 0 for X''."""
+    key = dynacam.STATIC.get(d.name)
+    return float(figures.get(key) or 0.0) if key else 0.0
+
+
+def _turned(model, p: np.ndarray, y0: np.ndarray, dt: float, lifted: bool) -> np.ndarray:
+    """A first guess of the state ``dt`` after the start ``y0``: the cam turned on at the
+    input speed, the follower lifted by the stroke in the dwell after the rise."""
+    y = np.array(y0, dtype=float)
+    names = model.state_names
+    y[names.index("beta")] += p[model.parameter_names.index("omega_s")] * dt
+    if lifted and "x" in names:
+        y[names.index("x")] += p[model.parameter_names.index("h_m")]
+    return y
 
 
 def window_errors(short: list, bounds: list, figures: dict, t_m: float) -> tuple[dict, list]:
@@ -306,12 +330,17 @@ class DynacamTarget(Target):
                 if key in spans[j]:
                     dynacam.read_span(spans[j][key], runs.extreme(j, k), ch["t_m"], sc.T_start,
                                       figures, sampling)
+            dynacam.combine_static(figures, sampling, {
+                key: dynacam.dwell_static(model, P[j], sim.law_codes, sim.law_pars, t,
+                                          _turned(model, P[j], Y0[j], t - sim.t0,
+                                                  lifted=key == "U0"))
+                for key, t in dynacam.static_times(spans[j].values()).items()})
             figures.update(tau=ch["tau"], Fa=ch["Fa"], Fv=ch["Fv"])
             first = np.nan if runs.first_in_mode is None else runs.first_in_mode[j]
             figures["jump_occurs"] = float(first == first)
             figures["jump_T"] = first / ch["t_m"] + sc.T_start if first == first else None
             bounds = [amplitude_from(d.times, runs.samples[j, list(WINDOW_OUTPUTS).index(
-                d.name), :len(d.times)], d.period) for d in short[j]]
+                d.name), :len(d.times)] - _level(d, figures), d.period) for d in short[j]]
             window, notes = window_errors(short[j], bounds, figures, ch["t_m"])
             g = idx[j]
             for k, f in enumerate(figs):
@@ -339,7 +368,8 @@ class DynacamTarget(Target):
         p = pr.model.parameter_vector(pr.params)
         short = short_dwells(self.scene, pr.model, p, pr.simulator, pr.y0, pr.t_m, pr.t_end,
                              {k for k, v in figures.items() if v is not None})
-        bounds = [amplitude_bound(res, d.output, d.a, d.b, d.period) for d in short]
+        bounds = [amplitude_from(d.times, res.sample(d.times)[d.output] - _level(d, figures),
+                                 d.period) for d in short]
         return window_errors(short, bounds, figures, pr.t_m)
 
     def problem(self) -> Problem:
