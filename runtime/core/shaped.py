@@ -37,7 +37,7 @@ from numpy.polynomial import polynomial as P
 
 from camdyn.generated import camlaws as _lib
 
-from .errors import CamdynInputError
+from .errors import CamdynInputError, on_disk
 
 ORDERS = ("H", "H'", "H''", "H'''")
 """The derivatives a blend point may fix, by order."""
@@ -49,6 +49,9 @@ JUMP = 1e-9
 derivative's largest value over the rise."""
 TABLE_SUFFIXES = (".csv", ".txt", ".dat")
 """Files read as a table of (angle, lift); a .toml file is a blend or a B-spline."""
+MAX_LAW_BYTES = 8 << 20
+"""The largest law file read (8 MiB, some 200 000 rows of a table): the fit of a table grows
+with its rows, and a device or a stray large file is refused before it is read."""
 ROUGH_LIMIT = 0.01
 """Default largest estimated error of a table's derivative, relative to its largest value,
 for the derivatives a model uses (:meth:`Shaped.check_for`)."""
@@ -155,7 +158,9 @@ class Shaped:
                     f"{self.name}: too rough for {model_name}, which uses {ORDERS[order]}: "
                     f"{ORDERS[k]} is known to {self.errors[k]:.1%} of its largest value "
                     f"(allowed {limit:.1%}; the splines through every point and every second "
-                    f"point differ by that); give more points or more digits")
+                    f"point differ by that); give more points or more digits (a lift whose H' or H'' "
+                    f"jumps, against the dwells at T = 0 or 1 or inside, stays this rough however "
+                    f"many points it has: a table's spline cannot follow a jump)")
 
     def warnings(self) -> list[str]:
         """What a run with this rise should say about it."""
@@ -393,7 +398,10 @@ def read_table(path: Path) -> tuple[np.ndarray, np.ndarray]:
     names and lines starting with # are skipped."""
     rows = []
     header = True                         # the first line that is not a comment may be names
-    text = path.read_text()
+    text = read_text(path)
+    if "\x00" in text:                    # valid UTF-8 but binary all the same
+        raise CamdynInputError(f"law file {path.name}: not a text file (it holds NUL bytes); "
+                               f"a table is lines of angle and lift")
     comma = "," in text
     for n, line in enumerate(text.splitlines(), 1):
         s = line.strip()
@@ -412,7 +420,8 @@ def read_table(path: Path) -> tuple[np.ndarray, np.ndarray]:
             raise CamdynInputError(f"{path.name}: line {n} has one column; give angle and lift")
         rows.append(values)
     if not rows:
-        raise CamdynInputError(f"{path.name}: no rows of (angle, lift) found")
+        raise CamdynInputError(f"{path.name}: no rows of (angle, lift) found"
+                               + (" (the file is empty)" if not text.strip() else ""))
     a = np.array(rows)
     return a[:, 0], a[:, 1]
 
@@ -427,10 +436,33 @@ def load(path) -> Shaped:
     its error estimate builds two, a profile reads it for the cam and its warnings): the
     rise is read and fitted once per version of the file (its path, size and time)."""
     p = Path(path)
-    if not p.is_file():
+    what = on_disk(p)
+    if what is None:
         raise CamdynInputError(f"law file {str(path)!r} not found")
+    if what != "file":      # never opened: a named pipe would block, /dev/zero never end
+        raise CamdynInputError(f"law file {str(path)!r} is a {what}, not a file: a table "
+                               f"(.csv, .txt, .dat) or a shaped rise (.toml)")
     st = p.stat()
+    if st.st_size > MAX_LAW_BYTES:
+        raise CamdynInputError(f"law file {str(path)!r}: {st.st_size} bytes is too large for a "
+                               f"rise (at most {MAX_LAW_BYTES} bytes, some 200 000 rows)")
     return _load(p.resolve(), st.st_size, st.st_mtime_ns)
+
+
+def read_text(p: Path) -> str:
+    """The text of a law file, or one line naming it and what is wrong: it cannot be read
+    (no permission), or is not text (not UTF-8: a binary file, or a text in another
+    encoding)."""
+    try:
+        return p.read_text(encoding="utf-8")
+    except UnicodeDecodeError as exc:
+        raise CamdynInputError(
+            f"law file {p.name}: not a UTF-8 text file (byte {exc.object[exc.start]:#04x} at "
+            f"offset {exc.start}); a law file is text: a table of angle and lift or a TOML "
+            f"rise") from None
+    except OSError as exc:
+        raise CamdynInputError(f"law file {p.name}: cannot be read: "
+                               f"{exc.strerror or exc}") from None
 
 
 @functools.lru_cache(maxsize=64)
@@ -439,16 +471,26 @@ def _load(p: Path, size: int, mtime_ns: int) -> Shaped:
         T, H = read_table(p)
         return table(T, H, name=p.name)
     if p.suffix.lower() == ".toml":
+        text = read_text(p)
+        if not text.strip():
+            raise CamdynInputError(f"{p.name}: the file is empty; give either [[point]] "
+                                   f"tables (a blend) or one [bspline] table")
         try:
-            spec = tomllib.loads(p.read_text())
-        except tomllib.TOMLDecodeError as exc:
+            spec = tomllib.loads(text)
+        except ValueError as exc:   # not TOML (a NUL byte, an integer of 4300 digits too)
             raise CamdynInputError(f"{p.name}: not valid TOML ({exc})") from None
         if "point" in spec and "bspline" not in spec:
+            if not isinstance(spec["point"], list):
+                raise CamdynInputError(f"{p.name}: point must be [[point]] tables, each with T "
+                                       f"and conditions such as H = 0.5")
             return blend(spec["point"], name=p.name)
         if "bspline" in spec and "point" not in spec:
             b = spec["bspline"]
-            if "control" not in b:
+            if not isinstance(b, dict) or "control" not in b:
                 raise CamdynInputError(f"{p.name}: [bspline] needs control = [0, ..., 1]")
+            if not isinstance(b["control"], list):
+                raise CamdynInputError(f"{p.name}: [bspline] control must be a list of "
+                                       f"numbers [0, ..., 1], got {b['control']!r}")
             return bspline(b["control"], b.get("degree", 5), name=p.name)
         raise CamdynInputError(f"{p.name}: give either [[point]] tables (a blend) or one "
                                f"[bspline] table")
