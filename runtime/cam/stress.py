@@ -18,6 +18,14 @@ peak pressure follow from
 
 K and E the complete elliptic integrals (Johnson (4.37)-(4.39)); the first is solved for
 b/a by root finding.  At A = B it is a sphere's contact, p0 = (6 F E*^2/(pi^3 R^2))^(1/3).
+Both are written in Carlson's symmetric integral R_D (DLMF 19.25.1: K - E = (e^2/3)
+R_D(0, k'^2, 1), E - k'^2 K = (e^2 k'^2/3) R_D(0, 1, k'^2), k' = b/a), which takes the
+differences K - E and E - k'^2 K without cancelling digits at either end of the range:
+
+    B/A = R_D(0, 1, k'^2) / R_D(0, k'^2, 1),      a^3 = F R_D(0, k'^2, 1) / (2 pi E* A),
+
+so the ellipse is found for every ratio B/A >= 1, from a sphere's contact (k' = 1) to a
+nearly line-like one (k' ~ (B/A ln(4 a/b))^(-1/2) as B/A grows without bound).
 
 Materials: Young's modulus and Poisson's ratio of common cam and follower materials, typical
 handbook values (Shigley's Mechanical Engineering Design, table A-5).
@@ -66,41 +74,59 @@ def line_contact(force, length: float, curvature, e_star: float):
     return p0, b
 
 
-def _ellipticity(ratio: float) -> float:
-    """b/a <= 1 of the contact ellipse whose relative curvatures have B/A = ratio >= 1."""
-    from scipy.optimize import brentq
-    from scipy.special import ellipe, ellipk
+def _ratio_of(k: float) -> float:
+    """B/A of the contact ellipse with b/a = k (0 < k <= 1): R_D(0, 1, k^2)/R_D(0, k^2, 1)."""
+    from scipy.special import elliprd
 
-    if ratio <= 1.0 + 1e-9:   # a circle within what K - E resolves near m = 0
+    q = k * k
+    return float(elliprd(0.0, 1.0, q) / elliprd(0.0, q, 1.0))
+
+
+MAX_RATIO = 1e100
+"""The largest ratio of relative curvatures B/A the point contact takes (b/a is then some
+1e-51): the root finder's lower bracket, b/a squared once more, stays a normal double up to
+about 1e148 (B/A ~ a^2/(b^2 ln(4 a/b)))."""
+
+
+def _ellipticity(ratio: float) -> float:
+    """b/a <= 1 of the contact ellipse whose relative curvatures have B/A = ratio >= 1.
+
+    B/A falls monotonically from infinity at b/a -> 0 to 1 at b/a = 1; the root is bracketed
+    in ln(b/a) from the expansions at either end, b/a ~ 1 - 2 (B/A - 1)/3 near a circle and
+    b/a ~ (B/A ln(4 a/b))^(-1/2) for a long ellipse (each within a factor of 2 of the root in
+    ln(b/a)), widened until it changes sign, and found by Brent's method to a relative 1e-15
+    in b/a."""
+    from scipy.optimize import brentq
+
+    if not (math.isfinite(ratio) and 1.0 <= ratio <= MAX_RATIO):
+        raise CamdynInputError(
+            f"the contact ellipse's ratio of relative curvatures B/A = {ratio:g} is out of "
+            f"range 1 to {MAX_RATIO:g}: the crown radius and the rolling radius are too far "
+            f"apart for Hertz's point contact; give a crown radius nearer the roller's")
+    if ratio == 1.0:
         return 1.0
 
-    def g(k):
-        m = 1.0 - k * k
-        K, E = ellipk(m), ellipe(m)
-        return (E / (k * k) - K) / (K - E) - ratio
-    # Greenwood's asymptote a/b ~ (B/A)^(2/3) brackets the root within a factor of 2 on the
-    # side of b/a
-    guess = ratio ** (-2.0 / 3.0)
-    lo, hi = guess / 4.0, min(1.0 - 1e-12, guess * 4.0)
-    return brentq(g, lo, hi, xtol=1e-15, rtol=1e-15)
+    def g(x):                     # x = ln(b/a) <= 0
+        return math.log(_ratio_of(math.exp(x))) - math.log(ratio)
+    x = (-2.0 * (ratio - 1.0) / 3.0 if ratio < 2.0 else
+         -0.5 * math.log(ratio * math.log(4.0 * math.sqrt(ratio))))
+    lo = 2.0 * x
+    while g(lo) < 0.0:            # the ratio at lo is still below: a longer ellipse
+        lo *= 2.0
+    return math.exp(brentq(g, lo, 0.0, xtol=1e-16, rtol=1e-15))
 
 
 def point_contact(force: float, A: float, B: float, e_star: float):
     """(p0, a, b) of Hertz's elliptical contact under ``force`` (N) with relative curvatures
-    A and B (1/m, > 0; a lies along the smaller of the two)."""
-    from scipy.special import ellipe, ellipk
+    A and B (1/m, > 0; a lies along the smaller of the two): a^3 = F R_D(0, k'^2, 1)/(2 pi
+    E* A), b = k' a, p0 = 3 F/(2 pi a b) (Johnson (4.37)-(4.39) in Carlson's form)."""
+    from scipy.special import elliprd
 
     if force <= 0.0:
         return 0.0, 0.0, 0.0
     A, B = min(A, B), max(A, B)
     k = _ellipticity(B / A)
-    if k == 1.0:
-        R = 1.0 / (2.0 * A)
-        a = (3.0 * force * R / (4.0 * e_star)) ** (1.0 / 3.0)
-        return 3.0 * force / (2.0 * math.pi * a * a), a, a
-    m = 1.0 - k * k
-    K, E = ellipk(m), ellipe(m)
-    a = (3.0 * force * (K - E) / (2.0 * math.pi * e_star * m * A)) ** (1.0 / 3.0)
+    a = (force * float(elliprd(0.0, k * k, 1.0)) / (2.0 * math.pi * e_star * A)) ** (1.0 / 3.0)
     b = k * a
     return 3.0 * force / (2.0 * math.pi * a * b), a, b
 
