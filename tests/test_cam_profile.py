@@ -210,12 +210,12 @@ def test_cli_writes_everything(tmp_path, capsys):
     for kind in ("csv", "dxf", "png", "json"):
         assert (out / f"cam.{kind}").stat().st_size > 0
     assert json.loads((out / "cam.json").read_text())["checks"] == js["checks"]
-    # a failed check: a warning line naming the angle, and in the JSON
+    # a failed check: a warning line naming the angle, and in the JSON; status 1
     rc = main(["profile", "--stroke", "0.015", "--base-radius", "0.008", "--roller-radius",
                "0.004", "--angles", "45,135,90,90", "--out", str(out), "--json",
                "--points-per-degree", "1"])
     cap = capsys.readouterr()
-    assert rc == 0
+    assert rc == 1
     js = json.loads(cap.out)
     assert not js["ok"]
     warn = [l for l in cap.err.splitlines() if "warning" in l]

@@ -207,7 +207,8 @@ def test_cli_followers_json(tmp_path, capsys):
                "--arm-length", "0.07", "--swing", "18", "--base-radius", "0.03",
                "--roller-radius", "0.008", "--out", str(tmp_path / "r"), "--json"])
     out = json.loads(capsys.readouterr().out)
-    assert rc == 0 and out["follower"] == "oscillating-roller"
+    # its pressure angle reaches 38 deg, beyond the default limit: a failed check, status 1
+    assert rc == 1 and out["follower"] == "oscillating-roller" and not out["ok"]
     cam = CamProfile(follower="oscillating-roller", base_radius=0.03, roller_radius=0.008,
                      pivot_distance=0.09, arm_length=0.07, swing_deg=18)
     phi = np.linspace(0, 2 * np.pi, 360001)

@@ -63,8 +63,8 @@ def _scene(tmp_path, T_end=6.5):
     return path
 
 
-def _json(capsys, argv):
-    assert main(argv) == 0
+def _json(capsys, argv, status=0):
+    assert main(argv) == status
     return json.loads(capsys.readouterr().out)
 
 
@@ -103,13 +103,14 @@ def test_a_follower_that_leaves_the_cam_is_named(tmp_path, capsys):
     (tmp_path / "fast.toml").write_text(text)
     dyn = _json(capsys, ["profile", "--contact-force-from", str(tmp_path / "fast.toml"),
                          "--roller-radius", str(R_R), "--roller-width", "0.01",
-                         "--out", str(tmp_path / "f"), "--json"])
+                         "--out", str(tmp_path / "f"), "--json"], status=1)
     rise = math.degrees(1.0)
     kin = _json(capsys, ["profile", "--base-radius", str(R_B - R_R), "--roller-radius", str(R_R),
                          "--stroke", "0.01", "--angles", f"{rise!r},60,80,{300 - 80 - rise!r}",
                          "--speed", repr(35.0 * 60 / (2 * math.pi)), "--follower-mass", "1",
                          "--spring-rate", "1000", "--spring-preload", "50",
-                         "--roller-width", "0.01", "--out", str(tmp_path / "k"), "--json"])
+                         "--roller-width", "0.01", "--out", str(tmp_path / "k"), "--json"],
+                status=1)           # the follower leaves the cam: a failed check
 
     def kept(out):
         return [c for c in out["contact_stress"]["checks"] if c["check"] == "contact kept"][0]

@@ -92,6 +92,11 @@ enough below the square root of the largest float for every formula of the profi
 MIN_RADIUS = 1e-6
 """The smallest base and roller radius (m): a micrometre is below any cam, and far enough
 above the smallest float that curvatures (1/radius, squared) stay finite."""
+HERTZ_SIZE = 0.1
+"""The largest contact size over the radius of curvature it lies across (a/R) before the
+stress figures are warned of: Hertz's half-spaces ask a << R (Johnson sec. 4.1); at a tenth
+the surfaces within the contact stray from the parabolas of his gap by a quarter of a
+percent, and beyond it the contact soon wraps round the body."""
 ARC_TOLERANCE = 1e-6
 """How far (m) the tangent arcs of a curve may stray from it where the cam states no
 ``arc_tolerance`` of its own (the STEP plate's profile): a micrometre, a tenth of what a
@@ -221,6 +226,70 @@ class CamProfile:
         object.__setattr__(self, "angles_deg", ang)
         object.__setattr__(self, "cam", cam)
         object.__setattr__(self, "geometry", self._geometry(rb, rr, e, rise))
+        if kind == "oscillating-flat":
+            self._face_keeps_turning()
+
+    def _face_keeps_turning(self) -> None:
+        """Refuse an oscillating flat face whose arm turns as fast as the cam somewhere.
+
+        The face's normal turns in the cam frame at theta' = 1 - psi' (follower.py: theta =
+        phi + pi/2 - psi): where the arm's speed psi' reaches the cam's, the face stands still
+        against the cam, its contact dk/dtheta = k'/theta' runs off to infinity along it, and
+        beyond that the face turns back, so no profile has these lines for its envelope.  psi'
+        is the swing times H'/beta, so the largest swing that keeps psi' < 1 is the swing over
+        the largest psi'; no length of the arm or the cam changes it."""
+        at, top, _ = self._worst(lambda x: self.cam.displacement(x)[1], self._grid())
+        if top < 1.0:
+            return
+        rise = at <= self.cam.beta_rise
+        law = self.law if rise or self.return_law is None else self.return_law
+        span = self.angles_deg[0 if rise else 2]
+        raise CamdynInputError(
+            f"swing={self.swing_deg:g} deg is out of range for an oscillating flat face: the "
+            f"{law} {'rise' if rise else 'return'} over {span:g} deg turns the arm at up to "
+            f"{top:.4g} times the cam's speed (at cam angle {math.degrees(at):.2f} deg), and "
+            f"where the arm turns as fast as the cam the face stands still against it and the "
+            f"contact runs off to infinity along the face: no cam has that profile. It needs "
+            f"swing < {self.swing_deg / top:.4g} deg with these laws and angles (whatever the "
+            f"pivot distance and base radius), or a longer rise/return angle")
+
+    @cached_property
+    def velocity_jumps(self) -> tuple:
+        """(cam angle in rad, left, right limit) where the motion's velocity ds/dphi
+        (dpsi/dphi) jumps: the law's H' against the dwells' zero at the rise's or return's
+        ends, or inside a law (:meth:`camdyn.runtime.cam.motion.RDFD.jumps`)."""
+        return self.cam.jumps(1)
+
+    @cached_property
+    def acceleration_jumps(self) -> tuple:
+        """(cam angle in rad, left, right limit) where the motion's acceleration d2s/dphi2
+        jumps (an infinite jerk)."""
+        return self.cam.jumps(2)
+
+    def _velocity_jump_text(self, wall: str | None = None, convex: bool = True) -> str:
+        """What a velocity jump does to the profile: for a roller the pitch curve turns a
+        corner, which the wall ``wall`` follows with a sharp edge where the corner is
+        ``convex`` (the velocity falls across it: the pitch tangent R (s' - e, d0 + s), a
+        rocker's too, turns left by (d0 + s)(s'_left - s'_right)) and the other wall with an
+        arc of the roller's radius; for a flat face the contact jumps across the face, over a
+        flat of the profile."""
+        rate = "dpsi/dphi" if self.oscillating else "ds/dphi"
+        where = ", ".join(f"{math.degrees(t):.2f}" for t, _, _ in self.velocity_jumps)
+        head = (f"the motion's velocity {rate} jumps at cam angle {where} deg (the law's H' "
+                f"against the dwells' zero or inside the law)")
+        if self.roller:
+            edges = [math.degrees(t) for t, lv, rv in self.velocity_jumps
+                     if (rv < lv) == convex]
+            what = (f"the {wall} a sharp edge at "
+                    f"{', '.join(f'{a:.2f}' for a in edges)} deg" if edges else
+                    f"the {wall} an arc of the roller's radius round each")
+            shape = (f"the pitch curve has a corner there (its radius of curvature changes "
+                     f"without bound), {what}")
+        else:
+            shape = ("the contact jumps across the face there, over a flat of the profile "
+                     "(its radius of curvature jumps to infinity and back)")
+        return (f"{head}: {shape}, and the follower's acceleration is an impulse, an unbounded "
+                f"contact force. Use a law whose velocity is continuous and zero at the dwells")
 
     def _only_with(self, oscillating: bool, roller: bool) -> None:
         """Refuse the dimensions another follower takes, naming them."""
@@ -342,6 +411,14 @@ class CamProfile:
         angles phi.  The relative curvature is the profile's plus the roller's (line
         contact; a crowned roller's crown across it, point contact); where it is not
         positive (a cusp, or a concave part tighter than the roller) p0 is infinite."""
+        force, p0, _ = self._hertz(phi, spec)
+        return force, p0
+
+    def _hertz(self, phi, spec):
+        """(F_n, p0, size): as :meth:`contact_stress`, and the contact's size over the
+        relative radius of curvature it lies across, b/R of a line contact (1/R = 1/rho +
+        1/r_r), the larger of a/R_A and b/R_B of an ellipse (R_A = 1/(2 A)), which Hertz's
+        theory takes to be small (Johnson sec. 4.1); NaN where there is no contact."""
         from .stress import line_contact, point_contact
 
         phi = np.atleast_1d(np.asarray(phi, dtype=float))
@@ -351,18 +428,64 @@ class CamProfile:
         curv = c.kappa_profile + (1.0 / self.roller_radius if self.roller else 0.0)
         ok = curv > 0
         p0 = np.full(phi.shape, np.inf)
+        size = np.full(phi.shape, np.nan)
         if spec.crown_radius is not None and self.roller:
             across = 0.5 / spec.crown_radius
-            p0[ok] = [point_contact(f, 0.5 * k, across, spec.e_star)[0]
-                      for f, k in zip(force[ok], curv[ok])]
+            ellipses = [point_contact(f, 0.5 * k, across, spec.e_star)
+                        for f, k in zip(force[ok], curv[ok])]
+            p0[ok] = [e[0] for e in ellipses]
+            size[ok] = [max(2.0 * e[1] * min(0.5 * k, across), 2.0 * e[2] * max(0.5 * k, across))
+                        for e, k in zip(ellipses, curv[ok])]
         else:
-            p0[ok] = line_contact(force[ok], spec.length(self.roller), curv[ok], spec.e_star)[0]
-        return force, p0
+            p0[ok], b = line_contact(force[ok], spec.length(self.roller), curv[ok], spec.e_star)
+            size[ok] = b * curv[ok]
+        return force, p0, size
+
+    def _stress_notes(self, spec, th, size) -> list:
+        """Warnings on the stress figures that are not failed checks: a contact too large for
+        Hertz's theory, and a force from a speed or a run where the motion's velocity or
+        acceleration jumps."""
+        notes = []
+        if np.any(size > HERTZ_SIZE):
+            i = int(np.nanargmax(size))
+            crown = (f" (crown radius {spec.crown_radius * 1e3:.4g} mm)"
+                     if spec.crown_radius is not None and self.roller else "")
+            notes.append(
+                f"contact stress: the contact is not small beside the radii of curvature it "
+                f"lies across, its semi-axis reaching {size[i]:.3g} of that radius at cam angle "
+                f"{math.degrees(th[i]):.2f} deg{crown}, where Hertz's theory takes it to be small "
+                f"(here below {HERTZ_SIZE:g}): the peak pressure is beyond its reach there")
+        if spec.load.constant:
+            return notes
+        rate = "psi" if self.oscillating else "s"
+        if spec.load.history is not None:       # a compliant linkage's run: finite, struck
+            velocity = ("the run's contact force there is its linkage's answer to a kink in "
+                        "the lift, which a rigid follower would meet with an impulse")
+            acceleration = ("the run's contact force is struck there by a step of "
+                            "acceleration (an infinite jerk), and the peak pressure with it")
+        else:
+            velocity = ("the follower's acceleration is an impulse there, which the "
+                        "kinetostatic contact force leaves out: its figures hold between "
+                        "those angles only")
+            acceleration = ("the kinetostatic contact force jumps there with it (an infinite "
+                            "jerk), and the peak pressure with it; a real follower adds the "
+                            "vibration the step excites. A law with continuous acceleration "
+                            "avoids it")
+        for rows, what, effect in ((self.velocity_jumps, f"velocity d{rate}/dphi", velocity),
+                                   (self.acceleration_jumps, f"acceleration d2{rate}/dphi2",
+                                    acceleration)):
+            if rows:
+                where = ", ".join(f"{math.degrees(t):.2f}" for t, _, _ in rows)
+                notes.append(f"contact force: the motion's {what} jumps at cam angle {where} "
+                             f"deg: {effect}")
+        return notes
 
     def stress_summary(self, spec) -> dict:
         """The peak contact pressure along the cam (refined between the samples, with the
         sampling error), where it is, the force's range, and the checks: the allowable
-        pressure, and for a kinetostatic force whether the follower stays on the cam."""
+        pressure, and for a kinetostatic force whether the follower stays on the cam; ``ok``
+        whether every check holds, ``warnings`` those that fail and what the figures should
+        be read with (:meth:`_stress_notes`)."""
         th = self._grid()
         if spec.crown_radius is not None and not self.roller:
             raise CamdynInputError("crown-radius goes with a roller follower")
@@ -373,7 +496,7 @@ class CamProfile:
 
         def p(x):
             return self.contact_stress(x, spec)[1]
-        f_grid, p_grid = self.contact_stress(th, spec)
+        f_grid, p_grid, size = self._hertz(th, spec)
         _, fmax, fmax_s = self._worst(f, th, f_grid)
         lo_at, neg, neg_s = self._worst(lambda x: -f(x), th, -f_grid)
         out = {"contact_force": spec.load.describe(),
@@ -425,7 +548,9 @@ class CamProfile:
                                 _span_degrees(runs),
                                 msg, abs(neg - neg_s)))
         out["checks"] = [c.as_dict() for c in checks]
-        out["warnings"] = [c.message for c in checks if not c.ok]
+        out["ok"] = all(c.ok for c in checks)
+        out["warnings"] = [c.message for c in checks if not c.ok] + self._stress_notes(spec, th,
+                                                                                      size)
         return out
 
     # -- the sampled cam ---------------------------------------------------------------
@@ -550,9 +675,21 @@ class CamProfile:
             else:
                 msg = (f"no undercut of the {wall}: smallest {shape} |rho_p| = {rho * 1e3:.4g} mm "
                        f"at {math.degrees(at):.2f} deg > roller radius {rr * 1e3:.4g} mm")
-            yield Check(name, not runs, math.degrees(at), rho, rr,
-                        _span_degrees(runs), msg,
-                        rho_error)
+            yield self._with_velocity_jumps(
+                Check(name, not runs, math.degrees(at), rho, rr, _span_degrees(runs), msg,
+                      rho_error),
+                "undercut: " + self._velocity_jump_text(wall, convex=d < 0))
+
+    def _with_velocity_jumps(self, check: Check, text: str) -> Check:
+        """The profile's check failed where the motion's velocity jumps (whatever its smooth
+        parts give): the jumps join its intervals as points, the text leads its message."""
+        if not self.velocity_jumps:
+            return check
+        at = [math.degrees(t) for t, _, _ in self.velocity_jumps]
+        spans = tuple(sorted(check.intervals_deg + tuple((a, a) for a in at)))
+        msg = text + (f". Besides, {check.message}" if not check.ok else "")
+        return Check(check.name, False, check.worst_deg if not check.ok else at[0],
+                     check.value, check.limit, spans, msg, check.error)
 
     def _cutter_check(self, th):
         """The cutter's centre, offset outwards by r_c, runs backwards (the cutter gouges the
@@ -598,8 +735,9 @@ class CamProfile:
         else:
             msg = (f"no cusp: the profile's smallest radius of curvature is {value * 1e3:.4g} mm "
                    f"at {math.degrees(at):.2f} deg")
-        yield Check("cusp", not runs, math.degrees(at), value, 0.0,
-                    _span_degrees(runs), msg, err)
+        yield self._with_velocity_jumps(
+            Check("cusp", not runs, math.degrees(at), value, 0.0, _span_degrees(runs), msg, err),
+            "cusp: " + self._velocity_jump_text())
 
     @property
     def failures(self) -> list:

@@ -21,6 +21,26 @@ from .checks import in_range
 
 EXTRA = "pip install 'camdyn[cad]'"
 
+PROFILE_CHECKS = ("undercut", "cusp")
+"""The checks whose failure says the profile is no closed simple curve: a roller's profile
+that cusps (undercut, a velocity jump's corner), a flat face's envelope that cusps."""
+
+
+class StepError(RuntimeError):
+    """No plate for this cam: its profile is no closed simple curve, or the CAD kernel
+    refused the solid; the message says which, in one line."""
+
+
+def profile_refusal(cam) -> str | None:
+    """Why the profile of ``cam`` cannot bound a solid, from its own checks (a cusp, an
+    undercut, a corner of a velocity jump), or None: such a profile reaches no CAD kernel."""
+    failed = [c for c in cam.checks if c.name in PROFILE_CHECKS and not c.ok]
+    if not failed:
+        return None
+    c = failed[0]
+    return (f"a STEP solid needs a closed simple profile, and this one fails its {c.name} "
+            f"check (at cam angle {c.worst_deg:.2f} deg; the check says why)")
+
 
 def _gmsh():
     try:
@@ -64,6 +84,7 @@ def plate_checks(cam, thickness: float, bore: float,
     the thickness ``thickness_name``."""
     thickness = in_range(thickness_name, thickness, strict=True, high=1.0, high_open=True)
     bore = in_range("bore", bore, high=1.0, high_open=True)
+    _gmsh()                         # the optional extra, before any file is written
     if cam.groove:
         raise CamdynInputError("a STEP plate goes with an open cam: a groove cam's walls are in "
                                "the DXF (layers PROFILE, PROFILE_OUTER)")
@@ -79,36 +100,53 @@ def write_step(cam, path, thickness: float, bore: float = 0.0) -> dict:
     """Write the plate of ``cam`` (a :class:`camdyn.runtime.cam.profile.CamProfile`) to
     ``path``; returns what the file holds: its arcs, the plate's volume (m^3, OpenCASCADE's)
     and how far that may be from the exact profile's (volume_error: the arcs' tolerance times
-    the profile's length and the thickness), the tolerance (m)."""
+    the profile's length and the thickness), the tolerance (m).  A profile that is no closed
+    simple curve (:func:`profile_refusal`), or a solid the kernel refuses, is a
+    :class:`StepError` and no file."""
     thickness, bore = plate_checks(cam, thickness, bore)
+    why = profile_refusal(cam)
+    if why is not None:
+        raise StepError(why)
     arcs = cam.arcs("PROFILE")
     with _session() as gmsh:
-        occ = gmsh.model.occ
-        starts = [occ.addPoint(a.start[0], a.start[1], 0.0) for a in arcs]
-        curves = []
-        for k, arc in enumerate(arcs):
-            p, q = starts[k], starts[(k + 1) % len(arcs)]
-            cr = arc.centre_radius()
-            if cr is None:
-                curves.append(occ.addLine(p, q))
-            else:
-                # a bi-arc spans far less than half a turn, so its centre fixes the arc
-                c = occ.addPoint(cr[0][0], cr[0][1], 0.0)
-                curves.append(occ.addCircleArc(p, c, q))
-        face = occ.addPlaneSurface([occ.addCurveLoop(curves)])
-        solid = [d for d in occ.extrude([(2, face)], 0.0, 0.0, thickness) if d[0] == 3]
-        if bore > 0.0:
-            hole = occ.addCylinder(0.0, 0.0, -thickness, 0.0, 0.0, 3.0 * thickness, bore / 2.0)
-            solid, _ = occ.cut(solid, [(3, hole)])
-        occ.synchronize()
-        volume = sum(occ.getMass(3, tag) for _, tag in solid)
-        length = sum(occ.getMass(1, c) for c in curves)
+        try:
+            solid, curves = _plate(gmsh, arcs, thickness, bore)
+            occ = gmsh.model.occ
+            volume = sum(occ.getMass(3, tag) for _, tag in solid)
+            length = sum(occ.getMass(1, c) for c in curves)
+        except Exception as exc:       # gmsh raises a bare Exception with its last error
+            raise StepError(f"the CAD kernel (gmsh's OpenCASCADE) could not build the plate "
+                            f"from the profile's {len(arcs)} arcs: {exc}") from None
         with writing(path) as p, _quiet_stdout():
             gmsh.write(str(p))
     tol = cam.arc_tolerance_used
     # the arcs stray from the profile by at most tol along its whole length
     return {"arcs": len(arcs), "volume": volume, "volume_error": tol * length * thickness,
             "thickness": thickness, "bore": bore, "tolerance": tol}
+
+
+def _plate(gmsh, arcs, thickness: float, bore: float):
+    """(the solid's dimension-tags, the profile's curve tags): the arcs' curve loop as a plane
+    face, extruded to the thickness, less the bore."""
+    occ = gmsh.model.occ
+    starts = [occ.addPoint(a.start[0], a.start[1], 0.0) for a in arcs]
+    curves = []
+    for k, arc in enumerate(arcs):
+        p, q = starts[k], starts[(k + 1) % len(arcs)]
+        cr = arc.centre_radius()
+        if cr is None:
+            curves.append(occ.addLine(p, q))
+        else:
+            # a bi-arc spans far less than half a turn, so its centre fixes the arc
+            c = occ.addPoint(cr[0][0], cr[0][1], 0.0)
+            curves.append(occ.addCircleArc(p, c, q))
+    face = occ.addPlaneSurface([occ.addCurveLoop(curves)])
+    solid = [d for d in occ.extrude([(2, face)], 0.0, 0.0, thickness) if d[0] == 3]
+    if bore > 0.0:
+        hole = occ.addCylinder(0.0, 0.0, -thickness, 0.0, 0.0, 3.0 * thickness, bore / 2.0)
+        solid, _ = occ.cut(solid, [(3, hole)])
+    occ.synchronize()
+    return solid, curves
 
 
 def read_step(path) -> dict:

@@ -26,7 +26,9 @@ def add(sub):
                     "(the face width it needs); written as CSV (SI), DXF (mm, layers PITCH, "
                     "PROFILE, PROFILE_OUTER, BASE_CIRCLE) and PNG. The undercut (roller), cusp "
                     "(flat face) and pressure-angle checks that fail are warnings naming the "
-                    "cam angle where they are worst (and in the JSON). SI units.")
+                    "cam angle where they are worst (and in the JSON), and the exit status "
+                    "is then 1, the files written all the same; a law whose velocity jumps "
+                    "fails the undercut or cusp check where it jumps. SI units.")
     p.add_argument("--follower", default=None, choices=KINDS,
                    help="the follower (default translating-roller); a translating one takes "
                         "--stroke (and --offset), an oscillating one --pivot-distance and "
@@ -205,7 +207,7 @@ def run(args) -> int:
             out["hertz_stress_max"] = stress["hertz_stress_max"]
             out["hertz_stress_max_error"] = stress["hertz_stress_max_error"]
             out["warnings"] = out["warnings"] + stress["warnings"]
-            out["ok"] = out["ok"] and not stress["warnings"]
+            out["ok"] = out["ok"] and stress["ok"]
         elif any(v is not None for v in (args.roller_width, args.crown_radius,
                                           args.allowable_stress,
                                           None if args.step else args.cam_width)):
@@ -219,18 +221,19 @@ def run(args) -> int:
         folder = out_folder(args.out, files=[f"cam.{x}" for x in kinds])
         out["files"] = cam.write_all(folder)
         if args.step:
-            from ..cam.step import write_step
-            out["step"] = write_step(cam, folder / "cam.step", args.cam_width, args.bore)
-            out["files"]["step"] = str(folder / "cam.step")
+            _step(cam, args, folder, out)
         out["files"]["json"] = str(folder / "cam.json")
         write_text(folder / "cam.json", json.dumps(out, indent=1))
     except CamdynInputError as exc:
         return fail(prog, str(exc))
     for w in out["warnings"]:
         print(f"{prog}: warning: {w}", file=sys.stderr)
+    # a failed check (undercut, cusp, pressure angle, contact stress, a STEP plate not
+    # written) is status 1, the files and the report written all the same
+    status = 0 if out["ok"] else 1
     if args.json:
         print(json.dumps(out, indent=1))
-        return 0
+        return status
     laws = cam.law + ("" if cam.return_law in (None, cam.law) else f" / {cam.return_law} return")
     if cam.oscillating:
         motion = (f"swing {cam.swing_deg:g} deg, pivot at {cam.pivot_distance * 1e3:g} mm"
@@ -265,7 +268,7 @@ def run(args) -> int:
                   f"{st['hertz_stress_max_angle_deg']:.2f} deg")
         for c in st["checks"]:
             print(f"{'ok  ' if c['ok'] else 'FAIL'} {c['message']}")
-    if "step" in out:
+    if out.get("step", {}).get("written"):
         st = out["step"]
         print(f"     STEP plate {st['thickness'] * 1e3:g} mm thick"
               + (f", bore {st['bore'] * 1e3:g} mm" if st["bore"] else "")
@@ -274,4 +277,24 @@ def run(args) -> int:
     print("     (refined between the samples; ± what the sampling leaves)")
     for f in out["files"].values():
         print(f"wrote {f}")
-    return 0
+    return status
+
+
+def _step(cam, args, folder, out) -> None:
+    """cam.step, or the reason it is not written among the warnings (and ``ok`` false): a
+    profile its checks find is no closed simple curve (a cusp, an undercut, a velocity
+    jump's corner) never reaches the CAD kernel, and what the kernel refuses is one line."""
+    from ..cam.step import StepError, profile_refusal, write_step
+
+    why = profile_refusal(cam)
+    if why is None:
+        try:
+            out["step"] = {"written": True,
+                           **write_step(cam, folder / "cam.step", args.cam_width, args.bore)}
+            out["files"]["step"] = str(folder / "cam.step")
+            return
+        except StepError as exc:
+            why = str(exc)
+    out["step"] = {"written": False, "reason": why}
+    out["warnings"].append(f"cam.step not written: {why}")
+    out["ok"] = False
