@@ -114,11 +114,14 @@ def write_step(cam, path, thickness: float, bore: float = 0.0) -> dict:
             occ = gmsh.model.occ
             volume = sum(occ.getMass(3, tag) for _, tag in solid)
             length = sum(occ.getMass(1, c) for c in curves)
-        except Exception as exc:       # gmsh raises a bare Exception with its last error
+        except Exception as exc:   # noqa: BLE001 (gmsh raises a bare Exception, its last error)
             raise StepError(f"the CAD kernel (gmsh's OpenCASCADE) could not build the plate "
                             f"from the profile's {len(arcs)} arcs: {exc}") from None
         with writing(path) as p, _quiet_stdout():
-            gmsh.write(str(p))
+            try:
+                gmsh.write(str(p))
+            except Exception as exc:   # noqa: BLE001 (the same bare Exception)
+                raise StepError(f"the CAD kernel could not write {path}: {exc}") from None
     tol = cam.arc_tolerance_used
     # the arcs stray from the profile by at most tol along its whole length
     return {"arcs": len(arcs), "volume": volume, "volume_error": tol * length * thickness,
