@@ -25,6 +25,7 @@ from ..core.simulator import Simulator
 
 # summary keys, in the order printed
 KEYS = ("variant", "tau", "Fa", "Fv", "Xdd_min_rise", "T_at_Xdd_min", "Xdd_max_rise", "U0dd", "U0",
+        "U_static",
         "jump", "speed_variation_max", "motor_speed_variation_max", "n_events", "cpu_seconds")
 
 

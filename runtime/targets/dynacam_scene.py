@@ -401,10 +401,10 @@ class DynacamTarget(Target):
             lines.append(f"  full turn: rise, upper dwell, return, lower dwell "
                          f"{', '.join(f'{a:.4g}' for a in t['angles_deg'])} deg; return law "
                          f"{t['return_law']}")
-            for key in ("Xdd_absmax_return", "U0dd_return", "U0_return"):
+            for key in ("Xdd_absmax_return", "U0dd_return", "U0_return", "U_static_return"):
                 v = out.get(key)
                 lines.append(f"  {key:26s} {'not reached' if v is None else fmt(v)}"
-                             f"{plus_minus(out.get(f'{key}_error'))}")
+                             f"{note(out, key, exact) if v is not None else ''}")
         lines += [f"wrote {f}" for f in out.get("figures", [])]
         return lines
 

@@ -121,8 +121,20 @@ def model_ref(name: str) -> str:
         return str(path.resolve())
     if name.replace("-", "_") in available():
         return name.replace("-", "_")
-    raise CamdynInputError(f"MODEL {name!r} is neither a model file (.py) nor a built-in model; "
-                           f"built-in models: {', '.join(available())}")
+    raise CamdynInputError(f"MODEL {name!r} is neither a model file (.py) nor a built-in model "
+                           f"({built_in_names()})")
+
+
+def built_in_names() -> str:
+    """The built-in models in words short enough for a one-line error: the thesis's and the
+    paper's by name, the DYNACAM variants and the beam's modes counted (camdyn integrate
+    --help and camdyn scenes list them)."""
+    names = available()
+    dynacam = [n for n in names if n.startswith("dynacam_")]
+    beams = [n for n in names if n.startswith("beam") and n[4:].isdigit()]
+    rest = [n for n in names if n not in dynacam and n not in beams]
+    return (", ".join(rest) + (f", beam1-beam{len(beams)}" if beams else "")
+            + (f" and {len(dynacam)} DYNACAM variants" if dynacam else ""))
 
 
 def load_ref(ref: str, progress=None):

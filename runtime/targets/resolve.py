@@ -7,6 +7,9 @@ mechanism is adding its target class to SCENE_TARGETS.
 """
 from __future__ import annotations
 
+import os
+from pathlib import Path
+
 from ..core.errors import CamdynInputError
 from ..core.methods import ADAPTIVE
 from ..core.compiled import available
@@ -14,7 +17,8 @@ from . import scene_files
 from .beam_scene import BeamTarget
 from .camshaft1_study import StudyTarget
 from .dynacam_scene import DynacamTarget
-from .model_target import ModelTarget, StateTarget, load_ref, model_file, model_ref
+from .model_target import (ModelTarget, StateTarget, built_in_names, load_ref, model_file,
+                           model_ref)
 
 SCENE_TARGETS = {cls.scene_kind: cls for cls in (DynacamTarget, StudyTarget, BeamTarget)}
 """Scene kind -> the target class that runs it (its ``parse`` checks the scene file's tables,
@@ -69,7 +73,9 @@ def resolve(name: str, *, model_class=ModelTarget, progress=None, **settings):
     try:
         target = scene(name)
     except CamdynInputError as exc:
-        raise CamdynInputError(f"{name!r} is neither a model ({', '.join(available())}), a model "
+        if Path(name).suffix in (".toml", ".py") or os.sep in name:
+            raise                  # a file the user named: what is wrong with it comes first
+        raise CamdynInputError(f"{name!r} is neither a model ({built_in_names()}), a model "
                                f"file (.py) nor a scene: {exc}") from None
     if isinstance(target, ModelTarget):
         if "t_end" in settings and not settings["t_end"] > 1.0:
