@@ -225,14 +225,15 @@ def test_default_tolerances_against_a_tight_reference(capsys):
     assert 0 < err < 1e-6 * tip
     assert abs(tip - ref["max_abs_tip_deflection"]) < 3 * err
     t = BeamTarget.of(replace(beam.Case(), mode_atol=MODE_ATOL))
-    assert t.tighter().case.mode_atol == pytest.approx(MODE_ATOL / 10)
+    # the estimate's run is two notches tighter (rtol/100, runtime/core/methods.py)
+    assert t.tighter().case.mode_atol == pytest.approx(MODE_ATOL / 100)
     b1 = dict(t.method().state_atol)["b1"]
     assert b1 == pytest.approx(MODE_ATOL * beam.deflection_scale(t.case), rel=1e-15)
     # the rates' at the fastest frozen frequency: N = 3, 35.19 kHz at the outer dwell
     b1d = dict(t.method().state_atol)["b1d"]
     assert beam.fastest_frequency(t.case) == pytest.approx(35190, rel=1e-4)
     assert b1d == pytest.approx(b1 * 2 * math.pi * beam.fastest_frequency(t.case), rel=1e-15)
-    assert dict(t.tighter().method().state_atol)["b1"] == pytest.approx(b1 / 10, rel=1e-12)
+    assert dict(t.tighter().method().state_atol)["b1"] == pytest.approx(b1 / 100, rel=1e-12)
 
 
 @pytest.mark.parametrize("value", ["0", "nan", "-1"])

@@ -93,8 +93,8 @@ def test_the_study_and_the_design_check_run_give_the_single_runs_answer(capsys, 
     assert check["model"] == "camshaft1"
     for k in FIGS:
         assert row[k] == res9[k] and row[f"{k}_error"] == res9[f"{k}_error"], k
-        # the design states more of the same run's error (check_run.TWIN_FACTOR, the place's
-        # rounding), never less
+        # the design states more of the same run's error (the rounding of a flat top, which
+        # thesis/design/extremes.py place_resolution adds), never less
         assert check[k] == res10[k] and check[f"{k}_error"] >= res10[f"{k}_error"], k
     assert row["warnings"] == res9["warnings"] == []
     assert check["warnings"] == res10["warnings"] == des["warnings"] == []

@@ -5,11 +5,11 @@ Every command that prints, writes or tabulates a figure goes through :func:`answ
 run) or :func:`grid_columns` (a grid of runs), so a safeguard added here is on every road.
 The estimate of a figure v covers every error it has:
 
-* discretisation: the same target one notch tighter (rtol/10 or half the step,
-  runtime/core/methods.py) gives v'; |v - v'| times the method's factor (1 for dp54 and
-  rodas4, Richardson's 2^p/(2^p - 1) for the fixed steps) estimates v's error;
-* sampling: an extreme carries the error the scan that found it leaves
-  (runtime/measure/extremes.py);
+* discretisation: the same target one notch tighter (rtol/100 or half the step,
+  runtime/core/methods.py) gives v'; |v - v'| times the method's factor (1.5 for the adaptive
+  methods, 3 for radau5, Richardson's 2^p/(2^p - 1) for the fixed steps) estimates v's error;
+* sampling: an extreme carries the error the scan that found it leaves, and the place of an
+  extreme how well the refinement places it (runtime/measure/extremes.py);
 * the window: a residual amplitude read from a dwell shorter than one period of the slowest
   mode its output sees (runtime/measure/modes.py) is too small.  Where the run's end was
   left to camdyn the run is extended; where the user gave it, the run is refused, naming

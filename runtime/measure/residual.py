@@ -16,7 +16,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from ..core.errors import CamdynInputError
-from .extremes import (crossing_time, dwell_closed_form, extreme, extreme_reference,
+from .extremes import (crossing_time, dwell_closed_form, extreme, extreme_reference, place_error,
                        first_crossing)
 
 FIGURES = ("U0", "U0dd", "Xdd_min_rise", "T_at_Xdd_min")
@@ -78,4 +78,5 @@ def _residual(result, extreme, rise_end) -> ResidualVibration:
     return ResidualVibration(U0=U0.value, U0dd=U0dd.value, Xdd_min_rise=xmin.value,
                              T_at_Xdd_min=xmin.at,
                              sampling={"U0": U0.sampling_error, "U0dd": U0dd.sampling_error,
-                                       "Xdd_min_rise": xmin.sampling_error})
+                                       "Xdd_min_rise": xmin.sampling_error,
+                                       "T_at_Xdd_min": place_error(xmin.at)})

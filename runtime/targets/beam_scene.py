@@ -111,13 +111,14 @@ class BeamTarget(Target):
         return beam.integrator(self.case)
 
     def tighter(self):
-        m = self.method().tighter()
+        base = self.method()
+        m = base.tighter()
         if m is None:
             return None
-        c = self.case
+        c, k = self.case, base.notch
         return replace(self, case=replace(
-            c, rtol=m.rtol, atol=m.atol, state_atol=tuple((k, v / 10) for k, v in c.state_atol),
-            mode_atol=None if c.mode_atol is None else c.mode_atol / 10))
+            c, rtol=m.rtol, atol=m.atol, state_atol=tuple((n, v / k) for n, v in c.state_atol),
+            mode_atol=None if c.mode_atol is None else c.mode_atol / k))
 
     def run(self, progress=None) -> Outcome:
         from ..cam.motion import RDFD

@@ -25,7 +25,7 @@ from ..core.simulator import Simulator
 from ..engine import finder, driver
 from ..measure import batch, references
 from ..measure.contract import fit_window
-from ..measure.extremes import extreme
+from ..measure.extremes import extreme, place_error
 from ..measure.modes import slowest_periods
 from ..measure.residual import FIGURES as RESIDUAL_FIGURES, residual
 from .base import Batch, Figure, Outcome, Parameter, Target, Window
@@ -546,6 +546,7 @@ class ModelTarget(Target):
         samp = np.zeros((n, 4 + len(extra)))
         for k, f in enumerate(RESIDUAL_FIGURES[:3]):     # the extremes; the last is a place
             samp[:, k] = figures[:, col[f + "_sampling"]]
+        samp[:, 3] = [place_error(t) for t in figures[:, 3]]
         samp[:, 4:] = run_figures[:, 1::2]
         return Batch(np.hstack([figures[:, :4], run_figures[:, 0::2]]), samp,
                      [[note] if note else [] for note in notes], stats[:, 1].astype(float))

@@ -4,6 +4,7 @@ CAMSHAFT-1 (4.15)), its U0, U0'', X''min with error estimates beside the envelop
 (runtime/measure/contract.py)."""
 from __future__ import annotations
 
+from camdyn.runtime.core.methods import DP54
 from camdyn.runtime.measure.contract import answer, tighter_run, unavailable
 from camdyn.runtime.measure.residual import FIGURES as RESIDUAL_FIGURES
 from camdyn.runtime.targets.model_target import ModelTarget
@@ -23,13 +24,11 @@ RTOL = 1e-10
 MODELS = {"one-dof": "one_dof", "camshaft1": "camshaft1"}
 """The check run's models by the names the answer gives them."""
 
-TWIN_FACTOR = 2.0
-"""What the design states as the error of a figure of its DP54 runs: this times the answer
-contract's |v - v'|, v' from the run one notch tighter (rtol/10).  DP54's error falls by about
-a factor 10 a notch (against the closed form of (3.1), cycloid, tau 0.05-0.6: by 8.3-11.8),
-so v' errs by a tenth of v's error and |v - v'| falls short of it by as much: it measured
-0.88-0.91 of the true error of U0, U0'' and X''min.  Twice it covers an error that falls by no
-less than half a notch."""
+TWIN_FACTOR = DP54(rtol=RTOL).estimate_factor
+"""What the design states as the error of a figure of its runs, DP54 at RTOL: this times
+|v - v'| of the run one notch tighter, the answer contract's factor (1.5 with v' at rtol/100,
+runtime/core/methods.py).  With v' at rtol/10 and a factor 1 the difference measured
+0.88-0.91 of the true error of U0, U0'' and X''min against the closed form of (3.1)."""
 
 
 def least_model(U0_env_Fa: float, U0_env_0: float, Fa: float,
@@ -60,8 +59,8 @@ def check_answer(model: str, tau: float, Fa: float, law: str, theta):
 
 def check_run(model: str, tau: float, Fa: float, law: str, theta, a=None) -> dict:
     """U0, U0'', X''min and where it falls, of the run at (tau, Fa), each with its error
-    estimate by the answer contract (the run one notch tighter, rtol/10, its difference
-    times TWIN_FACTOR, and the sampling error of the scan that found the extreme), and the
+    estimate by the answer contract (the run one notch tighter, its difference times
+    TWIN_FACTOR, and the sampling error of the scan that found the extreme), and the
     run's warnings; ``a`` the check run's Answer when already made (check_answer)."""
     a = a if a is not None else check_answer(model, tau, Fa, law, theta)
     errors = stated_errors(a)
@@ -77,17 +76,9 @@ def check_run(model: str, tau: float, Fa: float, law: str, theta, a=None) -> dic
 
 
 def stated_errors(a) -> dict:
-    """The errors the design states for the figures of the Answer ``a``: the contract's
-    discretisation part times TWIN_FACTOR, its sampling and window parts as they are; None
-    where the contract has no estimate."""
-    out = {}
-    for name, e in a.errors.items():
-        parts = a.sources.get(name)
-        if e is None or not parts or parts.get("discretisation") is None:
-            out[name] = e
-            continue
-        out[name] = e + (TWIN_FACTOR - 1.0) * parts["discretisation"]
-    return out
+    """The errors the design states for the figures of the Answer ``a``: the contract's (its
+    discretisation part TWIN_FACTOR |v - v'| already); None where it has no estimate."""
+    return dict(a.errors)
 
 
 def turn_runs(model: str, tau: float, Fa: float, drive, t_end: float) -> tuple:
