@@ -56,7 +56,9 @@ RUNS = {"stability": "camdyn.runtime.studies.stability_map.study",
         "laws --tau": "camdyn.thesis.design.selection.table",
         "laws --sweep": "camdyn.thesis.design.shape_sweep.sweep",
         "integrate": "camdyn.runtime.measure.contract.answer",
-        "sweep": "camdyn.runtime.targets.grid.GridPlan.run"}
+        "sweep": "camdyn.runtime.targets.grid.GridPlan.run",
+        "run": "camdyn.runtime.measure.contract.answer",
+        "beam-follower": "camdyn.runtime.measure.contract.answer"}
 """Where each command's runs start (the laws' modules load SymPy: patched only for them)."""
 
 
@@ -83,6 +85,10 @@ WRITERS = {
                      "laws_sweep.csv"),
     "integrate": (["integrate", "one_dof", "--t-end", "2", "--set", "tau=0.3"], "one_dof.png"),
     "sweep": (["sweep", "one_dof", "--grid", "tau=0.2,0.3", "--quiet"], "U0dd.png"),
+    # a DYNACAM scene's diagrams, written after report.json's answer
+    "run": (["run", "spring_loaded", "--no-error-estimate", "--quiet"],
+            "spring_loaded_torque.png"),
+    "beam-follower": (["beam-follower", "--no-error-estimate"], "fig9_rise.png"),
 }
 
 

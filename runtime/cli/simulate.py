@@ -65,7 +65,7 @@ def run(args) -> int:
         if args.tolerance is not None or args.figures is not None or args.build_variants:
             raise CamdynInputError("--tolerance, --figures and --build-variants go with --model auto")
         if args.out:       # made and its files claimed before the run: a bad --out costs none
-            out_folder(args.out, files=diagram_files(target))
+            out_folder(args.out, files=target.main_files())
         a = answer(target, estimate=not args.no_error_estimate, progress=progress)
         out = a.as_dict()
         out["outputs"], errors = a.at_end()
@@ -88,21 +88,6 @@ def run(args) -> int:
         e = out.get("outputs_error", {}).get(name)
         print(f"    {name:24s} {value:.6g}{plus_minus(e) if e is not None else none}")
     return 0
-
-
-def diagram_files(target) -> list:
-    """The diagrams camdyn simulate --out writes (runtime/targets/dynacam_diagrams.py plot),
-    named before the run from the outputs the scene's model has: one per diagram that has
-    something to draw."""
-    from pathlib import Path
-
-    from ..targets.dynacam_diagrams import DIAGRAMS
-
-    names = set(target.prepared.model.output_names)
-    drawn = {"gaps": ("gear_gap", "roller_gap")}
-    stem = Path(target.scene.path).stem
-    return [f"{stem}_{key}.png" for key, _, _ in DIAGRAMS
-            if names & set(drawn.get(key, (key,)))]
 
 
 def _least_model(sc, args, progress) -> int:

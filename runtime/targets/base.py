@@ -277,6 +277,11 @@ class Target:
     def problem(self):
         raise NotImplementedError
 
+    def main_files(self) -> list:
+        """The names of the files :meth:`main_job` writes, known before the run, so that a
+        file of the user's among them is refused before anything runs (default: none)."""
+        return []
+
     def main_job(self, out_dir, answer, progress=None) -> list:
         """The files `camdyn run` writes besides report.json (default: none)."""
         return []
@@ -295,7 +300,9 @@ class Target:
         from ..core.outdir import claim, out_folder, write_text
         from ..measure.contract import answer
 
-        claim(out_dir / "report.json")          # the user's own report: refused before the run
+        # a file of the user's among what the job writes: refused before the run
+        for name in ["report.json", *self.main_files()]:
+            claim(out_dir / name)
         a = answer(self, estimate=estimate, progress=progress)
         out = a.as_dict()
         out_folder(out_dir)

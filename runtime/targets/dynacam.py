@@ -18,7 +18,7 @@ import numpy as np
 
 from ..engine import driver
 from ..core.errors import CamdynInputError, SimulationError
-from ..measure.extremes import extreme
+from ..measure.extremes import extreme, place_error
 from .scene_files import DynacamScene
 from ..core.methods import METHODS
 from ..core.simulator import Simulator
@@ -223,6 +223,20 @@ def _equilibrium(model, p: np.ndarray, law_codes, law_pars, modes: np.ndarray, t
     if not np.all(np.isfinite(out)):
         raise SimulationError("no consistent initial state found (non-finite equilibrium)")
     return out
+
+
+def turned(model, p: np.ndarray, y0: np.ndarray, dt: float, lifted: bool) -> np.ndarray:
+    """A first guess of the state ``dt`` after the start ``y0`` for :func:`dwell_static`: the
+    cam, the motor and the gear wheel turned on at the input speed, the follower lifted by
+    the stroke in the dwell after the rise (``lifted``)."""
+    y = np.array(y0, dtype=float)
+    names = model.state_names
+    for angle in ("beta", "phi", "phir"):
+        if angle in names:
+            y[names.index(angle)] += p[model.parameter_names.index("omega_s")] * dt
+    if lifted and "x" in names:
+        y[names.index("x")] += p[model.parameter_names.index("h_m")]
+    return y
 
 
 def initial_modes(model) -> np.ndarray:
@@ -456,7 +470,9 @@ def headline(scene: DynacamScene, res, t_m: float) -> tuple[dict, dict]:
         read_span(sp, e, t_m, scene.T_start, figures, sampling)
     statics = {}
     for key, t in static_times(spans).items():
-        guess = np.array([res.sample([t])[n][0] for n in res.state_names])
+        # guessed from the start as a grid's chunk guesses it, so that both find the same
+        # level to the last bit
+        guess = turned(res.model, res.p, res.y[0], t - float(res.t[0]), lifted=key == "U0")
         statics[key] = dwell_static(res.model, res.p, res.law_codes, res.law_pars, t, guess)
     combine_static(figures, sampling, statics)
     return figures, sampling
@@ -468,6 +484,7 @@ def read_span(sp: Span, e, t_m: float, T_start: float, figures: dict, sampling: 
     sampling[sp.key] = e.sampling_error
     if sp.time_key:
         figures[sp.time_key] = e.at / t_m + T_start
+        sampling[sp.time_key] = place_error(e.at) / t_m
 
 
 def dwell_spans(scene: DynacamScene, t_m: float, t_end: float) -> dict:

@@ -84,6 +84,7 @@ def short_dwells(scene, model, p, sim, y0, t_m: float, t_end: float, present) ->
     figures in ``present`` (those the run reaches), the ones whose dwell is shorter than one
     period of the slowest mode their output sees at the start (sim's laws, modes and t0)."""
     spans = dynacam.dwell_spans(scene, t_m, t_end)
+    present = {k.split(":")[0] for k in present}      # U0 is read as U0:max and U0:min
     names = [k for k in spans if k in present]
     periods = slowest_periods(model, p, sim.law_codes, sim.law_pars, sim.t0, y0,
                               [WINDOW_OUTPUTS[k] for k in names],
@@ -104,17 +105,6 @@ def _level(d: ShortDwell, figures: dict) -> float:
     (runtime/targets/dynacam.py dwell_static), 0 for X''."""
     key = dynacam.STATIC.get(d.name)
     return float(figures.get(key) or 0.0) if key else 0.0
-
-
-def _turned(model, p: np.ndarray, y0: np.ndarray, dt: float, lifted: bool) -> np.ndarray:
-    """A first guess of the state ``dt`` after the start ``y0``: the cam turned on at the
-    input speed, the follower lifted by the stroke in the dwell after the rise."""
-    y = np.array(y0, dtype=float)
-    names = model.state_names
-    y[names.index("beta")] += p[model.parameter_names.index("omega_s")] * dt
-    if lifted and "x" in names:
-        y[names.index("x")] += p[model.parameter_names.index("h_m")]
-    return y
 
 
 def window_errors(short: list, bounds: list, figures: dict, t_m: float) -> tuple[dict, list]:
@@ -332,8 +322,8 @@ class DynacamTarget(Target):
                                       figures, sampling)
             dynacam.combine_static(figures, sampling, {
                 key: dynacam.dwell_static(model, P[j], sim.law_codes, sim.law_pars, t,
-                                          _turned(model, P[j], Y0[j], t - sim.t0,
-                                                  lifted=key == "U0"))
+                                          dynacam.turned(model, P[j], Y0[j], t - sim.t0,
+                                                         lifted=key == "U0"))
                 for key, t in dynacam.static_times(spans[j].values()).items()})
             figures.update(tau=ch["tau"], Fa=ch["Fa"], Fv=ch["Fv"])
             first = np.nan if runs.first_in_mode is None else runs.first_in_mode[j]
@@ -407,6 +397,20 @@ class DynacamTarget(Target):
                              f"{note(out, key, exact) if v is not None else ''}")
         lines += [f"wrote {f}" for f in out.get("figures", [])]
         return lines
+
+    def main_files(self) -> list:
+        """The diagrams main_job writes (runtime/targets/dynacam_diagrams.py plot), named
+        before the run from the outputs the scene's model has: one per diagram that has
+        something to draw."""
+        from pathlib import Path
+
+        from .dynacam_diagrams import DIAGRAMS
+
+        names = set(self.prepared.model.output_names)
+        drawn = {"gaps": ("gear_gap", "roller_gap")}
+        stem = Path(self.scene.path).stem
+        return [f"{stem}_{key}.png" for key, _, _ in DIAGRAMS
+                if names & set(drawn.get(key, (key,)))]
 
     def main_job(self, out_dir, answer, progress=None) -> list:
         from .dynacam_diagrams import plot
