@@ -133,14 +133,19 @@ class Fault:
     at_start: bool
 
 
-def explain(model, p, law_codes, law_pars, out, modes=None, part=None) -> Fault | None:
+def explain(model, p, law_codes, law_pars, out, modes=None, part=None,
+            start=None) -> Fault | None:
     """The cause of the failed run ``out`` (driver.Integrator.run's record), found at the last
     state it accepted, or None when neither the mass matrix nor the right-hand side shows one;
-    ``part`` as :func:`rhs_fault` takes it."""
-    if out.n < 1:
-        return None
-    row = out.rows[out.n - 1]
+    ``part`` as :func:`rhs_fault` takes it.  ``start``: (t0, y0) the run started from, where
+    the cause is looked for when the run recorded no point (its first slope not finite)."""
     ns = len(model.state_names)
+    if out.n < 1:
+        if start is None:
+            return None
+        row = np.concatenate([[float(start[0])], np.asarray(start[1], dtype=float)])
+        out = _Started(row[None, :], 1, out.t_fail, None)
+    row = out.rows[out.n - 1]
     t, y = float(row[0]), np.array(row[1:1 + ns])
     element = None
     if modes is not None:
@@ -165,6 +170,16 @@ def explain(model, p, law_codes, law_pars, out, modes=None, part=None) -> Fault 
     except (ValueError, ArithmeticError):       # a diagnosis must never hide the failure
         return None
     return None if text is None else Fault(text, out.n == 1)
+
+
+@dataclass
+class _Started:
+    """The record :func:`explain` reads, of a run that recorded nothing: its start alone."""
+
+    rows: np.ndarray
+    n: int
+    t_fail: float
+    modes: object
 
 
 def _tname(model) -> str:

@@ -457,7 +457,7 @@ class Simulator:
             y0, note = self.start(p)
         out = self.integrator.run(p, stops, cap or self._cap, y0)
         if out.status != 0:
-            self._failed(p, out)
+            self._failed(p, out, y0)
         if not cap:
             self._cap = max(256, out.n + out.n // 4)
         res = Result(self, p, out)
@@ -478,14 +478,17 @@ class Simulator:
                                     + _stability.refusal(m.name, self._tname, est))
         return res
 
-    def _failed(self, p, out):
-        """Raise what a run that stopped early (out.status) calls for."""
+    def _failed(self, p, out, y0=None):
+        """Raise what a run that stopped early (out.status) calls for; ``y0``: the state it
+        started from (None: its own), which is where the diagnosis looks when the run
+        could not record even its first point (a slope not finite there)."""
         m, tname = self.model, self._tname
         if out.status == driver.UNSTABLE:
             est = _stability.from_loop(self.method.name, self.method.step, out)
             raise UnstableStep(_stability.refusal(m.name, tname, est), est)
         # the integrator's words say what it saw; the model's state says why
-        fault = diagnosis.explain(m, p, self.law_codes, self.law_pars, out, part=self.part)
+        fault = diagnosis.explain(m, p, self.law_codes, self.law_pars, out, part=self.part,
+                                  start=(self.t0, self.start(p, y0)[0] if y0 is None else y0))
         if fault is not None and fault.at_start:     # the input, not the run
             raise CamdynInputError(f"{m.name}: {fault.text}")
         why = (driver.PROJECTION_TEXT if out.status == driver.NO_CONVERGENCE
