@@ -71,8 +71,11 @@ def _rhs_expressions(m: Model, eq: Equations, plain: Plain):
     rates = [plain(z.rate) for z in m.first_order]
     if M.is_diagonal():
         acc = [f[i] / M[i, i] for i in range(n)]
-        acc = [symbolic.simplify(e) if M[i, i] != 1 and not e.has(sp.Piecewise) else e
-               for i, e in enumerate(acc)]
+        # a model that keeps its forces unexpanded (a rocker's long geometric ratios) is not
+        # simplified either: the rocker held on both sides, whose force has no Piecewise to
+        # pass over, ran in simplify() for more than 25 minutes
+        acc = [symbolic.simplify(e) if M[i, i] != 1 and not e.has(sp.Piecewise)
+               and m.expand_forces else e for i, e in enumerate(acc)]
         return acc + rates, True
     return list(M) + list(f) + rates, False
 

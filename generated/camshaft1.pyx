@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft1.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:5ddf8600be224e1f4e8ecfb12a566dccae55a801ba88dcfbc46979cc6696e755
-# Text hash: sha256:0f43333b44d5377e3ab0ce8dcfd13f867ffcfc63c67ae8f34c91eb108b10ceab
+# Derivation key: sha256:e799c175dceebebc6d4efbf9b4794ac51116b0a373eb25bbc0494d44af79e93f
+# Text hash: sha256:b8989cc2c3389c2cf3059db74cf0df70636963716cbe35570f8a49daee82a519
 #
 # CAMSHAFT-1, one DOF with variable fictitious angular velocity (thesis (4.15)-(4.18))
 # Source hash: sha256:0967543da0f352acab2824c9a32218d1be61c185b8c772967bbcece4be157c13

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/camshaft2.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6d69aa1ed637572a4b811c8c114c442bcee2a902e5863859d0cc13b22540ffe2
-# Text hash: sha256:155787a5dad621f578af0633926622f499de07b6811c3361ce9cf2ae9798693b
+# Derivation key: sha256:27d7cc9e477a8b74c24b4c905ac9e49433d464e01d1e1825b4ddaefbc0dfea99
+# Text hash: sha256:289a06a9f24dd74bfa3700eab322abf4713affd88b738ecb65578e3c776405c8
 #
 # CAMSHAFT-2, follower and cam angle (thesis (5.15)-(5.19))
 # Source hash: sha256:ba85420c7d793b48841104cb2caceda457d7114297efae4aa828a6d651b0c422

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/chain3.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ef27e7597340c9b6807016f843cec61ddf3da8b76f0b4f96d816007490bfc8cf
-# Text hash: sha256:23cfba43d191f244518af8443d6cb84ce50aab208090444076c527612bf238c8
+# Derivation key: sha256:ab7936016e175d92861888d8347ea9fe7420f5ab150188d2d7a3389a9115ed56
+# Text hash: sha256:f908254f39e8c5bfb660b921ec1ce1b4daf18910bab85069c1d69925cfa6d792
 #
 # Three-DOF chain, constant fictitious angular velocity (thesis sec. 3.7, figs 3.6, 3.7, (2.47))
 # Source hash: sha256:a1735f89202c97c2b444182398f9af26803e80bf78837315ac6167321477d309

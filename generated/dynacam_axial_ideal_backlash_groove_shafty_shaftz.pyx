@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:348cef2b22932bd5a1ab1c33bd06a63d5d54b571303f81d6df9b517ce72f812a
-# Text hash: sha256:de5b5b5ebdcf93832939fcab56ff8b402ce6f305d311cdf0771197880f629de4
+# Derivation key: sha256:159c7f50d80a2c75184b677da59c6c6202bab3b611397ac06da78beb42ef0aae
+# Text hash: sha256:311f4b9e1708123eb07cee528157ee848ed8b8ecb010a5071df4b70292d348d2
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:20057f71b91ba1e26afc2d2e794ae3ecfcc9a5b84e3371830277eacbb8275d82

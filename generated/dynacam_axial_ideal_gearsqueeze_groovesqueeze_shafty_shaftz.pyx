@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:961298a51f3e2fab73aefafe760785fbe3e6fcb3d83cc599880eb987f4079f5c
-# Text hash: sha256:91ca9a0cac27a2cdb1a8331bb61c4869912a541c025209d4fad1305421c737df
+# Derivation key: sha256:1a0c30eca760f7128261ff63e929c02562480301dccf8a745e26e32aea5e0ca1
+# Text hash: sha256:37e190c31ae978656a9afae5e89896ad8ef0cfb1d2c499be9860021c2f3c12ac
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:87cc6f632d9fab7e7beb98a5f275e3a12bd3d22974d3c67011929413b944c3cb

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:a9e688bd7a43d47e9940b1f7b998102fa4ec0eeb602d3d89697bd58904a885d0
-# Text hash: sha256:b204de2a0a85161ae0bdf4750ab881aa315a47e4dcfb7df22f44579ccc0ca03b
+# Derivation key: sha256:e8b336daddfda7a42f60230a691a8a8bbb211c37433c6dde467e364c7a3f531b
+# Text hash: sha256:d0f3146c487ee19c4d504ea6c2ebaaa97b30d0db1df42123ad26e2575aab3c11
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:49317c049a0ae9e98c0d7ae0ad124c65edf3d683e584e9f2f1cb4e86f914b1c0

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:655abd46c355fbade1af198b4f2bf9ebe4007e839972e5cc075ed2ec1b4ad56c
-# Text hash: sha256:cdf7d0418dc6ef5be1138b8e5d06fc3c9cec20ac0e0de7fa87381b10c118a69b
+# Derivation key: sha256:e192ff178e6a10ca9709c754fb85b8c58ca762695b5269ed5208d22c74019c2e
+# Text hash: sha256:70ee91f0acec65a02dba6a458663c9ded645119a466a2dfb00eb7abf784f56d2
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:e63183f45a2d3708dd5707654b2e7f19e223ec32be78ba20c70cfa560282b899

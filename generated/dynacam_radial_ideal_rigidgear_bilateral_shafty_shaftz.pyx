@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:4d5871a54ab43680b13b0e9eba51467d37377a67a25342513ddc903cc0c068ea
-# Text hash: sha256:7245d3506fdfad726d7c9601f9d9f850a165bce23626bc21d17a4609d274ea0c
+# Derivation key: sha256:7252927a9dbdd188b15df1f870caf5ab6388d097330be120ac4a906511383c59
+# Text hash: sha256:794c566b528a87a327eac37b03f06e309294b34afb9daf4e68dfb1e2f750bf31
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:17a2d5a7d7f49c908f0cc60227fa5d7ea6df0fff82762a03baea1b9af6239c3b

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:21ae92a47b2fcceb9c259ed73b5f5c7a4f762f34a23816cd3f4c3b483cc92382
-# Text hash: sha256:7feaa390b47a3605b66d8af49fe6606dca6c5c536485098a854defe987e679a3
+# Derivation key: sha256:906fb2201af456ae681c71f4cf086c77b3260aa7818c655cd569c0c1f815ded0
+# Text hash: sha256:e6262c101e46548c73bfc9efdfa795abc986ad9881c7661c3afb94ac21597055
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:16a9117fcd7a3d28262b06074ed4c6620f84e679fef5fb3f7764055b87fdc220

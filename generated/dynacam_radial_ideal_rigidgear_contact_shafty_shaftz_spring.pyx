@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:abd9dbc02b7c89b909c50e2220180c485d08f09938bb5304739ced6263562c36
-# Text hash: sha256:099a96a8b1fc400d9c8f4c228a4e90101ac9948fd53bfb1baecdaed06682edbd
+# Derivation key: sha256:0e67ff9cd47ffa7ba832144e5c1f2e4a1b921d6d4221cc624fd4231af4ecfece
+# Text hash: sha256:a0552da3374aad3ea6ad5d24a31b8de51b408a53f657d7b7a935d79dcac221f3
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:867dd035dc54b325f8953e03cc7d949fb8cd037bf2718ead15175ebffbfdee71

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:ee03d750ba5040fdc6515720dd8522ddf76cf6fd6ce58947acc645cd8157938a
-# Text hash: sha256:ebf892861e69cdd2f7f5bf687c7c7d5f72f6e78ced286915da25041a5e34312f
+# Derivation key: sha256:453a1fdad56ab35473713f27060861ac7d5bc913b3bcf1383dc1312325bbad2a
+# Text hash: sha256:7ba7988f03886fe4d8c122acc232b27b9a7818a726684e111d0cd2c845d81cc3
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:3da519cdee12877a9b4868411f25cc28c5de0414178fc7bd5b764d81321bd8e1

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:1704bf9738d56b276a83a87ffee7475f16940c4e895a0144bdb7ea2d30cace99
-# Text hash: sha256:d4503a35b296445f772e9f544cf0547989179575f9943e5bbc55731fd934a123
+# Derivation key: sha256:33cc2b425f8dbb554a984b6b3914cac1c05766a6a2665e1c4592b3150a5c38b4
+# Text hash: sha256:3a22c2168cd39872aae8c291ad733d096a546607fe890a4719d44e6e1d91118a
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:7c3d3322e270fd6f265d09bd571e365b06e8ecba32ef0c8c17fc6596c6df5287

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:67d3bcf8e8d919f476cf3704ad14f1f1a9fe276d98066375a44f23074aa3aac2
-# Text hash: sha256:f850783bce2718f5af35f4d89f70bd3627d6f1bfc0b8b419ce351dd93762d03a
+# Derivation key: sha256:d3f9dcd1881fbe123d5fba0bf05e90f392674016dff67fb56bae07d0351f1867
+# Text hash: sha256:9acc7be2bf6d8eaa0764642d2135b4b70728ce2327d6eb1fc9ac7645fc2b52ae
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:3e03e66b5f0b3f214ee9ce58a63a811e9b83a8ed844be0e2e41420f32fdefed0

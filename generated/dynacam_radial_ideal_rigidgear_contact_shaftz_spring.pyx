@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:9e190c0a17b020f15a7b1815a57f014ebad8dad284d1fa4a35111010cf34615e
-# Text hash: sha256:5d08bb92a0ddbfc5216b047ff6e8a3d6e6cd7616a44bc614158411da8b876c7f
+# Derivation key: sha256:2686aa0164cefea33de121725b50d907882538122155e3d00cc0ed6162515289
+# Text hash: sha256:674d0f52f6c660431f244a1432322452e3c0801dcdfa9aeb7e1989323e97dbf4
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:35062a0ead139451db05a665f5d243e05a8bf23a6fcffd23832276a86a60e79d

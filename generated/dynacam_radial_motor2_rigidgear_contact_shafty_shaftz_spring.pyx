@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/dynacam.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:dedc0f2c4e8a2de6d0f56c02046052f062c2655380a6558635aebb72aea77d0a
-# Text hash: sha256:fc8e90629eb01a060a47f49fe8049b748a57f0b5dc730cdf27254b7553bbb81a
+# Derivation key: sha256:5766169fd780b4aa110f11718ba4a996cb427427928dd4ad805314f36c41d449
+# Text hash: sha256:e51e1d8c6fb34494bf9ba62d2951cdc51fdd8a7a942ae4e8de4417b62a06324e
 #
 # DYNACAM, cam mechanism with four degrees of freedom and drive (thesis ch. 6, figs 6.1, 6.2, 6.15, 6.18)
 # Source hash: sha256:01b35b59721d6b96aafc1f62546380f253113c4d1382ec3e5cd4e556a9743b63

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6b24564a04e5d9df35ac7e61659f267f109dc51baae6c9f7d259c33f27b74291
-# Text hash: sha256:ca68a345fe173e2e71da92a785b718548a785e9613f66b06e5f390ba157dcdc7
+# Derivation key: sha256:d8a357eafd8fc0a0a4f21b243b756e8da6f27f6adff0639756d249c37a70df0c
+# Text hash: sha256:3b9d59b44052bc11abd6416896262b10d1e9d0fce11aa60c0b6bcf13a571bb4a
 #
 # Asynchronous motor, first order (no electrical lag) (thesis sec. A.5.4.2)
 # Source hash: sha256:5315b62110449092ed4fbe9bea35b87a6d10bad4792d9ef82b7feb5db7eda537

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/motor.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:6c2496ae21cc5c9947c1561d2e9f70bd0d9b98cb383c56e2569055cdc10109b9
-# Text hash: sha256:57a95ca1b0b579f9916cbd24cbbcb9a530e41a2e8e7628e245370097227b8770
+# Derivation key: sha256:6e7f4ae03b9a6696bee158708bf6fe37026d03abc075f2c4230eb0b112362a0f
+# Text hash: sha256:cb3095bdb8419595d1d0ea2c920e77db88f7ca4fe076d9b90cf2eefe04d6c161
 #
 # Asynchronous motor, second order (electrical lag) (thesis (A.5.6)-(A.5.13))
 # Source hash: sha256:19e06e8b0095c03a2beab7439588f8137c56e297d573674a4c354a8eee7ec886

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/one_dof.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:61996d47c253cb85c9d9fff8df1a1921a33bed5a3300ffe68cfc3c3bdfb979f2
-# Text hash: sha256:99bbcb9ac74cc5f593e61d8674dac6492bb119110bb44c06b1b96abeaf466119
+# Derivation key: sha256:0bb5d5cf8a8a48dcbdb8dc5f6f56d5241af67877c1a6e656972089da9b4a68af
+# Text hash: sha256:449fcbfeb2dd64d561db06958d37cf25b3cfb72bf32332a5ac72f532c4d3a62a
 #
 # One DOF, constant fictitious angular velocity (thesis (3.1)-(3.7), fig. 3.2)
 # Source hash: sha256:7be31bd6aed90cb3c3dd785c585a5abdada86ed4b0a88d608d7b6508231d5b38

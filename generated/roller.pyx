@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:be0deef395d6a8032a514d4061f14d097633fb33fb9b161892a0d8c5cb97edac
-# Text hash: sha256:af2dee8632bcac221023dd8f1e1c230feca829ba77062c8d0928540691d937dd
+# Derivation key: sha256:e6620442bd73111ecbc2daa864c6fec718985336c0d3757818b8724f739fc52a
+# Text hash: sha256:dfd1edccb913aecbf81c5dcafbd0ef53af8a325647b66c95c429ad01efee1ac1
 #
 # Roller vibration: roller mass and contact stiffness in series with the linkage (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3 and the impact of sec. 3.6)
 # Source hash: sha256:27e1ce034622d3d74be6f8876c4c36db202e6589f148e1c301e5f081e69de353

@@ -2,8 +2,8 @@
 #
 # GENERATED FILE - DO NOT EDIT.  Written by `camdyn derive` from camdyn/derive/models/roller.py;
 # edit that and regenerate.  `camdyn derive --check` fails while this file is stale.
-# Derivation key: sha256:0faa4242cd8155a5ac9e419732e8c4649492694e99b1da994880cf20d97ac678
-# Text hash: sha256:4a91f0ba35b95cf322a068f3f0a0e24bb0c0f783c41db3a2d57ac7378a16e72f
+# Derivation key: sha256:8451f1a139571df882047720feb29f78a89fb680ec4cef80b08a1b54c36b6282
+# Text hash: sha256:c8c3dc43278890ea5b46b82e90190700ce5c7a252e656ffb10e91e7d464fde09
 #
 # Roller vibration, bilateral contact: roller mass and contact stiffness in series with the linkage, no backlash (thesis sec. 9.2.1, with the one-DOF follower of sec. 3.3)
 # Source hash: sha256:e9e5870f5ef080f71b3082004a824cdf8c772265063561f75e0f0fbbf4258b5a

@@ -219,24 +219,65 @@ def sweep_temporaries(root: Path, entry: Path) -> None:
             lock.release()
 
 
+BUILD_LIMIT = 1200.0
+"""Seconds a build may take before it is stopped (a run failure, saying so): every DYNACAM
+variant and every model file of the tests builds in well under it (the slowest, a rocker
+held on both sides, in about a minute); a derivation that would run for hours (SymPy's
+simplify on a long expression, which a rocker's took once) ends in bounded time."""
+
+HEARTBEAT = 15.0
+"""Seconds of silence from the builder after which the user hears how long it has run."""
+
+EXPECTED = {"--dynacam": "a DYNACAM variant takes 20 s to 2 minutes on one core"}
+"""What a build takes, said when it starts, by the builder's first argument."""
+
+
 def _build(args: list, label: str, entry: Path, say, why: str) -> dict:
     """Run the builder into a temporary folder beside ``entry``, seal it and rename it into
-    place; the build record."""
+    place; the build record.  Its stages are passed on as they end, and a line every
+    HEARTBEAT seconds of silence says it is still at work; beyond BUILD_LIMIT it is stopped."""
+    import threading
+
     tmp = Path(tempfile.mkdtemp(prefix=f".{entry.name}.", dir=entry.parent))
-    say(f"{label}: {why} (into {entry})")
+    expected = EXPECTED.get(args[0], "a model file takes seconds to a minute")
+    say(f"{label}: {why} (into {entry}; {expected}, once)")
     t0 = time.perf_counter()
+    quiet = threading.Event()
+    last = [t0]
+
+    def heartbeat(proc):
+        while not quiet.wait(HEARTBEAT / 3):
+            now = time.perf_counter()
+            if now - t0 > BUILD_LIMIT:
+                proc.kill()
+                return
+            if now - last[0] >= HEARTBEAT:
+                last[0] = now
+                say(f"{label}: still building, {now - t0:.0f} s so far")
+
     try:
         proc = subprocess.Popen([sys.executable, "-m", "camdyn.derive.build", *args, "--out",
                                  str(tmp)], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
                                 text=True)
+        watcher = threading.Thread(target=heartbeat, args=(proc,), daemon=True)
+        watcher.start()
         errors = []
-        for line in proc.stderr:
-            line = line.rstrip()
-            if line.startswith("error: "):
-                errors.append(line[len("error: "):])
-            elif line:
-                say(line)
-        if proc.wait() != 0:
+        try:
+            for line in proc.stderr:
+                line = line.rstrip()
+                last[0] = time.perf_counter()
+                if line.startswith("error: "):
+                    errors.append(line[len("error: "):])
+                elif line:
+                    say(line)
+            status = proc.wait()
+        finally:
+            quiet.set()
+            watcher.join()
+        if time.perf_counter() - t0 > BUILD_LIMIT and status != 0:
+            raise SimulationError(f"{label}: the build ran for more than {BUILD_LIMIT:.0f} s "
+                                  "and was stopped; nothing was cached")
+        if status != 0:
             raise CamdynInputError(errors[-1] if errors else f"{label}: the build failed "
                                                              f"(exit status {proc.returncode})")
         info = _seal(tmp)
