@@ -41,9 +41,11 @@ decay = sp.exp(-n * 2 * pi * q / sp.sqrt(1 - q**2))
 stiffness_dip = 1 + 4 * Fa
 """c_max/c_min for the cycloid, H'max = 2 (4.19)."""
 
-U0_approx = (tau**3 * (1 + xi * Fa) ** sp.Rational(3, 2) / (1 - tau**2 * (1 + xi * Fa)) / pi
-             * sp.Abs(sp.sin(pi / (tau * sp.sqrt(1 + xi * Fa)))))
-"""Approximate U0 with the stiffness held at c_c/(1 + xi Fa) (4.22); xi = 2 (4.20) or 3/2 (4.21)."""
+U0_approx = (tau**3 * (1 + xi * Fa) ** sp.Rational(3, 2) / sp.Abs(1 - tau**2 * (1 + xi * Fa))
+             / pi * sp.Abs(sp.sin(pi / (tau * sp.sqrt(1 + xi * Fa)))))
+"""Approximate U0 with the stiffness held at c_c/(1 + xi Fa) (4.22); xi = 2 (4.20) or 3/2 (4.21):
+(3.5) with tau stretched, an amplitude as (3.5) is (|1 - tau^2 (1 + xi Fa)|; the thesis prints
+the denominator for tau below 1, where it is positive)."""
 
 FA_APPROX_MAX = sp.Rational(1, 2)
 """(4.20)-(4.22) assume a small stiffness variation; the thesis puts the limit at Fa < 1/2."""
