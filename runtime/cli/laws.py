@@ -145,7 +145,10 @@ def _rise(args) -> int:
 def _stray_option(args) -> str | None:
     """An option of one mode of `camdyn laws` given in another would be dropped unread: the
     message naming it, or None."""
-    given = lambda name: getattr(args, name, None) not in (None, False)   # noqa: E731
+    # given: anything but the default None (or a flag's False); a number 0 is given (0.0 ==
+    # False, so `in (None, False)` took --tau 0 and --fa 0 for options not given)
+    given = lambda name: getattr(args, name, None) is not None and \
+        getattr(args, name) is not False                                    # noqa: E731
     sweep_only = ("law", "n", "values")
     selection_only = ("tau", "fa", "stroke", "base_radius", "roller_radius")
     flag = lambda name: "--" + name.replace("_", "-")                       # noqa: E731

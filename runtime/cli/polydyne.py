@@ -65,9 +65,10 @@ def run(args) -> int:
         if not 0 < td < 1:
             raise CamdynInputError(f"--design-tau={td:g} is out of range: 0 < TD < 1")
         taus = _range(args.taus, td)
+        # --out checked whole before the runs: a file of the user's there is refused first
+        folder = out_folder(args.out, files=["polydyne.png", "polydyne.json"])
         res = compensation(td, taus, args.q, progress=not args.quiet,
                            estimate=not args.no_error_estimate)
-        folder = out_folder(args.out, files=["polydyne.png", "polydyne.json"])
         out = res.as_dict()
         chart(res, folder / "polydyne.png")
         out["files"] = [str(folder / "polydyne.png"), str(folder / "polydyne.json")]
@@ -81,7 +82,8 @@ def run(args) -> int:
         return 0
     import numpy as np
     i = int(np.argmin(np.abs(taus - td)))
-    pm = lambda key: (f" ± {out[key][i]:.1e}" if key in out else "")
+    pm = lambda key: (f" ± {out[key][i]:.1e}" if out.get(key) and out[key][i] is not None
+                      else " (no error estimate)")
     print(f"polydyne designed for tau = {td:g} (q = {args.q:g}), {taus.size} taus from "
           f"{taus[0]:g} to {taus[-1]:g}")
     print(f"at tau = {taus[i]:g}: U0 = {out['polydyne:U0'][i]:.3e}{pm('polydyne:U0_error')} "

@@ -28,9 +28,11 @@ class Compensation:
     warnings: list = field(default_factory=list)
 
     def as_dict(self) -> dict:
+        """JSON's view: an estimate a point has none of is null (JSON has no NaN)."""
+        def cells(values):
+            return [float(v) if np.isfinite(v) else None for v in np.asarray(values, dtype=float)]
         return {"design_tau": self.design_tau, "q": self.q, "tau": self.tau.tolist(),
-                **{k: np.asarray(v).tolist() for k, v in self.columns.items()},
-                "warnings": self.warnings}
+                **{k: cells(v) for k, v in self.columns.items()}, "warnings": self.warnings}
 
 
 def compensation(design_tau: float, taus, q: float = 0.0, *, progress: bool = False,
@@ -48,7 +50,8 @@ def compensation(design_tau: float, taus, q: float = 0.0, *, progress: bool = Fa
         target = ModelTarget.of("one_dof", {"q": q}, method="dop853", rtol=1e-10, law=law,
                                 theta=theta)
         res = sweep(target, {"tau": taus}, progress=progress, estimate=estimate)
-        for fig in ("U0", "U0_error", "U0dd", "U0dd_error"):
+        # without the tighter sweep the table's estimates are NaN: no column, not a NaN one
+        for fig in ("U0", "U0dd") + (("U0_error", "U0dd_error") if estimate else ()):
             if fig in res.columns:
                 out.columns[f"{key}:{fig}"] = np.asarray(res[fig], dtype=float)
         out.warnings += [f"{law}, tau = {t:g}: {w}" for t, w in zip(taus, res["warnings"]) if w]

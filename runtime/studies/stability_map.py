@@ -94,7 +94,8 @@ class StabilityMap:
     threshold: float
     figure: str
     check_stability: bool
-    reference: list         # the reference figure per parameter value
+    reference: list         # the reference figure per parameter value (a model without a
+                            # rise: its states at t_end by name)
     step_limit: dict        # fixed method -> b/|lambda| per parameter value (the theory line)
     cells: list = field(default_factory=list)
     reference_run: str = f"DP54 rtol {REF_RTOL:g}"   # what the figures are measured against
@@ -271,6 +272,15 @@ def reference(target) -> Reference:
                      result=res, error=float(rel), t_end=t.end, warnings=tuple(a.warnings))
 
 
+def reference_figure(model: CompiledModel, ref: Reference):
+    """The reference's headline figure as a map reports it: U0, or every state at t_end by
+    name (the figure of a model without a rise; Reference.figure is NaN there, which JSON
+    cannot hold)."""
+    if np.ndim(ref.figure) == 0 and math.isfinite(ref.figure):
+        return float(ref.figure)
+    return dict(zip(model.state_names, (float(v) for v in ref.state)))
+
+
 def step_limit(model: CompiledModel, method: str, ref: Reference) -> float:
     """b/|lambda| of the limiting eigenvalue along the reference run (the theory line)."""
     res = ref.result
@@ -400,7 +410,7 @@ def run_map(model, param: str, values, methods, *, steps=None, rtols=None,
         for k in limits:
             limits[k].append(step_limit(m, k, refs[-1]))
     smap = StabilityMap(m.name, param, values, fixed, settings, threshold, figure_name(m),
-                        check_stability, [r.figure for r in refs], limits,
+                        check_stability, [reference_figure(m, r) for r in refs], limits,
                         reference_error=[r.error for r in refs], t_end=[r.t_end for r in refs])
     for v, r in zip(values, refs):
         smap.warnings += [f"the reference at {param} = {v:g}: {w}" for w in r.warnings]
