@@ -91,12 +91,19 @@ def distance(arc: Arc, pts) -> np.ndarray:
     return np.where(ang <= span, circle, ends)
 
 
-def fit(curve, knots, tol: float, checks: int = 32, max_arcs: int = 200000) -> list[Arc]:
+MAX_ARCS = 20000
+"""The most arcs a fit makes before it gives up: a smooth cam's profile at the finest
+tolerance, 1 nm, takes under a thousand; each arc costs about half a millisecond, so a curve
+that cannot be followed (a corner, a cusp) is refused within seconds."""
+
+
+def fit(curve, knots, tol: float, checks: int = 32, max_arcs: int = MAX_ARCS) -> list[Arc]:
     """Arcs through the closed curve ``curve(u) -> (points (2, n), unit tangents (2, n))``,
     split at ``knots`` (increasing, the first and last the same point of the curve), each
     span halved until its bi-arc is within 0.9 ``tol`` of the curve at ``checks`` interior
     points: the margin covers what lies between the points checked (the deviation is smooth
-    along a span; tests/test_followers.py checks the chain at 60 points a degree)."""
+    along a span; tests/test_followers.py checks the chain at 60 points a degree).  More
+    than ``max_arcs`` is a CamdynInputError."""
     out: list[Arc] = []
     stack = [(float(a), float(b)) for a, b in zip(knots[:-1], knots[1:])][::-1]
     while stack:

@@ -7,6 +7,13 @@ import math
 from ..core.errors import CamdynInputError
 
 
+MIN_WIDTH = 1e-6
+"""The thinnest contact line and plate (m) a cam takes, the widths of roller and cam and the
+STEP plate's thickness: a micrometre, as the least radius (profile.py MIN_RADIUS); a
+force per length over a thinner line overflows a double in Hertz's pressure, and the CAD
+kernel finds no solid in a thinner plate."""
+
+
 def in_range(name: str, value, low: float = 0.0, *, strict: bool = False,
              high: float | None = None, high_open: bool = False) -> float:
     """``value`` as a float, finite and >= low (> low with ``strict``) and <= high (< high with

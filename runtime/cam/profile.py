@@ -97,6 +97,10 @@ HERTZ_SIZE = 0.1
 stress figures are warned of: Hertz's half-spaces ask a << R (Johnson sec. 4.1); at a tenth
 the surfaces within the contact stray from the parabolas of his gap by a quarter of a
 percent, and beyond it the contact soon wraps round the body."""
+CUSP_ARCS = 2000
+"""The most tangent arcs a layer of a profile that fails its undercut or cusp check is fitted
+with (a smooth one: biarc.MAX_ARCS): a small cusp's loop within 1 um takes a few hundred
+(tests/test_followers.py), a large one hundreds of thousands, a second a thousand."""
 ARC_TOLERANCE = 1e-6
 """How far (m) the tangent arcs of a curve may stray from it where the cam states no
 ``arc_tolerance`` of its own (the STEP plate's profile): a micrometre, a tenth of what a
@@ -898,7 +902,22 @@ class CamProfile:
             c = self.contact(u)
             n0, n1 = c.normal
             return np.array([c.x + shift * n0, c.y + shift * n1]), np.array([-n1, n0])
-        return fit(curve, self.cam.breakpoints, tol)
+        # round a cusp (or a loop, a corner) the arcs shrink with the tolerance: 1934 arcs at
+        # 0.1 mm, 18584 at 10 um round a flat face's cusp, past 200000 at 1 um, where the fit
+        # ran for minutes; a profile that fails its undercut or cusp check gets CUSP_ARCS
+        from .step import PROFILE_CHECKS
+
+        failed = [c for c in self.checks if c.name in PROFILE_CHECKS and not c.ok]
+        if not failed:
+            return fit(curve, self.cam.breakpoints, tol)
+        try:
+            return fit(curve, self.cam.breakpoints, tol, max_arcs=CUSP_ARCS)
+        except CamdynInputError:
+            raise CamdynInputError(
+                f"arcs={tol:g} m: the {layer} layer would take more than {CUSP_ARCS} tangent "
+                f"arcs round the {failed[0].name} its check finds (cam angle "
+                f"{failed[0].worst_deg:.2f} deg); give a coarser --arcs, or leave it out for "
+                f"the sampled polylines") from None
 
     def write_png(self, path) -> Path:
         import matplotlib

@@ -17,7 +17,7 @@ import numpy as np
 
 from ..core.errors import CamdynInputError
 from ..core.outdir import writing
-from .checks import in_range
+from .checks import MIN_WIDTH, in_range
 
 EXTRA = "pip install 'camdyn[cad]'"
 
@@ -79,11 +79,14 @@ def _session():
 
 def plate_checks(cam, thickness: float, bore: float,
                  thickness_name: str = "thickness") -> tuple[float, float]:
-    """(thickness, bore) checked against the cam: a plate of 0 < thickness < 1 m whose bore
+    """(thickness, bore) checked against the cam: a plate of 1e-6 <= thickness < 1 m whose bore
     (a diameter, 0 for none) leaves wall inside the profile's least radius; a refusal names
     the thickness ``thickness_name``."""
-    thickness = in_range(thickness_name, thickness, strict=True, high=1.0, high_open=True)
+    thickness = in_range(thickness_name, thickness, MIN_WIDTH, high=1.0, high_open=True)
     bore = in_range("bore", bore, high=1.0, high_open=True)
+    if 0 < bore < MIN_WIDTH:
+        raise CamdynInputError(f"bore={bore:g} is out of range: 0 for none, or a diameter >= "
+                               f"{MIN_WIDTH:g} m")
     _gmsh()                         # the optional extra, before any file is written
     if cam.groove:
         raise CamdynInputError("a STEP plate goes with an open cam: a groove cam's walls are in "

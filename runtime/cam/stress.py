@@ -37,7 +37,7 @@ import math
 import numpy as np
 
 from ..core.errors import CamdynInputError
-from .checks import in_range
+from .checks import MIN_WIDTH, in_range
 from .names import MATERIALS
 
 def material(text: str) -> tuple[float, float]:
@@ -144,7 +144,7 @@ class ContactSpec:
         widths = {}
         for name, w in (("roller-width", roller_width), ("cam-width", cam_width)):
             if w is not None:
-                widths[name] = in_range(name, w, strict=True, high=1000.0)
+                widths[name] = in_range(name, w, MIN_WIDTH, high=1000.0)
         self.widths = widths
         if len(materials) != 2:
             raise CamdynInputError(f"materials must be two, the cam's and the follower's, got "

@@ -77,7 +77,9 @@ def add(sub):
                         "it does not gouge a concave part (open cams)")
     p.add_argument("--arcs", type=float, default=None, metavar="TOL",
                    help="write the DXF's curves as tangent arcs (bi-arcs) within TOL m of the "
-                        "exact curves, 1e-9 <= TOL <= 1, instead of sampled polylines")
+                        "exact curves, 1e-9 <= TOL <= 1, instead of sampled polylines (a "
+                        "profile failing its undercut or cusp check has no such arcs: its "
+                        "DXF keeps the polylines, with a warning)")
     g = p.add_argument_group(
         "contact stress", "Hertz's peak contact pressure along the cam (line contact; a crowned "
         "roller's point contact), from a constant normal force, the kinetostatic one at a "
