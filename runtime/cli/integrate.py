@@ -157,6 +157,9 @@ def run(args) -> int:
         summary["state_error"] = dict(a.errors)
         summary["outputs_error"] = output_errors
         summary["error_sources"] = a.sources
+    else:       # every number beside its estimate, null where none was made (as residual's)
+        summary["state_error"] = dict.fromkeys(summary["state"])
+        summary["outputs_error"] = dict.fromkeys(outputs)
     if a.unavailable is not None:
         summary["estimate_unavailable"] = a.unavailable
     if files:
