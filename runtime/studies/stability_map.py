@@ -483,6 +483,14 @@ def study(name: str, param, methods, fixed: dict, rtols, steps, *, threshold: fl
         if k not in METHODS:
             raise CamdynInputError(f"argument --methods: unknown method {k!r}; choose from "
                                    f"{', '.join(METHODS)}")
+    # a grid no method of the map runs over would be dropped unread: refused, naming it
+    for grid, flag, adaptive, what in ((steps, "--steps", False, "a fixed step (rk4, koster)"),
+                                       (rtols, "--rtols", True, "a tolerance (dp54, dop853, "
+                                                                "rodas4, radau5, rkn12)")):
+        if grid and not any(METHODS[k].adaptive == adaptive for k in methods):
+            raise CamdynInputError(f"argument {flag}: no method of the map ({', '.join(methods)})"
+                                   f" takes {what}; leave {flag} out or add such a method to "
+                                   "--methods")
     rtols = rtols or list(np.geomspace(1e-3, 1e-10, 8))
     if any(not r < 1 for r in rtols):
         raise CamdynInputError("argument --rtols: every rtol must be < 1")
