@@ -96,10 +96,10 @@ def mean_ratios(opts, p: dict) -> tuple[float, float]:
         if getattr(opts, "flat_face", False):
             return 0.0, 1.0
         return p["h_m"] / (_half_radius(opts, p) * p["beta_m"]), 1.0
-    from ..core.compiled import load
     from ..core.laws import choose
+    from ..core.variants import options_model
 
-    model = load(opts.name)
+    model = options_model(opts)         # pre-generated, or built on demand (a rocker in a groove)
     pv = model.parameter_vector({k: v for k, v in p.items() if k in model.parameter_names})
     pv[model.parameter_names.index("beta_0")] = 0.0
     law = choose("uniform")
