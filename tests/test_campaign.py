@@ -375,8 +375,9 @@ def _answer(argv, out, verdict="answered"):
             finite_figures(record)
             carries_estimates(argv[0], record)
         else:
-            if argv[0] == "laws":   # App. 2: the uniform law's H''max is infinite (an impulse)
-                out = "\n".join(l for l in out.splitlines() if not l.startswith("uniform "))
+            if argv[0] == "laws":   # inf is a value there, as the tables say: the impact
+                # sensitivity where H'' jumps (3.15)-(3.16), the uniform law's H''max (App. 2)
+                out = re.sub(r"(?<=\s)[-+]?inf(?=\s|$)", "", out, flags=re.M)
             bad = _NON_FINITE.search(out)
             assert not bad, f"a non-finite number in the text: {out[max(0, bad.start() - 200):bad.end() + 50]}"
     except (AssertionError, ValueError) as exc:
@@ -630,7 +631,7 @@ def test_quick_campaign_over_grids_maps_and_ladders(argv, law_folder, tmp_path_f
 
 
 @pytest.mark.slow
-@LONG
+@many(150)
 @given(argv=st.one_of(residual_argv(), integrate_argv(), sweep_argv(), stability_argv(),
                       precision_argv()))
 def test_campaign_over_the_models_commands(argv, law_folder, tmp_path_factory):
@@ -638,6 +639,41 @@ def test_campaign_over_the_models_commands(argv, law_folder, tmp_path_factory):
     if argv[0] in ("sweep", "stability", "precision"):
         argv = _spread(with_out(argv, tmp_path_factory.mktemp("o")))
     judge(argv, *run(argv))
+
+
+LAW_FILE_TAKERS = {
+    "residual": ["residual", "--model", "one-dof", "--tau", "0.15", "--law"],
+    "integrate": ["integrate", "one_dof", "--t-end", "1", "--law"],
+    "sweep": ["sweep", "one_dof", "--grid", "tau=0.1,0.2", "--quiet", "--out", "OUT", "--law"],
+    "stability": ["stability", "one_dof", "--methods", "rk4", "--steps", "0.01", "--param",
+                  "tau=0.2,0.3", "--quiet", "--out", "OUT", "--law"],
+    "design": ["design", "--stroke", "0.02", "--tau", "0.15", "--fa", "0", "--quiet", "--law"],
+    "profile": ["profile", "--stroke", "0.02", "--base-radius", "0.04", "--roller-radius",
+                "0.01", "--out", "OUT", "--law"],
+    "profile --return-law": ["profile", "--stroke", "0.02", "--base-radius", "0.04",
+                             "--roller-radius", "0.01", "--out", "OUT", "--return-law"],
+    "laws --rise": ["laws", "--rise"],
+}
+"""Every command that takes a law file, with quick arguments, the file last."""
+
+
+@pytest.mark.parametrize("taker, file", [
+    *((t, "binary.csv") for t in sorted(LAW_FILE_TAKERS)),
+    *(("residual", f) for f in ("latin1.txt", "nul.dat", "empty.toml", "broken.toml",
+                                "scalar.toml", "folder.csv", "pipe.csv")),
+    ("profile", "pipe.csv"), ("design", "scalar.toml")])
+def test_a_law_file_that_cannot_be_read_is_one_line_everywhere(taker, file, law_folder,
+                                                                tmp_path):
+    """`residual --law BINARYFILE` ended in a UnicodeDecodeError traceback: every command
+    that takes a law file refuses one that cannot be read in one line naming it (status 2,
+    nothing written), whatever is wrong with it (not UTF-8, a NUL byte, empty, not TOML, a
+    TOML of the wrong shape, a folder, a pipe: never opened)."""
+    argv = [str(tmp_path / "out") if a == "OUT" else a for a in LAW_FILE_TAKERS[taker]]
+    argv.append(str(law_folder / file))
+    code, out, err = run(argv)
+    assert judge(argv, code, out, err, feature="findings") == "refused"
+    assert file in err
+    assert not (tmp_path / "out").exists() or os.listdir(tmp_path / "out") == []
 
 
 # -- the small commands: laws, polydyne, figures, scenes, check -------------------------------
@@ -721,7 +757,7 @@ def test_quick_campaign_over_the_small_commands(argv, law_folder, tmp_path_facto
 
 
 @pytest.mark.slow
-@many(120)
+@many(60)
 @given(argv=small_argv())
 def test_campaign_over_the_small_commands(argv, law_folder, tmp_path_factory):
     small_case(laws_in(argv, law_folder), tmp_path_factory)
@@ -833,7 +869,7 @@ def test_quick_campaign_over_out_folders(case, tmp_path, monkeypatch):
 
 
 @pytest.mark.slow
-@many(60)
+@many(30)
 @given(case=out_hazards())
 def test_campaign_over_out_folders(case, tmp_path, monkeypatch):
     out_hazard(case, tmp_path, monkeypatch)
@@ -921,7 +957,7 @@ def test_quick_campaign_over_mutated_scenes(m, tmp_path_factory):
 
 
 @pytest.mark.slow
-@many(100)
+@many(50)
 @given(m=mutations(), command_=st.sampled_from(["simulate", "run", "precision"]))
 def test_campaign_over_mutated_scenes(m, command_, tmp_path_factory):
     folder = tmp_path_factory.mktemp("s")
