@@ -676,9 +676,11 @@ class CamProfile:
                        f"on this {shape} part, down to {rho * 1e3:.4g} mm, is below the roller "
                        f"radius {rr * 1e3:.4g} mm. Use a larger base circle, a longer rise/return "
                        f"angle, a smaller stroke or a smaller roller.")
-            else:
+            elif math.isfinite(rho):
                 msg = (f"no undercut of the {wall}: smallest {shape} |rho_p| = {rho * 1e3:.4g} mm "
                        f"at {math.degrees(at):.2f} deg > roller radius {rr * 1e3:.4g} mm")
+            else:           # no part of that shape (a groove's outer wall on a convex pitch)
+                msg = f"no undercut of the {wall}: the pitch curve has no {shape} part"
             yield self._with_velocity_jumps(
                 Check(name, not runs, math.degrees(at), rho, rr, _span_degrees(runs), msg,
                       rho_error),
