@@ -809,6 +809,24 @@ class Ran(AssertionError):
     """A run started where the command should have refused first."""
 
 
+BINDERS = ("camdyn.runtime.targets.camshaft1_study", "camdyn.runtime.studies.stability_map",
+           "camdyn.thesis.design.shape_sweep")
+"""Modules that bind the runs' entry point at their import (from ... import answer): imported
+before it is replaced, or one first imported meanwhile would keep the replacement for good."""
+
+
+def no_runs(monkeypatch, entry: str, what: str) -> None:
+    """``entry`` (a dotted path) fails the test if called while ``monkeypatch`` holds."""
+    import importlib
+
+    for name in BINDERS:
+        importlib.import_module(name)
+
+    def ran(*a, **k):
+        raise Ran(f"{what}: a run started before the command refused")
+    monkeypatch.setattr(entry, ran)
+
+
 def _read_only(monkeypatch, folder: Path) -> None:
     """``folder`` read-only: chmod 0o500, and where that does not stop this process (root),
     os.access says so as it would (as tests/test_cli_findings.py does)."""
@@ -843,9 +861,7 @@ def out_hazard(case, tmp_path, monkeypatch):
         (out / files[pick % len(files)]).write_bytes(mine)
     with monkeypatch.context() as mp:
         if entry:
-            def ran(*a, **k):
-                raise Ran(f"{name}: a run started before --out was refused")
-            mp.setattr(entry, ran)
+            no_runs(mp, entry, name)
         if hazard == "read-only":
             _read_only(mp, out)
         try:

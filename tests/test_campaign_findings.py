@@ -23,6 +23,11 @@
 * `camdyn integrate --no-error-estimate --json` printed the states and outputs with no
   estimate and no word of it (the text says "(no error estimate)"): each now has its null
   estimate beside it, as `camdyn residual` gives.
+* `camdyn stability --methods dp54 --steps 0.01` mapped dp54 over its default tolerances and
+  dropped the steps unread (and --rtols beside fixed-step methods only, likewise); a grid no
+  method of the map takes is now refused, naming it.
+* `camdyn profile --groove` of a pitch curve convex all round said of the outer wall
+  "smallest concave |rho_p| = inf mm at 19.43 deg": there is no concave part, and it says so.
 """
 from __future__ import annotations
 
@@ -229,3 +234,61 @@ def test_integrate_without_estimates_says_so_beside_every_number():
     w = 2 * math.pi / 0.3
     amplitude = math.hypot(js["state"]["X"] - 1, js["state"]["Xd"] / w)
     assert abs(amplitude - U0) <= js["state_error"]["X"] + js["state_error"]["Xd"] / w + 1e-12
+
+
+@pytest.mark.parametrize("methods, grid, words", [
+    (["dp54"], ["--steps", "0.01"], "argument --steps: no method of the map (dp54) takes a "
+                                    "fixed step"),
+    (["dop853", "rodas4"], ["--steps", "0.01,0.02"], "argument --steps: no method"),
+    (["rk4"], ["--rtols", "1e-6"], "argument --rtols: no method of the map (rk4) takes a "
+                                   "tolerance"),
+    (["rk4", "koster"], ["--rtols", "1e-6,1e-8"], "argument --rtols: no method"),
+])
+def test_stability_refuses_a_grid_no_method_takes(methods, grid, words, tmp_path, monkeypatch):
+    def ran(*a, **k):
+        raise Ran("the map ran")
+    monkeypatch.setattr("camdyn.runtime.studies.stability_map.run_map", ran)
+    monkeypatch.setattr("camdyn.runtime.studies.stability_map.reference", ran)
+    code, out, err = run(["stability", "one_dof", "--param", "tau=0.2,0.3", "--methods",
+                          *methods, *grid, "--quiet", "--out", str(tmp_path)])
+    (line,) = err.strip().splitlines()
+    assert code == 2 and not out and line.startswith("camdyn stability: error: "), err
+    assert words in line, line
+    assert os.listdir(tmp_path) == []
+
+
+def _pitch_curvature(cam, n=72001):
+    """The signed curvature of the sampled pitch curve (x' y'' - y' x'')/(x'^2 + y'^2)^(3/2)
+    by central differences over the turn (n points), independent of the profile's formulas."""
+    import numpy as np
+
+    phi = np.linspace(0.0, 2 * np.pi, n, endpoint=False)
+    p = cam.pitch(phi)
+    x, y = p[0], p[1]
+    h = phi[1] - phi[0]
+    dx, dy = (np.roll(x, -1) - np.roll(x, 1)) / (2 * h), (np.roll(y, -1) - np.roll(y, 1)) / (2 * h)
+    ddx = (np.roll(x, -1) - 2 * x + np.roll(x, 1)) / h**2
+    ddy = (np.roll(y, -1) - 2 * y + np.roll(y, 1)) / h**2
+    return (dx * ddy - dy * ddx) / (dx * dx + dy * dy) ** 1.5
+
+
+@pytest.mark.parametrize("stroke, base, concave", [(0.02, 0.04, False), (0.04, 0.01, True)])
+def test_a_groove_s_outer_wall_says_whether_the_pitch_curve_is_concave(stroke, base, concave):
+    """The outer wall's check against the pitch curve's own curvature: convex all round (no
+    concave part: said so, no infinite radius), or concave somewhere (its least concave
+    radius, a number, within 1e-3 of the sampled curve's)."""
+    import numpy as np
+
+    from camdyn.runtime.cam.profile import CamProfile
+
+    cam = CamProfile(stroke=stroke, base_radius=base, roller_radius=0.005, groove=True,
+                     points_per_degree=2)
+    kappa = _pitch_curvature(cam)
+    sign = np.sign(np.median(kappa))               # the pitch curve's sense of turning
+    (outer,) = [c for c in cam.checks if c.name == "undercut outer"]
+    assert (sign * kappa < 0).any() == concave
+    if concave:
+        least = 1 / np.max(-sign * kappa)
+        assert "inf" not in outer.message and outer.value == pytest.approx(least, rel=1e-3)
+    else:
+        assert outer.message == "no undercut of the outer wall: the pitch curve has no concave part"

@@ -390,13 +390,10 @@ BEAM_FINDINGS = {
 def test_the_beam_findings_are_refused_before_any_run(name, monkeypatch):
     """Each is refused in one line naming its flag, and no run starts (the run's entry point
     fails the test if reached)."""
-    from .test_campaign import Ran
+    from .test_campaign import no_runs
 
     args, flag_ = BEAM_FINDINGS[name]
-
-    def ran(*a, **k):
-        raise Ran("a run started")
-    monkeypatch.setattr("camdyn.runtime.measure.contract.answer", ran)
+    no_runs(monkeypatch, "camdyn.runtime.measure.contract.answer", "beam-follower")
     argv = ["beam-follower", *args]
     code, out, err = run(argv)
     assert judge(argv, code, out, err, feature="findings") == "refused"
