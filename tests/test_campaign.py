@@ -199,12 +199,15 @@ def run_apart(argv: list[str], limit: float = LIMIT, env: dict | None = None,
     """camdyn ``argv`` in a process of its own (where a crash or a hang in a compiled loop
     must not take the test session with it): a signal's death is the status "crash: ...", a
     timeout "hang: ..."."""
+    t0 = time.monotonic()
     try:
         p = subprocess.run([sys.executable, "-m", "camdyn.runtime.cli", *argv],
                            capture_output=True, text=True, timeout=limit,
                            env={**os.environ, **(env or {})}, cwd=cwd)
     except subprocess.TimeoutExpired as exc:
         return (f"hang: no answer within {limit:g} s", exc.stdout or "", exc.stderr or "")
+    finally:
+        _LAST["seconds"] = time.monotonic() - t0
     code = p.returncode
     if code < 0:
         code = f"crash: killed by {signal.Signals(-code).name}"
