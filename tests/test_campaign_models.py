@@ -286,8 +286,9 @@ NOTE = re.compile(r"camdyn: cache entry for model file (\w+)\.py was damaged \((
 
 LOADED_FOREIGN = "module foreign, sums matched"
 """The one fault only a load finds: that process has the foreign module's file open under
-the entry's name, and the rebuilt module at the same path does not load in it (dlopen keeps
-the first file it opened at a path): reported, held by the xfail test below."""
+the entry's name, and dlopen keeps the first file it opened at a path, so the rebuilt module
+is loaded from a fresh copy of its file (runtime/core/ondemand.py _load): held by the test
+below."""
 
 
 @pytest.mark.slow
@@ -335,10 +336,6 @@ def test_campaign_a_damaged_entry_is_rebuilt_or_refused(fault, models, tmp_path_
 
 
 @pytest.mark.slow
-@pytest.mark.xfail(strict=True, reason="runtime/core/ondemand.py loads the rebuilt module "
-                   "from the path the foreign one was opened at, in the same process: 'the "
-                   "compiled module just built ... does not load' (exit 1); the next process "
-                   "loads it")
 def test_a_foreign_module_under_matching_checksums_is_rebuilt_and_loaded(models,
                                                                          tmp_path_factory):
     """Another model's compiled module in the entry, its checksum made to match: found when

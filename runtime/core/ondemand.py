@@ -289,12 +289,29 @@ def _build(args: list, label: str, entry: Path, say, why: str) -> dict:
     return info
 
 
+_OPENED: set = set()
+"""Compiled modules this process has asked the dynamic loader for, by path.  The loader keeps
+the first library it opened at a path for the process's life: one that opened but did not
+load (a foreign module put in an entry's place) would come back in place of its rebuilt
+successor, so a path asked for again is loaded from a fresh copy of its file."""
+
+
 def _load(entry: Path, info: dict) -> CompiledModel:
     name, path = info["name"], entry / info["extension"]
-    loader = importlib.machinery.ExtensionFileLoader(name, str(path))
-    spec = importlib.util.spec_from_file_location(name, path, loader=loader)
-    module = importlib.util.module_from_spec(spec)
-    loader.exec_module(module)
+    fresh = None
+    if path in _OPENED:
+        fresh = Path(tempfile.mkdtemp(prefix=f"camdyn-{name}-"))
+        shutil.copy2(path, fresh / path.name)
+    _OPENED.add(path)
+    where = path if fresh is None else fresh / path.name
+    try:
+        loader = importlib.machinery.ExtensionFileLoader(name, str(where))
+        spec = importlib.util.spec_from_file_location(name, where, loader=loader)
+        module = importlib.util.module_from_spec(spec)
+        loader.exec_module(module)
+    finally:
+        if fresh is not None:       # the loaded library stays mapped without its file
+            shutil.rmtree(fresh, ignore_errors=True)
     return CompiledModel(name, module)
 
 
