@@ -8,6 +8,8 @@ import sys
 import numpy as np
 import pytest
 
+from camdyn.runtime.core.errors import CamdynInputError
+
 from camdyn.runtime.measure import references as closed_forms
 from camdyn.runtime.measure.envelope import envelope, tau_grid
 from camdyn.thesis.design import selection
@@ -72,6 +74,36 @@ def test_pressure_angle_of_the_cycloid_cam():
     want = np.degrees(np.arctan(ds / (0.031 + s))).max()
     assert row["alpha_max_deg"] == pytest.approx(want, abs=0.01)
     assert 0 < row["rho_min"] < 0.031
+
+
+@pytest.mark.parametrize("angles", [(120.0, 60.0, 120.0, 60.0), pytest.param(
+    (60.0, 120.0, 100.0, 80.0), marks=pytest.mark.slow)])
+def test_laws_take_the_real_angles(angles):
+    """camdyn laws --angles: alpha_max of the cycloidal cam at the cam's own rise angle (25 mm
+    in 120 deg: 21.2 deg, not the 27-32 deg of a 90 deg rise), against the closed form
+    tan alpha = s'/(r_b + r_r + s), s' = h/beta (1 - cos 2 pi x), over 1e5 angles of the rise
+    (the return mirrors it): within its estimate and 0.01 deg; the uniform law's corners give
+    a least radius of 0 with the check's warning."""
+    rows = {r["law"]: r for r in selection.select(
+        0.1, None, None, 0.025, 0.04, 0.01, estimate=False,
+        angles=",".join(f"{a:g}" for a in angles)).rows}
+    beta = math.radians(min(angles[0], angles[2]))        # the steeper of rise and return
+    x = np.linspace(0, 1, 100001)
+    s = 0.025 * (x - np.sin(2 * np.pi * x) / (2 * np.pi))
+    ds = 0.025 / beta * (1 - np.cos(2 * np.pi * x))
+    want = np.degrees(np.arctan(ds / (0.05 + s))).max()
+    row = rows["cycloidal"]
+    assert abs(row["alpha_max_deg"] - want) <= max(row["alpha_max_deg_error"], 0.01)
+    assert rows["uniform"]["rho_min"] == 0.0
+    assert any("jumps" in w for w in rows["uniform"]["warnings"])
+
+
+def test_laws_angles_are_refused_alone_or_bad():
+    for kw, words in (({"angles": "120,60,120,60"}, "goes with --stroke"),
+                      ({"angles": "120,60,100,60", "stroke": 0.025, "base_radius": 0.04,
+                        "roller_radius": 0.01}, "argument --angles")):
+        with pytest.raises(CamdynInputError, match=words):
+            selection.select(0.1, estimate=False, **kw)
 
 
 def camdyn(*args):

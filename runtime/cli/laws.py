@@ -28,12 +28,16 @@ def add(sub):
                     help="Fa of the selection, 0 <= Fa <= 100 (default 0)")
     lw.add_argument("--stroke", type=float, default=None, metavar="M",
                     help="with --tau, --base-radius and --roller-radius: stroke in m, 0 <= h < 1000; "
-                         "adds the cam's least radius of curvature and largest pressure angle "
-                         "(90/90/90/90 deg cam)")
+                         "adds the cam's least radius of curvature and largest pressure angle, "
+                         "at the cam's --angles")
     lw.add_argument("--base-radius", type=float, default=None, metavar="M",
                     help="with --stroke: base circle radius in m, 1e-6 <= r_b < 1000")
     lw.add_argument("--roller-radius", type=float, default=None, metavar="M",
                     help="with --stroke: roller radius in m, 1e-6 <= r_r < 1000")
+    lw.add_argument("--angles", default=None, metavar="R,D,F,D",
+                    help="with --stroke: the cam's rise, outer dwell, return and inner dwell in "
+                         "deg, summing to 360, as camdyn profile takes them (default "
+                         "90,90,90,90): the pressure angle and curvature are the real cam's")
     add_out_option(lw, default=None, help="folder for laws_selection.png/.csv "
                                           "(laws_sweep.png/.csv with --sweep)")
     lw.add_argument("--sweep", default=None, metavar="SCENE",
@@ -71,6 +75,7 @@ def run(args) -> int:
         elif chosen:
             result = selection.select(args.tau, args.fa, args.theta, args.stroke,
                                       args.base_radius, args.roller_radius, out=args.out,
+                                      angles=args.angles,
                                       progress=lambda msg: print(f"{PROG}: {msg}", file=sys.stderr,
                                                                  flush=True),
                                       estimate=not args.no_error_estimate)
@@ -150,7 +155,7 @@ def _stray_option(args) -> str | None:
     given = lambda name: getattr(args, name, None) is not None and \
         getattr(args, name) is not False                                    # noqa: E731
     sweep_only = ("law", "n", "values")
-    selection_only = ("tau", "fa", "stroke", "base_radius", "roller_radius")
+    selection_only = ("tau", "fa", "stroke", "base_radius", "roller_radius", "angles")
     flag = lambda name: "--" + name.replace("_", "-")                       # noqa: E731
     if given("rise"):
         bad = [n for n in ("sweep", *sweep_only, *selection_only, "theta", "out",
@@ -229,6 +234,9 @@ def _print_selection(s) -> None:
     head = ("law",) + tuple(t for _, t in s.columns)
     table = [head] + [(r["law"],) + tuple(_cell(r, k) for k, _ in s.columns) for r in s.rows]
     _print_table(table)
+    if s.angles_deg is not None:
+        print(f"\nThe cam's curvature and pressure angle at rise, outer dwell, return, inner "
+              f"dwell {', '.join(f'{a:g}' for a in s.angles_deg)} deg.", end="")
     print(f"\nSelection criteria of thesis sec. 9.2.2 at tau = {s.tau:g}, Fa = {s.Fa:g}: "
           "envelopes through the maxima of CAMSHAFT-1's U0 and U0'' around tau; impact = "
           "r_e/S^(2/3) after backlash (3.15)-(3.16), inf where H'' jumps; lower is better in "

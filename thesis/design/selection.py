@@ -150,6 +150,10 @@ def criteria(key: str, tau: float, Fa: float, theta=None, geometry: dict | None 
         finite = math.isfinite(under.value)
         out["rho_min"] = under.value - cam.roller_radius if finite else None
         out["rho_min_error"] = under.error if finite else None
+        if not under.ok and "jumps" in under.message:
+            # a velocity that jumps cuts a corner into the profile: its radius there is 0
+            out["rho_min"], out["rho_min_error"] = 0.0, 0.0
+            out["warnings"].append(under.message)
         alpha = checks["pressure angle"]
         out["alpha_max_deg"], out["alpha_max_deg_error"] = alpha.value, alpha.error
     return out
@@ -241,6 +245,7 @@ class Selection:
     rows: list
     columns: list               # (key, title) of COLUMNS
     files: list = field(default_factory=list)
+    angles_deg: tuple | None = None     # the cam's, with a geometry
 
     @property
     def warnings(self) -> list:
@@ -251,7 +256,8 @@ class Selection:
         """The rows with infinities as None (JSON has none), the warnings and the files."""
         clean = [{k: (None if isinstance(v, float) and math.isinf(v) else v) for k, v in r.items()}
                  for r in self.rows]
-        return {"rows": clean, "warnings": self.warnings, "files": self.files}
+        return {"rows": clean, "warnings": self.warnings, "files": self.files,
+                "angles_deg": None if self.angles_deg is None else list(self.angles_deg)}
 
 
 def write_csv(rows: list[dict], columns, path) -> str:
@@ -271,10 +277,13 @@ FILES = ("laws_selection.csv", "laws_selection.png")
 
 
 def select(tau, Fa=None, theta=None, stroke=None, base_radius=None, roller_radius=None,
-           out=None, progress=None, estimate: bool = True) -> Selection:
+           out=None, progress=None, estimate: bool = True, angles=None) -> Selection:
     """`camdyn laws --tau T [--fa F]`: the criteria of sec. 9.2.2 for every law (Fa = 0 when
     not given), with a cam geometry when all three of stroke, base and roller radius are
-    given; with ``out``, laws_selection.csv and laws_selection.png there."""
+    given, at the cam's ``angles`` ('R,D,F,D' in deg, default 90,90,90,90); with ``out``,
+    laws_selection.csv and laws_selection.png there."""
+    from .turn import angles_argument
+
     if tau is None:
         raise CamdynInputError("argument --tau: required with --fa (0 < tau < 0.99)")
     out_folder(out, files=FILES)
@@ -282,12 +291,18 @@ def select(tau, Fa=None, theta=None, stroke=None, base_radius=None, roller_radiu
     if any(g is not None for g in geo) and not all(g is not None for g in geo):
         raise CamdynInputError("arguments --stroke, --base-radius, --roller-radius: give all "
                                "three for the cam's curvature and pressure angle")
+    angles_deg = angles_argument(angles)
+    if angles_deg is not None and stroke is None:
+        raise CamdynInputError("argument --angles: goes with --stroke, --base-radius and "
+                               "--roller-radius (the cam's curvature and pressure angle)")
     geometry = None if stroke is None else {
-        "stroke": stroke, "base_radius": base_radius, "roller_radius": roller_radius}
+        "stroke": stroke, "base_radius": base_radius, "roller_radius": roller_radius,
+        **({} if angles_deg is None else {"angles_deg": angles_deg})}
     Fa = 0.0 if Fa is None else Fa
     rows = table(tau, Fa, theta, geometry, progress, estimate)
     cols = [(k, t) for k, t in COLUMNS if any(r.get(k) is not None for r in rows)]
-    result = Selection(tau, Fa, rows, cols)
+    result = Selection(tau, Fa, rows, cols, angles_deg=None if geometry is None
+                       else tuple(angles_deg or (90.0, 90.0, 90.0, 90.0)))
     if out:
         folder = out_folder(out)
         result.files = [write_csv(rows, cols, folder / FILES[0]), chart(rows, folder / FILES[1])]
