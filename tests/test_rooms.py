@@ -8,8 +8,8 @@ module reads another module's private (underscore) names.  Checked on every
 import statement (module level and inside functions) of every module, with relative imports
 resolved, and on the cimports of the generated Cython.  The one sanctioned crossing is the
 command line's dispatch: camdyn.runtime.cli hands `camdyn derive` to camdyn.derive and
-`camdyn check`, `camdyn laws`, `camdyn design` and `camdyn figures` to camdyn.thesis, inside
-those commands' run() only.
+`camdyn check`, `camdyn laws`, `camdyn design`, `camdyn figures` and `camdyn scenes --template`
+to camdyn.thesis, inside those commands' run() only.
 """
 import ast
 import json
@@ -28,6 +28,8 @@ DISPATCH = {("runtime/cli/derive.py", "run"): "camdyn.derive",
             ("runtime/cli/laws.py", "run"): "camdyn.thesis",
             ("runtime/cli/figures.py", "run"): "camdyn.thesis",
             ("runtime/cli/design.py", "run"): "camdyn.thesis",
+            # the machine file's template (camdyn scenes --template machine)
+            ("runtime/cli/scenes.py", "run"): "camdyn.thesis",
             # the design page's verdict is camdyn design's, made for the page
             ("runtime/cli/page.py", "verdict"): "camdyn.thesis"}
 
