@@ -380,10 +380,14 @@ def from_options(args, spec, units):
 
 
 def _rpm_unless_given(raw: str) -> str:
-    """--speed without a unit is in r.p.m., as the single-speed design's --speed is."""
+    """--speed of plain numbers (LO:HI or one) is in r.p.m., as the single-speed design's
+    --speed is; anything else goes to the units rule as it is."""
     text = str(raw).strip()
-    return text if any(c.isalpha() for c in text.replace("e", "").replace("E", "")) \
-        else f"{text} rpm"
+    try:
+        [float(x) for x in text.split(":")]
+    except ValueError:
+        return text
+    return f"{text} rpm"
 
 
 def _band(args, lib) -> int:

@@ -211,7 +211,7 @@ def _est(obj, key: str) -> float | None:
 
 def _residual_key(a: LawAnswer):
     r = a.residual
-    return (math.inf, 0.0) if r is None else (r.value, r.error)
+    return (math.inf, 0.0) if r is None else (r.value, r.error or 0.0)
 
 
 def _preload_key(a: LawAnswer):
@@ -274,7 +274,7 @@ def rank(answers: list) -> list:
 def _why_here(a: LawAnswer, before: LawAnswer | None) -> str:
     """The figure that places ``a`` after ``before``."""
     r = a.residual
-    text = f"worst residual {r.value * 1e6:.4g}{plus_minus(r.error * 1e6)} um"
+    text = f"worst residual {r.value * 1e6:.4g}{plus_minus(_times(r.error, 1e6))} um"
     if before is not None and _tied(_residual_key(before), _residual_key(a)):
         if _tied(_preload_key(before), _preload_key(a)):
             p = a.peaks
@@ -343,6 +343,8 @@ def law_json(m: Machine, a: LawAnswer) -> dict:
     r, p, sp, c, dr = a.residual, a.peaks, a.spring, a.contact, a.drive
     if r is not None:
         _figure(d, "residual_max", r.value, r.error)
+        if getattr(r, "model", ""):      # the ladder's model, or one above it past tau = 1
+            d["residual_model"] = r.model
         _figure(d, "residual_max_speed", r.speed, r.speed_error)
         _figure(d, "residual_max_speed_rpm", units.speed_in(r.speed, "rpm"),
                 units.speed_in(r.speed_error, "rpm"))
@@ -428,7 +430,8 @@ def as_json(a: BandAnswer) -> dict:
 
 def all_warnings(a: BandAnswer) -> list:
     """The run's warnings: the machine's, then each law's named by it."""
-    return list(a.warnings) + [f"{x.law}: {w}" for x in a.laws for w in x.warnings]
+    return list(a.warnings) + [w if w.startswith(f"{x.law}:") else f"{x.law}: {w}"
+                               for x in a.laws for w in x.warnings]
 
 
 # -- text (mm, um, MPa, rpm, N or N m) ----------------------------------------------------------

@@ -16,7 +16,7 @@ import numpy as np
 from camdyn.runtime.core.outdir import writing
 from camdyn.runtime.measure.contract import chart_note
 
-from . import units
+from . import answer, units
 
 FILES = ("svaj.png", "residual_band.png", "contact_force.png", "jump_margin.png",
          "cam_stress.png")
@@ -56,21 +56,27 @@ def _save(fig, path):
 
 
 def _footnote(fig, text: str) -> None:
+    """The estimates and warnings below the axes (fixed margins: tight_layout measures every
+    label, the slowest step of a chart)."""
     lines = text.count("\n") + 1
+    height = fig.get_size_inches()[1]
     fig.text(0.01, 0.01, text, fontsize=6.5, va="bottom")
-    fig.tight_layout(rect=(0, 0.025 * lines + 0.01, 1, 1))
+    fig.subplots_adjust(left=0.1, right=0.97, top=0.93,
+                        bottom=min(0.4, (0.5 + 0.12 * lines) / height), hspace=0.25,
+                        wspace=0.3)
 
 
 def _speed(a, w):
     return units.speed_in(np.asarray(w, dtype=float), a.machine.speed_unit)
 
 
-def _band(ax, a) -> None:
-    """The band shaded, a little of either side shown."""
+def _band(ax, a, clip: bool = True) -> None:
+    """The band shaded (``clip``: the axis the band and a little either side of it)."""
     lo, hi = _speed(a, a.machine.speeds)
     ax.axvspan(lo, hi, color="0.88", lw=0, zorder=0, label="the speed band")
-    pad = 0.05 * (hi - lo) if hi > lo else 0.05 * hi
-    ax.set_xlim(lo - pad, hi + pad)
+    if clip:
+        pad = 0.05 * (hi - lo) if hi > lo else 0.05 * hi
+        ax.set_xlim(lo - pad, hi + pad)
 
 
 # -- SVAJ ----------------------------------------------------------------------------------------
@@ -116,8 +122,8 @@ def svaj(a):
 
 
 def _e(obj, key):
-    v = getattr(obj, f"{key}_error", None)
-    return 0.0 if v is None else v
+    """A figure's estimate, None where it has none (chart_note says so)."""
+    return getattr(obj, f"{key}_error", None)
 
 
 # -- the worst residual over the band ------------------------------------------------------------
@@ -127,7 +133,7 @@ def residual_band(a):
     worst point of each marked; log scale (the laws' residuals lie decades apart)."""
     plt = _pyplot()
     m = a.machine
-    fig, ax = plt.subplots(figsize=(8, 5))
+    fig, ax = plt.subplots(figsize=(9.5, 5.5))
     _band(ax, a)
     est = {}
     floor = None
@@ -147,23 +153,30 @@ def residual_band(a):
         ax.plot([_speed(a, r.speed)], [r.value * 1e6], "o", color=line.get_color(), ms=4)
         est[f"{x.law} worst (um)"] = (r.value * 1e6, r.error * 1e6)
     if floor is not None:
+        from matplotlib.ticker import FuncFormatter, NullFormatter
+
         ax.set_yscale("log")
         ax.set_ylim(bottom=floor / 3)
+        # plain numbers, no minor labels: the log axis's mathtext labels are slow to lay out
+        ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+        ax.yaxis.set_minor_formatter(NullFormatter())
     ax.set_xlabel(f"camshaft speed ({m.speed_unit})")
     ax.set_ylabel("worst residual amplitude (um)")
     ax.set_title(f"{m.title}: the residual vibration over the band, U0 (3.5) times the stroke "
                  f"({a.ladder.model})", fontsize=9)
-    ax.grid(True, which="both", lw=0.3)
-    ax.legend(fontsize=7, ncol=2)
-    _footnote(fig, chart_note(est, []) + "\n(bands: the estimates; dots: each law's worst)")
+    ax.grid(True, lw=0.3)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    _footnote(fig, chart_note(est, answer.all_warnings(a))
+              + "\n(bands: the estimates; dots: each law's worst)")
+    fig.subplots_adjust(right=0.78)
     return fig
 
 
 # -- the contact force ---------------------------------------------------------------------------
 
 def contact_force(a):
-    """The chosen law's contact force (N) over the turn at the lowest and the top speed,
-    beside the spring's force k x + F_0 alone."""
+    """The chosen law's contact force (N) over the turn at the lowest and the top speed (its
+    estimate shaded), beside the spring's force k x + F_0 alone."""
     from . import kinematics
 
     best = a.chosen
@@ -174,9 +187,16 @@ def contact_force(a):
     m = a.machine
     fig, ax = plt.subplots(figsize=(8, 4.5))
     th = np.asarray(sp.theta_deg, dtype=float)
-    lo, hi = (units.speed_in(w, m.speed_unit) for w in m.speeds)
-    ax.plot(th, sp.contact_force_lo, lw=1.0, label=f"{lo:.4g} {m.speed_unit}")
-    ax.plot(th, sp.contact_force_hi, lw=1.4, label=f"{hi:.4g} {m.speed_unit}")
+    est = {}
+    for w, key in zip(m.speeds, ("lo", "hi")):
+        f = np.asarray(getattr(sp, f"contact_force_{key}"), dtype=float)
+        e = getattr(sp, f"contact_force_{key}_error", None)
+        label = f"{units.speed_in(w, m.speed_unit):.4g} {m.speed_unit}"
+        line, = ax.plot(th, f, lw=1.0 if key == "lo" else 1.4, label=label)
+        if e is not None:
+            e = np.asarray(e, dtype=float)
+            ax.fill_between(th, f - e, f + e, color=line.get_color(), alpha=0.25, lw=0)
+        est[f"force at {label} (N)"] = (f, e if e is not None else [None])
     k = kinematics.svaj(m, best.law, m.speeds[1], n=SVAJ_POINTS, theta=best.theta)
     ax.plot(k.theta_deg, m.output_spring_rate * np.asarray(k.s) + sp.preload_used, "k--",
             lw=0.8, label="the spring alone, k x + F0")
@@ -186,44 +206,52 @@ def contact_force(a):
     ax.set_title(f"{m.title}: {best.law}, preload {sp.preload_used:.4g} N, rate "
                  f"{m.output_spring_rate:.4g} N/m", fontsize=9)
     ax.grid(True, lw=0.3)
-    ax.legend(fontsize=7)
-    est = {"least force (N)": (float(np.min(sp.contact_force_hi)), _e(sp, "preload_min")),
-           "preload (N)": (sp.preload_used, _e(sp, "preload_min"))}
+    ax.legend(fontsize=7, loc="upper right")
     _footnote(fig, chart_note(est, best.warnings))
     return fig
 
 
 def jump_margin(a):
     """The least contact force over the turn (N) against the speed: where it reaches zero the
-    follower leaves the cam (sec. 7.5); the chosen law bold, the others faint."""
+    follower leaves the cam (sec. 7.5); the chosen law bold with its estimate shaded, the
+    others faint."""
     plt = _pyplot()
     m = a.machine
     fig, ax = plt.subplots(figsize=(8, 4.5))
-    _band(ax, a)
+    _band(ax, a, clip=False)          # the margin runs past the band to where it ends
     drawn = False
+    est = {}
     for x in a.laws:
         sp = x.spring
         if sp is None or len(getattr(sp, "jump_margin_speeds", ())) == 0:
             continue
-        style = dict(lw=2.0, color="k") if x is a.chosen else dict(lw=0.7, alpha=0.6)
-        ax.plot(_speed(a, sp.jump_margin_speeds), sp.jump_margin, label=x.law, **style)
+        s, f = _speed(a, sp.jump_margin_speeds), np.asarray(sp.jump_margin, dtype=float)
+        if x is a.chosen:
+            ax.plot(s, f, lw=2.0, color="k", label=x.law)
+            e = getattr(sp, "jump_margin_error", None)
+            if e is not None:
+                e = np.asarray(e, dtype=float)
+                ax.fill_between(s, f - e, f + e, color="k", alpha=0.2, lw=0)
+            est[f"{x.law} least force (N)"] = (f, e if e is not None else [None])
+        else:
+            ax.plot(s, f, lw=0.7, alpha=0.6, label=x.law)
         drawn = True
     if not drawn:
         plt.close(fig)
         return None
     sp = a.chosen.spring
-    est = {}
     if sp is not None and sp.jump_speed is not None:
         ax.axvline(_speed(a, sp.jump_speed), color="r", ls="--", lw=0.8,
                    label=f"{a.chosen.law} leaves the cam")
-        est["jump speed (" + m.speed_unit + ")"] = (_speed(a, sp.jump_speed),
-                                                    _speed(a, _e(sp, "jump_speed")))
+        e = _e(sp, "jump_speed")
+        est[f"jump speed ({m.speed_unit})"] = (_speed(a, sp.jump_speed),
+                                                None if e is None else _speed(a, e))
     ax.axhline(0.0, color="r", lw=0.6)
     ax.set_xlabel(f"camshaft speed ({m.speed_unit})")
     ax.set_ylabel("least contact force over the turn (N)")
     ax.set_title(f"{m.title}: the jump margin with the spring used", fontsize=9)
     ax.grid(True, lw=0.3)
-    ax.legend(fontsize=7, ncol=2)
+    ax.legend(fontsize=7, ncol=2, loc="upper right")   # "best" searches every point: slow
     _footnote(fig, chart_note(est, a.chosen.warnings))
     return fig
 
@@ -232,56 +260,55 @@ def jump_margin(a):
 
 def cam_stress(a):
     """The chosen cam (mm) beside its pressure angle (deg) and Hertz's contact pressure (MPa)
-    over the turn, with their limits."""
-    from .export import cam_of
-
+    over the turn, with their limits (the ContactAnswer's arrays)."""
     best = a.chosen
     c = best.contact
     if c is None:
         return None
     plt = _pyplot()
     m = a.machine
-    cam = cam_of(m, best.law, best.theta, points_per_degree=2)
-    tab = cam.table
     fig = plt.figure(figsize=(10, 5))
     ax0 = fig.add_subplot(1, 2, 1)
-    ax0.plot(tab["x_profile"] * 1e3, tab["y_profile"] * 1e3, "k-", lw=1.2, label="profile")
-    if "x_pitch" in tab:
-        ax0.plot(tab["x_pitch"] * 1e3, tab["y_pitch"] * 1e3, "b:", lw=0.7, label="pitch curve")
+    x, y = (np.append(v, v[:1]) * 1e3 for v in (np.asarray(c.x), np.asarray(c.y)))
+    ax0.plot(x, y, "k-", lw=1.2)
+    t = np.linspace(0, 2 * np.pi, 361)
+    ax0.plot(m.base_radius * 1e3 * np.cos(t), m.base_radius * 1e3 * np.sin(t), "b:", lw=0.6,
+             label="base circle")
     ax0.set_aspect("equal")
     ax0.set_xlabel("x (mm)")
     ax0.set_ylabel("y (mm)")
     ax0.grid(True, lw=0.3)
-    ax0.legend(fontsize=7)
-    ax0.set_title(f"{best.law} cam, base circle {m.base_radius * 1e3:g} mm", fontsize=9)
+    ax0.legend(fontsize=7, loc="upper right")
+    ax0.set_title(f"the {best.law} cam", fontsize=9)
     ax1 = fig.add_subplot(2, 2, 2)
-    ax1.plot(tab["phi_deg"], tab["alpha_deg"], "k-", lw=1.0)
+    ax1.plot(c.theta_deg, c.pressure_angle_deg, "k-", lw=1.0)
     for sign in (1, -1):
         ax1.axhline(sign * m.max_pressure_angle, color="r", ls="--", lw=0.7)
     ax1.set_ylabel("pressure angle (deg)", fontsize=8)
     ax1.grid(True, lw=0.3)
     ax2 = fig.add_subplot(2, 2, 4, sharex=ax1)
-    th, p0 = stress_curve(c)
-    if th is not None:
-        ax2.plot(th, p0 / 1e6, "k-", lw=1.0)
+    if c.stress is not None:
+        p0 = np.asarray(c.stress, dtype=float) / 1e6
+        finite = np.isfinite(p0)
+        ax2.plot(np.asarray(c.theta_deg)[finite], p0[finite], "k-", lw=1.0)
     if c.hertz_allowed is not None:
         ax2.axhline(c.hertz_allowed / 1e6, color="r", ls="--", lw=0.7, label="allowable")
-        ax2.legend(fontsize=7)
+        ax2.legend(fontsize=7, loc="lower right")
     ax2.set_ylabel("Hertz pressure (MPa)", fontsize=8)
     ax2.set_xlabel("cam angle (deg)")
     ax2.grid(True, lw=0.3)
     est = {"alpha max (deg)": (c.pressure_angle_max_deg, _e(c, "pressure_angle_max_deg")),
-           "rho min (mm)": (c.rho_min * 1e3, _e(c, "rho_min") * 1e3)}
+           "rho min (mm)": (c.rho_min * 1e3, _mm(_e(c, "rho_min")))}
     if c.hertz_stress_max is not None:
-        est["Hertz max (MPa)"] = (c.hertz_stress_max / 1e6, _e(c, "hertz_stress_max") / 1e6)
+        est["Hertz max (MPa)"] = (c.hertz_stress_max / 1e6, _scaled(_e(c, "hertz_stress_max"),
+                                                                     1e-6))
     _footnote(fig, chart_note(est, best.warnings))
     return fig
 
 
-def stress_curve(c):
-    """(cam angle deg, Hertz pressure Pa) of a ContactAnswer, or (None, None)."""
-    th = getattr(c, "theta_deg", None)
-    p0 = getattr(c, "stress", None)
-    if th is None or p0 is None:
-        return None, None
-    return np.asarray(th, dtype=float), np.asarray(p0, dtype=float)
+def _mm(e):
+    return _scaled(e, 1e3)
+
+
+def _scaled(e, f):
+    return None if e is None else e * f

@@ -13,32 +13,13 @@ from . import spec
 
 BASE = ("machine.toml", "cam.csv", "cam.dxf", "design.json")
 
+POINTS_PER_DEGREE = 10
+"""The written profile's samples per degree, `camdyn profile`'s default."""
+
 
 def files(step: bool = False) -> tuple:
     """The names :func:`write` writes (cam.step with ``step``)."""
     return BASE + (("cam.step",) if step else ())
-
-
-def cam_of(m: spec.Machine, law: str, theta=None, points_per_degree: int = 10):
-    """The cam of ``m`` under ``law`` as `camdyn profile` makes it
-    (:class:`camdyn.runtime.cam.profile.CamProfile`): the same follower, angles, base circle
-    and pressure-angle limit, each dimension given only to the follower it applies to."""
-    from camdyn.runtime.cam.profile import CamProfile
-
-    geometry = dict(follower=m.follower, base_radius=m.base_radius, angles_deg=tuple(m.angles),
-                    law=law, law_parameter=theta, max_pressure_angle_deg=m.max_pressure_angle,
-                    points_per_degree=points_per_degree)
-    if m.roller:
-        geometry["roller_radius"] = m.roller_radius
-    if m.rocker:
-        geometry.update(swing_deg=m.swing, pivot_distance=m.pivot_distance)
-        if m.roller:
-            geometry["arm_length"] = m.arm_length
-        else:
-            geometry["face_offset"] = m.face_offset
-    else:
-        geometry.update(stroke=m.stroke, offset=m.offset)
-    return CamProfile(**geometry)
 
 
 def chosen_machine(a) -> spec.Machine:
@@ -55,9 +36,12 @@ def write(a, folder, d: dict, step: bool = False) -> dict:
     """Write the chosen design into ``folder`` (:func:`files`); ``d`` is the answer's JSON.
     Returns {what: path}.  A cam whose profile bounds no solid (a cusp, an undercut) has no
     STEP plate: the reason joins the answer's warnings."""
+    from . import contact
+
     best = a.chosen
     out = {"machine": str(write_text(folder / "machine.toml", spec.as_toml(chosen_machine(a))))}
-    cam = cam_of(a.machine, best.law, best.theta)
+    # the cam the checks judged, sampled as `camdyn profile` writes it by default
+    cam = contact.profile(a.machine, best.law, best.theta, points_per_degree=POINTS_PER_DEGREE)
     out["csv"] = str(cam.write_csv(folder / "cam.csv"))
     out["dxf"] = str(cam.write_dxf(folder / "cam.dxf"))
     if step:

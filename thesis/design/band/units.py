@@ -68,7 +68,7 @@ def _parse(text: str, kind: str, key: str) -> float:
     try:
         q = u.Quantity(text.strip())
     except (pint.errors.PintError, ValueError, TypeError, AttributeError, SyntaxError,
-            KeyError, ZeroDivisionError):
+            KeyError, ZeroDivisionError, AssertionError):    # ":" fails an assertion of Pint's
         raise CamdynInputError(f"{key}={text!r}: not a number with a unit (e.g. "
                                f"'{_example(kind)}')") from None
     try:
