@@ -313,3 +313,141 @@ def test_scenes_template_machine(capsys, tmp_path):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "camdyn did not write it" in err[0]
     assert (tmp_path / "b" / "machine.toml").read_text() == "mine"
+
+
+@pytest.mark.parametrize("argv, words", [
+    (["--stroke", ":", "--speed", "300:600"], "--stroke=':': not a number with a unit"),
+    (["--speed", "", "--stroke", "25mm", "--base-radius", "40mm"],
+     "--speed='': not a number with a unit"),
+])
+def test_a_unit_string_pint_cannot_read_is_one_line(capsys, argv, words):
+    """':' failed an assertion inside Pint (a traceback); '' as a speed is no speed (it
+    read as 1 rpm with the r.p.m. put after it)."""
+    _refused(capsys, argv, words)
+
+
+# -- the packaging station end to end ---------------------------------------------------------------
+
+def _run(argv):
+    import contextlib
+    import io
+
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main(argv)
+    return code, out.getvalue(), err.getvalue()
+
+
+def _station(folder, *options):
+    """`camdyn design machine.toml ... --json` of spec.TEMPLATE (the packaging station)."""
+    path = folder / "machine.toml"
+    path.write_text(spec.TEMPLATE)
+    code, stdout, stderr = _run(["design", str(path), *options, "--json"])
+    return NS(code=code, d=json.loads(stdout) if stdout else None, err=stderr, path=path)
+
+
+@pytest.fixture(scope="module")
+def station(tmp_path_factory):
+    """--laws all: every candidate (about 2 s of one core, more on a busy machine)."""
+    return _station(tmp_path_factory.mktemp("station"), "--laws", "all")
+
+
+@pytest.fixture(scope="module")
+def three(tmp_path_factory):
+    """The cycloid, the uniform law and the polydyne, with --out."""
+    folder = tmp_path_factory.mktemp("three")
+    r = _station(folder, "--laws", "cycloidal,uniform,polydyne", "--out", str(folder / "out"))
+    r.out = folder / "out"
+    return r
+
+
+@pytest.mark.slow
+def test_the_station_answers_every_law_and_recommends_one_that_passes(station):
+    from camdyn.runtime.core import laws
+
+    assert station.code == 0, station.err
+    d = station.d
+    assert [x["law"] for x in d["laws"]] == laws.NAMES
+    assert all(x["residual_max"] is not None and x["residual_max_error"] is not None
+               for x in d["laws"])
+    assert sorted(r["law"] for r in d["ranking"]) == sorted(laws.NAMES)
+    _recommended_passes(d)
+    assert d["ranking"][-1]["law"] == "uniform"
+
+
+def _recommended_passes(d):
+    """The recommended law is ranked first and passes its checks, read off its figures
+    against spec.TEMPLATE's limits (30 deg, 1200 MPa, 600 rpm)."""
+    best = next(x for x in d["laws"] if x["law"] == d["recommended"])
+    assert d["ranking"][0]["law"] == d["recommended"]
+    assert best["passed"] and best["reasons"] == []
+    assert best["pressure_angle_max_deg"] <= 30.0 and not best["undercut"]
+    assert best["hertz_stress_max"] <= 1200e6
+    assert best["jump_speed"] is None or best["jump_speed"] > 600 * RPM
+
+
+def test_three_laws_answered_the_uniform_last(three):
+    assert three.code == 0, three.err
+    d = three.d
+    assert [x["law"] for x in d["laws"]] == ["cycloidal", "uniform", "polydyne"]
+    _recommended_passes(d)
+    (uniform,) = [x for x in d["laws"] if x["law"] == "uniform"]
+    assert not uniform["passed"] and d["ranking"][-1]["law"] == "uniform"
+    assert any("velocity jumps" in r for r in uniform["reasons"])
+    (poly,) = [x for x in d["laws"] if x["law"] == "polydyne"]
+    m = packaging()
+    assert poly["law_parameter"] == pytest.approx(0.5 * sum(m.taus), rel=1e-12)
+    # --json: no progress lines; every line on stderr one warning
+    assert all(line.startswith("camdyn design: warning: ") for line in
+               three.err.strip().splitlines())
+
+
+def test_the_figures_are_si(three):
+    """The cycloid's peak acceleration at 600 rpm is 2 pi h/t_m^2 (H''max = 2 pi, App. 2),
+    t_m = beta_m/w = (120 deg)/(600 rpm) = 1/30 s: 141.37 m/s^2; each speed also in rpm."""
+    (cyc,) = [x for x in three.d["laws"] if x["law"] == "cycloidal"]
+    expected = 2 * math.pi * 0.025 * 30.0 ** 2
+    assert cyc["acceleration_max"] == pytest.approx(expected, rel=1e-9)
+    assert abs(cyc["acceleration_max"] - expected) <= cyc["acceleration_max_error"] + \
+        1e-12 * expected
+    assert cyc["residual_max_speed_rpm"] == pytest.approx(cyc["residual_max_speed"] / RPM,
+                                                          rel=1e-12)
+    assert 300 * RPM <= cyc["residual_max_speed"] <= 600 * RPM
+
+
+def test_out_holds_the_report_and_the_chosen_design(three):
+    """--out: the report, the charts, design.json as printed, the chosen machine file (the
+    recommended law, its sized preload) that reads back, the cam as `camdyn profile` writes it."""
+    from camdyn.thesis.design.band import charts, export, report
+
+    d, out = three.d, three.out
+    for name in (*export.files(), *report.FILES, *charts.FILES):
+        assert (out / name).is_file(), name
+    written = json.loads((out / "design.json").read_text())
+    assert written["recommended"] == d["recommended"] and written["laws"] == d["laws"]
+    chosen = spec.load(out / "machine.toml")
+    best = next(x for x in d["laws"] if x["law"] == d["recommended"])
+    assert chosen.laws == (d["recommended"],)
+    assert chosen.spring_preload == pytest.approx(best["spring_preload_used"], rel=1e-9)
+    assert replace(chosen, laws=packaging().laws, spring_preload=None, source="") == \
+        replace(packaging(), source="")
+    html = (out / "report.html").read_text()
+    assert html.count("data:image/png;base64,") == len(charts.FILES)
+    assert "Recommended:" in (out / "report.md").read_text()
+    assert "PROFILE" in (out / "cam.dxf").read_text()
+    assert (out / "cam.csv").read_text().startswith("phi_deg,")
+
+
+def test_the_options_answer_as_the_file_does_one_progress_line_a_law(three):
+    """The station as options, the cycloid alone: the same figures as the file's run, and
+    one progress line on stderr."""
+    code, stdout, stderr = _run(["design", *OPTIONS[:-1], "cycloidal", "--json"])
+    assert code == 0, stderr
+    (mine,) = json.loads(stdout)["laws"]
+    (theirs,) = [x for x in three.d["laws"] if x["law"] == "cycloidal"]
+    assert mine == theirs
+    code, stdout, stderr = _run(["design", *OPTIONS[:-1], "cycloidal"])
+    progress = [line for line in stderr.splitlines() if "warning" not in line]
+    assert code == 0 and len(progress) == 1 and progress[0].startswith(
+        "camdyn design: cycloidal (1/1): worst residual ")
+    assert "recommended: cycloidal" in stdout and "worst residual um" in stdout
