@@ -205,6 +205,12 @@ def test_text_in_a_designers_units_every_figure_with_its_estimate():
     assert "20 ± 0.001" in row             # pressure angle, deg
     assert "20 ± 0.001" in row and "500 ± 0.001" in row   # rho mm, Hertz MPa
     assert "recommended: cycloidal" in t and "model: one_dof (q = 0): Fa = 0" in t
+    # the warnings, each named by its law (the command line gives them on stderr instead)
+    a = band([law("cycloidal", 12.5e-6)])
+    a.laws[0].warnings = ["spring: a warning", "cycloidal: its own"]
+    t = answer.text(a)
+    assert "warning: cycloidal: spring: a warning" in t and "warning: cycloidal: its own" in t
+    assert "warning" not in answer.text(a, warnings=False)
 
 
 def test_a_rockers_preload_is_a_torque_at_its_pivot():
@@ -214,6 +220,7 @@ def test_a_rockers_preload_is_a_torque_at_its_pivot():
     a = band([law("cycloidal", 1e-6, m=m)], m)
     t = answer.text(a)
     assert "preload N m" in t and "N m at the pivot" in t
+    assert "spring rate 1000 N m/rad at the pivot (1.562e+05 N/m at the roller)" in t
     d = answer.as_json(a)["laws"][0]
     assert d["spring_preload_used_at_pivot"] == pytest.approx(40.0 * 0.08, rel=1e-12)
 

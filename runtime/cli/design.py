@@ -398,7 +398,8 @@ def _band(args, lib) -> int:
         m = machine_of(args, lib.spec, lib.units)
         if args.step and m.cam_width is None:
             raise CamdynInputError("argument --step: the STEP plate needs its thickness: "
-                                   "--cam-width (a machine file's cam.width)")
+                                   + ("--cam-width" if args.machine is None else
+                                      f"cam.width in {args.machine}"))
         if args.step and args.out is None:
             raise CamdynInputError("argument --step: goes with --out DIR")
         names = (*export.files(args.step), *report.FILES, *charts.FILES)
@@ -418,7 +419,7 @@ def _band(args, lib) -> int:
     if args.json:
         print(json.dumps(d, indent=1))
     else:
-        print(answer.text(a))
+        print(answer.text(a, warnings=False))       # they are on stderr
         for f in d.get("files", {}).values():
             print(f"wrote {f}")
     # no law passing every check is status 1, as camdyn profile's failed checks are

@@ -461,9 +461,21 @@ def header(m: Machine) -> list:
             f"  rise {r:g}, outer dwell {d1:g}, return {f:g}, inner dwell {d2:g} deg; "
             f"{lo:.4g} to {hi:.4g} {u} (tau {m.taus[0]:.4g} to {m.taus[1]:.4g}, T_e = "
             f"{m.period * 1e3:.4g} ms (4.39))",
-            f"  {train}; spring rate {m.output_spring_rate:.4g} N/m"
-            + (f", preload {m.output_spring_preload:.4g} N" if m.output_spring_preload is not None
-               else ", preload sized") + f", margin {m.spring_margin:g}"]
+            f"  {train}; " + spring_given(m)]
+
+
+def spring_given(m: Machine) -> str:
+    """The spring as the designer gave it: a rocker's at its pivot, and at its roller."""
+    if m.rocker:
+        rate = (f"spring rate {m.output_spring_rate * m.lever ** 2:.4g} N m/rad at the pivot "
+                f"({m.output_spring_rate:.4g} N/m at the roller)")
+        preload = (f", preload {m.spring_preload:.4g} N m" if m.spring_preload is not None
+                   else ", preload sized")
+    else:
+        rate = f"spring rate {m.output_spring_rate:.4g} N/m"
+        preload = (f", preload {m.spring_preload:.4g} N" if m.spring_preload is not None
+                   else ", preload sized")
+    return rate + preload + f", margin {m.spring_margin:g}"
 
 
 COLUMNS = (("law", 24), ("", 6), ("worst residual um", 19), ("at", 16), ("a max m/s^2", 18),
@@ -494,10 +506,10 @@ def _cells(cells) -> str:
     return "".join(f"{x:<{w - 1}} " for x, (_, w) in zip(cells, COLUMNS)).rstrip()
 
 
-def text(a: BandAnswer) -> str:
+def text(a: BandAnswer, warnings: bool = True) -> str:
     """The designer's table: one row a law, best first, every figure ± its estimate; the
     reasons a law fails, the recommended design's spring and drive, the model and why, and
-    the warnings."""
+    (``warnings``) the warnings, which the command line gives on stderr instead."""
     m = a.machine
     L = header(m)
     lad = a.ladder
@@ -518,10 +530,10 @@ def text(a: BandAnswer) -> str:
         if why.startswith("fails"):
             L.append(f"{law} {why}")
     L += recommendation(a)
-    warnings = all_warnings(a)
-    if warnings:
+    said = all_warnings(a) if warnings else []
+    if said:
         L.append("")
-        L += [f"warning: {w}" for w in warnings]
+        L += [f"warning: {w}" for w in said]
     return "\n".join(L)
 
 
