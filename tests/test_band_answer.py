@@ -458,3 +458,12 @@ def test_the_options_answer_as_the_file_does_one_progress_line_a_law(three):
     assert code == 0 and len(progress) == 1 and progress[0].startswith(
         "camdyn design: cycloidal (1/1): worst residual ")
     assert "recommended: cycloidal" in stdout and "worst residual um" in stdout
+
+
+def test_no_law_passing_is_status_1_with_the_answer():
+    """The uniform law alone fails (its velocity jumps): status 1, as camdyn profile's failed
+    checks, the answer printed all the same, "recommended" null."""
+    code, stdout, stderr = _run(["design", *OPTIONS[:-1], "uniform", "--json"])
+    d = json.loads(stdout)
+    assert code == 1 and d["recommended"] is None and not d["laws"][0]["passed"]
+    assert "Traceback" not in stderr
