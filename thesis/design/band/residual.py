@@ -397,11 +397,21 @@ class _Band:
     @property
     def bound_M(self) -> float:
         """M >= |U0''| in x: SAFETY sigma^2 max U0 (Bernstein), no less than the samples'
-        own second differences show."""
+        own second differences show away from the curve's zeros (where U0 = |g| of a smooth
+        g has a corner that bounds nothing: a maximum does not lie there)."""
         M = SAFETY * self.sigma**2 * float(np.max(self.f))
         if len(self.x) >= 3:
             dx = self.x[1] - self.x[0]
-            M = max(M, float(np.max(np.abs(np.diff(self.f, 2)))) / dx**2)
+            f = self.f
+            d2 = np.abs(np.diff(f, 2))                  # centred at samples 1 .. n-2
+            low = np.zeros(len(f), dtype=bool)
+            low[1:-1] = (f[1:-1] <= f[:-2]) & (f[1:-1] <= f[2:])
+            near = low.copy()
+            near[1:] |= low[:-1]
+            near[:-1] |= low[1:]
+            smooth = ~near[1:-1]
+            if smooth.any():
+                M = max(M, float(np.max(d2[smooth])) / dx**2)
         return M
 
     def search(self) -> _Peak:
