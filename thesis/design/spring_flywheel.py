@@ -109,8 +109,13 @@ class LawMotion:
 
 
 # -- the spring's figures of one motion ----------------------------------------------------------
-def _spring_extremes(motion, *, mass, margin, rate) -> dict:
-    """The spring's extremes over one motion (all independent of the preload):
+SPRING_KEYS = ("preload", "inertia", "hold", "stroke", "rate")
+"""The spring's extremes over one motion, :func:`_spring_extremes`'s keys."""
+
+
+def _spring_extremes(motion, *, mass, margin, rate, keys=SPRING_KEYS) -> dict:
+    """The spring's extremes over one motion (all independent of the preload), those of
+    ``keys``:
 
     preload   max (1 + mu)(-m x'') - k x      (F0_min = max(0, it))
     inertia   max -m x''                       (the largest inertia force off the cam)
@@ -137,8 +142,7 @@ def _spring_extremes(motion, *, mass, margin, rate) -> dict:
                                 np.where(need > 0, np.inf, -np.inf))
         return g
 
-    out = {key: largest(f(key), motion.grids)
-           for key in ("preload", "inertia", "hold", "stroke", "rate")}
+    out = {key: largest(f(key), motion.grids) for key in keys}
     return out
 
 
@@ -261,13 +265,7 @@ def spring(motions: Motions, *, mass, stroke, t_m, margin, rate=None, spring_mas
     if turn.whole:
         out["carried"] = _carried(motions, mass=mass, stroke=stroke, t_m=t_m, margin=mu,
                                   rate=k, tau=tau)
-        c = out["carried"]
-        if c["force"] is not None and c["force"] > mu * inertia:
-            warnings.append(
-                f"follower spring: the vibration one turn leaves (x'' amplitude "
-                f"{c['xdd']:.3g} m/s^2 at the turn's end) rides into the next rise and may add "
-                f"up to {c['force']:.3g} N a turn to the least preload, more than the margin "
-                f"leaves ({mu * inertia:.3g} N): a larger margin or a stiffer follower")
+        warnings += _carried_warning(out["carried"], mu, inertia)
     if arm_length is not None:
         out["rocker"] = _at_pivot(out, arm_length, mass)
     if spring_mass is not None:
@@ -275,6 +273,46 @@ def spring(motions: Motions, *, mass, stroke, t_m, margin, rate=None, spring_mas
                           theta=theta, U0_design=U0_design)
         out["surge"] = surge
         warnings += w
+    out["warnings"] = warnings
+    return out
+
+
+def _carried_warning(c: dict, mu: float, inertia: float) -> list:
+    """The warning where the vibration one turn leaves may add more to the least preload, a
+    turn, than the margin leaves over the largest inertia force."""
+    if c["force"] is None or c["force"] <= mu * inertia:
+        return []
+    return [f"follower spring: the vibration one turn leaves (x'' amplitude {c['xdd']:.3g} "
+            f"m/s^2 at the turn's end) rides into the next rise and may add up to "
+            f"{c['force']:.3g} N a turn to the least preload, more than the margin leaves "
+            f"({mu * inertia:.3g} N): a larger margin or a stiffer follower"]
+
+
+def least_preload(motions: Motions, *, mass, stroke, t_m, margin, rate=None, tau=None) -> dict:
+    """The least preload of :func:`spring` alone, for a caller that sizes many springs (every
+    law over a speed band): each motion's least preload with its error and binding place, as
+    spring() gives them under "kinetostatic" and "dynamic", and over the whole turn the
+    vibration one turn leaves ("carried") with its warning ("warnings").  The least rate, the
+    peak spring force and the least contact force of spring() are left out: a fifth of its
+    extremes, each found and refined as there."""
+    mu = check_margin(margin)
+    turn = motions.turn
+    out, inertia = {}, 0.0
+    for which, base, tight in (("kinetostatic", motions.kinetostatic, None),
+                               ("dynamic", motions.dynamic, motions.tight)):
+        f, e = _with_twin(lambda m: _spring_extremes(m, mass=mass, margin=mu, rate=rate,
+                                                     keys=("preload",)), base, tight)
+        out[which] = {"preload_min": max(0.0, f["preload"].value),
+                      "preload_min_error": e["preload"][0],
+                      "binding": _place(f["preload"], e["preload"], which, turn, t_m)}
+        if turn.whole:
+            inertia = max(inertia, _spring_extremes(base, mass=mass, margin=mu, rate=rate,
+                                                    keys=("inertia",))["inertia"].value)
+    warnings = list(motions.warnings)
+    if turn.whole:
+        c = out["carried"] = _carried(motions, mass=mass, stroke=stroke, t_m=t_m, margin=mu,
+                                      rate=0.0 if rate is None else rate, tau=tau)
+        warnings += _carried_warning(c, mu, inertia)
     out["warnings"] = warnings
     return out
 
