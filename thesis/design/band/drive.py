@@ -105,7 +105,7 @@ def drive(m: Machine, law, ladder, spring_preload_N: float, theta=None,
         flywheel_inertia_kinetostatic_error=fly.get("J_kinetostatic_error"),
         flywheel_speed=fly.get("speed"), energy_swing=fly.get("energy_swing"),
         energy_swing_error=fly.get("energy_swing_error"), theta_deg=theta_deg,
-        torque=_run_torque(m, top.result, top.t_m, F0, T),
+        torque=_run_torque(m, top.result, top.t_m, F0, band_spring.at_cam(top.result, T)),
         torque_kinetostatic=_law_torque(m, turn, w_hi, F0, T), warnings=tuple(warnings))
 
 

@@ -60,10 +60,14 @@ from ..turn import CamTurn
 from . import units
 from .spec import Machine
 
-SCAN_RTOL = 1e-6
-"""The tolerance of the jump margin's runs and of the jump speed's search (DP54; its estimate
-from the run one notch tighter): the contact force to some 1e-5 of itself, below what a chart
-or a speed shows, at a sixth of the sizing runs' cost."""
+SCAN_RTOL = 1e-5
+"""The tolerance of the jump margin chart's runs (DP54; its estimate from the run one notch
+tighter): the contact force to some 1e-4 of itself, below what a chart shows, at a tenth of
+the sizing runs' cost."""
+
+JUMP_RTOL = 1e-7
+"""The tolerance of the jump speed's search (DP54): the contact force to some 1e-6 of itself,
+the speed to some 1e-5 of itself."""
 
 SCAN_PER_TAU = 2.0
 """Speeds of the jump margin chart per unit of 1/tau: the residual vibration's lobes lie about
@@ -252,6 +256,18 @@ def run_force(m: Machine, result, t_m: float, F0: float, T) -> np.ndarray:
     return _force_of(m, F0, s["X"] * h, s["Xdd"] * h / t_m**2)
 
 
+def at_cam(result, B) -> np.ndarray:
+    """The times (units of the rise) at which a run's cam stands at the angles B (units of the
+    rise): B itself where the cam turns evenly, and where the model turns it by a state B of
+    its own (CAMSHAFT-2's variable speed, (5.15)) the times its recorded B passes them, linear
+    between the recorded points (which lie a fraction of its vibration's period apart; past
+    the run's last B, its end)."""
+    B = np.asarray(B, dtype=float)
+    if "B" not in result.state_names:
+        return B
+    return np.interp(B, result["B"], result.t)
+
+
 def law_force(m: Machine, turn: CamTurn, w: float, F0: float, T) -> np.ndarray:
     """The kinetostatic contact force (N) of the rigid follower at T and the speed w."""
     H = turn.motion(T)
@@ -428,7 +444,7 @@ def _jump_dynamic(m, law, theta, ladder, F0, speeds, margins) -> tuple:
     from scipy.optimize import brentq
 
     def f(w):
-        run = turn_run(m, law, theta, ladder, w, SCAN_RTOL, twin=False)
+        run = turn_run(m, law, theta, ladder, w, JUMP_RTOL, twin=False)
         return _least_run_force(m, run.result, run.t_m, F0)[0]
 
     below = np.flatnonzero(margins <= 0.0)
@@ -445,21 +461,24 @@ def _jump_dynamic(m, law, theta, ladder, F0, speeds, margins) -> tuple:
             hi_w, lo_w = lo_w, lo_w / 2
     else:
         lo_w, hi_w = speeds[i - 1], speeds[i]
-    fa, fb = f(lo_w), f(hi_w)
-    if fb == 0.0:
-        w = hi_w
-    else:
+    spread = 0.0
+    try:
         w = brentq(f, lo_w, hi_w, xtol=JUMP_XTOL * hi_w * 0.5, rtol=4 * np.finfo(float).eps)
+    except ValueError:
+        # the chart's runs and the search's differ in sign at an end (a force within their
+        # errors of zero there): the crossing is somewhere in the bracket
+        w, spread = (lo_w if f(lo_w) <= 0.0 else hi_w), hi_w - lo_w
     # the root's error: the bracket, and the contact force's error at the root over its slope
     dw = 1e-3 * w
     slope = (f(w + dw) - f(w - dw)) / (2 * dw)
-    run = turn_run(m, law, theta, ladder, w, SCAN_RTOL)
+    run = turn_run(m, law, theta, ladder, w, JUMP_RTOL)
     _, eF, _ = least_dynamic(m, run, F0, twin_least=True)
     if eF is None or slope == 0.0:
         return w, None, "Brent's method on the speed (no estimate of the force's error)"
-    return w, JUMP_XTOL * w + eF / abs(slope), (
-        f"the least contact force's first sign change along the chart, refined by Brent's "
-        f"method to {JUMP_XTOL:g} of the speed (a = {fa:.4g} N, b = {fb:.4g} N)")
+    return w, spread + JUMP_XTOL * w + eF / abs(slope), (
+        f"the least contact force's first sign change along the chart, between "
+        f"{_speed(m, lo_w)} and {_speed(m, hi_w)}, refined by Brent's method to {JUMP_XTOL:g} "
+        "of the speed")
 
 
 # -- the answer ----------------------------------------------------------------------------------
@@ -496,9 +515,9 @@ def spring(m: Machine, law, ladder, theta=None, dynamic_jump: bool = True) -> Sp
     lo = turn_run(m, law, theta, ladder, w_lo) if w_lo != w_hi else top
     arrays = {}
     for name, run in (("lo", lo), ("hi", top)):
-        F = run_force(m, run.result, run.t_m, used, T)
-        eF = (np.full_like(F, np.nan) if run.tight is None else
-              run.factor * np.abs(F - run_force(m, run.tight, run.t_m, used, T)))
+        F = run_force(m, run.result, run.t_m, used, at_cam(run.result, T))
+        eF = (np.full_like(F, np.nan) if run.tight is None else run.factor * np.abs(
+            F - run_force(m, run.tight, run.t_m, used, at_cam(run.tight, T))))
         arrays[name] = (F, eF, law_force(m, turn, run.w, used, T))
     least, least_e, _ = least_dynamic(m, top, used)
     # the jump margin and the jump speed
@@ -531,7 +550,8 @@ def spring(m: Machine, law, ladder, theta=None, dynamic_jump: bool = True) -> Sp
         preload_min=dyn["preload_min"], preload_min_error=dyn["preload_min_error"],
         binding_part=dyn["binding"]["part"],
         binding_angle_deg=_deg(dyn["binding"]["cam_angle"]),
-        binding_angle_deg_error=_deg(dyn["binding"]["cam_angle_error"]),
+        binding_angle_deg_error=_plus(_deg(dyn["binding"]["cam_angle_error"]),
+                                      _lag(top.result) * m.angles[0]),
         preload_used=used, preload_used_error=used_error, preload_given=given,
         torque_at_pivot=None if l is None else used * l,
         torque_at_pivot_error=None if l is None or used_error is None else used_error * l,
@@ -558,6 +578,18 @@ def _margin(least_at, speeds) -> np.ndarray:
         if out[i, 0] > 0.0:
             out[i] = least_at(speeds[i], True)[:2]
     return out
+
+
+def _lag(result) -> float:
+    """How far a run's cam angle B strays from T (units of the rise) over the run: 0 where the
+    cam turns evenly; the places the sizing gives in T are cam angles within it."""
+    if "B" not in result.state_names:
+        return 0.0
+    return float(np.max(np.abs(result["B"] - result.t)))
+
+
+def _plus(a, b):
+    return None if a is None else a + b
 
 
 def _or_nan(pair):
