@@ -26,18 +26,22 @@ decelerates faster than the spring pulls it back the follower jumps (sec. 7.5, f
   the only one).  Dynamic the follower's vibration depends on tau, proportional to w: the
   least force is scanned against the speed (the jump margin chart, points evenly spaced in
   1/tau, SCAN_PER_TAU to a unit, which is about the spacing of the residual vibration's
-  lobes) and its first sign change refined by Brent's method (bisection safeguarded) on the
-  speed to JUMP_XTOL.  A dip below zero narrower than the chart's spacing could escape the
-  scan; the chart is dense enough in 1/tau that each lobe of the residual vibration has two
-  points or more.
+  lobes; runs at SCAN_RTOL) and its first sign change refined by Brent's method (bisection
+  safeguarded) on the speed to JUMP_XTOL (runs at JUMP_RTOL).  A dip below zero narrower than
+  the chart's spacing could escape the scan; the chart is dense enough in 1/tau that each lobe
+  of the residual vibration has two points or more.  ``dynamic_jump=False`` leaves the dynamic
+  chart and search out (the kinetostatic ones alone), for an answer that must be quick.
 * The contact force over the turn at the band's lowest and top speed (the Ladder's model),
   and the jump margin chart (the least contact force over the turn against the speed, from
   the lowest speed to BEYOND times the top speed), kinetostatic and dynamic.
 
 Errors: the runs' as the answer contract states them (the run one notch tighter, its
-difference times the method's factor), plus what the refinement of each extreme leaves
-(:func:`..extremes.largest`); the jump speed's adds the search's bracket and the contact
-force's error over its slope in the speed.  The spring acts on the output mass without
+difference times the method's factor; for a chart's point the largest difference of the two
+runs' forces over the turn, which bounds that of their least values), plus what the
+refinement of each extreme leaves (:func:`..extremes.largest`, :func:`least`); a chart's
+point is its run's least recorded value, its error adding how far below it the curvature lets
+the force reach between the points.  The jump speed's adds the search's bracket and the
+contact force's error over its slope in the speed.  The spring acts on the output mass without
 changing the follower's own frequency (as `camdyn design`'s sizing: its rate is small beside
 the train's stiffness, which the warnings check).
 """
