@@ -217,13 +217,14 @@ def jump_margin(a):
     others faint."""
     plt = _pyplot()
     m = a.machine
-    fig, ax = plt.subplots(figsize=(8, 4.5))
+    fig, ax = plt.subplots(figsize=(9.5, 4.5))
     _band(ax, a, clip=False)          # the margin runs past the band to where it ends
     drawn = False
     est = {}
+    left_out = [x.law for x in a.laws if x.velocity_jumps and x is not a.chosen]
     for x in a.laws:
         sp = x.spring
-        if sp is None or len(getattr(sp, "jump_margin_speeds", ())) == 0:
+        if sp is None or len(getattr(sp, "jump_margin_speeds", ())) == 0 or x.law in left_out:
             continue
         s, f = _speed(a, sp.jump_margin_speeds), np.asarray(sp.jump_margin, dtype=float)
         if x is a.chosen:
@@ -251,8 +252,13 @@ def jump_margin(a):
     ax.set_ylabel("least contact force over the turn (N)")
     ax.set_title(f"{m.title}: the jump margin with the spring used", fontsize=9)
     ax.grid(True, lw=0.3)
-    ax.legend(fontsize=7, ncol=2, loc="upper right")   # "best" searches every point: slow
-    _footnote(fig, chart_note(est, a.chosen.warnings))
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    note = chart_note(est, a.chosen.warnings)
+    if left_out:       # an impulse at each jump: no spring holds them, and their scale hides
+        note += ("\n(left out, their velocity jumps and no spring holds them: "
+                 + ", ".join(left_out) + ")")
+    _footnote(fig, note)
+    fig.subplots_adjust(right=0.78)
     return fig
 
 
