@@ -95,7 +95,7 @@ def drive(m: Machine, law, ladder, spring_preload_N: float, theta=None,
     fly = (_flywheel(m, law, theta, ladder, turn, F0, eF0, warnings)
            if m.speed_fluctuation is not None else {})
     return DriveAnswer(
-        law=band_spring._name(law), speed=w_hi,
+        law=band_spring.law_name(law), speed=w_hi,
         torque_max=dyn if use_dyn else kin, torque_max_error=dyn_e if use_dyn else kin_e,
         torque_max_at_deg=(dyn_T if use_dyn else kin_T) * m.angles[0],
         torque_max_kinetostatic=kin, torque_max_kinetostatic_error=kin_e,
@@ -123,7 +123,7 @@ def _run_torque(m: Machine, result, t_m: float, F0: float, T) -> np.ndarray:
     T = np.clip(T, result.t[0], result.t[-1])
     s = result.sample(T)
     h = m.output_stroke
-    F = band_spring._force_of(m, F0, s["X"] * h, s["Xdd"] * h / t_m**2)
+    F = band_spring.force_of(m, F0, s["X"] * h, s["Xdd"] * h / t_m**2)
     return F * h * s["Hd"] / m.rise_angle
 
 

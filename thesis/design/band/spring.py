@@ -248,8 +248,9 @@ class _Ladder:
 
 # -- contact forces over the turn ------------------------------------------------------------------
 
-def _force_of(m: Machine, F0: float, x, a):
-    """F = F0 + k x + m x'' (N at the output)."""
+def force_of(m: Machine, F0: float, x, a):
+    """F = F0 + k x + m x'' (N at the output): the contact force of the output at x with the
+    acceleration x'' (load.py's Q = M omega^2 m'' + k m + Q_0), shared with the drive's torque."""
     return F0 + m.output_spring_rate * x + m.output_mass * a
 
 
@@ -257,7 +258,7 @@ def run_force(m: Machine, result, t_m: float, F0: float, T) -> np.ndarray:
     """The contact force (N) of a run at T (units of the rise)."""
     s = result.sample(np.clip(T, result.t[0], result.t[-1]))
     h = m.output_stroke
-    return _force_of(m, F0, s["X"] * h, s["Xdd"] * h / t_m**2)
+    return force_of(m, F0, s["X"] * h, s["Xdd"] * h / t_m**2)
 
 
 def at_cam(result, B) -> np.ndarray:
@@ -276,7 +277,7 @@ def law_force(m: Machine, turn: CamTurn, w: float, F0: float, T) -> np.ndarray:
     """The kinetostatic contact force (N) of the rigid follower at T and the speed w."""
     H = turn.motion(T)
     h = m.output_stroke
-    return _force_of(m, F0, H[0] * h, H[2] * h * w**2 / m.rise_angle**2)
+    return force_of(m, F0, H[0] * h, H[2] * h * w**2 / m.rise_angle**2)
 
 
 def _run_grid(result) -> np.ndarray:
@@ -287,7 +288,7 @@ def _run_grid(result) -> np.ndarray:
 
 def _recorded_force(m: Machine, result, t_m: float, F0: float) -> np.ndarray:
     h = m.output_stroke
-    return _force_of(m, F0, result["X"] * h, result["Xdd"] * h / t_m**2)
+    return force_of(m, F0, result["X"] * h, result["Xdd"] * h / t_m**2)
 
 
 def _zoom(g, lo: float, hi: float) -> tuple[float, float]:
@@ -545,7 +546,7 @@ def spring(m: Machine, law, ladder, theta=None, dynamic_jump: bool = True) -> Sp
                                  dynamic_jump)
     l = m.lever if m.rocker else None
     return SpringAnswer(
-        law=_name(law), model=top.model, speed=w_hi, margin=m.spring_margin, rate=k,
+        law=law_name(law), model=top.model, speed=w_hi, margin=m.spring_margin, rate=k,
         preload_min_kinetostatic=kin["preload_min"],
         preload_min_kinetostatic_error=kin["preload_min_error"],
         binding_part_kinetostatic=kin["binding"]["part"],
@@ -605,7 +606,8 @@ def _deg(rad):
     return None if rad is None else math.degrees(rad)
 
 
-def _name(law) -> str:
+def law_name(law) -> str:
+    """A law's name: its own where it is one, a shaped law's key (a law file's)."""
     return law if isinstance(law, str) else getattr(law, "key", str(law))
 
 
